@@ -1,0 +1,27 @@
+//! Shared helpers of the law's integration tests.
+#![allow(dead_code)]
+
+use softgrip_law::{ContactLaw, ContactParams, Level};
+
+/// A law in normalised units (E* = 1 Pa, R = 1 m): force is f, delta is x.
+pub fn normalised(level: Level, nu: f64) -> ContactLaw {
+    let p = ContactParams::try_from_parts(1.0, 1.0, nu).expect("valid params");
+    ContactLaw::try_new(p, level).expect("level builds")
+}
+
+/// Every level that can be built at `nu`.
+pub fn levels_at(nu: f64) -> Vec<ContactLaw> {
+    Level::ALL
+        .iter()
+        .filter(|l| nu < 0.5 || !matches!(l, Level::NeoHookean | Level::NeoHookeanExact))
+        .map(|l| normalised(*l, nu))
+        .collect()
+}
+
+/// Compression ratios spread over (0, x_max) that avoid the cell boundaries of tables and of
+/// `Auto` (multiples of 1/256 and 1/64).
+pub fn grid(x_max: f64, n: usize) -> Vec<f64> {
+    (1..n)
+        .map(|i| x_max * (i as f64 + 0.318_309_886) / (n as f64 + 0.5))
+        .collect()
+}

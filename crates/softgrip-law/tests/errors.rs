@@ -1,0 +1,111 @@
+//! Every invalid parameter and every out-of-range call gets its typed error.
+
+mod common;
+
+use common::normalised;
+use softgrip_law::fitting::{Sample, fit_material};
+use softgrip_law::{ContactLaw, ContactParams, Error, Level, LevelKind, Material};
+
+fn invalid(field: &str, r: Result<impl std::fmt::Debug, Error>) {
+    match r {
+        Err(Error::InvalidParameter { field: f, .. }) => assert_eq!(f, field),
+        other => panic!("expected InvalidParameter({field}), got {other:?}"),
+    }
+}
+
+#[test]
+fn invalid_materials_are_rejected() {
+    invalid("youngs_modulus", Material::try_new(-3e6, 0.3));
+    invalid("youngs_modulus", Material::try_new(0.0, 0.3));
+    invalid("youngs_modulus", Material::try_new(f64::NAN, 0.3));
+    invalid("youngs_modulus", Material::try_new(f64::INFINITY, 0.3));
+    invalid("poisson_ratio", Material::try_new(3e6, 0.5000001));
+    invalid("poisson_ratio", Material::try_new(3e6, -1.0));
+    invalid("poisson_ratio", Material::try_new(3e6, f64::NAN));
+    invalid("shear_modulus", Material::try_from_shear_modulus(-1.0, 0.3));
+    invalid("effective_modulus", Material::try_from_effective_modulus(f64::NAN, 0.5));
+    let e = Material::try_new(-3e6, 0.3).unwrap_err();
+    assert_eq!(e.to_string(), "`youngs_modulus` must be finite and > 0 Pa, got -3000000");
+}
+
+#[test]
+fn invalid_radii_are_rejected() {
+    let m = Material::try_new(3e6, 0.49).expect("valid");
+    invalid("radius", ContactParams::try_new(m, -0.01));
+    invalid("radius", ContactParams::try_new(m, 0.0));
+    invalid("radius", ContactParams::try_new(m, f64::INFINITY));
+    invalid("radius2", ContactParams::try_combine(m, 0.01, m, -1.0));
+    invalid("radius1", ContactParams::try_combine(m, f64::INFINITY, m, f64::INFINITY));
+    // A flat second body is allowed and gives the first radius.
+    let p = ContactParams::try_combine(m, 0.01, m, f64::INFINITY).expect("flat");
+    assert_eq!(p.radius(), 0.01);
+}
+
+#[test]
+fn invalid_level_settings_are_rejected() {
+    let p = ContactParams::try_from_parts(1.0, 1.0, 0.3).expect("valid");
+    invalid("k", ContactLaw::try_new(p, Level::Fit { k: -1.0 }));
+    invalid("k", ContactLaw::try_new(p, Level::Fit { k: f64::NAN }));
+    invalid("tolerance", ContactLaw::try_new(p, Level::Auto { tolerance: 0.0 }));
+    invalid("match_x", ContactLaw::try_new(p, Level::Linear { match_x: 0.0 }));
+}
+
+#[test]
+fn compressible_theory_needs_nu_below_half() {
+    let p = ContactParams::try_from_parts(1.0, 1.0, 0.5).expect("valid");
+    for (level, kind) in [
+        (Level::NeoHookean, LevelKind::NeoHookean),
+        (Level::NeoHookeanExact, LevelKind::NeoHookeanExact),
+    ] {
+        match ContactLaw::try_new(p, level) {
+            Err(Error::IncompatibleLevel { level, nu, .. }) => {
+                assert_eq!(level, kind);
+                assert_eq!(nu, 0.5);
+            }
+            other => panic!("expected IncompatibleLevel, got {other:?}"),
+        }
+    }
+    // Auto uses the incompressible law as its reference at nu = 0.5.
+    assert!(ContactLaw::try_new(p, Level::auto()).is_ok());
+}
+
+#[test]
+fn compression_past_the_validity_range_is_an_error() {
+    for level in Level::ALL {
+        let law = normalised(level, 0.3);
+        let x = law.x_max() * 1.001;
+        match law.evaluate(x) {
+            Err(Error::OutOfRange { x: got, x_max, .. }) => {
+                assert_eq!(got, x);
+                assert_eq!(x_max, law.x_max());
+            }
+            other => panic!("{level}: expected OutOfRange, got {other:?}"),
+        }
+        assert!(law.evaluate(law.x_max()).is_ok());
+        invalid("delta", law.evaluate(-1e-3));
+        invalid("delta", law.evaluate(f64::NAN));
+        invalid("delta", law.try_response(f64::INFINITY));
+    }
+}
+
+#[test]
+fn force_past_the_validity_range_is_an_error() {
+    let law = normalised(Level::fit(), 0.3);
+    let f = law.force_max() * 1.01;
+    assert!(matches!(
+        law.compression_for_force(f),
+        Err(Error::ForceOutOfRange { .. })
+    ));
+    invalid("force", law.compression_for_force(-1.0));
+    invalid("force", law.compression_for_force(f64::NAN));
+}
+
+#[test]
+fn material_fit_rejects_bad_samples() {
+    let ok = Sample { delta: 1e-4, force: 1.0 };
+    let bad = Sample { delta: f64::NAN, force: 1.0 };
+    assert!(matches!(fit_material(&[ok, bad], 0.01, 0.5, 0.1), Err(Error::Fit(_))));
+    assert!(matches!(fit_material(&[ok], 0.01, 0.5, 0.1), Err(Error::Fit(_))));
+    invalid("radius", fit_material(&[ok, ok], -0.01, 0.5, 0.1));
+    invalid("poisson_ratio", fit_material(&[ok, Sample { delta: 2e-4, force: 3.0 }], 0.01, 0.7, 0.1));
+}
