@@ -104,8 +104,8 @@ fn force_past_the_validity_range_is_an_error() {
 fn material_fit_rejects_bad_samples() {
     let ok = Sample { delta: 1e-4, force: 1.0 };
     let bad = Sample { delta: f64::NAN, force: 1.0 };
-    assert!(matches!(fit_material(&[ok, bad], 0.01, 0.5, 0.1), Err(Error::Fit(_))));
-    assert!(matches!(fit_material(&[ok], 0.01, 0.5, 0.1), Err(Error::Fit(_))));
-    invalid("radius", fit_material(&[ok, ok], -0.01, 0.5, 0.1));
-    invalid("poisson_ratio", fit_material(&[ok, Sample { delta: 2e-4, force: 3.0 }], 0.01, 0.7, 0.1));
+    assert!(matches!(fit_material(&[ok, bad], 0.01, 0.5, 0.1, Level::Hertz), Err(Error::Fit(_))));
+    assert!(matches!(fit_material(&[ok], 0.01, 0.5, 0.1, Level::Hertz), Err(Error::Fit(_))));
+    invalid("radius", fit_material(&[ok, ok], -0.01, 0.5, 0.1, Level::Hertz));
+    invalid("poisson_ratio", fit_material(&[ok, Sample { delta: 2e-4, force: 3.0 }], 0.01, 0.7, 0.1, Level::Hertz));
 }
