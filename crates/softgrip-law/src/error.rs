@@ -68,6 +68,10 @@ pub(crate) fn positive(field: &'static str, value: f64, range: &'static str) -> 
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
-        Err(Error::InvalidParameter { field, value, range })
+        Err(Error::InvalidParameter {
+            field,
+            value,
+            range,
+        })
     }
 }

@@ -72,7 +72,10 @@ pub fn fit_material(
     positive("x_fit", x_fit, "finite and > 0")?;
     // The level's normalised force f(x), from a unit-modulus, unit-radius law.
     let unit = ContactLaw::try_new(
-        ContactParams::try_new(Material::try_from_effective_modulus(1.0, poisson_ratio)?, 1.0)?,
+        ContactParams::try_new(
+            Material::try_from_effective_modulus(1.0, poisson_ratio)?,
+            1.0,
+        )?,
         fit_level,
     )?;
     if let Some(s) = samples

@@ -103,7 +103,13 @@ impl Level {
 
     /// Checks the level's own settings.
     pub(crate) fn validate(&self) -> Result<()> {
-        let bad = |field, value, range| Err(Error::InvalidParameter { field, value, range });
+        let bad = |field, value, range| {
+            Err(Error::InvalidParameter {
+                field,
+                value,
+                range,
+            })
+        };
         match *self {
             Level::Linear { match_x } if !(match_x > 0.0 && match_x <= 1.0) => {
                 bad("match_x", match_x, "in (0, 1]")

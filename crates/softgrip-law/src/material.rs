@@ -147,7 +147,7 @@ impl ContactParams {
         radius2: f64,
     ) -> Result<Self> {
         for (field, r) in [("radius1", radius1), ("radius2", radius2)] {
-            if !(r > 0.0) {
+            if r.is_nan() || r <= 0.0 {
                 return Err(Error::InvalidParameter {
                     field,
                     value: r,

@@ -22,6 +22,6 @@ pub fn levels_at(nu: f64) -> Vec<ContactLaw> {
 /// `Auto` (multiples of 1/256 and 1/64).
 pub fn grid(x_max: f64, n: usize) -> Vec<f64> {
     (1..n)
-        .map(|i| x_max * (i as f64 + 0.318_309_886) / (n as f64 + 0.5))
+        .map(|i| x_max * (i as f64 + 0.293_7) / (n as f64 + 0.5))
         .collect()
 }

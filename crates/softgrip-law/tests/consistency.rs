@@ -17,7 +17,11 @@ fn stiffness_is_the_derivative_of_force() {
                 let fd = (law.response(x + h).force - law.response(x - h).force) / (2.0 * h);
                 let k = law.response(x).stiffness;
                 let err = (k - fd).abs() / k;
-                assert!(err < 1e-6, "{} nu={nu} x={x}: K={k} fd={fd} rel {err:e}", law.level());
+                assert!(
+                    err < 1e-6,
+                    "{} nu={nu} x={x}: K={k} fd={fd} rel {err:e}",
+                    law.level()
+                );
             }
         }
     }
@@ -43,7 +47,11 @@ fn energy_is_the_integral_of_force() {
                 let w = law.energy(x);
                 let q = energy_by_quadrature(&law, x);
                 // Simpson's error with 4000 panels and the kinks of `auto` is below 1e-8.
-                assert!((w / q - 1.0).abs() < 1e-8, "{} nu={nu} x={x}: W={w} quad={q}", law.level());
+                assert!(
+                    (w / q - 1.0).abs() < 1e-8,
+                    "{} nu={nu} x={x}: W={w} quad={q}",
+                    law.level()
+                );
             }
         }
     }
@@ -66,7 +74,11 @@ fn inverse_round_trip_is_accurate_to_1e_9() {
             for x in grid(law.x_max(), 40) {
                 let f = law.response(x).force;
                 let back = law.compression_for_force(f).expect("force in range");
-                assert!((back / x - 1.0).abs() < 1e-9, "{} nu={nu}: x={x} back={back}", law.level());
+                assert!(
+                    (back / x - 1.0).abs() < 1e-9,
+                    "{} nu={nu}: x={x} back={back}",
+                    law.level()
+                );
             }
             assert_eq!(law.compression_for_force(0.0), Ok(0.0));
         }
@@ -83,7 +95,11 @@ fn small_compression_tends_to_hertz() {
             let x = 1e-8;
             let chi = law.response(x).force / (4.0 / 3.0 * x.powf(1.5));
             // Levels with a finite-size term (calibrated, Tatara) deviate like c sqrt(x) <= 1e-4.
-            assert!((chi - 1.0).abs() < 2e-4, "{} nu={nu}: chi(1e-8) = {chi}", law.level());
+            assert!(
+                (chi - 1.0).abs() < 2e-4,
+                "{} nu={nu}: chi(1e-8) = {chi}",
+                law.level()
+            );
             assert!(law.response(x).stiffness > 0.0);
         }
     }
@@ -98,7 +114,8 @@ fn table_interpolation_error_is_below_1e_6() {
         let table = normalised(Level::NeoHookean, nu);
         let exact = normalised(Level::NeoHookeanExact, nu);
         assert_eq!(table.x_max(), exact.x_max());
-        let (mut ef, mut ek, mut k_max, mut er, mut ew) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
+        let (mut ef, mut ek, mut k_max, mut er, mut ew) =
+            (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
         for x in grid(exact.x_max(), 3000) {
             let (t, e) = (table.response(x), exact.response(x));
             ef = ef.max((t.force / e.force - 1.0).abs());
@@ -110,7 +127,11 @@ fn table_interpolation_error_is_below_1e_6() {
             ew = ew.max((table.energy(x) / exact.energy(x) - 1.0).abs());
         }
         assert!(ef < 1e-6, "nu={nu}: force {ef:e}");
-        assert!(ek < 3e-4 * k_max, "nu={nu}: stiffness {:e} of K_max", ek / k_max);
+        assert!(
+            ek < 3e-4 * k_max,
+            "nu={nu}: stiffness {:e} of K_max",
+            ek / k_max
+        );
         assert!(er < 1e-6, "nu={nu}: radius {er:e}");
         assert!(ew < 1e-7, "nu={nu}: energy {ew:e}");
     }
@@ -140,7 +161,10 @@ fn limit_point_of_the_compressible_theory() {
         // The validity range ends at the stiffness peak, before the limit point.
         let law = normalised(Level::NeoHookeanExact, nu);
         let x_max = law.x_max();
-        assert!(x_max < lp && x_max > lp - 0.06, "nu={nu}: x_max {x_max}, limit point {lp}");
+        assert!(
+            x_max < lp && x_max > lp - 0.06,
+            "nu={nu}: x_max {x_max}, limit point {lp}"
+        );
         let k = |x: f64| law.response(x).stiffness;
         assert!(k(x_max) >= k(x_max - 0.01) && k(x_max) >= k(x_max.min(lp) + 0.5 * (lp - x_max)));
         assert_eq!(law.response(x_max + 0.01).regime, Regime::Extended);
@@ -177,6 +201,9 @@ fn tatara_bracket_is_boussinesq_at_depth_2r() {
         let x_hertz = (0.75 * f).powf(2.0 / 3.0);
         let want = f * (3.0 - 2.0 * nu) / (4.0 * std::f64::consts::PI * (1.0 - nu));
         let got = x_hertz - x;
-        assert!((got / want - 1.0).abs() < 1e-3, "nu={nu}: {got:e} vs {want:e}");
+        assert!(
+            (got / want - 1.0).abs() < 1e-3,
+            "nu={nu}: {got:e} vs {want:e}"
+        );
     }
 }

@@ -23,9 +23,15 @@ fn invalid_materials_are_rejected() {
     invalid("poisson_ratio", Material::try_new(3e6, -1.0));
     invalid("poisson_ratio", Material::try_new(3e6, f64::NAN));
     invalid("shear_modulus", Material::try_from_shear_modulus(-1.0, 0.3));
-    invalid("effective_modulus", Material::try_from_effective_modulus(f64::NAN, 0.5));
+    invalid(
+        "effective_modulus",
+        Material::try_from_effective_modulus(f64::NAN, 0.5),
+    );
     let e = Material::try_new(-3e6, 0.3).unwrap_err();
-    assert_eq!(e.to_string(), "`youngs_modulus` must be finite and > 0 Pa, got -3000000");
+    assert_eq!(
+        e.to_string(),
+        "`youngs_modulus` must be finite and > 0 Pa, got -3000000"
+    );
 }
 
 #[test]
@@ -35,7 +41,10 @@ fn invalid_radii_are_rejected() {
     invalid("radius", ContactParams::try_new(m, 0.0));
     invalid("radius", ContactParams::try_new(m, f64::INFINITY));
     invalid("radius2", ContactParams::try_combine(m, 0.01, m, -1.0));
-    invalid("radius1", ContactParams::try_combine(m, f64::INFINITY, m, f64::INFINITY));
+    invalid(
+        "radius1",
+        ContactParams::try_combine(m, f64::INFINITY, m, f64::INFINITY),
+    );
     // A flat second body is allowed and gives the first radius.
     let p = ContactParams::try_combine(m, 0.01, m, f64::INFINITY).expect("flat");
     assert_eq!(p.radius(), 0.01);
@@ -46,8 +55,14 @@ fn invalid_level_settings_are_rejected() {
     let p = ContactParams::try_from_parts(1.0, 1.0, 0.3).expect("valid");
     invalid("k", ContactLaw::try_new(p, Level::Fit { k: -1.0 }));
     invalid("k", ContactLaw::try_new(p, Level::Fit { k: f64::NAN }));
-    invalid("tolerance", ContactLaw::try_new(p, Level::Auto { tolerance: 0.0 }));
-    invalid("match_x", ContactLaw::try_new(p, Level::Linear { match_x: 0.0 }));
+    invalid(
+        "tolerance",
+        ContactLaw::try_new(p, Level::Auto { tolerance: 0.0 }),
+    );
+    invalid(
+        "match_x",
+        ContactLaw::try_new(p, Level::Linear { match_x: 0.0 }),
+    );
 }
 
 #[test]
@@ -102,10 +117,40 @@ fn force_past_the_validity_range_is_an_error() {
 
 #[test]
 fn material_fit_rejects_bad_samples() {
-    let ok = Sample { delta: 1e-4, force: 1.0 };
-    let bad = Sample { delta: f64::NAN, force: 1.0 };
-    assert!(matches!(fit_material(&[ok, bad], 0.01, 0.5, 0.1, Level::Hertz), Err(Error::Fit(_))));
-    assert!(matches!(fit_material(&[ok], 0.01, 0.5, 0.1, Level::Hertz), Err(Error::Fit(_))));
-    invalid("radius", fit_material(&[ok, ok], -0.01, 0.5, 0.1, Level::Hertz));
-    invalid("poisson_ratio", fit_material(&[ok, Sample { delta: 2e-4, force: 3.0 }], 0.01, 0.7, 0.1, Level::Hertz));
+    let ok = Sample {
+        delta: 1e-4,
+        force: 1.0,
+    };
+    let bad = Sample {
+        delta: f64::NAN,
+        force: 1.0,
+    };
+    assert!(matches!(
+        fit_material(&[ok, bad], 0.01, 0.5, 0.1, Level::Hertz),
+        Err(Error::Fit(_))
+    ));
+    assert!(matches!(
+        fit_material(&[ok], 0.01, 0.5, 0.1, Level::Hertz),
+        Err(Error::Fit(_))
+    ));
+    invalid(
+        "radius",
+        fit_material(&[ok, ok], -0.01, 0.5, 0.1, Level::Hertz),
+    );
+    invalid(
+        "poisson_ratio",
+        fit_material(
+            &[
+                ok,
+                Sample {
+                    delta: 2e-4,
+                    force: 3.0,
+                },
+            ],
+            0.01,
+            0.7,
+            0.1,
+            Level::Hertz,
+        ),
+    );
 }

@@ -21,16 +21,13 @@ fn level_strategy() -> impl Strategy<Value = Level> {
 }
 
 fn law_strategy() -> impl Strategy<Value = ContactLaw> {
-    (
-        level_strategy(),
-        1e3f64..1e9,
-        -0.5f64..0.4999,
-        1e-6f64..1.0,
-    )
-        .prop_filter_map("level builds", |(level, e, nu, r)| {
+    (level_strategy(), 1e3f64..1e9, -0.5f64..0.4999, 1e-6f64..1.0).prop_filter_map(
+        "level builds",
+        |(level, e, nu, r)| {
             let m = Material::try_new(e, nu).ok()?;
             ContactLaw::try_new(ContactParams::try_new(m, r).ok()?, level).ok()
-        })
+        },
+    )
 }
 
 proptest! {

@@ -14,11 +14,11 @@
 
 use std::sync::Arc;
 
+use super::Normalised;
 use super::fit::Fit;
 use super::hertz::Hertz;
 use super::incompressible::Incompressible;
 use super::nh_table::NeoHookeanTable;
-use super::Normalised;
 use crate::level::{DEFAULT_FIT_K, LevelKind};
 use crate::quadrature::integrate;
 
@@ -179,7 +179,11 @@ impl Auto {
         self.segments
             .iter()
             .find(|s| x <= s.x_end)
-            .unwrap_or_else(|| self.segments.last().expect("invariant: at least one segment"))
+            .unwrap_or_else(|| {
+                self.segments
+                    .last()
+                    .expect("invariant: at least one segment")
+            })
     }
 
     /// The level that serves compression ratio `x`.

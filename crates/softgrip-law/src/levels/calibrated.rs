@@ -110,7 +110,10 @@ impl Normalised for Calibrated {
         let (chi, x_dchi) = self.chi(x);
         let s = x.sqrt();
         // f = (4/3) chi x^(3/2); df/dx = (4/3) sqrt(x) (3/2 chi + x chi')
-        (4.0 / 3.0 * chi * x * s, 4.0 / 3.0 * s * (1.5 * chi + x_dchi))
+        (
+            4.0 / 3.0 * chi * x * s,
+            4.0 / 3.0 * s * (1.5 * chi + x_dchi),
+        )
     }
 
     fn energy(&self, x: f64) -> f64 {

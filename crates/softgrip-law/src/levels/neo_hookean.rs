@@ -243,8 +243,6 @@ pub(crate) const NH_CAP: f64 = 0.9;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct NeoHookeanExact {
     pub(crate) uniaxial: Uniaxial,
-    /// Where `|T|` stops growing (capped at [`NH_CAP`]).
-    pub(crate) limit_point: f64,
     x_max: f64,
 }
 
@@ -255,7 +253,6 @@ impl NeoHookeanExact {
         let limit_point = uniaxial.limit_point(NH_CAP);
         Self {
             uniaxial,
-            limit_point,
             x_max: uniaxial.stiffness_peak(limit_point),
         }
     }

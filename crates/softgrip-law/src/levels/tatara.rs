@@ -24,7 +24,9 @@ const C34: f64 = 0.908_560_296_416_069_8;
 
 impl Tatara {
     pub(crate) fn new(nu: f64) -> Self {
-        Self { c: 2.0 / (1.0 - nu) }
+        Self {
+            c: 2.0 / (1.0 - nu),
+        }
     }
 
     /// `x` and `dx/ds` at `s = f^(1/3)`.
@@ -38,8 +40,8 @@ impl Tatara {
         let dbracket = -alpha * r3 - 3.0 * self.c * alpha * r3 * r * r;
         let f = s * s * s;
         let x = alpha * alpha - f / std::f64::consts::PI * bracket;
-        let dx = 2.0 * alpha * C34
-            - (3.0 * s * s * bracket + f * dbracket * C34) / std::f64::consts::PI;
+        let dx =
+            2.0 * alpha * C34 - (3.0 * s * s * bracket + f * dbracket * C34) / std::f64::consts::PI;
         (x, dx)
     }
 

@@ -1,0 +1,252 @@
+//! `softgrip bench-law`: the speed-vs-error table of every level of the law, against the FE
+//! reference, and its two figures.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Duration;
+
+use anyhow::{Context, Result};
+use softgrip_law::{ContactLaw, ContactParams, Level};
+
+use crate::accuracy::{MaxError, Quantity, max_error};
+use crate::fe::{Dataset, FeCurve};
+use crate::plot::{ForcePanel, SpeedPoint, draw_force_vs_x, draw_speed_vs_error};
+use crate::timing::{ns_per_eval, sample_points};
+
+/// Poisson ratios of the FE reference.
+const NUS: [f64; 2] = [0.3, 0.49];
+/// Range of the first force-error column, where the paper's claims are made.
+const FORCE_RANGE: (f64, f64) = (0.01, 0.5);
+/// Range of the radius-error column (the FE radius scatters by +-10 % below x = 0.05).
+const RADIUS_RANGE: (f64, f64) = (0.1, 0.5);
+/// File names of the figures.
+const FORCE_FIGURE: &str = "law_force_vs_x.png";
+const SPEED_FIGURE: &str = "law_speed_vs_error.png";
+
+/// Arguments of `softgrip bench-law`.
+#[derive(Debug, clap::Args)]
+pub struct BenchLawArgs {
+    /// Folder for the figures law_force_vs_x.png and law_speed_vs_error.png (created if needed).
+    #[arg(long, value_name = "DIR", default_value = "docs/figures")]
+    out: PathBuf,
+    /// Time each level for ~2 ms instead of ~50 ms (for tests; the numbers are noisier).
+    #[arg(long)]
+    quick: bool,
+}
+
+/// One level at one Poisson ratio.
+#[derive(Debug)]
+struct Row {
+    level: Level,
+    law: ContactLaw,
+    ns_response: f64,
+    ns_patch: f64,
+    force_paper_range: Option<MaxError>,
+    force_fe_range: Option<MaxError>,
+    radius: Option<MaxError>,
+}
+
+/// Everything measured at one Poisson ratio.
+#[derive(Debug)]
+struct Panel {
+    nu: f64,
+    fe: FeCurve,
+    /// FE points past `fe`'s range (nu = 0.3: the volume collapse, x > 0.61).
+    fe_beyond: Vec<crate::fe::FePoint>,
+    rows: Vec<Row>,
+    /// Levels that cannot be built at this nu, with the reason.
+    unavailable: Vec<(Level, String)>,
+}
+
+/// Measures, prints the table on stdout and writes the figures.
+pub fn run(args: &BenchLawArgs) -> Result<()> {
+    let budget = Duration::from_millis(if args.quick { 2 } else { 50 });
+    let panels = NUS
+        .iter()
+        .map(|&nu| measure(nu, budget))
+        .collect::<Result<Vec<_>>>()?;
+    print!("{}", table(&panels, budget));
+
+    std::fs::create_dir_all(&args.out)
+        .with_context(|| format!("cannot create {}", args.out.display()))?;
+    let force_panels: Vec<ForcePanel<'_>> = panels
+        .iter()
+        .map(|p| ForcePanel {
+            nu: p.nu,
+            laws: p.rows.iter().map(|r| (r.level.name(), &r.law)).collect(),
+            fe: &p.fe.points,
+            fe_beyond: &p.fe_beyond,
+        })
+        .collect();
+    let force_path = args.out.join(FORCE_FIGURE);
+    draw_force_vs_x(&force_path, &force_panels)?;
+    let speed: Vec<SpeedPoint> = panels
+        .iter()
+        .flat_map(|p| {
+            p.rows.iter().filter_map(|r| {
+                Some(SpeedPoint {
+                    label: r.level.name().to_owned(),
+                    nu: p.nu,
+                    ns_per_eval: r.ns_response,
+                    force_error_pct: 100.0 * r.force_paper_range?.max_abs,
+                })
+            })
+        })
+        .collect();
+    let speed_path = args.out.join(SPEED_FIGURE);
+    draw_speed_vs_error(
+        &speed_path,
+        &speed,
+        "time per evaluation of force and stiffness  [ns]",
+    )?;
+    eprintln!(
+        "wrote {} and {}",
+        force_path.display(),
+        speed_path.display()
+    );
+    Ok(())
+}
+
+fn measure(nu: f64, budget: Duration) -> Result<Panel> {
+    let dataset = Dataset::force_at(nu).context("no FE reference at this nu")?;
+    let fe = dataset.load()?;
+    let fe_end = fe.points.last().map_or(0.0, |p| p.x);
+    let fe_beyond = if dataset == Dataset::ForceNu03 {
+        let full = Dataset::FullNu03.load()?;
+        full.points.into_iter().filter(|p| p.x > fe_end).collect()
+    } else {
+        Vec::new()
+    };
+    let params = ContactParams::try_from_parts(1.0, 1.0, nu)?;
+    let mut rows = Vec::new();
+    let mut unavailable = Vec::new();
+    for level in Level::ALL {
+        let law = match ContactLaw::try_new(params, level) {
+            Ok(law) => law,
+            Err(e) => {
+                unavailable.push((level, e.to_string()));
+                continue;
+            }
+        };
+        let xs = sample_points(law.x_max());
+        let ns_response = ns_per_eval(&xs, budget, |x| {
+            let r = law.response(x);
+            r.force + r.stiffness
+        });
+        let ns_patch = ns_per_eval(&xs, budget, |x| {
+            let r = law.response(x);
+            let p = law.patch(x);
+            r.force + r.stiffness + p.radius + p.mean_pressure
+        });
+        let (f_lo, f_hi) = FORCE_RANGE;
+        let (a_lo, a_hi) = RADIUS_RANGE;
+        rows.push(Row {
+            level,
+            ns_response,
+            ns_patch,
+            force_paper_range: max_error(&law, &fe.points, Quantity::Force, f_lo, f_hi),
+            force_fe_range: max_error(&law, &fe.points, Quantity::Force, 0.0, f64::INFINITY),
+            radius: max_error(&law, &fe.points, Quantity::Radius, a_lo, a_hi),
+            law,
+        });
+    }
+    Ok(Panel {
+        nu,
+        fe,
+        fe_beyond,
+        rows,
+        unavailable,
+    })
+}
+
+/// The markdown table, one section per Poisson ratio.
+fn table(panels: &[Panel], budget: Duration) -> String {
+    let mut s = String::new();
+    let build = if cfg!(debug_assertions) {
+        "a debug build (times are not representative: use `cargo run --release -p softgrip-cli -- bench-law`)"
+    } else {
+        "an optimised build"
+    };
+    // Writing to a String cannot fail.
+    let _ = writeln!(
+        s,
+        "Speed vs error of the contact law levels. Times: best of 5 runs over {:?} in total per \
+         cell, 1024 fixed pseudo-random x in (0, x_max), {build}. Errors: max |law - FE| / FE over \
+         the FE points (tests/data/fe/, CalculiX, compressible neo-Hookean), only where \
+         x <= x_max of the level.\n",
+        budget
+    );
+    for p in panels {
+        let fe_range = range_of(&p.fe.points);
+        let _ = writeln!(
+            s,
+            "### nu = {} (FE: {}, x = {:.2}..{:.2})\n",
+            p.nu,
+            p.fe.dataset.file_name(),
+            fe_range.0,
+            fe_range.1
+        );
+        let _ = writeln!(
+            s,
+            "| level | x_max | ns/eval F, K | ns/eval F, K, a, p | F error, 0.01 <= x <= 0.5 \
+             | F error, FE range in x_max | that range | a error, 0.1 <= x <= 0.5 |"
+        );
+        let _ = writeln!(s, "|---|---:|---:|---:|---:|---:|---|---:|");
+        for r in &p.rows {
+            let range = r.force_fe_range.map_or("-".to_owned(), |m| {
+                format!("{:.2}..{:.2}", m.x_range.0, m.x_range.1)
+            });
+            let _ = writeln!(
+                s,
+                "| {} | {:.3} | {} | {} | {} | {} | {} | {} |",
+                r.level.name(),
+                r.law.x_max(),
+                ns(r.ns_response),
+                ns(r.ns_patch),
+                percent_within(r.force_paper_range, FORCE_RANGE.1),
+                percent_within(r.force_fe_range, f64::INFINITY),
+                range,
+                percent_within(r.radius, RADIUS_RANGE.1),
+            );
+        }
+        for (level, why) in &p.unavailable {
+            let _ = writeln!(s, "| {} | not available: {why} |||||||", level.name());
+        }
+        s.push('\n');
+    }
+    s
+}
+
+fn range_of(points: &[crate::fe::FePoint]) -> (f64, f64) {
+    let first = points.first().map_or(0.0, |p| p.x);
+    let last = points.last().map_or(0.0, |p| p.x);
+    (first, last)
+}
+
+fn ns(v: f64) -> String {
+    if v < 100.0 {
+        format!("{v:.1}")
+    } else {
+        format!("{v:.0}")
+    }
+}
+
+/// The error in percent, noting when the level's range stopped short of `x_end`.
+fn percent_within(m: Option<MaxError>, x_end: f64) -> String {
+    match m {
+        None => "-".to_owned(),
+        Some(m) => {
+            let pct = 100.0 * m.max_abs;
+            let value = if pct < 10.0 {
+                format!("{pct:.2} %")
+            } else {
+                format!("{pct:.1} %")
+            };
+            if x_end.is_finite() && m.x_range.1 < x_end - 1e-9 {
+                format!("{value} (x <= {:.2})", m.x_range.1)
+            } else {
+                value
+            }
+        }
+    }
+}

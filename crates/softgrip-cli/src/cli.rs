@@ -1,0 +1,67 @@
+//! The command line: one binary, one subcommand per task.
+
+use clap::error::ErrorKind;
+use clap::{Parser, Subcommand};
+
+use crate::bench_law::BenchLawArgs;
+use crate::curve::CurveArgs;
+
+/// Soft-fingertip contact: the law's curves, its speed-vs-error table and figures.
+#[derive(Debug, Parser)]
+#[command(name = "softgrip", version, about)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Print one level of the law over a range of compression ratios, as CSV.
+    Curve(CurveArgs),
+    /// Print the speed-vs-error table of every level and draw its figures.
+    BenchLaw(BenchLawArgs),
+}
+
+/// Parses the command line. Help and version are printed as clap prints them; a usage error
+/// is printed as one line on stderr (clap's first paragraph, joined) with exit code 2.
+pub fn parse() -> Cli {
+    match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => match e.kind() {
+            ErrorKind::DisplayHelp
+            | ErrorKind::DisplayVersion
+            | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => e.exit(),
+            _ => {
+                eprintln!("{}", one_line(&e.render().to_string()));
+                std::process::exit(e.exit_code());
+            }
+        },
+    }
+}
+
+/// The first paragraph of a clap message (up to the first blank line), on one line.
+fn one_line(message: &str) -> String {
+    message
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_line_keeps_the_first_paragraph() {
+        let m =
+            "error: the following required arguments were not provided:\n  --x <X>\n\nUsage: x\n";
+        assert_eq!(
+            one_line(m),
+            "error: the following required arguments were not provided: --x <X>"
+        );
+    }
+}

@@ -1,0 +1,72 @@
+//! `softgrip bench-law --quick`: the table names every level and the figures are written.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+const LEVELS: [&str; 9] = [
+    "linear",
+    "hertz",
+    "fit",
+    "incompressible",
+    "neo-hookean",
+    "neo-hookean-exact",
+    "tatara",
+    "calibrated",
+    "auto",
+];
+
+/// The table's cells for `level` in the section of `nu`.
+fn cells<'a>(table: &'a str, nu: &str, level: &str) -> Vec<&'a str> {
+    let section = table
+        .split("### ")
+        .find(|s| s.starts_with(&format!("nu = {nu} ")))
+        .unwrap_or_else(|| panic!("no section for nu = {nu}"));
+    let row = section
+        .lines()
+        .find(|l| l.starts_with(&format!("| {level} |")))
+        .unwrap_or_else(|| panic!("no row for {level} at nu = {nu}"));
+    row.trim_matches('|').split('|').map(str::trim).collect()
+}
+
+fn percent(cell: &str) -> f64 {
+    cell.split(" %")
+        .next()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("not a percentage: {cell}"))
+}
+
+#[test]
+fn quick_run_prints_every_level_and_writes_two_pngs() {
+    let out_dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("bench_law_quick");
+    let _ = std::fs::remove_dir_all(&out_dir);
+    let out = Command::new(env!("CARGO_BIN_EXE_softgrip"))
+        .args(["bench-law", "--quick", "--out"])
+        .arg(&out_dir)
+        .output()
+        .expect("the softgrip binary runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "bench-law failed: {stderr}");
+    let table = String::from_utf8(out.stdout).expect("UTF-8 output");
+
+    for nu in ["0.3", "0.49"] {
+        for level in LEVELS {
+            let c = cells(&table, nu, level);
+            assert_eq!(c.len(), 8, "{c:?}");
+            // Times are positive numbers (their size is not tested).
+            for ns in &c[2..4] {
+                let v: f64 = ns.parse().unwrap_or_else(|_| panic!("not a time: {ns}"));
+                assert!(v > 0.0, "{level}: {ns}");
+            }
+        }
+        // The paper's claims, read from the table: Eq. 38 within 5 % of FE on 0.01..0.5,
+        // Hertz more than 50 % off (FE is more than twice Hertz at x = 0.5).
+        assert!(percent(cells(&table, nu, "fit")[4]) < 5.0, "{table}");
+        assert!(percent(cells(&table, nu, "hertz")[4]) > 50.0, "{table}");
+    }
+
+    for name in ["law_force_vs_x.png", "law_speed_vs_error.png"] {
+        let bytes = std::fs::read(out_dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(bytes.len() > 10_000, "{name} is only {} bytes", bytes.len());
+        assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "{name} is not a PNG");
+    }
+}
