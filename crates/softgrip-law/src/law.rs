@@ -91,18 +91,20 @@ impl Curve {
         }
     }
 
+    /// Normalised force and stiffness inside the range, with the level that computed them.
     #[inline]
-    fn force_stiffness(&self, x: f64) -> (f64, f64) {
+    fn force_stiffness(&self, x: f64) -> (f64, f64, LevelKind) {
+        let with = |(f, k): (f64, f64), kind| (f, k, kind);
         match self {
-            Curve::Linear(c) => c.force_stiffness(x),
-            Curve::Hertz(c) => c.force_stiffness(x),
-            Curve::Fit(c) => c.force_stiffness(x),
-            Curve::Incompressible(c) => c.force_stiffness(x),
-            Curve::NeoHookean(c) => c.force_stiffness(x),
-            Curve::NeoHookeanExact(c) => c.force_stiffness(x),
-            Curve::Tatara(c) => c.force_stiffness(x),
-            Curve::Calibrated(c) => c.force_stiffness(x),
-            Curve::Auto(c) => c.force_stiffness(x),
+            Curve::Linear(c) => with(c.force_stiffness(x), LevelKind::Linear),
+            Curve::Hertz(c) => with(c.force_stiffness(x), LevelKind::Hertz),
+            Curve::Fit(c) => with(c.force_stiffness(x), LevelKind::Fit),
+            Curve::Incompressible(c) => with(c.force_stiffness(x), LevelKind::Incompressible),
+            Curve::NeoHookean(c) => with(c.force_stiffness(x), LevelKind::NeoHookean),
+            Curve::NeoHookeanExact(c) => with(c.force_stiffness(x), LevelKind::NeoHookeanExact),
+            Curve::Tatara(c) => with(c.force_stiffness(x), LevelKind::Tatara),
+            Curve::Calibrated(c) => with(c.force_stiffness(x), LevelKind::Calibrated),
+            Curve::Auto(c) => c.force_stiffness_kind(x),
         }
     }
 }
@@ -282,46 +284,37 @@ impl ContactLaw {
     #[inline]
     pub fn response(&self, delta: f64) -> NormalResponse {
         let x = delta * self.inv_radius;
+        // NaN fails both comparisons and goes to the cold path.
+        if x > 0.0 && x <= self.edge.x {
+            let (f, k, level) = self.curve.force_stiffness(x);
+            return NormalResponse {
+                force: f * self.force_scale,
+                stiffness: k * self.stiffness_scale,
+                regime: Regime::Valid,
+                level,
+            };
+        }
+        self.response_outside(x)
+    }
+
+    /// Separated, extended or non-finite: off the hot path.
+    #[cold]
+    fn response_outside(&self, x: f64) -> NormalResponse {
+        let e = &self.edge;
         let (f, k, regime) = if !x.is_finite() {
             (0.0, 0.0, Regime::NonFinite)
         } else if x <= 0.0 {
             (0.0, 0.0, Regime::Separated)
-        } else if x <= self.edge.x {
-            let (f, k) = self.curve.force_stiffness(x);
-            (f, k, Regime::Valid)
         } else if x <= X_FROZEN {
-            let e = &self.edge;
             (e.f + e.k * (x - e.x), e.k, Regime::Extended)
         } else {
-            let e = &self.edge;
             (e.f + e.k * (X_FROZEN - e.x), 0.0, Regime::Extended)
         };
         NormalResponse {
             force: f * self.force_scale,
             stiffness: k * self.stiffness_scale,
             regime,
-            level: self.kind_at_fast(x),
-        }
-    }
-
-    #[inline]
-    fn kind_at_fast(&self, x: f64) -> LevelKind {
-        match &self.curve {
-            Curve::Linear(_) => LevelKind::Linear,
-            Curve::Hertz(_) => LevelKind::Hertz,
-            Curve::Fit(_) => LevelKind::Fit,
-            Curve::Incompressible(_) => LevelKind::Incompressible,
-            Curve::NeoHookean(_) => LevelKind::NeoHookean,
-            Curve::NeoHookeanExact(_) => LevelKind::NeoHookeanExact,
-            Curve::Tatara(_) => LevelKind::Tatara,
-            Curve::Calibrated(_) => LevelKind::Calibrated,
-            Curve::Auto(a) => {
-                if x.is_finite() {
-                    a.kind_at(x.clamp(0.0, self.edge.x))
-                } else {
-                    LevelKind::NeoHookean
-                }
-            }
+            level: self.kind_at(if x.is_finite() { x } else { 0.0 }),
         }
     }
 
@@ -364,6 +357,7 @@ impl ContactLaw {
     pub fn evaluate(&self, delta: f64) -> Result<ContactState> {
         let x = self.checked_x(delta)?;
         let r = self.response(delta);
+        debug_assert!(r.regime == Regime::Valid || r.regime == Regime::Separated);
         Ok(ContactState {
             delta,
             x,
@@ -437,7 +431,7 @@ impl ContactLaw {
                 let (mut lo, mut hi) = (0.0, self.edge.x);
                 let mut x = (0.75 * f_target).powf(2.0 / 3.0).min(hi);
                 for _ in 0..200 {
-                    let (f, k) = curve.force_stiffness(x);
+                    let (f, k, _) = curve.force_stiffness(x);
                     if f < f_target {
                         lo = x;
                     } else {

@@ -217,13 +217,22 @@ impl Segment {
     }
 }
 
-impl Normalised for Auto {
+impl Auto {
+    /// Force, stiffness and the level that served them, in one segment lookup.
     #[inline]
-    fn force_stiffness(&self, x: f64) -> (f64, f64) {
+    pub(crate) fn force_stiffness_kind(&self, x: f64) -> (f64, f64, LevelKind) {
         let s = self.segment(x);
         let (f, k) = s.candidate.force_stiffness(x);
         let phi = s.a + s.b * x;
-        (f * phi, k * phi + f * s.b)
+        (f * phi, k * phi + f * s.b, s.candidate.kind())
+    }
+}
+
+impl Normalised for Auto {
+    #[inline]
+    fn force_stiffness(&self, x: f64) -> (f64, f64) {
+        let (f, k, _) = self.force_stiffness_kind(x);
+        (f, k)
     }
 
     fn energy(&self, x: f64) -> f64 {

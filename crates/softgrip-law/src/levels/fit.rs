@@ -35,6 +35,7 @@ impl Fit {
 }
 
 impl Normalised for Fit {
+    #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let d = 1.0 / (1.0 - self.k * x);
         // chi = 1/(1 - kx), chi' = k/(1 - kx)^2

@@ -8,6 +8,7 @@ use super::Normalised;
 pub(crate) struct Hertz;
 
 impl Normalised for Hertz {
+    #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         super::hertz(x)
     }

@@ -24,6 +24,7 @@ pub(crate) fn radius_ic(x: f64) -> f64 {
 }
 
 impl Normalised for Incompressible {
+    #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let (chi, dchi) = chi_ic(x);
         scale_by_chi(x, chi, dchi)

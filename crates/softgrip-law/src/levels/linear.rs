@@ -19,6 +19,7 @@ impl Linear {
 }
 
 impl Normalised for Linear {
+    #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         (self.rate * x, self.rate)
     }

@@ -259,6 +259,7 @@ impl NeoHookeanExact {
 }
 
 impl Normalised for NeoHookeanExact {
+    #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let (chi, dchi) = self.uniaxial.chi(x);
         scale_by_chi(x, chi, dchi)

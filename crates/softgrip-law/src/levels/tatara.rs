@@ -85,6 +85,7 @@ impl Tatara {
 }
 
 impl Normalised for Tatara {
+    #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let s = self.s_of_x(x);
         if s == 0.0 {
