@@ -1,0 +1,31 @@
+//! [`SoftCounters`]: what the plugin did, to explain a slow or odd step.
+
+use std::time::Duration;
+
+/// Diagnostics of the plugin (rapier's own timers need its `profiler` feature; these use
+/// `std::time::Instant` and are always on).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SoftCounters {
+    /// Steps taken.
+    pub steps: u64,
+    /// Soft contacts evaluated (one per contact per substep), total.
+    pub contacts_evaluated: u64,
+    /// Substeps of the last step (1 = not split).
+    pub substeps_last: u32,
+    /// Substeps taken, total over all steps.
+    pub substeps_total: u64,
+    /// Steps whose substep count hit the cap.
+    pub substep_cap_hits: u64,
+    /// Contact evaluations past the law's validity range (`Regime::Extended`).
+    pub validity_excursions: u64,
+    /// Contacts skipped because a pose, velocity, distance or impulse was not finite.
+    pub non_finite: u64,
+    /// Candidate pairs that parry could not compute (unsupported shape pair).
+    pub unsupported_pairs: u64,
+    /// Time spent in soft contact detection.
+    pub detect_time: Duration,
+    /// Time spent in the impulse solve.
+    pub solve_time: Duration,
+    /// Time spent in rapier's pipeline.
+    pub pipeline_time: Duration,
+}

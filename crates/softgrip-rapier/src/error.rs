@@ -1,0 +1,51 @@
+//! The one error type of `softgrip-rapier`: raised at construction and registration, never in
+//! the step.
+
+use rapier3d::prelude::ColliderHandle;
+
+/// Everything that can go wrong when building a fingertip or registering it with rapier.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Error {
+    /// A fingertip parameter is outside its valid range.
+    #[error("`{field}` must be {range}, got {value}")]
+    InvalidParameter {
+        /// Name of the offending field.
+        field: &'static str,
+        /// The value that was passed.
+        value: f64,
+        /// The valid range, with its unit.
+        range: &'static str,
+    },
+    /// The builder was given neither a material nor a preset.
+    #[error("a fingertip needs a material: call `.material(..)` or `.preset(..)`")]
+    MissingMaterial,
+    /// The contact law rejected the material, radius or level.
+    #[error("contact law: {0}")]
+    Law(#[from] softgrip_law::Error),
+    /// The collider handle is not in the collider set.
+    #[error("collider {0:?} is not in the collider set")]
+    UnknownCollider(ColliderHandle),
+    /// Only ball colliders can be soft fingertips.
+    #[error("collider {handle:?} has shape {shape}: a soft fingertip must be a ball collider")]
+    NotABall {
+        /// The collider that was passed.
+        handle: ColliderHandle,
+        /// Its shape type, as rapier names it.
+        shape: String,
+    },
+    /// The collider's ball radius differs from the fingertip's radius.
+    #[error(
+        "collider {handle:?} is a ball of radius {collider_radius} m, the fingertip has radius {fingertip_radius} m (they must agree to 1e-5 relative)"
+    )]
+    RadiusMismatch {
+        /// The collider that was passed.
+        handle: ColliderHandle,
+        /// Radius of the collider's ball [m].
+        collider_radius: f64,
+        /// Radius of the fingertip [m].
+        fingertip_radius: f64,
+    },
+}
+
+/// `Result` with this crate's [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;

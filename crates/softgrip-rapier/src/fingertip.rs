@@ -1,0 +1,238 @@
+//! [`SoftFingertip`]: the validated parameters of one soft fingertip, and its builder.
+
+use softgrip_law::{ContactLaw, ContactParams, Level, Material};
+
+use crate::error::{Error, Result};
+use crate::presets::Preset;
+
+/// Default coefficient of restitution e [-] (see [`SoftFingertipBuilder::restitution`]).
+pub const DEFAULT_RESTITUTION: f64 = 0.5;
+/// Default Coulomb friction coefficient mu_f [-]: silicone on dry rigid surfaces is 0.5 to
+/// above 1; 0.8 is a middle value.
+pub const DEFAULT_FRICTION: f64 = 0.8;
+
+/// A soft spherical fingertip: radius, material, law level, restitution and friction.
+///
+/// Validated once by [`SoftFingertipBuilder::build`]; the fields are private, so an invalid
+/// fingertip cannot exist. It carries its [`ContactLaw`] (for contacts with rigid bodies).
+///
+/// ```
+/// use softgrip_rapier::{Preset, SoftFingertip};
+/// let tip = SoftFingertip::builder(0.01).preset(Preset::DragonSkin30).build().unwrap();
+/// assert_eq!(tip.radius(), 0.01);
+/// assert_eq!(tip.restitution(), 0.5);
+/// assert!(SoftFingertip::builder(-0.01).preset(Preset::DragonSkin30).build().is_err());
+/// ```
+#[derive(Debug, Clone)]
+pub struct SoftFingertip {
+    name: String,
+    radius: f64,
+    material: Material,
+    level: Level,
+    restitution: f64,
+    friction: f64,
+    law: ContactLaw,
+    damping_zeta: f64,
+}
+
+impl SoftFingertip {
+    /// Starts a builder for a fingertip of radius `radius` R [m] (finite, > 0).
+    pub fn builder(radius: f64) -> SoftFingertipBuilder {
+        SoftFingertipBuilder {
+            name: String::from("fingertip"),
+            radius,
+            material: None,
+            level: Level::auto(),
+            restitution: DEFAULT_RESTITUTION,
+            friction: DEFAULT_FRICTION,
+        }
+    }
+
+    /// The fingertip's name (for readouts and logs).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Radius R [m].
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// The elastic material.
+    pub fn material(&self) -> Material {
+        self.material
+    }
+
+    /// The level of the law.
+    pub fn level(&self) -> Level {
+        self.level
+    }
+
+    /// Coefficient of restitution e [-], in (0, 1].
+    pub fn restitution(&self) -> f64 {
+        self.restitution
+    }
+
+    /// Coulomb friction coefficient mu_f [-], >= 0.
+    pub fn friction(&self) -> f64 {
+        self.friction
+    }
+
+    /// The contact law against a rigid body.
+    pub fn law(&self) -> &ContactLaw {
+        &self.law
+    }
+
+    /// Hunt-Crossley damping `zeta = chi v_in` [-] that gives this restitution (see
+    /// [`hunt_crossley_zeta`]).
+    pub fn damping_zeta(&self) -> f64 {
+        self.damping_zeta
+    }
+}
+
+/// The dimensionless Hunt-Crossley damping `zeta = chi v_in` for which a Hertz impact
+/// `m x'' = -k x^(3/2) (1 + chi x')` rebounds with restitution `e` (0 for e >= 1).
+///
+/// For a power-law force the rebound ratio depends on `chi v_in` alone, so it is found once,
+/// by bisection on the normalised impact `x'' = -x^(3/2) (1 + zeta x')`, `x(0) = 0`,
+/// `x'(0) = 1` (RK4). Flores et al. (2011)'s closed form `zeta = 8 (1 - e) / (5 e)` is an
+/// approximation of this root: at e = 0.5 it gives a rebound of 0.466 instead of 0.5.
+///
+/// ```
+/// use softgrip_rapier::hunt_crossley_zeta;
+/// assert_eq!(hunt_crossley_zeta(1.0), 0.0);
+/// let z = hunt_crossley_zeta(0.5);
+/// assert!(z > 0.0 && z < 8.0 * 0.5 / (5.0 * 0.5)); // less damping than Flores' closed form
+/// ```
+pub fn hunt_crossley_zeta(e: f64) -> f64 {
+    if !(e < 1.0) {
+        return 0.0;
+    }
+    let e = e.max(1e-3);
+    let rebound = |zeta: f64| -> f64 {
+        let acc = |x: f64, v: f64| -x.max(0.0).powf(1.5) * (1.0 + zeta * v);
+        let (mut x, mut v, h) = (0.0f64, 1.0f64, 2e-3);
+        for _ in 0..200_000 {
+            let (k1x, k1v) = (v, acc(x, v));
+            let (k2x, k2v) = (v + 0.5 * h * k1v, acc(x + 0.5 * h * k1x, v + 0.5 * h * k1v));
+            let (k3x, k3v) = (v + 0.5 * h * k2v, acc(x + 0.5 * h * k2x, v + 0.5 * h * k2v));
+            let (k4x, k4v) = (v + h * k3v, acc(x + h * k3x, v + h * k3v));
+            let (xn, vn) = (
+                x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x),
+                v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v),
+            );
+            if xn <= 0.0 {
+                // Linear interpolation of the exit velocity at x = 0.
+                let s = x / (x - xn);
+                return -(v + s * (vn - v));
+            }
+            if vn <= 0.0 && xn < 1e-12 {
+                return 0.0;
+            }
+            x = xn;
+            v = vn;
+        }
+        0.0
+    };
+    // e decreases with zeta; bracket with Flores' closed form doubled.
+    let (mut lo, mut hi) = (0.0, 2.0 * 8.0 * (1.0 - e) / (5.0 * e) + 1.0);
+    for _ in 0..48 {
+        let mid = 0.5 * (lo + hi);
+        if rebound(mid) > e {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// Builder of a [`SoftFingertip`] (rapier's builder style).
+#[derive(Debug, Clone)]
+pub struct SoftFingertipBuilder {
+    name: String,
+    radius: f64,
+    material: Option<Material>,
+    level: Level,
+    restitution: f64,
+    friction: f64,
+}
+
+impl SoftFingertipBuilder {
+    /// The elastic material (validated by `softgrip_law::Material::try_new`).
+    pub fn material(mut self, material: Material) -> Self {
+        self.material = Some(material);
+        self
+    }
+
+    /// A literature material (see [`Preset`]).
+    pub fn preset(mut self, preset: Preset) -> Self {
+        self.material = Some(preset.material());
+        self
+    }
+
+    /// The level of the law; default `Level::auto()`.
+    pub fn level(mut self, level: Level) -> Self {
+        self.level = level;
+        self
+    }
+
+    /// Coefficient of restitution e [-], in (0, 1]; default 0.5 (a soft silicone fingertip
+    /// hitting a rigid object at ~1 m/s loses roughly half of its rebound speed).
+    /// e = 1 is purely elastic. The dissipation is Hunt-Crossley's `F (1 + chi d delta/dt)`
+    /// with `chi = zeta / v_in` ([`hunt_crossley_zeta`]), which reproduces e for a Hertz-like
+    /// impact at any impact speed `v_in`.
+    pub fn restitution(mut self, restitution: f64) -> Self {
+        self.restitution = restitution;
+        self
+    }
+
+    /// Coulomb friction coefficient mu_f [-], finite and >= 0; default 0.8.
+    pub fn friction(mut self, friction: f64) -> Self {
+        self.friction = friction;
+        self
+    }
+
+    /// A name for readouts.
+    pub fn name(mut self, name: impl Into<String>) -> Self {
+        self.name = name.into();
+        self
+    }
+
+    /// Validates everything and binds the law.
+    pub fn build(self) -> Result<SoftFingertip> {
+        if !(self.radius.is_finite() && self.radius > 0.0) {
+            return Err(Error::InvalidParameter {
+                field: "radius",
+                value: self.radius,
+                range: "finite and > 0 m",
+            });
+        }
+        if !(self.restitution > 0.0 && self.restitution <= 1.0) {
+            return Err(Error::InvalidParameter {
+                field: "restitution",
+                value: self.restitution,
+                range: "in (0, 1]",
+            });
+        }
+        if !(self.friction.is_finite() && self.friction >= 0.0) {
+            return Err(Error::InvalidParameter {
+                field: "friction",
+                value: self.friction,
+                range: "finite and >= 0",
+            });
+        }
+        let material = self.material.ok_or(Error::MissingMaterial)?;
+        let law = ContactLaw::try_new(ContactParams::try_new(material, self.radius)?, self.level)?;
+        Ok(SoftFingertip {
+            name: self.name,
+            radius: self.radius,
+            material,
+            level: self.level,
+            restitution: self.restitution,
+            friction: self.friction,
+            law,
+            damping_zeta: hunt_crossley_zeta(self.restitution),
+        })
+    }
+}

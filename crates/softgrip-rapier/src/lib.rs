@@ -1,0 +1,32 @@
+#![doc = include_str!("../README.md")]
+// `!(x > 0.0)` is used on purpose: it is true for NaN, which must be rejected too.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+mod contacts;
+mod counters;
+mod detect;
+mod error;
+mod fingertip;
+mod hooks;
+mod presets;
+mod readout;
+mod solve;
+mod substep;
+mod world;
+
+pub use contacts::SoftContacts;
+pub use counters::SoftCounters;
+pub use detect::compression_from_signed_distance;
+pub use error::{Error, Result};
+pub use fingertip::{
+    DEFAULT_FRICTION, DEFAULT_RESTITUTION, SoftFingertip, SoftFingertipBuilder, hunt_crossley_zeta,
+};
+pub use hooks::SoftHooks;
+pub use presets::Preset;
+pub use readout::SoftContact;
+pub use substep::{AMPLITUDE_FRACTION, MAX_SUBSTEPS, SoftAccuracy};
+pub use world::SoftWorld;
+
+/// Re-exports of the crates the API uses.
+pub use rapier3d;
+pub use softgrip_law;
