@@ -1,0 +1,59 @@
+//! [`Message`]: a recorded message decoded to its Rust type, chosen by its schema name.
+
+use crate::cdr::CdrError;
+use crate::message::RosMessage;
+use crate::msgs::geometry_msgs::WrenchStamped;
+use crate::msgs::rosgraph_msgs::Clock;
+use crate::msgs::softgrip_msgs::SoftContactArray;
+use crate::msgs::tf2_msgs::TFMessage;
+use crate::msgs::visualization_msgs::MarkerArray;
+
+/// A decoded message of one of the types softgrip records.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Message {
+    /// `softgrip_msgs/msg/SoftContactArray`.
+    Contacts(SoftContactArray),
+    /// `geometry_msgs/msg/WrenchStamped`.
+    Wrench(WrenchStamped),
+    /// `tf2_msgs/msg/TFMessage`.
+    Tf(TFMessage),
+    /// `visualization_msgs/msg/MarkerArray`.
+    Markers(MarkerArray),
+    /// `rosgraph_msgs/msg/Clock`.
+    Clock(Clock),
+    /// Any other schema or encoding: kept as bytes.
+    Other {
+        /// Schema name (empty without a schema).
+        schema_name: String,
+        /// The message bytes.
+        data: Vec<u8>,
+    },
+}
+
+impl Message {
+    /// Decodes `data` by its schema name when the encoding is `cdr`.
+    pub fn decode(
+        schema_name: &str,
+        message_encoding: &str,
+        data: &[u8],
+    ) -> Result<Self, CdrError> {
+        if message_encoding != "cdr" {
+            return Ok(Self::other(schema_name, data));
+        }
+        Ok(match schema_name {
+            SoftContactArray::TYPE_NAME => Self::Contacts(SoftContactArray::from_cdr(data)?),
+            WrenchStamped::TYPE_NAME => Self::Wrench(WrenchStamped::from_cdr(data)?),
+            TFMessage::TYPE_NAME => Self::Tf(TFMessage::from_cdr(data)?),
+            MarkerArray::TYPE_NAME => Self::Markers(MarkerArray::from_cdr(data)?),
+            Clock::TYPE_NAME => Self::Clock(Clock::from_cdr(data)?),
+            _ => Self::other(schema_name, data),
+        })
+    }
+
+    fn other(schema_name: &str, data: &[u8]) -> Self {
+        Self::Other {
+            schema_name: schema_name.to_owned(),
+            data: data.to_vec(),
+        }
+    }
+}

@@ -1,0 +1,116 @@
+//! `softgrip_msgs` (the interface package in `ros2/softgrip_msgs/`): [`SoftContact`] and
+//! [`SoftContactArray`].
+
+use softgrip_law::{LevelKind, Regime};
+
+use super::geometry_msgs::{Point, Vector3};
+use super::std_msgs::Header;
+use crate::message::ros_message;
+
+ros_message! {
+    /// One soft fingertip contact over a step. Fields, units and conventions are those of
+    /// `ros2/softgrip_msgs/msg/SoftContact.msg`, which is embedded verbatim as the schema.
+    #[derive(Debug, Clone, PartialEq, Default)]
+    pub struct SoftContact {
+        name = "softgrip_msgs/msg/SoftContact", file = "../../ros2/softgrip_msgs/msg/SoftContact.msg",
+        deps = [Header, Point, Vector3];
+        /// Stamp: simulation time at the end of the step; frame: the world frame.
+        pub header: Header,
+        /// Name of the fingertip (its `/tf` frame).
+        pub fingertip: String,
+        /// Name of the other body.
+        pub other: String,
+        /// Contact point, world [m].
+        pub point: Point,
+        /// Unit normal, world, from the other body to the fingertip [-].
+        pub normal: Vector3,
+        /// Compression delta [m], >= 0.
+        pub compression: f64,
+        /// Compression ratio x = delta / R [-].
+        pub ratio_x: f64,
+        /// Normal force on the fingertip [N], >= 0 (step average).
+        pub normal_force: f64,
+        /// Friction force on the fingertip, world [N] (step average).
+        pub friction_force: Vector3,
+        /// Torsional friction moment about the normal [N m] (step average).
+        pub torsional_moment: f64,
+        /// Contact radius a [m], >= 0.
+        pub contact_radius: f64,
+        /// Mean pressure F / (pi a^2) [Pa].
+        pub mean_pressure: f64,
+        /// Peak pressure, 3/2 of the mean [Pa].
+        pub peak_pressure: f64,
+        /// Stiffness K = dF/d delta [N/m], >= 0.
+        pub stiffness: f64,
+        /// Law level code ([`LevelKind::code`]).
+        pub level: u8,
+        /// Law level name ([`LevelKind::name`]).
+        pub level_name: String,
+        /// The compression is past the level's validity range (tangent extension used).
+        pub validity_exceeded: bool,
+        /// Friction saturated in some substep.
+        pub sliding: bool,
+        /// Largest normal force of any substep [N].
+        pub peak_normal_force: f64,
+        /// Largest compression at the start of any substep [m].
+        pub max_compression: f64,
+        /// Time in contact during the step [s].
+        pub contact_duration: f64,
+    }
+}
+
+ros_message! {
+    /// Every soft contact of one step (`/softgrip/contacts`).
+    #[derive(Debug, Clone, PartialEq, Default)]
+    pub struct SoftContactArray {
+        name = "softgrip_msgs/msg/SoftContactArray", file = "../../ros2/softgrip_msgs/msg/SoftContactArray.msg",
+        deps = [Header, SoftContact];
+        /// Stamp: simulation time at the end of the step; frame: the world frame.
+        pub header: Header,
+        /// The contacts (may be empty).
+        pub contacts: Vec<SoftContact>,
+    }
+}
+
+/// Every concrete level, indexed by its [`LevelKind::code`].
+pub const LEVEL_KINDS: [LevelKind; 8] = [
+    LevelKind::Linear,
+    LevelKind::Hertz,
+    LevelKind::Fit,
+    LevelKind::Incompressible,
+    LevelKind::NeoHookean,
+    LevelKind::NeoHookeanExact,
+    LevelKind::Tatara,
+    LevelKind::Calibrated,
+];
+
+/// The level with code `code`, if any.
+///
+/// ```
+/// use softgrip_law::LevelKind;
+/// use softgrip_record::msgs::softgrip_msgs::level_from_code;
+/// assert_eq!(level_from_code(LevelKind::Calibrated.code()), Some(LevelKind::Calibrated));
+/// assert_eq!(level_from_code(200), None);
+/// ```
+pub fn level_from_code(code: u8) -> Option<LevelKind> {
+    LEVEL_KINDS.get(usize::from(code)).copied()
+}
+
+impl SoftContact {
+    /// Sets `level` and `level_name` from the law level that computed the force.
+    pub fn set_level(&mut self, level: LevelKind) {
+        self.level = level.code();
+        self.level_name.clear();
+        self.level_name.push_str(level.name());
+    }
+
+    /// Sets `validity_exceeded` from the law's regime (true for [`Regime::Extended`]).
+    pub fn set_regime(&mut self, regime: Regime) {
+        self.validity_exceeded = regime == Regime::Extended;
+    }
+
+    /// The law level, if `level` is a known code.
+    pub fn level_kind(&self) -> Option<LevelKind> {
+        level_from_code(self.level)
+    }
+}

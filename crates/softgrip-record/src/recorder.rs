@@ -1,0 +1,326 @@
+//! [`Recorder`]: writes a simulation's messages to an MCAP file (ROS 2 profile, CDR, chunked,
+//! zstd-compressed, with summary, indexes and statistics), and finishes the file on drop.
+
+use std::collections::{BTreeMap, HashMap};
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+use mcap::records::{MessageHeader, Metadata};
+use mcap::{Compression, WriteOptions, Writer};
+
+use crate::cdr::CdrWriter;
+use crate::error::{Error, Result};
+use crate::message::RosMessage;
+use crate::msgs::geometry_msgs::WrenchStamped;
+use crate::msgs::softgrip_msgs::SoftContactArray;
+use crate::step::StepRecord;
+use crate::topics;
+use crate::visuals;
+
+/// Name of the metadata record softgrip writes.
+pub const METADATA_NAME: &str = "softgrip";
+/// The version of this crate, written in the metadata as `softgrip_version`.
+pub const SOFTGRIP_VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// How the file is written.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RecorderOptions {
+    /// Uncompressed size at which a chunk is closed [bytes]. A killed process loses at most
+    /// the open chunk. Default 512 KiB (about 0.4 s of a two-finger squeeze at 1 kHz).
+    pub chunk_size: u64,
+    /// Compress chunks with zstd. Default true.
+    pub compress: bool,
+    /// zstd worker threads; 0 compresses on the caller's thread when a chunk closes. Default 1:
+    /// the chunk is compressed beside the simulation, not inside its step.
+    pub compression_threads: u32,
+    /// zstd level; 0 is zstd's default (3). Default 0.
+    pub compression_level: u32,
+}
+
+impl Default for RecorderOptions {
+    fn default() -> Self {
+        Self {
+            chunk_size: 512 * 1024,
+            compress: true,
+            compression_threads: 1,
+            compression_level: 0,
+        }
+    }
+}
+
+/// What the recording is of: written once as the `softgrip` metadata record.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct RecordingInfo {
+    /// The scene (its file's text, or a description).
+    pub scene: String,
+    /// The contact law's parameters (level, E, nu, R, friction, ...), as text.
+    pub law: String,
+    /// Anything else (`key -> value`); `scene`, `law` and `softgrip_version` are reserved.
+    pub extra: BTreeMap<String, String>,
+}
+
+impl RecordingInfo {
+    /// The metadata map: `extra`, then `scene`, `law` and `softgrip_version`.
+    pub fn to_metadata(&self) -> BTreeMap<String, String> {
+        let mut m = self.extra.clone();
+        m.insert("scene".into(), self.scene.clone());
+        m.insert("law".into(), self.law.clone());
+        m.insert("softgrip_version".into(), SOFTGRIP_VERSION.into());
+        m
+    }
+}
+
+/// Counts of a finished recording.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RecordingStats {
+    /// Messages written.
+    pub messages: u64,
+    /// Chunks written.
+    pub chunks: u32,
+    /// Channels (topics).
+    pub channels: u32,
+    /// First and last log time [ns].
+    pub time_range_ns: (u64, u64),
+}
+
+/// Writes a recording.
+///
+/// ```
+/// use softgrip_record::{Recorder, RecordingInfo, StepRecord};
+/// # fn main() -> Result<(), softgrip_record::Error> {
+/// let dir = std::env::temp_dir().join(format!("softgrip-doc-{}", std::process::id()));
+/// std::fs::create_dir_all(&dir).unwrap();
+/// let path = dir.join("squeeze.mcap");
+/// let mut rec = Recorder::create(&path, &RecordingInfo::default())?;
+/// let mut step = StepRecord { time_ns: 1_000_000, world_frame: "world".into(), ..Default::default() };
+/// rec.write_step(&mut step)?;
+/// let stats = rec.finish()?;
+/// assert_eq!(stats.messages, 4); // clock, tf, contacts, markers (no fingertips: no wrench)
+/// # std::fs::remove_dir_all(&dir).ok();
+/// # Ok(()) }
+/// ```
+///
+/// Interruption: the file is finished (summary, indexes, footer) by [`finish`](Self::finish)
+/// and, if that was never called, by `Drop`, which also runs while a panic unwinds. A process
+/// that is killed (SIGKILL, power loss) keeps every closed chunk; [`crate::Recording::open`]
+/// recovers them. For Ctrl-C, install a handler that sets a flag the simulation loop checks,
+/// then leave the loop and call `finish()` (see the crate README).
+pub struct Recorder {
+    writer: Option<Writer<BufWriter<File>>>,
+    path: PathBuf,
+    schemas: HashMap<&'static str, u16>,
+    channels: HashMap<String, u16>,
+    wrench_channels: HashMap<String, u16>,
+    buf: CdrWriter,
+    sequence: u32,
+}
+
+impl std::fmt::Debug for Recorder {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Recorder")
+            .field("path", &self.path)
+            .field("finished", &self.writer.is_none())
+            .field("sequence", &self.sequence)
+            .finish()
+    }
+}
+
+impl Recorder {
+    /// Creates (or truncates) `path` with the default [`RecorderOptions`] and writes the
+    /// metadata record.
+    pub fn create(path: impl AsRef<Path>, info: &RecordingInfo) -> Result<Self> {
+        Self::with_options(path, info, &RecorderOptions::default())
+    }
+
+    /// Creates (or truncates) `path` with `options` and writes the metadata record.
+    pub fn with_options(
+        path: impl AsRef<Path>,
+        info: &RecordingInfo,
+        options: &RecorderOptions,
+    ) -> Result<Self> {
+        let path = path.as_ref().to_path_buf();
+        let file = File::create(&path).map_err(|source| Error::Io {
+            path: path.clone(),
+            source,
+        })?;
+        let compression = options.compress.then_some(Compression::Zstd);
+        let mut writer = WriteOptions::new()
+            .profile("ros2")
+            .library(format!("softgrip-record {SOFTGRIP_VERSION} (mcap-rs)"))
+            .compression(compression)
+            .compression_threads(options.compression_threads)
+            .compression_level(options.compression_level)
+            .chunk_size(Some(options.chunk_size.max(1)))
+            .create(BufWriter::with_capacity(64 * 1024, file))
+            .map_err(Error::Write)?;
+        writer
+            .write_metadata(&Metadata {
+                name: METADATA_NAME.into(),
+                metadata: info.to_metadata(),
+            })
+            .map_err(Error::Write)?;
+        Ok(Self {
+            writer: Some(writer),
+            path,
+            schemas: HashMap::new(),
+            channels: HashMap::new(),
+            wrench_channels: HashMap::new(),
+            buf: CdrWriter::with_capacity(4096),
+            sequence: 0,
+        })
+    }
+
+    /// The file being written.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Messages written so far.
+    pub fn messages_written(&self) -> u64 {
+        u64::from(self.sequence)
+    }
+
+    fn writer(&mut self) -> &mut Writer<BufWriter<File>> {
+        self.writer
+            .as_mut()
+            .expect("invariant: the writer is only taken by finish(self) and drop")
+    }
+
+    fn schema_id<M: RosMessage>(&mut self) -> Result<u16> {
+        if let Some(&id) = self.schemas.get(M::TYPE_NAME) {
+            return Ok(id);
+        }
+        let text = M::schema_text();
+        let id = self
+            .writer()
+            .add_schema(M::TYPE_NAME, "ros2msg", text.as_bytes())
+            .map_err(Error::Write)?;
+        self.schemas.insert(M::TYPE_NAME, id);
+        Ok(id)
+    }
+
+    fn add_channel<M: RosMessage>(&mut self, topic: &str) -> Result<u16> {
+        let schema = self.schema_id::<M>()?;
+        self.writer()
+            .add_channel(schema, topic, "cdr", &BTreeMap::new())
+            .map_err(Error::Write)
+    }
+
+    fn channel_id<M: RosMessage>(&mut self, topic: &str) -> Result<u16> {
+        if let Some(&id) = self.channels.get(topic) {
+            return Ok(id);
+        }
+        let id = self.add_channel::<M>(topic)?;
+        self.channels.insert(topic.to_owned(), id);
+        Ok(id)
+    }
+
+    fn write_encoded(&mut self, channel_id: u16, time_ns: u64) -> Result<()> {
+        self.sequence = self.sequence.wrapping_add(1);
+        let header = MessageHeader {
+            channel_id,
+            sequence: self.sequence,
+            log_time: time_ns,
+            publish_time: time_ns,
+        };
+        let writer = self
+            .writer
+            .as_mut()
+            .expect("invariant: the writer is only taken by finish(self) and drop");
+        writer
+            .write_to_known_channel(&header, self.buf.as_bytes())
+            .map_err(Error::Write)
+    }
+
+    /// Writes `msg` on `topic` at simulation time `time_ns` [ns] (log time = publish time).
+    /// The topic's schema and channel are registered on first use. A topic keeps the type it
+    /// was first written with.
+    pub fn write<M: RosMessage>(&mut self, topic: &str, time_ns: u64, msg: &M) -> Result<()> {
+        let channel = self.channel_id::<M>(topic)?;
+        msg.encode_into(&mut self.buf);
+        self.write_encoded(channel, time_ns)
+    }
+
+    /// Writes one step: `/clock`, `/tf`, `/softgrip/contacts` (each contact's header set to
+    /// the step's), one `/softgrip/<fingertip>/wrench` per fingertip and `/softgrip/markers`.
+    pub fn write_step(&mut self, step: &mut StepRecord) -> Result<()> {
+        let t = step.time_ns;
+        let header = step.header();
+        self.write(topics::CLOCK, t, &step.clock())?;
+        self.write(topics::TF, t, &step.tf())?;
+
+        for c in &mut step.contacts {
+            c.header.stamp = header.stamp;
+            c.header.frame_id.clone_from(&header.frame_id);
+        }
+        // Encode the contacts in place (no copy of the vector).
+        let array = SoftContactArray {
+            header: header.clone(),
+            contacts: std::mem::take(&mut step.contacts),
+        };
+        let written = self.write(topics::CONTACTS, t, &array);
+        step.contacts = array.contacts;
+        written?;
+
+        for i in 0..step.fingertips.len() {
+            let tip = &step.fingertips[i];
+            let channel = match self.wrench_channels.get(&tip.name) {
+                Some(&id) => id,
+                None => {
+                    let name = tip.name.clone();
+                    let id = self.add_channel::<WrenchStamped>(&topics::wrench(&name))?;
+                    self.wrench_channels.insert(name, id);
+                    id
+                }
+            };
+            let tip = &step.fingertips[i];
+            let msg = WrenchStamped {
+                header: header.clone(),
+                wrench: tip.wrench,
+            };
+            msg.encode_into(&mut self.buf);
+            self.write_encoded(channel, t)?;
+        }
+
+        self.write(topics::MARKERS, t, &visuals::markers(step))
+    }
+
+    /// Closes the current chunk and hands the file everything written so far (it then
+    /// survives a kill). Not needed in normal use: chunks close at `chunk_size`.
+    pub fn flush(&mut self) -> Result<()> {
+        self.writer().flush().map_err(Error::Write)
+    }
+
+    /// Finishes the file: closes the last chunk, writes the summary (schemas, channels,
+    /// statistics, chunk and metadata indexes), the footer, and flushes.
+    pub fn finish(mut self) -> Result<RecordingStats> {
+        let mut writer = self
+            .writer
+            .take()
+            .expect("invariant: the writer is only taken by finish(self) and drop");
+        let summary = writer.finish().map_err(Error::Write)?;
+        let path = self.path.clone();
+        writer.into_inner().into_inner().map_err(|e| Error::Io {
+            path,
+            source: e.into_error(),
+        })?;
+        let stats = summary.stats.unwrap_or_default();
+        Ok(RecordingStats {
+            messages: stats.message_count,
+            chunks: stats.chunk_count,
+            channels: stats.channel_count,
+            time_range_ns: (stats.message_start_time, stats.message_end_time),
+        })
+    }
+}
+
+impl Drop for Recorder {
+    /// Finishes the file if [`finish`](Recorder::finish) was not called (errors are ignored
+    /// here: call `finish` to see them).
+    fn drop(&mut self) {
+        if let Some(mut writer) = self.writer.take() {
+            let _ = writer.finish();
+        }
+    }
+}

@@ -1,0 +1,135 @@
+//! [`StepRecord`]: what the simulation hands the recorder after a step, and the standard
+//! messages built from it (`/tf`, the fingertip wrenches, `/clock`).
+
+use crate::msgs::builtin_interfaces::Time;
+use crate::msgs::geometry_msgs::{Quaternion, Transform, TransformStamped, Vector3, Wrench};
+use crate::msgs::rosgraph_msgs::Clock;
+use crate::msgs::softgrip_msgs::SoftContact;
+use crate::msgs::std_msgs::Header;
+use crate::msgs::tf2_msgs::TFMessage;
+
+/// A body's pose for `/tf` (its frame is its name, child of the world frame).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyPose {
+    /// Name of the body (its tf frame).
+    pub name: String,
+    /// Position of the body frame's origin, world [m].
+    pub position: [f64; 3],
+    /// Orientation, unit quaternion `[x, y, z, w]`.
+    pub orientation: [f64; 4],
+}
+
+/// A fingertip after a step: its pose, radius and the net contact wrench on it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FingertipState {
+    /// Name of the fingertip (its tf frame and `/softgrip/<name>/wrench`).
+    pub name: String,
+    /// Centre of the fingertip sphere, world [m].
+    pub position: [f64; 3],
+    /// Orientation, unit quaternion `[x, y, z, w]`.
+    pub orientation: [f64; 4],
+    /// Radius R [m], > 0.
+    pub radius: f64,
+    /// Net contact wrench on the fingertip, world axes, torque about the centre
+    /// ([`contact_wrench`] computes it from the contacts).
+    pub wrench: Wrench,
+}
+
+/// One step's worth of recordable state.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct StepRecord {
+    /// Simulation time at the end of the step [ns].
+    pub time_ns: u64,
+    /// Name of the world frame (the `/tf` root), e.g. `world`.
+    pub world_frame: String,
+    /// The soft contacts of the step (their headers are overwritten with the step's).
+    pub contacts: Vec<SoftContact>,
+    /// The fingertips.
+    pub fingertips: Vec<FingertipState>,
+    /// Other bodies to publish on `/tf`.
+    pub bodies: Vec<BodyPose>,
+}
+
+impl StepRecord {
+    /// The step's header: its time in the world frame.
+    pub fn header(&self) -> Header {
+        Header::new(self.time_ns, &self.world_frame)
+    }
+
+    /// `/clock`.
+    pub fn clock(&self) -> Clock {
+        Clock {
+            clock: Time::from_nanos(self.time_ns),
+        }
+    }
+
+    /// `/tf`: every fingertip, then every body, as a child of the world frame.
+    pub fn tf(&self) -> TFMessage {
+        let header = self.header();
+        let pose = |name: &str, position: [f64; 3], orientation: [f64; 4]| TransformStamped {
+            header: header.clone(),
+            child_frame_id: name.to_owned(),
+            transform: Transform {
+                translation: Vector3::from_array(position),
+                rotation: Quaternion::from_xyzw(orientation),
+            },
+        };
+        let tips = self
+            .fingertips
+            .iter()
+            .map(|t| pose(&t.name, t.position, t.orientation));
+        let bodies = self
+            .bodies
+            .iter()
+            .map(|b| pose(&b.name, b.position, b.orientation));
+        TFMessage {
+            transforms: tips.chain(bodies).collect(),
+        }
+    }
+}
+
+/// Net wrench of `contacts` on a fingertip centred at `center` [m]: force
+/// `Σ (F_n n + f_t)` [N] and torque `Σ (p − c) × (F_n n + f_t) + τ n` [N m], world axes.
+///
+/// ```
+/// use softgrip_record::contact_wrench;
+/// use softgrip_record::msgs::softgrip_msgs::SoftContact;
+/// use softgrip_record::msgs::geometry_msgs::{Point, Vector3};
+/// let c = SoftContact {
+///     point: Point { x: 0.0, y: 0.0, z: -0.01 },
+///     normal: Vector3 { x: 0.0, y: 0.0, z: 1.0 },
+///     normal_force: 2.0,
+///     friction_force: Vector3 { x: 0.5, y: 0.0, z: 0.0 },
+///     ..Default::default()
+/// };
+/// let w = contact_wrench([0.0; 3], [&c]);
+/// assert_eq!((w.force.x, w.force.z), (0.5, 2.0));
+/// assert!((w.torque.y - (-0.01 * 0.5)).abs() < 1e-15); // r x f = (0,0,-0.01) x (0.5,0,2)
+/// ```
+pub fn contact_wrench<'a>(
+    center: [f64; 3],
+    contacts: impl IntoIterator<Item = &'a SoftContact>,
+) -> Wrench {
+    let mut force = [0.0; 3];
+    let mut torque = [0.0; 3];
+    for c in contacts {
+        let n = c.normal.to_array();
+        let ft = c.friction_force.to_array();
+        let f: [f64; 3] = std::array::from_fn(|i| c.normal_force * n[i] + ft[i]);
+        let p = c.point.to_array();
+        let r: [f64; 3] = std::array::from_fn(|i| p[i] - center[i]);
+        let rxf = [
+            r[1] * f[2] - r[2] * f[1],
+            r[2] * f[0] - r[0] * f[2],
+            r[0] * f[1] - r[1] * f[0],
+        ];
+        for i in 0..3 {
+            force[i] += f[i];
+            torque[i] += rxf[i] + c.torsional_moment * n[i];
+        }
+    }
+    Wrench {
+        force: Vector3::from_array(force),
+        torque: Vector3::from_array(torque),
+    }
+}

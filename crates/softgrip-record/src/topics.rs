@@ -1,0 +1,35 @@
+//! The topic names softgrip records and publishes.
+
+/// Every soft contact of a step: `softgrip_msgs/msg/SoftContactArray`.
+pub const CONTACTS: &str = "/softgrip/contacts";
+/// Body and fingertip poses: `tf2_msgs/msg/TFMessage`.
+pub const TF: &str = "/tf";
+/// Contact patches and fingertips for 3D views: `visualization_msgs/msg/MarkerArray`.
+pub const MARKERS: &str = "/softgrip/markers";
+/// Simulation time: `rosgraph_msgs/msg/Clock`.
+pub const CLOCK: &str = "/clock";
+
+/// The wrench topic of a fingertip, `/softgrip/<fingertip>/wrench`
+/// (`geometry_msgs/msg/WrenchStamped`). Characters a ROS name cannot hold become `_`, and a
+/// name that is empty or starts with a digit gets a leading `_`.
+///
+/// ```
+/// assert_eq!(softgrip_record::topics::wrench("thumb"), "/softgrip/thumb/wrench");
+/// assert_eq!(softgrip_record::topics::wrench("tip 2-left"), "/softgrip/tip_2_left/wrench");
+/// assert_eq!(softgrip_record::topics::wrench("1"), "/softgrip/_1/wrench");
+/// ```
+pub fn wrench(fingertip: &str) -> String {
+    format!("/softgrip/{}/wrench", ros_name_token(fingertip))
+}
+
+/// `name` made a valid ROS name token (`[A-Za-z_][A-Za-z0-9_]*`).
+pub fn ros_name_token(name: &str) -> String {
+    let mut s: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if s.is_empty() || s.starts_with(|c: char| c.is_ascii_digit()) {
+        s.insert(0, '_');
+    }
+    s
+}
