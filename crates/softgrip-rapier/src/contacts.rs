@@ -1,31 +1,58 @@
 //! [`SoftContacts`]: the plugin's state: registered fingertips, per-contact memory, readout.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use nalgebra::Vector3;
-use rapier3d::prelude::{ActiveCollisionTypes, ActiveHooks, ColliderHandle, ColliderSet};
+use rapier3d::prelude::{ActiveCollisionTypes, ColliderHandle, ColliderSet, InteractionGroups};
 
+use crate::bodies::BodyTable;
 use crate::counters::SoftCounters;
 use crate::detect::{Geom, Model};
 use crate::error::{Error, Result};
 use crate::fingertip::SoftFingertip;
 use crate::hooks::SoftHooks;
-use crate::readout::SoftContact;
+use crate::readout::{Accums, SoftContact};
+use crate::solve::{Row, SolveScratch};
 use crate::substep::SoftAccuracy;
 
 /// Memory of one contact between steps.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PairState {
-    /// Approach speed when the contact started [m/s] (Flores' v_in).
-    pub v_in: f64,
     /// Friction anchor on the other body, in its collider's frame [m].
     pub anchor_local: Vector3<f64>,
+}
+
+/// Buffers of one step, kept between steps so that a warm step allocates nothing (apart from
+/// the readout's per-contact law handles and the dense LU of coupled contact groups).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Scratch {
+    /// The solver's body table.
+    pub body_table: BodyTable,
+    /// The contacts prepared for the solve.
+    pub rows: Vec<Row>,
+    /// The law and coefficients of each row.
+    pub models: Vec<Model>,
+    /// Index into `SoftContacts::geoms` of each row.
+    pub geom: Vec<usize>,
+    /// The solver's buffers.
+    pub solve: SolveScratch,
+    /// The pairs in contact this substep.
+    pub live: HashSet<(ColliderHandle, ColliderHandle)>,
+    /// Net impulse per body (linear, angular) of a substep.
+    pub net: Vec<(Vector3<f64>, Vector3<f64>)>,
+    /// Detection candidates of one fingertip.
+    pub candidates: Vec<ColliderHandle>,
+    /// Per-contact sums over the substeps of a step.
+    pub accums: Accums,
 }
 
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.
 #[derive(Debug, Clone, Default)]
 pub struct SoftContacts {
     pub(crate) tips: HashMap<ColliderHandle, SoftFingertip>,
+    /// The collision groups each fingertip's collider had at registration (the collider's own
+    /// are set to `InteractionGroups::none()`, which keeps rapier's narrow phase off it).
+    pub(crate) groups: HashMap<ColliderHandle, InteractionGroups>,
     pub(crate) hooks: SoftHooks,
     pub(crate) pairs: HashMap<(ColliderHandle, ColliderHandle), PairState>,
     pub(crate) soft_pairs: HashMap<(ColliderHandle, ColliderHandle), Option<Model>>,
@@ -33,6 +60,7 @@ pub struct SoftContacts {
     pub(crate) counters: SoftCounters,
     pub(crate) accuracy: SoftAccuracy,
     pub(crate) geoms: Vec<Geom>,
+    pub(crate) scratch: Scratch,
 }
 
 impl SoftContacts {
@@ -43,10 +71,22 @@ impl SoftContacts {
 
     /// Marks `collider` as the soft fingertip `fingertip`.
     ///
-    /// The collider must be a ball of the fingertip's radius (to 1e-5 relative). Sets its
-    /// `ActiveHooks::FILTER_CONTACT_PAIRS` and adds `KINEMATIC_FIXED | KINEMATIC_KINEMATIC` to
-    /// its active collision types (a fingertip on a kinematic finger must still see fixed and
-    /// kinematic objects).
+    /// The collider must be a ball of the fingertip's radius (to 1e-5 relative).
+    ///
+    /// **rapier's narrow phase never sees a fingertip.** Its collision groups are moved into
+    /// the plugin (the plugin's detection tests them, rapier's groups of the collider become
+    /// `InteractionGroups::none()`), so rapier filters every pair of a fingertip before
+    /// computing any contact: the plugin recomputes the geometry fresh every step and never
+    /// reads rapier's manifolds. What a fingertip's collider loses in rapier: contact
+    /// manifolds (`NarrowPhase::contact_pair`), collision and contact-force events, sensor
+    /// intersections, and island links through its contacts (a body resting only on
+    /// fingertips forms its own island for sleeping). Use [`contacts`](Self::contacts) for the
+    /// soft contacts. Set the fingertip's collision groups *before* registering it; changing
+    /// them on the collider afterwards has no effect on the soft contacts, and setting them
+    /// back to anything but `none()` makes rapier compute (and ignore, the solver groups being
+    /// `none()` too) the manifolds again. Also adds `KINEMATIC_FIXED | KINEMATIC_KINEMATIC`
+    /// to its active collision types (a fingertip on a kinematic finger must still see fixed
+    /// and kinematic objects).
     pub fn register(
         &mut self,
         collider: ColliderHandle,
@@ -70,7 +110,16 @@ impl SoftContacts {
                 fingertip_radius: fingertip.radius(),
             });
         }
-        co.set_active_hooks(co.active_hooks() | ActiveHooks::FILTER_CONTACT_PAIRS);
+        let groups = if self.tips.contains_key(&collider) {
+            self.groups
+                .get(&collider)
+                .copied()
+                .unwrap_or(co.collision_groups())
+        } else {
+            co.collision_groups()
+        };
+        co.set_collision_groups(InteractionGroups::none());
+        co.set_solver_groups(InteractionGroups::none());
         co.set_active_collision_types(
             co.active_collision_types()
                 | ActiveCollisionTypes::KINEMATIC_FIXED
@@ -78,6 +127,7 @@ impl SoftContacts {
         );
         self.hooks.insert(collider);
         self.tips.insert(collider, fingertip);
+        self.groups.insert(collider, groups);
         Ok(())
     }
 

@@ -10,6 +10,9 @@ pub const DEFAULT_RESTITUTION: f64 = 0.5;
 /// Default Coulomb friction coefficient mu_f [-]: silicone on dry rigid surfaces is 0.5 to
 /// above 1; 0.8 is a middle value.
 pub const DEFAULT_FRICTION: f64 = 0.8;
+/// Default reference impact speed v_ref [m/s] at which the restitution e holds (see
+/// [`SoftFingertipBuilder::restitution_speed`]).
+pub const DEFAULT_RESTITUTION_SPEED: f64 = 1.0;
 
 /// A soft spherical fingertip: radius, material, law level, restitution and friction.
 ///
@@ -30,7 +33,9 @@ pub struct SoftFingertip {
     material: Material,
     level: Level,
     restitution: f64,
+    restitution_speed: f64,
     friction: f64,
+    torsional_friction: bool,
     law: ContactLaw,
     damping_zeta: f64,
 }
@@ -44,7 +49,9 @@ impl SoftFingertip {
             material: None,
             level: Level::auto(),
             restitution: DEFAULT_RESTITUTION,
+            restitution_speed: DEFAULT_RESTITUTION_SPEED,
             friction: DEFAULT_FRICTION,
+            torsional_friction: true,
         }
     }
 
@@ -68,9 +75,15 @@ impl SoftFingertip {
         self.level
     }
 
-    /// Coefficient of restitution e [-], in (0, 1].
+    /// Coefficient of restitution e [-], in (0, 1], of an impact at
+    /// [`restitution_speed`](Self::restitution_speed).
     pub fn restitution(&self) -> f64 {
         self.restitution
+    }
+
+    /// Reference impact speed v_ref [m/s] at which the restitution is `e`.
+    pub fn restitution_speed(&self) -> f64 {
+        self.restitution_speed
     }
 
     /// Coulomb friction coefficient mu_f [-], >= 0.
@@ -78,22 +91,35 @@ impl SoftFingertip {
         self.friction
     }
 
+    /// Whether the contact patch resists twist about the normal, up to `(3 pi / 16) mu_f F a`.
+    pub fn torsional_friction(&self) -> bool {
+        self.torsional_friction
+    }
+
     /// The contact law against a rigid body.
     pub fn law(&self) -> &ContactLaw {
         &self.law
     }
 
-    /// Hunt-Crossley damping `zeta = chi v_in` [-] that gives this restitution (see
-    /// [`hunt_crossley_zeta`]).
+    /// Dimensionless Hunt-Crossley damping `zeta = alpha v_ref` [-] that gives the restitution
+    /// e at v_ref (see [`hunt_crossley_zeta`]).
     pub fn damping_zeta(&self) -> f64 {
         self.damping_zeta
     }
+
+    /// Hunt-Crossley dissipation coefficient `alpha = zeta(e) / v_ref` [s/m]: the contact force
+    /// is `F (1 + alpha d delta/dt)`. A material constant, independent of the contact's history
+    /// (0 for e = 1).
+    pub fn damping_alpha(&self) -> f64 {
+        self.damping_zeta / self.restitution_speed
+    }
 }
 
-/// The dimensionless Hunt-Crossley damping `zeta = chi v_in` for which a Hertz impact
-/// `m x'' = -k x^(3/2) (1 + chi x')` rebounds with restitution `e` (0 for e >= 1).
+/// The dimensionless Hunt-Crossley damping `zeta = alpha v_in` for which a Hertz impact
+/// `m x'' = -k x^(3/2) (1 + alpha x')` at the speed `v_in` rebounds with restitution `e` (0 for
+/// e >= 1).
 ///
-/// For a power-law force the rebound ratio depends on `chi v_in` alone, so it is found once,
+/// For a power-law force the rebound ratio depends on `alpha v_in` alone, so it is found once,
 /// by bisection on the normalised impact `x'' = -x^(3/2) (1 + zeta x')`, `x(0) = 0`,
 /// `x'(0) = 1` (RK4). Flores et al. (2011)'s closed form `zeta = 8 (1 - e) / (5 e)` is an
 /// approximation of this root: at e = 0.5 it gives a rebound of 0.466 instead of 0.5.
@@ -155,7 +181,9 @@ pub struct SoftFingertipBuilder {
     material: Option<Material>,
     level: Level,
     restitution: f64,
+    restitution_speed: f64,
     friction: f64,
+    torsional_friction: bool,
 }
 
 impl SoftFingertipBuilder {
@@ -177,19 +205,41 @@ impl SoftFingertipBuilder {
         self
     }
 
-    /// Coefficient of restitution e [-], in (0, 1]; default 0.5 (a soft silicone fingertip
-    /// hitting a rigid object at ~1 m/s loses roughly half of its rebound speed).
-    /// e = 1 is purely elastic. The dissipation is Hunt-Crossley's `F (1 + chi d delta/dt)`
-    /// with `chi = zeta / v_in` ([`hunt_crossley_zeta`]), which reproduces e for a Hertz-like
-    /// impact at any impact speed `v_in`.
+    /// Coefficient of restitution e [-], in (0, 1], of an impact on a rigid body at the
+    /// reference speed [`restitution_speed`](Self::restitution_speed) (default 1 m/s);
+    /// default 0.5 (a soft silicone fingertip hitting a rigid object at ~1 m/s loses roughly
+    /// half of its rebound speed). e = 1 is purely elastic.
+    ///
+    /// The dissipation is Hunt-Crossley's `F (1 + alpha d delta/dt)` with the material
+    /// constant `alpha = zeta(e) / v_ref` [s/m] ([`hunt_crossley_zeta`]), as Drake's
+    /// Hunt-Crossley dissipation: the damping does not depend on how the contact started, so a
+    /// slow squeeze reads the elastic law (at 5 mm/s and e = 0.5 the damping adds
+    /// `alpha v = 0.3 %`). The restitution then varies with the impact speed v, as measured for
+    /// rubbers: `e(v) ~ 1 - (2/3) alpha v` for small `alpha v` (larger at slower impacts).
     pub fn restitution(mut self, restitution: f64) -> Self {
         self.restitution = restitution;
+        self
+    }
+
+    /// Reference impact speed v_ref [m/s] (finite, > 0; default 1 m/s) at which an impact on
+    /// a rigid body rebounds with the [`restitution`](Self::restitution) e.
+    pub fn restitution_speed(mut self, speed: f64) -> Self {
+        self.restitution_speed = speed;
         self
     }
 
     /// Coulomb friction coefficient mu_f [-], finite and >= 0; default 0.8.
     pub fn friction(mut self, friction: f64) -> Self {
         self.friction = friction;
+        self
+    }
+
+    /// Torsional friction of the contact patch (default on): twist about the contact normal is
+    /// resisted up to `(3 pi / 16) mu_f F a`, the moment of Coulomb friction under a
+    /// Hertz-shaped pressure over the law's contact radius `a`. Off, a point contact that
+    /// cannot resist twist (for comparison).
+    pub fn torsional_friction(mut self, enabled: bool) -> Self {
+        self.torsional_friction = enabled;
         self
     }
 
@@ -215,6 +265,13 @@ impl SoftFingertipBuilder {
                 range: "in (0, 1]",
             });
         }
+        if !(self.restitution_speed.is_finite() && self.restitution_speed > 0.0) {
+            return Err(Error::InvalidParameter {
+                field: "restitution_speed",
+                value: self.restitution_speed,
+                range: "finite and > 0 m/s",
+            });
+        }
         if !(self.friction.is_finite() && self.friction >= 0.0) {
             return Err(Error::InvalidParameter {
                 field: "friction",
@@ -230,7 +287,9 @@ impl SoftFingertipBuilder {
             material,
             level: self.level,
             restitution: self.restitution,
+            restitution_speed: self.restitution_speed,
             friction: self.friction,
+            torsional_friction: self.torsional_friction,
             law,
             damping_zeta: hunt_crossley_zeta(self.restitution),
         })

@@ -2,6 +2,7 @@
 // `!(x > 0.0)` is used on purpose: it is true for NaN, which must be rejected too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+mod bodies;
 mod contacts;
 mod counters;
 mod detect;
@@ -19,7 +20,8 @@ pub use counters::SoftCounters;
 pub use detect::compression_from_signed_distance;
 pub use error::{Error, Result};
 pub use fingertip::{
-    DEFAULT_FRICTION, DEFAULT_RESTITUTION, SoftFingertip, SoftFingertipBuilder, hunt_crossley_zeta,
+    DEFAULT_FRICTION, DEFAULT_RESTITUTION, DEFAULT_RESTITUTION_SPEED, SoftFingertip,
+    SoftFingertipBuilder, hunt_crossley_zeta,
 };
 pub use hooks::SoftHooks;
 pub use presets::Preset;

@@ -1,7 +1,14 @@
-//! [`SoftContact`]: what one soft contact did over the last step.
+//! [`SoftContact`]: what one soft contact did over the last step, and its assembly from the
+//! substeps' impulses.
 
+use std::collections::HashMap;
+
+use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
 use softgrip_law::{ContactLaw, ContactPatch, LevelKind, Regime};
+
+use crate::detect::{Model, raw};
+use crate::solve::Row;
 
 /// One soft contact after a step. Cheap to produce: the contact radius and pressure are only
 /// computed when [`patch`](Self::patch) is called.
@@ -34,8 +41,11 @@ pub struct SoftContact {
     pub stiffness: f64,
     /// The level that computed the force.
     pub level: LevelKind,
-    /// Valid, extended (validity excursion) or separated.
+    /// Valid, extended (validity excursion) or separated, at `delta` (the end of the step).
     pub regime: Regime,
+    /// The compression was past the law's validity range in some substep of the step, or is
+    /// at its end (an impact can pass `x_max` and rebound within one step).
+    pub validity_exceeded: bool,
     /// Friction was saturated (the contact slid) in some substep of the step.
     pub sliding: bool,
     /// Largest normal force of any substep of the step [N] (an impact's peak; equals
@@ -54,9 +64,10 @@ impl SoftContact {
         self.law.patch(self.delta)
     }
 
-    /// Whether the compression is past the law's validity range.
+    /// Whether the compression was past the law's validity range during the step
+    /// ([`validity_exceeded`](Self::validity_exceeded)).
     pub fn validity_excursion(&self) -> bool {
-        self.regime == Regime::Extended
+        self.validity_exceeded
     }
 
     /// Magnitude of the friction force [N].
@@ -69,4 +80,98 @@ impl SoftContact {
     pub fn law(&self) -> &ContactLaw {
         &self.law
     }
+}
+
+/// Per-contact sums over the substeps of a step.
+#[derive(Debug, Clone)]
+pub(crate) struct Accum {
+    jn: f64,
+    jt: Vector3<f64>,
+    jtw: f64,
+    sliding: bool,
+    extended: bool,
+    peak_force: f64,
+    max_delta: f64,
+    duration: f64,
+    point: Vector3<f64>,
+    normal: Vector3<f64>,
+    delta_end: f64,
+    model: Model,
+}
+
+/// The sums of every contact of a step, keyed by (fingertip, other).
+pub(crate) type Accums = HashMap<(ColliderHandle, ColliderHandle), Accum>;
+
+/// Adds one substep of `h` seconds of a contact: its solved `row`, its `model`, its
+/// compression at the start of the substep `delta` and at its end `delta_end` [m].
+pub(crate) fn accumulate(
+    acc: &mut Accums,
+    key: (ColliderHandle, ColliderHandle),
+    row: &Row,
+    model: Model,
+    delta: f64,
+    delta_end: f64,
+    h: f64,
+) {
+    let e = acc.entry(key).or_insert_with(|| Accum {
+        jn: 0.0,
+        jt: Vector3::zeros(),
+        jtw: 0.0,
+        sliding: false,
+        extended: false,
+        peak_force: 0.0,
+        max_delta: 0.0,
+        duration: 0.0,
+        point: row.p,
+        normal: row.n,
+        delta_end,
+        model: model.clone(),
+    });
+    e.jn += row.jn;
+    e.jt += row.jt;
+    e.jtw += row.jtw;
+    e.sliding |= row.sliding;
+    e.extended |= row.extended;
+    e.peak_force = e.peak_force.max(row.jn / h);
+    e.max_delta = e.max_delta.max(delta);
+    if delta > 0.0 {
+        e.duration += h;
+    }
+    e.point = row.p;
+    e.normal = row.n;
+    e.delta_end = delta_end;
+    e.model = model;
+}
+
+/// The readout of a step of `dt` seconds (impulses / dt), in a deterministic order, written to
+/// `out`; `acc` is emptied (its buffer kept).
+pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<SoftContact>) {
+    out.clear();
+    for ((tip, other), a) in acc.drain() {
+        if a.jn <= 0.0 && a.delta_end <= 0.0 {
+            continue;
+        }
+        let resp = a.model.law.response(a.delta_end);
+        out.push(SoftContact {
+            fingertip: tip,
+            other,
+            point: a.point.into(),
+            normal: a.normal.into(),
+            delta: a.delta_end,
+            x: a.delta_end / a.model.radius,
+            normal_force: a.jn / dt,
+            friction_force: (a.jt / dt).into(),
+            torsional_moment: a.jtw / dt,
+            stiffness: resp.stiffness,
+            level: resp.level,
+            regime: resp.regime,
+            sliding: a.sliding,
+            validity_exceeded: a.extended || resp.regime == Regime::Extended,
+            peak_normal_force: a.peak_force,
+            max_delta: a.max_delta,
+            contact_duration: a.duration,
+            law: a.model.law,
+        });
+    }
+    out.sort_by_key(|c| (raw(c.fingertip), raw(c.other)));
 }

@@ -3,8 +3,8 @@
 //! All algebra is `f64` (nalgebra); rapier's `f32` glam values are converted once, at the
 //! boundary, by the caller.
 //!
-//! **Normal.** Per contact i, with the law's force `F`, stiffness `K`, the Hunt-Crossley /
-//! Flores damping coefficient `c = chi F` and the blend `theta` (0: explicit, 1: linearised
+//! **Normal.** Per contact i, with the law's force `F`, stiffness `K`, the Hunt-Crossley
+//! damping coefficient `c = alpha F` and the blend `theta` (0: explicit, 1: linearised
 //! implicit), the impulse over the step is
 //!   `j_i = h [F_i - D_i v_i(end)]`, `D_i = theta_i K_i h + c_i`,
 //! where `v_i(end)` is the normal separation velocity at the end of the step, which depends on
@@ -93,7 +93,7 @@ pub(crate) struct Row {
     pub force: f64,
     /// Law stiffness K [N/m].
     pub stiffness: f64,
-    /// Damping coefficient c = chi F [N s/m].
+    /// Damping coefficient c = alpha F [N s/m].
     pub damping: f64,
     /// Integration blend in [0, 1].
     pub theta: f64,
@@ -113,6 +113,11 @@ pub(crate) struct Row {
     pub sliding: bool,
     /// Normal separation velocity at the end of the step [m/s].
     pub vn_end: f64,
+    /// The compression is past the law's validity range (`Regime::Extended`).
+    pub extended: bool,
+    /// Inverse tangential mobility (`None`: no tangential mobility) and torsional mobility
+    /// [1/(kg m^2)]: constant over a solve, computed once at its start.
+    pub friction_mobility: Option<(Option<Matrix2<f64>>, f64)>,
 }
 
 /// Positional correction factor of static friction (fraction of the anchor offset removed
@@ -200,7 +205,7 @@ pub(crate) fn normal_velocity(bodies: &[BodyState], r: &Row) -> f64 {
 
 /// Solves the normal impulses given the body velocities `v0` (everything but the normal
 /// impulses), writing `jn` of every row. Returns false if the system was not finite.
-fn solve_normal(bodies: &[BodyState], rows: &mut [Row], h: f64) -> bool {
+fn solve_normal(bodies: &[BodyState], rows: &mut [Row], h: f64, bound: usize) -> bool {
     let n = rows.len();
     let d: Vec<f64> = rows
         .iter()
@@ -224,7 +229,7 @@ fn solve_normal(bodies: &[BodyState], rows: &mut [Row], h: f64) -> bool {
     }
     let mut active: Vec<bool> = rhs.iter().map(|v| *v > 0.0).collect();
     let mut j = vec![0.0; n];
-    for _ in 0..(2 * n + 2) {
+    for _ in 0..(2 * bound.max(n) + 2) {
         let idx: Vec<usize> = (0..n).filter(|i| active[*i]).collect();
         j.iter_mut().for_each(|v| *v = 0.0);
         if !idx.is_empty() {
@@ -261,6 +266,48 @@ fn solve_normal(bodies: &[BodyState], rows: &mut [Row], h: f64) -> bool {
     j.iter().all(|v| v.is_finite())
 }
 
+/// [`solve_normal`] for a group of one row, in closed form with the same arithmetic:
+/// `a = 1 + h d w`, `j = rhs / a` if `rhs > 0` (the dense LU of a 1 x 1 system is exactly this
+/// division), else 0. `a >= 1` (`d, w >= 0`), so the active set needs no iteration.
+fn solve_normal_single(bodies: &[BodyState], r: &mut Row, h: f64) -> bool {
+    let d = r.theta * r.stiffness * h + r.damping;
+    let rhs = h * (r.force - d * normal_velocity(bodies, r));
+    let mut a = 1.0;
+    if d != 0.0 {
+        a += h * d * pair_mobility(bodies, r, &r.n, r, &r.n);
+    }
+    let j = if rhs > 0.0 {
+        if a == 0.0 {
+            return false;
+        }
+        rhs / a
+    } else {
+        0.0
+    };
+    r.jn = j.max(0.0);
+    j.is_finite()
+}
+
+/// The inverse tangential mobility of a row (`None` if singular or zero) and its torsional
+/// mobility about `n` (they depend only on the bodies' inverse masses, not on their velocities).
+fn friction_mobility(bodies: &[BodyState], r: &Row) -> (Option<Matrix2<f64>>, f64) {
+    let (t1, t2) = (r.t1, r.t2);
+    let k = Matrix2::new(
+        pair_mobility(bodies, r, &t1, r, &t1),
+        pair_mobility(bodies, r, &t1, r, &t2),
+        pair_mobility(bodies, r, &t2, r, &t1),
+        pair_mobility(bodies, r, &t2, r, &t2),
+    );
+    let k_inv = k.try_inverse().filter(|_| k.trace() > 0.0);
+    let kt = body(bodies, r.a)
+        .map(|b| r.n.dot(&(b.inv_i * r.n)))
+        .unwrap_or(0.0)
+        + body(bodies, r.b)
+            .map(|b| r.n.dot(&(b.inv_i * r.n)))
+            .unwrap_or(0.0);
+    (k_inv, kt)
+}
+
 /// One Gauss-Seidel sweep of friction and torsion over all rows.
 fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
     for r in rows.iter_mut() {
@@ -277,15 +324,11 @@ fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
             continue;
         }
         let (t1, t2) = (r.t1, r.t2);
-        let k = Matrix2::new(
-            pair_mobility(bodies, r, &t1, r, &t1),
-            pair_mobility(bodies, r, &t1, r, &t2),
-            pair_mobility(bodies, r, &t2, r, &t1),
-            pair_mobility(bodies, r, &t2, r, &t2),
-        );
-        if let Some(k_inv) = k.try_inverse()
-            && k.trace() > 0.0
-        {
+        if r.friction_mobility.is_none() {
+            r.friction_mobility = Some(friction_mobility(bodies, r));
+        }
+        let (k_inv, kt) = r.friction_mobility.unwrap_or((None, 0.0));
+        if let Some(k_inv) = k_inv {
             let v = rel_vel(bodies, r);
             let target = -FRICTION_BETA * r.offset / h;
             let err = Vector2::new((v - target).dot(&t1), (v - target).dot(&t2));
@@ -303,12 +346,6 @@ fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
                 r.jt += delta;
             }
         }
-        let kt = body(bodies, r.a)
-            .map(|b| r.n.dot(&(b.inv_i * r.n)))
-            .unwrap_or(0.0)
-            + body(bodies, r.b)
-                .map(|b| r.n.dot(&(b.inv_i * r.n)))
-                .unwrap_or(0.0);
         if kt > 0.0 {
             let limit = r.torsion_arm * r.jn;
             let new = (r.jtw - rel_spin(bodies, r) / kt).clamp(-limit, limit);
@@ -320,22 +357,180 @@ fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
     }
 }
 
+/// Reusable buffers of [`solve`] (kept in the plugin state: no allocation per step once warm,
+/// except for the dense LU of coupled groups of two or more contacts).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct SolveScratch {
+    /// Union-find parent of each body of the table.
+    parent: Vec<usize>,
+    /// Group id of each row.
+    group: Vec<usize>,
+    /// Group id of each union-find root (`usize::MAX`: none yet).
+    root_group: Vec<usize>,
+    /// Row indices ordered by group (stable: ascending row index within a group).
+    order: Vec<usize>,
+    /// Start of each group in `order` (one past the end: the last entry).
+    starts: Vec<usize>,
+    /// The bodies before any impulse of the step.
+    base: Vec<BodyState>,
+    /// The rows of a coupled group, gathered contiguously.
+    group_rows: Vec<Row>,
+}
+
+fn find(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
+}
+
 /// Solves all rows over a step `h` [s], starting from the body velocities `bodies` (external
 /// impulses of the step already included). On return `bodies` holds the velocities after the
-/// impulses and every row its impulses. Returns false if the normal system was not finite (the
-/// impulses are then zero).
-pub(crate) fn solve(bodies: &mut [BodyState], rows: &mut [Row], h: f64) -> bool {
-    let base: Vec<BodyState> = bodies.to_vec();
-    let any_dynamic = bodies.iter().any(BodyState::is_dynamic);
+/// impulses and every row its impulses.
+///
+/// The rows are split into independent groups first: two contacts are coupled only through a
+/// *dynamic* body they share (a fixed or kinematic body has no mobility), so each connected
+/// component of the "shares a dynamic body" graph is solved on its own, in the order of its
+/// first row. A contact alone in its group (a fingertip on the ground) is solved in closed form,
+/// a coupled group by the dense active-set LU below. The arithmetic of each group is exactly
+/// the one of the former all-rows solve (the off-group entries of the all-rows matrix were
+/// exact zeros), so the impulses are bit-identical to it; the cost is linear in the number of
+/// independent contacts instead of cubic in the number of contacts.
+///
+/// Returns the number of groups whose normal system was not finite (their impulses are then
+/// zero and their bodies untouched; the other groups are unaffected).
+pub(crate) fn solve(
+    bodies: &mut [BodyState],
+    rows: &mut [Row],
+    h: f64,
+    scratch: &mut SolveScratch,
+) -> u64 {
+    let nb = bodies.len();
+    let n = rows.len();
+    let SolveScratch {
+        parent,
+        group,
+        root_group,
+        order,
+        starts,
+        base,
+        group_rows,
+    } = scratch;
+    parent.clear();
+    parent.extend(0..nb);
+    let dynamic = |i: Option<usize>| i.filter(|&i| bodies[i].is_dynamic());
+    for r in rows.iter() {
+        if let (Some(a), Some(b)) = (dynamic(r.a), dynamic(r.b)) {
+            let (ra, rb) = (find(parent, a), find(parent, b));
+            if ra != rb {
+                parent[ra.max(rb)] = ra.min(rb);
+            }
+        }
+    }
+    // Group ids in the order of each group's first row.
+    root_group.clear();
+    root_group.resize(nb, usize::MAX);
+    group.clear();
+    let mut groups = 0usize;
+    for r in rows.iter() {
+        let g = match dynamic(r.a).or(dynamic(r.b)) {
+            Some(b) => {
+                let root = find(parent, b);
+                if root_group[root] == usize::MAX {
+                    root_group[root] = groups;
+                    groups += 1;
+                }
+                root_group[root]
+            }
+            None => {
+                // No dynamic body: no mobility, a group of its own.
+                groups += 1;
+                groups - 1
+            }
+        };
+        group.push(g);
+    }
+    // Counting sort of the rows by group (stable).
+    starts.clear();
+    starts.resize(groups + 1, 0);
+    for &g in group.iter() {
+        starts[g + 1] += 1;
+    }
+    for g in 0..groups {
+        starts[g + 1] += starts[g];
+    }
+    order.clear();
+    order.resize(n, 0);
+    // Fill `order` using `root_group` as the per-group cursor (it is no longer needed).
+    root_group.clear();
+    root_group.extend_from_slice(&starts[..groups]);
+    for (i, &g) in group.iter().enumerate() {
+        order[root_group[g]] = i;
+        root_group[g] += 1;
+    }
+
+    base.clear();
+    base.extend_from_slice(bodies);
+    let mut failed = 0;
+    for g in 0..groups {
+        let members = &order[starts[g]..starts[g + 1]];
+        let ok = if let [i] = members {
+            solve_group(bodies, base, std::slice::from_mut(&mut rows[*i]), h, n)
+        } else {
+            group_rows.clear();
+            group_rows.extend(members.iter().map(|&i| rows[i].clone()));
+            let ok = solve_group(bodies, base, group_rows, h, n);
+            for (&i, r) in members.iter().zip(group_rows.iter()) {
+                rows[i] = r.clone();
+            }
+            ok
+        };
+        if !ok {
+            failed += 1;
+        }
+    }
+    failed
+}
+
+/// Restores the bodies of `rows` to `base`.
+fn restore(bodies: &mut [BodyState], base: &[BodyState], rows: &[Row]) {
+    for r in rows {
+        for i in [r.a, r.b].into_iter().flatten() {
+            bodies[i] = base[i];
+        }
+    }
+}
+
+/// Solves one independent group of rows (see [`solve`]); `bound` sizes the active-set loop
+/// (the total number of rows, as in the all-rows solve). Returns false if the normal system
+/// was not finite (the group's impulses are then zero and its bodies restored).
+fn solve_group(
+    bodies: &mut [BodyState],
+    base: &[BodyState],
+    rows: &mut [Row],
+    h: f64,
+    bound: usize,
+) -> bool {
+    let any_dynamic = rows.iter().any(|r| {
+        [r.a, r.b]
+            .into_iter()
+            .flatten()
+            .any(|i| bodies[i].is_dynamic())
+    });
     let mut ok = true;
     let outer = if any_dynamic { OUTER_ITERATIONS } else { 1 };
-    for it in 0..outer {
-        bodies.copy_from_slice(&base);
+    for _ in 0..outer {
+        restore(bodies, base, rows);
         for r in rows.iter() {
             apply_linear(bodies, r, &r.jt);
             apply_torque(bodies, r, r.jtw);
         }
-        ok = solve_normal(bodies, rows, h);
+        ok = if let [r] = rows {
+            solve_normal_single(bodies, r, h)
+        } else {
+            solve_normal(bodies, rows, h, bound)
+        };
         if !ok {
             break;
         }
@@ -348,10 +543,9 @@ pub(crate) fn solve(bodies: &mut [BodyState], rows: &mut [Row], h: f64) -> bool 
         for _ in 0..FRICTION_SWEEPS {
             friction_sweep(bodies, rows, h);
         }
-        let _ = it;
     }
     if !ok {
-        bodies.copy_from_slice(&base);
+        restore(bodies, base, rows);
         for r in rows.iter_mut() {
             r.jn = 0.0;
             r.jt = Vector3::zeros();

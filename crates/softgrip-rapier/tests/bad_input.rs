@@ -36,6 +36,20 @@ fn bad_input_is_rejected_with_typed_errors() {
             ..
         }
     ));
+    for v in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let e = SoftFingertip::builder(0.01)
+            .material(m)
+            .restitution_speed(v)
+            .build()
+            .unwrap_err();
+        assert!(matches!(
+            e,
+            Error::InvalidParameter {
+                field: "restitution_speed",
+                ..
+            }
+        ));
+    }
     let e = SoftFingertip::builder(0.01)
         .material(m)
         .friction(f64::NAN)

@@ -9,8 +9,9 @@ use softgrip_rapier::{SoftFingertip, SoftWorld};
 
 const R: f64 = 0.01;
 
-#[test]
-fn quasi_static_squeeze_matches_law() {
+/// Worst errors of a squeeze at `speed` [m/s] (plate approach) with restitution `e`: (vs the
+/// law at half the approach, vs the law at the readout's delta, x reached, substeps total).
+fn squeeze(restitution: f64, speed: f64, tolerance: f64) -> (f64, f64, f64, u64) {
     let mut world = SoftWorld::new();
     let floor = world
         .colliders
@@ -18,7 +19,7 @@ fn quasi_static_squeeze_matches_law() {
     let tip = SoftFingertip::builder(R)
         .material(Material::try_new(3.0e6, 0.49).unwrap())
         .level(Level::fit())
-        .restitution(1.0)
+        .restitution(restitution)
         .build()
         .unwrap();
     let law = tip.law().clone();
@@ -54,7 +55,6 @@ fn quasi_static_squeeze_matches_law() {
     );
     world.register(ball, tip).unwrap();
 
-    let speed = 0.002; // m/s
     let dt = world.params.dt as f64;
     let (mut worst, mut worst_geom, mut samples) = (0.0f64, 0.0f64, 0);
     let mut x_reached = 0.0;
@@ -76,16 +76,6 @@ fn quasi_static_squeeze_matches_law() {
         let x = delta / R;
         let top = world.soft.contacts().iter().find(|c| c.other == plate);
         let bottom = world.soft.contacts().iter().find(|c| c.other == floor);
-        if std::env::var("DBG2").is_ok() {
-            let yb = world.bodies[ball_body].translation().y as f64;
-            println!(
-                "x {x:.5} yb {yb:.7e} vy {:.4e} sub {} top {:?} bot {:?}",
-                world.bodies[ball_body].linvel().y,
-                world.soft.counters().substeps_last,
-                top.map(|c| (c.normal_force, c.delta)),
-                bottom.map(|c| (c.normal_force, c.delta))
-            );
-        }
         if x < 0.05 {
             continue;
         }
@@ -93,42 +83,47 @@ fn quasi_static_squeeze_matches_law() {
         let f_law = law.response(delta).force;
         let err = (top.normal_force / f_law - 1.0).abs();
         let err_b = (bottom.normal_force / f_law - 1.0).abs();
-        // Against the geometry of the ball's own position.
-        let yb = world.bodies[ball_body].translation().y as f64;
-        let d_top = yb + R - plate_bottom;
-        let _ = d_top;
         // Against the law at the readout's own compression (the end-of-step geometry).
         let err_geom = (top.normal_force / law.response(top.delta).force - 1.0).abs();
-        if std::env::var("DBG").is_ok() {
-            println!(
-                "x {x:.4} top F {:.4} d {:.6e} | d_top {:.6e} | bottom F {:.4} d {:.6e} | law(d/2) {:.4} law(top.delta) {:.4} yb {:.6e} vy {:.3e} sub {}",
-                top.normal_force,
-                top.delta,
-                d_top,
-                bottom.normal_force,
-                bottom.delta,
-                f_law,
-                law.response(top.delta).force,
-                yb,
-                world.bodies[ball_body].linvel().y,
-                world.soft.counters().substeps_last
-            );
-        }
         worst = worst.max(err).max(err_b);
         worst_geom = worst_geom.max(err_geom);
         samples += 1;
         x_reached = x;
         assert!(
-            std::env::var("DBG").is_ok() || err < 0.005 && err_b < 0.005,
+            err < tolerance && err_b < tolerance,
             "x = {x:.4}: top {} N, bottom {} N, law {f_law} N",
             top.normal_force,
             bottom.normal_force
         );
     }
+    assert!(samples > 10);
+    (
+        worst,
+        worst_geom,
+        x_reached,
+        world.soft.counters().substeps_total,
+    )
+}
+
+#[test]
+fn quasi_static_squeeze_matches_law() {
+    let (worst, worst_geom, x_reached, substeps) = squeeze(1.0, 0.002, 0.005);
     println!(
-        "quasi-static squeeze: {samples} samples to x = {x_reached:.3}, worst |F/F_law - 1| = {worst:.2e} (half approach), {worst_geom:.2e} (readout delta); substeps total {}",
-        world.soft.counters().substeps_total
+        "quasi-static squeeze (e = 1, 2 mm/s): to x = {x_reached:.3}, worst |F/F_law - 1| = {worst:.2e} (half approach), {worst_geom:.2e} (readout delta); substeps total {substeps}"
     );
     assert!(x_reached > 0.79);
     assert!(worst_geom < 0.005);
+}
+
+/// A dissipative fingertip (e = 0.5 at 1 m/s) squeezed at 5 mm/s reads the elastic law: the
+/// Hunt-Crossley damping adds `alpha d delta/dt` ~ 0.3 % at most (it no longer depends on the
+/// contact's approach speed).
+#[test]
+fn slow_squeeze_with_dissipation_reads_elastic_law() {
+    let (worst, worst_geom, x_reached, substeps) = squeeze(0.5, 0.005, 0.01);
+    println!(
+        "squeeze (e = 0.5, 5 mm/s): to x = {x_reached:.3}, worst |F/F_law - 1| = {worst:.2e} (half approach), {worst_geom:.2e} (readout delta); substeps total {substeps}"
+    );
+    assert!(x_reached > 0.79);
+    assert!(worst < 0.01 && worst_geom < 0.01);
 }

@@ -1,0 +1,8 @@
+#![doc = include_str!("../README.md")]
+
+pub mod bounce;
+pub mod fe;
+pub mod fem_ball;
+pub mod icosphere;
+pub mod overhead;
+pub mod squeeze;

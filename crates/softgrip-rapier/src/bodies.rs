@@ -1,0 +1,212 @@
+//! The solver's view of rapier's bodies: the body table (velocity, inverse mass and inertia in
+//! `f64`), the paths of position-based kinematic bodies over a split step, and the gravity
+//! bookkeeping of a split step.
+
+use std::collections::HashMap;
+
+use nalgebra::{Matrix3, Vector3};
+use rapier3d::prelude::{Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector};
+
+use crate::counters::SoftCounters;
+use crate::detect::{to_f32, to_f64};
+use crate::solve::{BodyState, Row};
+
+/// Velocity of a kinematic body over the coming (sub)step: (linear [m/s], angular [rad/s]).
+pub(crate) type KinematicVelocity = HashMap<RigidBodyHandle, (Vector3<f64>, Vector3<f64>)>;
+
+/// A position-based kinematic body's path over one step: (handle, start pose, target pose).
+pub(crate) type KinematicPath = (RigidBodyHandle, Pose, Pose);
+
+/// The solver's body table under construction.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct BodyTable {
+    index: HashMap<RigidBodyHandle, usize>,
+    pub table: Vec<BodyState>,
+    pub handles: Vec<RigidBodyHandle>,
+}
+
+impl BodyTable {
+    /// Empties the table, keeping its buffers.
+    pub(crate) fn clear(&mut self) {
+        self.index.clear();
+        self.table.clear();
+        self.handles.clear();
+    }
+}
+
+/// The paths of every position-based kinematic body over the coming step.
+pub(crate) fn kinematic_paths(bodies: &RigidBodySet) -> Vec<KinematicPath> {
+    bodies
+        .iter()
+        .filter(|(_, rb)| rb.body_type() == RigidBodyType::KinematicPositionBased)
+        .map(|(h, rb)| (h, *rb.position(), *rb.next_position()))
+        .collect()
+}
+
+/// The pose at fraction `s` of a path (linear in translation, slerp in rotation).
+pub(crate) fn interpolate(start: &Pose, target: &Pose, s: f32) -> Pose {
+    Pose::from_parts(
+        start.translation.lerp(target.translation, s),
+        start.rotation.slerp(target.rotation, s),
+    )
+}
+
+/// Velocities of the position-based kinematic bodies over the part of their path that ends at
+/// fraction `s` of the step, taking `h` seconds.
+pub(crate) fn kinematic_velocities(
+    bodies: &RigidBodySet,
+    kinematic: &[KinematicPath],
+    s: f64,
+    h: f64,
+) -> KinematicVelocity {
+    let mut out = HashMap::new();
+    for (handle, start, target) in kinematic {
+        let Some(rb) = bodies.get(*handle) else {
+            continue;
+        };
+        let goal = interpolate(start, target, s as f32);
+        let now = rb.position();
+        let v = to_f64(goal.translation - now.translation) / h;
+        let (axis, mut angle) = (goal.rotation * now.rotation.inverse()).to_axis_angle();
+        if angle > std::f32::consts::PI {
+            angle -= 2.0 * std::f32::consts::PI;
+        }
+        let w = to_f64(axis * angle) / h;
+        out.insert(*handle, (v, w));
+    }
+    out
+}
+
+/// Applies the gravity impulse `m g tau` to every awake dynamic body.
+pub(crate) fn gravity_kick(bodies: &mut RigidBodySet, gravity: Vector, tau: f64) {
+    for (_, rb) in bodies.iter_mut() {
+        if rb.is_dynamic() && !rb.is_sleeping() && rb.is_enabled() {
+            let imp = gravity * (rb.gravity_scale() * rb.mass() * tau as f32);
+            rb.apply_impulse(imp, false);
+        }
+    }
+}
+
+/// The body's row in the solver's table: for a dynamic body, its velocity with the external
+/// accelerations (gravity, user force and torque) integrated over `h_drift` [s] (see
+/// `SoftWorld::prepare`), its inverse mass and inertia.
+pub(crate) fn body_index(
+    bodies: &RigidBodySet,
+    handle: RigidBodyHandle,
+    h_drift: f64,
+    gravity: Vector,
+    kin_vel: &KinematicVelocity,
+    tb: &mut BodyTable,
+) -> Option<usize> {
+    if let Some(i) = tb.index.get(&handle) {
+        return Some(*i);
+    }
+    let rb = bodies.get(handle)?;
+    let mp = rb.mass_properties();
+    let com = to_f64(mp.world_com);
+    let state = if rb.is_dynamic() && !rb.is_sleeping() {
+        let ii = &mp.effective_world_inv_inertia;
+        let inv_i = Matrix3::new(
+            ii.m11 as f64,
+            ii.m12 as f64,
+            ii.m13 as f64,
+            ii.m12 as f64,
+            ii.m22 as f64,
+            ii.m23 as f64,
+            ii.m13 as f64,
+            ii.m23 as f64,
+            ii.m33 as f64,
+        );
+        let inv_m = to_f64(mp.effective_inv_mass);
+        // rapier adds gravity, the user force and torque during its step: predict them.
+        let gravity = to_f64(gravity) * rb.gravity_scale() as f64;
+        let v = to_f64(rb.linvel())
+            + (inv_m.component_mul(&to_f64(rb.user_force())) + gravity) * h_drift;
+        let w = to_f64(rb.angvel()) + inv_i * to_f64(rb.user_torque()) * h_drift;
+        let a_ext = inv_m.component_mul(&to_f64(rb.user_force())) + gravity;
+        BodyState {
+            v,
+            w,
+            inv_m,
+            inv_i,
+            com,
+            a_ext,
+        }
+    } else if rb.is_kinematic() {
+        let (v, w) = kin_vel
+            .get(&handle)
+            .copied()
+            .unwrap_or((to_f64(rb.linvel()), to_f64(rb.angvel())));
+        BodyState {
+            v,
+            w,
+            inv_m: Vector3::zeros(),
+            inv_i: Matrix3::zeros(),
+            com,
+            a_ext: Vector3::zeros(),
+        }
+    } else {
+        BodyState {
+            v: Vector3::zeros(),
+            w: Vector3::zeros(),
+            inv_m: Vector3::zeros(),
+            inv_i: Matrix3::zeros(),
+            com,
+            a_ext: Vector3::zeros(),
+        }
+    };
+    if !(state.v.iter().chain(state.w.iter()).all(|x| x.is_finite())) {
+        return None;
+    }
+    tb.table.push(state);
+    tb.handles.push(handle);
+    tb.index.insert(handle, tb.table.len() - 1);
+    Some(tb.table.len() - 1)
+}
+
+/// Applies the rows' impulses to rapier's bodies. They are summed per body in `f64` and
+/// applied as one velocity change (the only `f64 -> f32` conversion). Applied one by one,
+/// rapier's `f32` velocity would have to hold each contact's velocity change before they
+/// cancel: a cell (m = 1.2e-11 kg) held between two plates gets +-3e3 m/s per contact and
+/// per step, whose `f32` sum leaves up to 2.4e-4 m/s of rounding, an 8 um jump per step
+/// (half the cell's radius), measured in `tests/micro_cells_squeeze.rs`.
+pub(crate) fn apply_impulses(
+    bodies: &mut RigidBodySet,
+    table: &[BodyState],
+    handles: &[RigidBodyHandle],
+    rows: &[Row],
+    counters: &mut SoftCounters,
+    net: &mut Vec<(Vector3<f64>, Vector3<f64>)>,
+) {
+    net.clear();
+    net.resize(table.len(), (Vector3::zeros(), Vector3::zeros()));
+    for row in rows {
+        let imp = row.n * row.jn + row.jt;
+        if !(imp.iter().all(|v| v.is_finite()) && row.jtw.is_finite()) {
+            counters.non_finite += 1;
+            continue;
+        }
+        let torque = row.n * row.jtw;
+        for (body, sign) in [(row.a, 1.0), (row.b, -1.0)] {
+            let Some(bi) = body else { continue };
+            let arm = row.p - table[bi].com;
+            net[bi].0 += imp * sign;
+            net[bi].1 += (arm.cross(&imp) + torque) * sign;
+        }
+    }
+    for ((b, (lin, ang)), handle) in table.iter().zip(net.iter()).zip(handles) {
+        if b.inv_m == Vector3::zeros() {
+            continue;
+        }
+        let (dv, dw) = (b.inv_m.component_mul(lin), b.inv_i * ang);
+        if !(dv.iter().chain(dw.iter()).all(|v| v.is_finite())) {
+            counters.non_finite += 1;
+            continue;
+        }
+        if let Some(rb) = bodies.get_mut(*handle) {
+            let (v, w) = (to_f64(rb.linvel()) + dv, to_f64(rb.angvel()) + dw);
+            rb.set_linvel(to_f32(&v), true);
+            rb.set_angvel(to_f32(&w), true);
+        }
+    }
+}

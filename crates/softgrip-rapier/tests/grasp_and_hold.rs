@@ -1,0 +1,101 @@
+//! Hard case 8, grasp and hold: two soft fingertips on kinematic jaws squeeze a 200 g box
+//! (5 cm cube) with a 5 N grip (squeeze depth from the law's inverse), lift it 0.1 m and hold
+//! it 10 s at dt = 1/60 s. mu = 0.3, so the friction limit 2 mu F = 3 N holds the 1.96 N
+//! weight, and half the grip (1.5 N) does not.
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+mod common;
+
+use common::{Grasp, GraspSpec};
+
+struct Outcome {
+    /// Box height relative to the jaws at the end of settle minus at the end, [m].
+    slip: f64,
+    /// Largest |slip| during the hold [m].
+    slip_hold_max: f64,
+    turn_deg: f64,
+    grip_force: f64,
+    lifted: f64,
+}
+
+fn run(spec: &GraspSpec) -> Outcome {
+    let mut g = common::grasp(spec);
+    let mut rel0 = None;
+    let mut rel_hold0 = None;
+    let mut slip_hold_max = 0.0f64;
+    let mut grip_force = 0.0;
+    g.run(0.1, 10.0, |g: &Grasp, phase| {
+        assert!(common::all_finite(&g.world), "non-finite in {phase}");
+        let rel = g.object_y() - g.jaw_y();
+        if phase == "settle" {
+            rel0 = Some(rel);
+        }
+        if phase == "hold" {
+            let r0 = *rel_hold0.get_or_insert(rel);
+            slip_hold_max = slip_hold_max.max((rel - r0).abs());
+            grip_force = g
+                .world
+                .soft
+                .contacts_of(g.tips[0])
+                .map(|c| c.normal_force)
+                .sum::<f64>();
+        }
+    });
+    let rel = g.object_y() - g.jaw_y();
+    Outcome {
+        slip: rel0.unwrap() - rel,
+        slip_hold_max,
+        turn_deg: g.object_turn_deg(),
+        grip_force,
+        lifted: g.object_y() - g.half,
+    }
+}
+
+#[test]
+fn box_held_10_s_slips_less_than_1_mm() {
+    let o = run(&GraspSpec::default());
+    println!(
+        "grasp 5 N: slip {:.3e} m (hold only {:.3e} m), lifted {:.4} m, grip {:.4} N, turn {:.3} deg",
+        o.slip, o.slip_hold_max, o.lifted, o.grip_force, o.turn_deg
+    );
+    assert!(o.slip.abs() < 1e-3);
+    assert!(o.slip_hold_max < 1e-3);
+    assert!((o.lifted - 0.1).abs() < 2e-3);
+    assert!((o.grip_force / 5.0 - 1.0).abs() < 0.05);
+}
+
+#[test]
+fn off_centre_load_turns_less_than_2_degrees_thanks_to_torsion() {
+    // Centre of mass 2 mm off the grip axis: 1.96 N x 2 mm = 3.9 mN m, below the torsion limit
+    // 2 (3 pi/16) mu F a = 2 x 0.589 x 0.3 x 5 N x ~3.7 mm = 6.5 mN m.
+    let with = run(&GraspSpec {
+        com_offset_z: 0.002,
+        ..GraspSpec::default()
+    });
+    let without = run(&GraspSpec {
+        com_offset_z: 0.002,
+        torsion: false,
+        ..GraspSpec::default()
+    });
+    println!(
+        "off-centre load: turn {:.3} deg with torsion, {:.2} deg without; slip {:.3e} m",
+        with.turn_deg, without.turn_deg, with.slip
+    );
+    assert!(with.turn_deg < 2.0);
+    assert!(without.turn_deg > 10.0);
+    assert!(with.slip.abs() < 1e-3);
+}
+
+#[test]
+fn half_grip_below_friction_limit_slips() {
+    let o = run(&GraspSpec {
+        grip_force: 2.5,
+        ..GraspSpec::default()
+    });
+    println!(
+        "grasp 2.5 N (limit 1.5 N < 1.96 N weight): slip {:.4} m, lifted {:.4} m",
+        o.slip, o.lifted
+    );
+    assert!(o.slip > 0.05);
+}
