@@ -1,13 +1,14 @@
 //! [`SoftContacts`]: the plugin's state: registered fingertips, per-contact memory, readout.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
+use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::{ActiveCollisionTypes, ColliderHandle, ColliderSet, InteractionGroups};
 
 use crate::bodies::BodyTable;
 use crate::counters::SoftCounters;
-use crate::detect::{Geom, Model};
+use crate::detect::{Geom, Model, raw};
 use crate::error::{Error, Result};
 use crate::fingertip::SoftFingertip;
 use crate::hooks::SoftHooks;
@@ -20,10 +21,12 @@ use crate::substep::SoftAccuracy;
 pub(crate) struct PairState {
     /// Friction anchor on the other body, in its collider's frame [m].
     pub anchor_local: Vector3<f64>,
+    /// The last substep in contact (`Scratch::stamp`).
+    pub stamp: u64,
 }
 
 /// Buffers of one step, kept between steps so that a warm step allocates nothing (apart from
-/// the readout's per-contact law handles and the dense LU of coupled contact groups).
+/// the dense LU of coupled contact groups).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Scratch {
     /// The solver's body table.
@@ -31,13 +34,17 @@ pub(crate) struct Scratch {
     /// The contacts prepared for the solve.
     pub rows: Vec<Row>,
     /// The law and coefficients of each row.
-    pub models: Vec<Model>,
+    pub models: Vec<Arc<Model>>,
     /// Index into `SoftContacts::geoms` of each row.
     pub geom: Vec<usize>,
     /// The solver's buffers.
     pub solve: SolveScratch,
-    /// The pairs in contact this substep.
-    pub live: HashSet<(ColliderHandle, ColliderHandle)>,
+    /// Normal mobility of each row [1/kg].
+    pub mobility: Vec<f64>,
+    /// Pairs in contact without a row this substep (no model, or non-finite).
+    pub skipped: Vec<(ColliderHandle, ColliderHandle)>,
+    /// Substep counter stamped on the pairs in contact (the others are forgotten).
+    pub stamp: u64,
     /// Net impulse per body (linear, angular) of a substep.
     pub net: Vec<(Vector3<f64>, Vector3<f64>)>,
     /// Detection candidates of one fingertip.
@@ -53,9 +60,13 @@ pub struct SoftContacts {
     /// The collision groups each fingertip's collider had at registration (the collider's own
     /// are set to `InteractionGroups::none()`, which keeps rapier's narrow phase off it).
     pub(crate) groups: HashMap<ColliderHandle, InteractionGroups>,
+    /// The fingertips and their collision groups, in handle order (the detection's order).
+    pub(crate) tip_order: Vec<(ColliderHandle, InteractionGroups)>,
     pub(crate) hooks: SoftHooks,
     pub(crate) pairs: HashMap<(ColliderHandle, ColliderHandle), PairState>,
-    pub(crate) soft_pairs: HashMap<(ColliderHandle, ColliderHandle), Option<Model>>,
+    pub(crate) soft_pairs: HashMap<(ColliderHandle, ColliderHandle), Option<Arc<Model>>>,
+    /// The contact model of each fingertip on a rigid body (shared by its contacts).
+    pub(crate) tip_models: HashMap<ColliderHandle, Arc<Model>>,
     pub(crate) contacts: Vec<SoftContact>,
     pub(crate) counters: SoftCounters,
     pub(crate) accuracy: SoftAccuracy,
@@ -126,8 +137,12 @@ impl SoftContacts {
                 | ActiveCollisionTypes::KINEMATIC_KINEMATIC,
         );
         self.hooks.insert(collider);
+        self.tip_models
+            .insert(collider, Arc::new(Model::of_tip(&fingertip)));
         self.tips.insert(collider, fingertip);
         self.groups.insert(collider, groups);
+        self.tip_order = self.groups.iter().map(|(h, g)| (*h, *g)).collect();
+        self.tip_order.sort_unstable_by_key(|(h, _)| raw(*h));
         Ok(())
     }
 
@@ -174,15 +189,15 @@ impl SoftContacts {
     }
 
     /// The contact model of a geometry (the fingertip's, or the combined one of two).
-    pub(crate) fn model(&mut self, g: &Geom) -> Option<Model> {
+    pub(crate) fn model(&mut self, g: &Geom) -> Option<Arc<Model>> {
         if g.soft_pair {
             let (a, b) = (self.tips.get(&g.tip)?, self.tips.get(&g.other)?);
             self.soft_pairs
                 .entry((g.tip, g.other))
-                .or_insert_with(|| Model::of_pair(a, b))
+                .or_insert_with(|| Model::of_pair(a, b).map(Arc::new))
                 .clone()
         } else {
-            self.tips.get(&g.tip).map(Model::of_tip)
+            self.tip_models.get(&g.tip).cloned()
         }
     }
 }

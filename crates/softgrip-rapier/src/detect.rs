@@ -117,9 +117,12 @@ pub(crate) struct Scene<'a> {
     pub broad_phase: &'a BroadPhaseBvh,
     /// The fingertips' collision groups (their colliders' own are `none()`).
     pub groups: &'a HashMap<ColliderHandle, InteractionGroups>,
+    /// The fingertips and their collision groups, in handle order.
+    pub tip_order: &'a [(ColliderHandle, InteractionGroups)],
 }
 
-/// Finds the soft contacts of every fingertip in `tips`, within a prediction distance that
+/// Finds the soft contacts of every fingertip (`scene.tip_order`; `tips` tells the soft
+/// colliders apart), within a prediction distance that
 /// covers the step `dt` [s], and writes them to `out` (`candidates` is a reused buffer).
 ///
 /// Candidates come from one query of rapier's broad-phase BVH per fingertip, so the cost per
@@ -157,7 +160,8 @@ pub(crate) fn detect(
             w_max = w_max.max(rb.angvel().length());
         }
     }
-    for (&tip_h, tip) in tips {
+    // In handle order: the contacts come out sorted by (fingertip, other).
+    for &(tip_h, tip_groups) in scene.tip_order {
         let Some(tip_co) = scene.colliders.get(tip_h) else {
             continue;
         };
@@ -187,51 +191,56 @@ pub(crate) fn detect(
         let lo = centre.min(centre + sweep) - Vector::splat(reach);
         let hi = centre.max(centre + sweep) + Vector::splat(reach);
 
-        candidates.clear();
-        candidates.extend(
-            qp.intersect_aabb_conservative(Aabb::new(lo, hi))
-                .map(|(h, _)| h)
-                .filter(|h| *h != tip_h),
-        );
-        // Each candidate once (sort + dedup: linear-logarithmic in the candidates).
-        candidates.sort_unstable_by_key(|h| raw(*h));
-        candidates.dedup();
         let tip_aabb = tip_co.compute_aabb();
         // The largest prediction distance of this fingertip's pairs (see below), for the
         // prefilter before any per-pair lookup.
         let max_prediction =
             0.05 * r + (v_tip.length() + w_tip.length() * r + v_max + w_max * r) * dt as f32 * 1.5;
+        // AABB prefilter, on the query's own iteration (no second collider lookup, nothing
+        // sorted but the survivors): the shapes are at least as far apart as their current
+        // AABBs.
+        let gap_of = |other_co: &rapier3d::prelude::Collider| {
+            let other_aabb = other_co.compute_aabb();
+            (other_aabb.mins - tip_aabb.maxs)
+                .max(tip_aabb.mins - other_aabb.maxs)
+                .max_element()
+        };
+        candidates.clear();
+        candidates.extend(
+            qp.intersect_aabb_conservative(Aabb::new(lo, hi))
+                .filter(|(h, co)| *h != tip_h && gap_of(co) <= max_prediction + 0.01 * r)
+                .map(|(h, _)| h),
+        );
+        // Each candidate once (sort + dedup: linear-logarithmic in the candidates).
+        candidates.sort_unstable_by_key(|h| raw(*h));
+        candidates.dedup();
 
         for &other_h in candidates.iter() {
             let Some(other_co) = scene.colliders.get(other_h) else {
                 continue;
             };
-            // AABB prefilter: the shapes are at least as far apart as their AABBs.
-            let other_aabb = other_co.compute_aabb();
-            let gap = (other_aabb.mins - tip_aabb.maxs)
-                .max(tip_aabb.mins - other_aabb.maxs)
-                .max_element();
-            if gap > max_prediction + 0.01 * r {
-                continue;
-            }
+            let gap = gap_of(other_co);
             if other_co.is_sensor() || !other_co.is_enabled() {
-                continue;
-            }
-            let groups_of = |h: ColliderHandle, co: &rapier3d::prelude::Collider| {
-                scene
-                    .groups
-                    .get(&h)
-                    .copied()
-                    .unwrap_or(co.collision_groups())
-            };
-            if !groups_of(tip_h, tip_co).test(groups_of(other_h, other_co)) {
                 continue;
             }
             let other_body = other_co.parent();
             if tip_body.is_some() && tip_body == other_body {
                 continue;
             }
+            // A fingertip's own collision groups are `none()` (moved into `scene.groups`).
             let soft_pair = tips.contains_key(&other_h);
+            let other_groups = if soft_pair {
+                scene
+                    .groups
+                    .get(&other_h)
+                    .copied()
+                    .unwrap_or(other_co.collision_groups())
+            } else {
+                other_co.collision_groups()
+            };
+            if !tip_groups.test(other_groups) {
+                continue;
+            }
             if soft_pair && raw(other_h) < raw(tip_h) {
                 // Soft-soft pairs are handled once, from the fingertip with the smaller handle.
                 continue;
@@ -292,9 +301,8 @@ pub(crate) fn detect(
                 soft_pair,
             });
         }
-        let _ = tip; // the fingertip's law is looked up by the caller
     }
-    // Deterministic order, whatever the hash map's iteration order.
+    // Deterministic order (already sorted: fingertips and candidates in handle order).
     out.sort_by_key(|g| (raw(g.tip), raw(g.other)));
 }
 

@@ -2,6 +2,7 @@
 //! substeps' impulses.
 
 use std::collections::HashMap;
+use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
@@ -55,13 +56,13 @@ pub struct SoftContact {
     pub max_delta: f64,
     /// Time in contact (compression > 0) during the step [s].
     pub contact_duration: f64,
-    pub(crate) law: ContactLaw,
+    pub(crate) model: Arc<Model>,
 }
 
 impl SoftContact {
     /// Contact radius and pressure at `delta` (computed now).
     pub fn patch(&self) -> ContactPatch {
-        self.law.patch(self.delta)
+        self.model.law.patch(self.delta)
     }
 
     /// Whether the compression was past the law's validity range during the step
@@ -78,7 +79,7 @@ impl SoftContact {
 
     /// The contact's law (for a fingertip on a rigid body, the fingertip's own).
     pub fn law(&self) -> &ContactLaw {
-        &self.law
+        &self.model.law
     }
 }
 
@@ -96,37 +97,94 @@ pub(crate) struct Accum {
     point: Vector3<f64>,
     normal: Vector3<f64>,
     delta_end: f64,
-    model: Model,
+    model: Arc<Model>,
 }
 
-/// The sums of every contact of a step, keyed by (fingertip, other).
-pub(crate) type Accums = HashMap<(ColliderHandle, ColliderHandle), Accum>;
+/// Key of a contact: (fingertip, other).
+type Key = (ColliderHandle, ColliderHandle);
+
+/// The sums of every contact of a step, in the order of their first substep. The first
+/// substep's contacts are unique and are pushed without any lookup; a key index (a hash map)
+/// is only built and used from the second substep of a split step on.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Accums {
+    list: Vec<(Key, Accum)>,
+    index: HashMap<Key, usize>,
+    /// Contacts of the current substep are looked up in `index` (not the first substep).
+    indexed: bool,
+}
+
+impl Accums {
+    /// Empties the sums (buffers kept), before the first substep of a step.
+    pub(crate) fn clear(&mut self) {
+        self.list.clear();
+        self.index.clear();
+        self.indexed = false;
+    }
+
+    /// Starts a substep: from the second one on, contacts are merged by key.
+    pub(crate) fn begin_substep(&mut self) {
+        if !self.list.is_empty() && !self.indexed {
+            self.index.clear();
+            self.index
+                .extend(self.list.iter().enumerate().map(|(i, (k, _))| (*k, i)));
+            self.indexed = true;
+        }
+    }
+}
 
 /// Adds one substep of `h` seconds of a contact: its solved `row`, its `model`, its
-/// compression at the start of the substep `delta` and at its end `delta_end` [m].
+/// compression at the start of the substep `delta` and at its end `delta_end` [m]. Within a
+/// substep each key comes at most once.
 pub(crate) fn accumulate(
     acc: &mut Accums,
-    key: (ColliderHandle, ColliderHandle),
+    key: Key,
     row: &Row,
-    model: Model,
+    model: Arc<Model>,
     delta: f64,
     delta_end: f64,
     h: f64,
 ) {
-    let e = acc.entry(key).or_insert_with(|| Accum {
-        jn: 0.0,
-        jt: Vector3::zeros(),
-        jtw: 0.0,
-        sliding: false,
-        extended: false,
-        peak_force: 0.0,
-        max_delta: 0.0,
-        duration: 0.0,
-        point: row.p,
-        normal: row.n,
-        delta_end,
-        model: model.clone(),
-    });
+    let slot = if acc.indexed {
+        acc.index.get(&key).copied()
+    } else {
+        None
+    };
+    let i = match slot {
+        Some(i) => i,
+        None => {
+            let i = acc.list.len();
+            if acc.indexed {
+                acc.index.insert(key, i);
+            }
+            acc.list.push((
+                key,
+                Accum {
+                    jn: 0.0,
+                    jt: Vector3::zeros(),
+                    jtw: 0.0,
+                    sliding: false,
+                    extended: false,
+                    peak_force: 0.0,
+                    max_delta: 0.0,
+                    duration: 0.0,
+                    point: row.p,
+                    normal: row.n,
+                    delta_end,
+                    model,
+                },
+            ));
+            let e = &mut acc.list[i].1;
+            add(e, row, delta, delta_end, h);
+            return;
+        }
+    };
+    let e = &mut acc.list[i].1;
+    add(e, row, delta, delta_end, h);
+    e.model = model;
+}
+
+fn add(e: &mut Accum, row: &Row, delta: f64, delta_end: f64, h: f64) {
     e.jn += row.jn;
     e.jt += row.jt;
     e.jtw += row.jtw;
@@ -140,14 +198,13 @@ pub(crate) fn accumulate(
     e.point = row.p;
     e.normal = row.n;
     e.delta_end = delta_end;
-    e.model = model;
 }
 
 /// The readout of a step of `dt` seconds (impulses / dt), in a deterministic order, written to
 /// `out`; `acc` is emptied (its buffer kept).
 pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<SoftContact>) {
     out.clear();
-    for ((tip, other), a) in acc.drain() {
+    for ((tip, other), a) in acc.list.drain(..) {
         if a.jn <= 0.0 && a.delta_end <= 0.0 {
             continue;
         }
@@ -170,8 +227,10 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<SoftContact>) {
             peak_normal_force: a.peak_force,
             max_delta: a.max_delta,
             contact_duration: a.duration,
-            law: a.model.law,
+            model: a.model,
         });
     }
+    acc.clear();
+    // Already sorted unless a split step found new contacts after its first substep.
     out.sort_by_key(|c| (raw(c.fingertip), raw(c.other)));
 }

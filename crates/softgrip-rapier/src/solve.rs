@@ -21,8 +21,9 @@
 //! positional correction `beta * offset / h` back to the anchor, and is clamped to the disk
 //! `mu_f j_n`. If clamped, the contact slides. Torsion about the normal targets zero relative
 //! spin and is clamped to `(3 pi / 16) mu_f a j_n` (a Hertz-shaped pressure over the law's
-//! contact radius `a`). Friction is solved by Gauss-Seidel sweeps, alternated with the normal
-//! solve.
+//! contact radius `a`). In a coupled group, friction is solved by Gauss-Seidel sweeps,
+//! alternated with the normal solve; a lone contact (a group of one) takes the normal impulse
+//! and then friction and torsion in closed form, once (no iteration).
 
 use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, Vector2, Vector3};
 
@@ -512,6 +513,9 @@ fn solve_group(
     h: f64,
     bound: usize,
 ) -> bool {
+    if let [r] = rows {
+        return solve_single(bodies, base, r, h);
+    }
     let any_dynamic = rows.iter().any(|r| {
         [r.a, r.b]
             .into_iter()
@@ -555,5 +559,40 @@ fn solve_group(
     for r in rows.iter_mut() {
         r.vn_end = normal_velocity(bodies, r);
     }
+    ok
+}
+
+/// [`solve_group`] for a lone contact (a fingertip on the ground): no outer or friction
+/// iterations. The normal impulse in closed form ([`solve_normal_single`]), then friction and
+/// torsion in closed form once: the tangential impulse cancels the relative tangential velocity
+/// plus the anchor bias (exact inverse of the 2 x 2 tangential mobility), clamped to the Coulomb
+/// disk `mu j_n`; the torsional impulse cancels the relative spin, clamped to `(3 pi/16) mu a
+/// j_n` (one [`friction_sweep`] of the row). The coupling of the friction impulses back into
+/// the normal velocity (through the rotation of the bodies) is not iterated.
+fn solve_single(bodies: &mut [BodyState], base: &[BodyState], r: &mut Row, h: f64) -> bool {
+    let dynamic = [r.a, r.b]
+        .into_iter()
+        .flatten()
+        .any(|i| bodies[i].is_dynamic());
+    let row = std::slice::from_mut(r);
+    restore(bodies, base, row);
+    let r = &mut row[0];
+    apply_linear(bodies, r, &r.jt);
+    apply_torque(bodies, r, r.jtw);
+    let ok = solve_normal_single(bodies, r, h);
+    if ok {
+        apply_linear(bodies, r, &(r.n * r.jn));
+        if dynamic {
+            friction_sweep(bodies, row, h);
+        }
+    } else {
+        restore(bodies, base, row);
+        let r = &mut row[0];
+        r.jn = 0.0;
+        r.jt = Vector3::zeros();
+        r.jtw = 0.0;
+    }
+    let r = &mut row[0];
+    r.vn_end = normal_velocity(bodies, r);
     ok
 }

@@ -131,6 +131,7 @@ impl SoftWorld {
             narrow_phase: &self.narrow_phase,
             broad_phase: &self.broad_phase,
             groups: &soft.groups,
+            tip_order: &soft.tip_order,
         };
         detect::detect(
             &scene,
@@ -166,7 +167,7 @@ impl SoftWorld {
         // 2.-3. Contacts now, and the substep count.
         self.detect(dt, &mut scratch.candidates);
         let kin_vel = bodies::kinematic_velocities(&self.bodies, &kinematic, 1.0, dt);
-        self.prepare(dt, &kin_vel, false, &mut scratch);
+        self.prepare(dt, &kin_vel, &mut scratch);
         let theta = self.soft.accuracy.theta();
         let mut n = 1u32;
         let table = &scratch.body_table.table;
@@ -210,6 +211,9 @@ impl SoftWorld {
             if i > 0 {
                 self.detect(h, &mut scratch.candidates);
             }
+            // An unsplit step's rows are those of the substep count's pass above: same
+            // geometry, same step, same kinematic velocities (they read the current poses).
+            let fresh = n == 1;
             let s = (i + 1) as f64 / n as f64;
             for (handle, start, target) in &kinematic {
                 if let Some(rb) = self.bodies.get_mut(*handle) {
@@ -217,7 +221,7 @@ impl SoftWorld {
                 }
             }
             let kin_vel = bodies::kinematic_velocities(&self.bodies, &kinematic, s, h);
-            self.substep_contacts(h, &kin_vel, &mut scratch);
+            self.substep_contacts(h, &kin_vel, fresh, &mut scratch);
             self.pipeline_step(h, self.gravity);
         }
         if n > 1 {
@@ -230,19 +234,15 @@ impl SoftWorld {
     }
 
     /// Body table and rows of the current geometry, for a step of `h` seconds, written to
-    /// `s` (`body_table`, `rows`, `models`, `geom`). With `update_state`, starts and ends the
-    /// contacts' memory (friction anchors).
-    fn prepare(
-        &mut self,
-        h: f64,
-        kin_vel: &KinematicVelocity,
-        update_state: bool,
-        s: &mut Scratch,
-    ) {
+    /// `s` (`body_table`, `rows`, `models`, `geom`, `mobility`), without the law's response
+    /// (see [`prepare_state`](Self::prepare_state)).
+    fn prepare(&mut self, h: f64, kin_vel: &KinematicVelocity, s: &mut Scratch) {
         s.body_table.clear();
         s.rows.clear();
         s.models.clear();
         s.geom.clear();
+        s.mobility.clear();
+        s.skipped.clear();
         let tb = &mut s.body_table;
         let geoms = std::mem::take(&mut self.soft.geoms);
         // rapier's step of h is N passes of "kick h/N, drift h/N": a constant acceleration a
@@ -251,6 +251,9 @@ impl SoftWorld {
         let h_drift = h * (passes + 1.0) / (2.0 * passes);
         for (gi, g) in geoms.iter().enumerate() {
             let Some(model) = self.soft.model(g) else {
+                if compression_from_signed_distance(g.dist) > 0.0 {
+                    s.skipped.push((g.tip, g.other));
+                }
                 continue;
             };
             let a = g
@@ -261,8 +264,7 @@ impl SoftWorld {
                 .and_then(|b| body_index(&self.bodies, b, h_drift, self.gravity, kin_vel, tb));
             let n = g.normal;
             let (t1, t2) = tangents(&n);
-            let delta = compression_from_signed_distance(g.dist);
-            let mut row = Row {
+            let row = Row {
                 a,
                 b,
                 p: g.point,
@@ -288,70 +290,104 @@ impl SoftWorld {
             let w = solve::normal_mobility(&tb.table, &row);
             if !(vn.is_finite() && w.is_finite()) {
                 self.soft.counters.non_finite += 1;
+                if compression_from_signed_distance(g.dist) > 0.0 {
+                    s.skipped.push((g.tip, g.other));
+                }
                 continue;
-            }
-            let key = (g.tip, g.other);
-            let other_pose = self.colliders.get(g.other).map(|c| *c.position());
-            if update_state && delta > 0.0 {
-                let resp = model.law.response(delta);
-                match resp.regime {
-                    Regime::Extended => {
-                        self.soft.counters.validity_excursions += 1;
-                        row.extended = true;
-                    }
-                    Regime::NonFinite => self.soft.counters.non_finite += 1,
-                    _ => {}
-                }
-                self.soft.counters.contacts_evaluated += 1;
-                let state = self.soft.pairs.entry(key).or_insert_with(|| PairState {
-                    anchor_local: other_pose
-                        .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
-                        .unwrap_or(g.point_other),
-                });
-                // Hunt-Crossley: F_total = F (1 + alpha d delta/dt), alpha a material constant.
-                row.force = resp.force;
-                row.stiffness = resp.stiffness;
-                row.damping = model.alpha * resp.force;
-                row.theta = if w > 0.0 {
-                    theta_blend((resp.stiffness * w).sqrt() * h)
-                } else {
-                    1.0
-                };
-                if model.friction > 0.0 {
-                    let a = model.law.patch(delta).radius;
-                    if model.torsion {
-                        row.torsion_arm = 3.0 * std::f64::consts::PI / 16.0 * model.friction * a;
-                    }
-                    let anchor = other_pose
-                        .map(|p| to_f64(p.transform_point(to_f32(&state.anchor_local))))
-                        .unwrap_or(state.anchor_local);
-                    let d = g.point_other - anchor;
-                    row.offset = d - n * n.dot(&d);
-                }
-            } else if update_state {
-                self.soft.pairs.remove(&key);
             }
             s.rows.push(row);
             s.models.push(model);
             s.geom.push(gi);
+            s.mobility.push(w);
         }
         self.soft.geoms = geoms;
     }
 
-    fn substep_contacts(&mut self, h: f64, kin_vel: &KinematicVelocity, s: &mut Scratch) {
+    /// The law's response of the prepared rows over a (sub)step of `h` seconds, and the
+    /// contacts' memory (friction anchors): started for new contacts, ended for pairs that are
+    /// no longer in contact.
+    fn prepare_state(&mut self, h: f64, s: &mut Scratch) {
+        s.stamp = s.stamp.wrapping_add(1);
+        let stamp = s.stamp;
+        let soft = &mut self.soft;
+        for (((row, model), &gi), &w) in s
+            .rows
+            .iter_mut()
+            .zip(&s.models)
+            .zip(&s.geom)
+            .zip(&s.mobility)
+        {
+            let g = &soft.geoms[gi];
+            let delta = compression_from_signed_distance(g.dist);
+            let key = (g.tip, g.other);
+            if !(delta > 0.0) {
+                soft.pairs.remove(&key);
+                continue;
+            }
+            let other_pose = self.colliders.get(g.other).map(|c| *c.position());
+            let resp = model.law.response(delta);
+            match resp.regime {
+                Regime::Extended => {
+                    soft.counters.validity_excursions += 1;
+                    row.extended = true;
+                }
+                Regime::NonFinite => soft.counters.non_finite += 1,
+                _ => {}
+            }
+            soft.counters.contacts_evaluated += 1;
+            let state = soft.pairs.entry(key).or_insert_with(|| PairState {
+                anchor_local: other_pose
+                    .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
+                    .unwrap_or(g.point_other),
+                stamp,
+            });
+            state.stamp = stamp;
+            // Hunt-Crossley: F_total = F (1 + alpha d delta/dt), alpha a material constant.
+            row.force = resp.force;
+            row.stiffness = resp.stiffness;
+            row.damping = model.alpha * resp.force;
+            row.theta = if w > 0.0 {
+                theta_blend((resp.stiffness * w).sqrt() * h)
+            } else {
+                1.0
+            };
+            if model.friction > 0.0 {
+                if model.torsion {
+                    // Only the torsion limit needs the contact radius.
+                    let a = model.law.patch(delta).radius;
+                    row.torsion_arm = 3.0 * std::f64::consts::PI / 16.0 * model.friction * a;
+                }
+                let anchor = other_pose
+                    .map(|p| to_f64(p.transform_point(to_f32(&state.anchor_local))))
+                    .unwrap_or(state.anchor_local);
+                let d = g.point_other - anchor;
+                row.offset = d - n_proj(&row.n, &d);
+            }
+        }
+        // Pairs in contact but without a row this substep (no model, non-finite) keep their
+        // memory.
+        for key in &s.skipped {
+            if let Some(state) = soft.pairs.get_mut(key) {
+                state.stamp = stamp;
+            }
+        }
+        // Forget pairs that are no longer in contact (not stamped this substep).
+        soft.pairs.retain(|_, v| v.stamp == stamp);
+    }
+
+    fn substep_contacts(
+        &mut self,
+        h: f64,
+        kin_vel: &KinematicVelocity,
+        fresh: bool,
+        s: &mut Scratch,
+    ) {
         let t = Instant::now();
-        self.prepare(h, kin_vel, true, s);
-        // Forget pairs that are no longer in contact (a hash set: linear in the contacts).
-        s.live.clear();
-        s.live.extend(
-            self.soft
-                .geoms
-                .iter()
-                .filter(|g| compression_from_signed_distance(g.dist) > 0.0)
-                .map(|g| (g.tip, g.other)),
-        );
-        let live = &s.live;
-        self.soft.pairs.retain(|k, _| live.contains(k));
+        if !fresh {
+            self.prepare(h, kin_vel, s);
+        }
+        self.prepare_state(h, s);
+        s.accums.begin_substep();
 
         if !s.rows.is_empty() {
             let failed = solve::solve(&mut s.body_table.table, &mut s.rows, h, &mut s.solve);
@@ -384,6 +420,12 @@ impl SoftWorld {
         }
         self.soft.counters.solve_time += t.elapsed();
     }
+}
+
+/// The component of `d` along the unit normal `n`.
+#[inline]
+fn n_proj(n: &Vector3<f64>, d: &Vector3<f64>) -> Vector3<f64> {
+    n * n.dot(d)
 }
 
 fn tangents(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
