@@ -5,6 +5,8 @@ use clap::{Parser, Subcommand};
 
 use crate::bench_law::BenchLawArgs;
 use crate::curve::CurveArgs;
+use crate::recording::{ExportArgs, InspectArgs, PlotArgs};
+use crate::run::RunArgs;
 
 /// Soft-fingertip contact: the law's curves, its speed-vs-error table and figures.
 #[derive(Debug, Parser)]
@@ -22,6 +24,15 @@ pub enum Command {
     Curve(CurveArgs),
     /// Print the speed-vs-error table of every level and draw its figures.
     BenchLaw(BenchLawArgs),
+    /// Run a scene file (or the embedded default grasp), print a per-fingertip summary, and
+    /// record it to MCAP with `--out`.
+    Run(RunArgs),
+    /// Summarise a recording: topics, duration, per-fingertip peaks, slip events, excursions.
+    Inspect(InspectArgs),
+    /// Write a recording's topics as CSV files (contacts, wrenches, poses, clock).
+    Export(ExportArgs),
+    /// Draw a recording: force vs x with the law's curves, force and contact radius vs time.
+    Plot(PlotArgs),
 }
 
 /// Parses the command line. Help and version are printed as clap prints them; a usage error

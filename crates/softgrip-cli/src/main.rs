@@ -7,6 +7,9 @@ mod curve;
 mod fe;
 mod level_arg;
 mod plot;
+mod recording;
+mod ros2_sink;
+mod run;
 mod timing;
 mod xrange;
 
@@ -18,6 +21,13 @@ fn main() -> ExitCode {
     let result = match cli::parse().command {
         Command::Curve(args) => curve::run(&args),
         Command::BenchLaw(args) => bench_law::run(&args),
+        Command::Run(args) => match run::run(&args) {
+            Ok(run::RunEnd::Interrupted) => return ExitCode::from(run::INTERRUPTED_EXIT_CODE),
+            other => other.map(|_| ()),
+        },
+        Command::Inspect(args) => recording::inspect(&args),
+        Command::Export(args) => recording::export(&args),
+        Command::Plot(args) => recording::plot(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -7,7 +7,10 @@ Run by crates/softgrip-ros2/tests/dds_roundtrip.rs inside a private network name
 (keyed by stamp) and how often the command was written. Exit status 0 when everything expected
 arrived and the command was sent; 2 (with the reason on stderr) otherwise.
 
-Usage: dds_roundtrip.py --domain N --steps K --tips thumb,index_finger [--timeout 30]
+Usage: dds_roundtrip.py --domain N --steps K --tips thumb,index_finger [--timeout 30] [--no-command]
+
+With --no-command (used against `softgrip run --ros2`, which subscribes to nothing) it prints
+what it received as soon as K steps have arrived on every topic, and sends nothing.
 """
 
 import argparse
@@ -141,6 +144,7 @@ def main():
     ap.add_argument("--steps", type=int, required=True)
     ap.add_argument("--tips", required=True, help="wrench topic tokens, comma-separated")
     ap.add_argument("--timeout", type=float, default=30.0)
+    ap.add_argument("--no-command", action="store_true", help="receive only; send no command")
     args = ap.parse_args()
     deadline = time.monotonic() + args.timeout
 
@@ -196,6 +200,11 @@ def main():
                  result(0))
         waitset.wait(duration(seconds=min(left, 1.0)))
         drain()
+
+    if args.no_command:
+        print(json.dumps(result(0)))
+        del domain
+        return
 
     # 2. The command: write it (again every 100 ms: the probe's reader may match our writer
     # after we matched it) until the probe, which stops publishing once it has the command,

@@ -1,0 +1,160 @@
+//! `softgrip inspect FILE.mcap`: topics, duration, per-fingertip peaks, slip events and
+//! validity excursions of a recording; says so when an unfinished file was recovered.
+
+use std::collections::HashMap;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use anyhow::Result;
+use softgrip_ecs::softgrip_record::Recording;
+
+use super::{contact_radius, contacts, fingertips, laws, open, seconds};
+
+/// Arguments of `softgrip inspect`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct InspectArgs {
+    /// The recording (MCAP, written by `softgrip run --out`).
+    pub file: PathBuf,
+}
+
+/// One fingertip's findings.
+#[derive(Debug, Clone, Default)]
+struct TipFindings {
+    peak_force: f64,
+    peak_force_t: f64,
+    peak_x: f64,
+    peak_x_t: f64,
+    peak_radius: f64,
+    slips: Vec<f64>,
+    excursions: Vec<f64>,
+}
+
+/// Runs the command.
+pub fn inspect(args: &InspectArgs) -> Result<()> {
+    let rec = open(&args.file)?;
+    print!("{}", report(&args.file.display().to_string(), &rec));
+    Ok(())
+}
+
+fn times(ts: &[f64]) -> String {
+    const SHOWN: usize = 8;
+    let mut s: Vec<String> = ts.iter().take(SHOWN).map(|t| format!("{t:.4}")).collect();
+    if ts.len() > SHOWN {
+        s.push(format!("... ({} more)", ts.len() - SHOWN));
+    }
+    if s.is_empty() {
+        String::new()
+    } else {
+        format!(" at t = {} s", s.join(", "))
+    }
+}
+
+/// The report, as printed.
+fn report(name: &str, rec: &Recording) -> String {
+    let mut out = String::new();
+    let version = rec.softgrip_metadata("softgrip_version").unwrap_or("?");
+    let origin = rec.softgrip_metadata("origin").unwrap_or("?");
+    let every = rec.softgrip_metadata("every_n_steps").unwrap_or("?");
+    let _ = writeln!(
+        out,
+        "{name}: softgrip {version} recording of {origin} (every {every} step(s))"
+    );
+    if let Some(r) = &rec.recovery {
+        let _ = writeln!(
+            out,
+            "recovered: {} chunks, {} bytes of {} (the file was not finished: {})",
+            r.chunks, r.bytes_kept, r.file_len, r.stopped_because
+        );
+    }
+    let (t0, t1) = match (rec.messages.first(), rec.messages.last()) {
+        (Some(a), Some(b)) => (seconds(a.log_time_ns), seconds(b.log_time_ns)),
+        _ => (0.0, 0.0),
+    };
+    let _ = writeln!(
+        out,
+        "messages: {}, chunks: {}, time {t0:.4} .. {t1:.4} s (duration {:.4} s)",
+        rec.messages.len(),
+        rec.chunk_count,
+        t1 - t0
+    );
+    let _ = writeln!(out, "topics:");
+    for c in &rec.channels {
+        let _ = writeln!(
+            out,
+            "  {:<28} {:<40} {:>7} messages",
+            c.topic, c.schema_name, c.message_count
+        );
+    }
+    let laws = laws(rec);
+    let law_of = |tip: &str| {
+        laws.iter()
+            .find(|l| l.name == tip)
+            .and_then(|l| l.law().ok())
+    };
+    let mut found: HashMap<String, TipFindings> = HashMap::new();
+    // Slip and excursion events: a contact (fingertip, other) that starts sliding (or past the
+    // validity range) in a recorded step where it did not in the previous recorded step.
+    let mut state: HashMap<(String, String), (bool, bool, f64)> = HashMap::new();
+    let law_cache: HashMap<String, _> = fingertips(rec)
+        .into_iter()
+        .map(|t| {
+            let l = law_of(&t);
+            (t, l)
+        })
+        .collect();
+    let mut last_t = f64::NAN;
+    for (t, c) in contacts(rec) {
+        if t != last_t {
+            // A contact missing from a recorded step has ended: forget it.
+            state.retain(|_, s| s.2 == last_t);
+            last_t = t;
+        }
+        let f = found.entry(c.fingertip.clone()).or_default();
+        if c.peak_normal_force > f.peak_force {
+            f.peak_force = c.peak_normal_force;
+            f.peak_force_t = t;
+        }
+        if c.ratio_x > f.peak_x {
+            f.peak_x = c.ratio_x;
+            f.peak_x_t = t;
+            let law = law_cache.get(&c.fingertip).and_then(Option::as_ref);
+            f.peak_radius = contact_radius(c, law);
+        }
+        let key = (c.fingertip.clone(), c.other.clone());
+        let (was_sliding, was_past, _) = state.get(&key).copied().unwrap_or((false, false, t));
+        if c.sliding && !was_sliding {
+            f.slips.push(t);
+        }
+        if c.validity_exceeded && !was_past {
+            f.excursions.push(t);
+        }
+        state.insert(key, (c.sliding, c.validity_exceeded, t));
+    }
+    for tip in fingertips(rec) {
+        let f = found.remove(&tip).unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "fingertip {tip}: peak force {:.6} N (t = {:.4} s), peak x {:.4} (t = {:.4} s), contact radius at peak x {:.4} mm",
+            f.peak_force,
+            f.peak_force_t,
+            f.peak_x,
+            f.peak_x_t,
+            f.peak_radius * 1e3
+        );
+        let _ = writeln!(
+            out,
+            "  slip events: {}{}; validity excursions: {}{}",
+            f.slips.len(),
+            times(&f.slips),
+            f.excursions.len(),
+            times(&f.excursions)
+        );
+    }
+    if let Some(l) = rec.softgrip_metadata("law") {
+        let _ = writeln!(out, "law:");
+        for line in l.lines() {
+            let _ = writeln!(out, "  {line}");
+        }
+    }
+    out
+}

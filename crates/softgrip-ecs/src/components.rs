@@ -1,0 +1,137 @@
+//! Components mirrored into rapier: bodies, colliders, fingertips, and what is read back.
+
+use bevy_ecs::prelude::{Component, Entity};
+use softgrip_rapier::SoftFingertip;
+use softgrip_rapier::rapier3d::prelude::{
+    ColliderBuilder, ColliderHandle, RigidBodyBuilder, RigidBodyHandle, SharedShape, Vector,
+};
+
+pub(crate) fn v32(v: [f64; 3]) -> Vector {
+    Vector::new(v[0] as f32, v[1] as f32, v[2] as f32)
+}
+
+/// How a body moves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BodyKind {
+    /// Never moves.
+    Fixed,
+    /// Moved by forces.
+    Dynamic,
+    /// Position-based kinematic: moved by [`KinematicTarget`].
+    Kinematic,
+}
+
+/// A rigid body to create in rapier (read once, when it is first synchronised).
+#[derive(Component, Debug, Clone, PartialEq)]
+#[require(BodyPose)]
+pub struct RigidBody {
+    /// How it moves.
+    pub kind: BodyKind,
+    /// Initial position [m].
+    pub position: [f64; 3],
+    /// Initial orientation as a rotation vector (axis * angle) [rad].
+    pub rotation: [f64; 3],
+}
+
+impl RigidBody {
+    /// rapier's builder for this body (sleeping disabled: a held object must not fall asleep
+    /// between the jaws).
+    pub fn builder(&self) -> RigidBodyBuilder {
+        let b = match self.kind {
+            BodyKind::Fixed => RigidBodyBuilder::fixed(),
+            BodyKind::Dynamic => RigidBodyBuilder::dynamic(),
+            BodyKind::Kinematic => RigidBodyBuilder::kinematic_position_based(),
+        };
+        b.translation(v32(self.position))
+            .rotation(v32(self.rotation))
+            .can_sleep(false)
+    }
+}
+
+/// A collision shape attached to a body ([`AttachedTo`]).
+#[derive(Component, Debug, Clone)]
+pub struct Collider {
+    /// The geometry.
+    pub shape: SharedShape,
+    /// Offset from the body origin [m].
+    pub offset: [f64; 3],
+    /// Density [kg/m^3], > 0.
+    pub density: f64,
+    /// rapier's friction coefficient for rigid contacts, >= 0.
+    pub friction: f64,
+    /// rapier's restitution for rigid contacts, in [0, 1].
+    pub restitution: f64,
+}
+
+impl Collider {
+    /// rapier's builder for this collider.
+    pub fn builder(&self) -> ColliderBuilder {
+        ColliderBuilder::new(self.shape.clone())
+            .translation(v32(self.offset))
+            .density(self.density as f32)
+            .friction(self.friction as f32)
+            .restitution(self.restitution as f32)
+    }
+}
+
+/// A soft spherical fingertip (the plugin's [`SoftFingertip`], same parameters) attached to a
+/// body ([`AttachedTo`]): a ball collider of its radius, registered with the plugin.
+#[derive(Component, Debug, Clone)]
+#[require(FingertipWrench)]
+pub struct Fingertip {
+    /// The validated fingertip (radius, material, level, restitution, friction).
+    pub tip: SoftFingertip,
+    /// Centre of the sphere relative to the body origin [m].
+    pub offset: [f64; 3],
+    /// Density of the ball [kg/m^3], > 0.
+    pub density: f64,
+}
+
+impl Fingertip {
+    /// rapier's builder for the fingertip's ball collider.
+    pub fn builder(&self) -> ColliderBuilder {
+        ColliderBuilder::ball(self.tip.radius() as f32)
+            .translation(v32(self.offset))
+            .density(self.density as f32)
+    }
+}
+
+/// The body a collider or fingertip belongs to.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AttachedTo(pub Entity);
+
+/// The rapier handle of a synchronised body (inserted by the sync system).
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RapierBody(pub RigidBodyHandle);
+
+/// The rapier handle of a synchronised collider or fingertip (inserted by the sync system).
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RapierCollider(pub ColliderHandle);
+
+/// A body's pose after the last step (read back from rapier).
+#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
+pub struct BodyPose {
+    /// Position [m].
+    pub translation: [f64; 3],
+    /// Orientation quaternion `[x, y, z, w]`.
+    pub rotation: [f64; 4],
+}
+
+/// Where a kinematic body should be at the end of the coming step [m] (written by the
+/// controllers, applied by the physics step; `None` = stay).
+#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
+pub struct KinematicTarget(pub Option<[f64; 3]>);
+
+/// A scripted path of a kinematic body (followed by the `follow_trajectories` system).
+#[derive(Component, Debug, Clone, PartialEq)]
+#[require(KinematicTarget)]
+pub struct KinematicPath(pub crate::scene::Trajectory);
+
+/// The total contact wrench on a fingertip over the last step (step averages), world frame.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
+pub struct FingertipWrench {
+    /// Force [N].
+    pub force: [f64; 3],
+    /// Torque about the fingertip's centre [N m].
+    pub torque: [f64; 3],
+}

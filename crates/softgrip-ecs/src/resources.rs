@@ -1,0 +1,166 @@
+//! Resources: the physics world, the clock, and the hooks of the recorder and publisher.
+
+use std::collections::{BTreeMap, HashMap};
+
+use bevy_ecs::prelude::{Entity, Resource};
+use softgrip_rapier::SoftWorld;
+use softgrip_rapier::rapier3d::prelude::{ColliderHandle, RigidBodyHandle};
+
+use crate::scene::RecordSpec;
+use crate::sink::{SceneInfo, SinkError, StepFrame, StepSink};
+
+/// What the readout remembers of a live contact.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tracked {
+    pub entity: Entity,
+    pub sliding: bool,
+    pub extended: bool,
+    pub seen: bool,
+}
+
+/// The plugin's world and the maps between rapier handles and entities.
+#[derive(Resource)]
+pub struct Physics {
+    /// The rapier world with the soft-fingertip plugin (gravity, `params.dt`, accuracy).
+    pub world: SoftWorld,
+    pub(crate) body_entity: HashMap<RigidBodyHandle, Entity>,
+    pub(crate) collider_entity: HashMap<ColliderHandle, Entity>,
+    pub(crate) entity_body: HashMap<Entity, RigidBodyHandle>,
+    pub(crate) contacts: BTreeMap<(Entity, Entity), Tracked>,
+}
+
+impl Physics {
+    /// Wraps a world (normally empty: the sync system fills it from the components).
+    pub fn new(world: SoftWorld) -> Self {
+        Self {
+            world,
+            body_entity: HashMap::new(),
+            collider_entity: HashMap::new(),
+            entity_body: HashMap::new(),
+            contacts: BTreeMap::new(),
+        }
+    }
+
+    /// The entity of a rapier body.
+    pub fn body_entity(&self, handle: RigidBodyHandle) -> Option<Entity> {
+        self.body_entity.get(&handle).copied()
+    }
+
+    /// The entity of a rapier collider (a `Collider` or a `Fingertip`).
+    pub fn collider_entity(&self, handle: ColliderHandle) -> Option<Entity> {
+        self.collider_entity.get(&handle).copied()
+    }
+
+    /// The rapier body of an entity.
+    pub fn body_handle(&self, entity: Entity) -> Option<RigidBodyHandle> {
+        self.entity_body.get(&entity).copied()
+    }
+}
+
+/// Simulated time.
+#[derive(Resource, Debug, Clone, Copy, PartialEq, Default)]
+pub struct SimClock {
+    /// Steps taken.
+    pub step: u64,
+    /// Time at the end of the last step [s] (`step * dt`).
+    pub time: f64,
+}
+
+/// Its presence makes the readout compute every contact's radius and pressure
+/// (`SoftContact::patch`). Without it no pressure is computed.
+#[derive(Resource, Debug, Clone, Copy, Default)]
+pub struct PatchRequest;
+
+/// What the sinks receive (a scene's `[record]`).
+#[derive(Resource, Debug, Clone, PartialEq, Default)]
+pub struct RecordSelection(pub RecordSpec);
+
+/// The scene description handed to the sinks' `start`.
+#[derive(Resource, Debug, Clone)]
+pub struct SceneInfoResource(pub SceneInfo);
+
+/// The step's data, assembled once for the recorder and the publisher.
+#[derive(Resource, Debug, Clone, Default)]
+pub struct CurrentFrame(pub StepFrame);
+
+/// A sink with its lifecycle state.
+pub struct SinkSlot {
+    sink: Box<dyn StepSink>,
+    started: bool,
+    error: Option<SinkError>,
+    frames: u64,
+}
+
+impl SinkSlot {
+    fn new(sink: Box<dyn StepSink>) -> Self {
+        Self {
+            sink,
+            started: false,
+            error: None,
+            frames: 0,
+        }
+    }
+
+    /// Starts the sink if needed and writes the frame; the first error stops the sink.
+    pub(crate) fn write(&mut self, info: Option<&SceneInfo>, frame: &StepFrame) {
+        if self.error.is_some() {
+            return;
+        }
+        if !self.started {
+            self.started = true;
+            if let Some(Err(e)) = info.map(|i| self.sink.start(i)) {
+                self.error = Some(e);
+                return;
+            }
+        }
+        match self.sink.write(frame) {
+            Ok(()) => self.frames += 1,
+            Err(e) => self.error = Some(e),
+        }
+    }
+
+    /// Finishes the sink; returns its first error, if any.
+    pub fn finish(&mut self) -> Result<(), SinkError> {
+        if let Some(e) = self.error.take() {
+            return Err(e);
+        }
+        self.sink.finish()
+    }
+
+    /// Whether the sink takes step `step` (not once it stopped on an error).
+    pub fn wants(&self, step: u64) -> bool {
+        self.error.is_none() && self.sink.wants(step)
+    }
+
+    /// Frames written.
+    pub fn frames(&self) -> u64 {
+        self.frames
+    }
+
+    /// The error that stopped the sink.
+    pub fn error(&self) -> Option<&SinkError> {
+        self.error.as_ref()
+    }
+}
+
+/// The recorder (e.g. the MCAP writer). Without it, the recording system is not scheduled.
+#[derive(Resource)]
+pub struct Recorder(pub SinkSlot);
+
+impl Recorder {
+    /// Wraps a sink.
+    pub fn new(sink: impl StepSink) -> Self {
+        Self(SinkSlot::new(Box::new(sink)))
+    }
+}
+
+/// The live publisher (e.g. ROS 2). Without it, the publishing system is not scheduled.
+#[derive(Resource)]
+pub struct Publisher(pub SinkSlot);
+
+impl Publisher {
+    /// Wraps a sink.
+    pub fn new(sink: impl StepSink) -> Self {
+        Self(SinkSlot::new(Box::new(sink)))
+    }
+}

@@ -1,0 +1,83 @@
+//! [`SceneError`]: everything that can be wrong with a scene file, with where it is.
+
+use std::path::PathBuf;
+
+/// A scene that cannot be loaded. Every variant names the file (`origin`) and the field or
+/// line at fault.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    /// The scene file could not be read.
+    #[error("{origin}: cannot read: {source}")]
+    Io {
+        /// The file.
+        origin: String,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+    /// The TOML is malformed, has an unknown field or a value of the wrong type.
+    #[error("{origin}:{line}:{column}: {message}")]
+    Parse {
+        /// The file.
+        origin: String,
+        /// Line of the error, from 1.
+        line: usize,
+        /// Column of the error, from 1.
+        column: usize,
+        /// What the TOML parser says (for an unknown field: its name and the expected ones).
+        message: String,
+    },
+    /// A value is outside its valid range.
+    #[error("{origin}: `{field}` must be {expected}, got {value}")]
+    Invalid {
+        /// The file.
+        origin: String,
+        /// Path of the field, e.g. `body[1].shape[0].half_extents`.
+        field: String,
+        /// The value found.
+        value: String,
+        /// The valid range, with its unit.
+        expected: String,
+    },
+    /// A name refers to nothing, or is used twice.
+    #[error("{origin}: `{field}`: {message}")]
+    Name {
+        /// The file.
+        origin: String,
+        /// Path of the field.
+        field: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// A fingertip's parameters were rejected by the plugin or the law.
+    #[error("{origin}: `{field}`: {source}")]
+    Fingertip {
+        /// The file.
+        origin: String,
+        /// Path of the fingertip, e.g. `fingertip[0]`.
+        field: String,
+        /// The plugin's error.
+        source: softgrip_rapier::Error,
+    },
+    /// A mesh file could not be read or parsed.
+    #[error("{}:{line}: {message}", path.display())]
+    Mesh {
+        /// The mesh file.
+        path: PathBuf,
+        /// Line of the error (0 for binary files or I/O errors).
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+impl SceneError {
+    /// The field path this error is about, if it is about one.
+    pub fn field(&self) -> Option<&str> {
+        match self {
+            SceneError::Invalid { field, .. }
+            | SceneError::Name { field, .. }
+            | SceneError::Fingertip { field, .. } => Some(field),
+            _ => None,
+        }
+    }
+}

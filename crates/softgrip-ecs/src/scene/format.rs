@@ -1,0 +1,329 @@
+//! The scene file's data model, as written in TOML (documented field by field in SCENES.md).
+//!
+//! Every table rejects unknown fields (`deny_unknown_fields`), so a typo is an error with its
+//! line, not a silently ignored setting. Ranges are checked afterwards by
+//! [`Scene::parse`](super::Scene::parse), which names the offending field.
+
+use serde::Deserialize;
+
+/// A whole experiment: simulation settings, bodies, fingertips, an optional gripper and what
+/// to record.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// Simulated time [s], finite and > 0.
+    pub duration: f64,
+    /// Time step [s], finite and > 0 (default 1/60).
+    #[serde(default = "default_dt")]
+    pub dt: f64,
+    /// Gravity [m/s^2] (default `[0, -9.81, 0]`).
+    #[serde(default = "default_gravity")]
+    pub gravity: [f64; 3],
+    /// The plugin's accuracy: contact phase per substep [rad], in (0, 2] (default 0.05).
+    #[serde(default = "default_accuracy")]
+    pub accuracy: f64,
+    /// What the recorder receives.
+    #[serde(default)]
+    pub record: RecordSpec,
+    /// Rigid bodies, in order.
+    #[serde(default, rename = "body")]
+    pub bodies: Vec<BodySpec>,
+    /// Soft fingertips, each attached to a body.
+    #[serde(default, rename = "fingertip")]
+    pub fingertips: Vec<FingertipSpec>,
+    /// A parallel-jaw gripper controller.
+    #[serde(default)]
+    pub gripper: Option<GripperSpec>,
+}
+
+fn default_dt() -> f64 {
+    1.0 / 60.0
+}
+fn default_gravity() -> [f64; 3] {
+    [0.0, -9.81, 0.0]
+}
+fn default_accuracy() -> f64 {
+    0.05
+}
+fn yes() -> bool {
+    true
+}
+
+/// What the recording and publishing sinks receive each step.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RecordSpec {
+    /// Body poses by name (default true).
+    #[serde(default = "yes")]
+    pub poses: bool,
+    /// Per-fingertip wrenches (default true).
+    #[serde(default = "yes")]
+    pub wrenches: bool,
+    /// Every soft contact (default true).
+    #[serde(default = "yes")]
+    pub contacts: bool,
+    /// Contact radius and pressure of every contact (default false: not computed at all).
+    #[serde(default)]
+    pub pressure: bool,
+    /// The MCAP recorder writes every n-th step (steps n, 2n, ...), >= 1 (default
+    /// [`DEFAULT_EVERY_N_STEPS`]). Publishers still receive every step.
+    #[serde(default = "default_every_n_steps")]
+    pub every_n_steps: u64,
+}
+
+/// Default of `record.every_n_steps` (15 Hz for the default scene's 60 Hz steps). Measured
+/// (release, 2 shared cores under load, default scene with a 100 s hold, best of 11): a step
+/// costs ~13 µs; recording every 4th step adds ~10 % (the frame is assembled only on recorded
+/// steps, the MCAP writer runs on its own thread; see crates/softgrip-cli/README.md).
+pub const DEFAULT_EVERY_N_STEPS: u64 = 4;
+
+fn default_every_n_steps() -> u64 {
+    DEFAULT_EVERY_N_STEPS
+}
+
+impl Default for RecordSpec {
+    fn default() -> Self {
+        Self {
+            poses: true,
+            wrenches: true,
+            contacts: true,
+            pressure: false,
+            every_n_steps: DEFAULT_EVERY_N_STEPS,
+        }
+    }
+}
+
+/// How a body moves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BodyKindSpec {
+    /// Never moves.
+    Fixed,
+    /// Moved by forces.
+    Dynamic,
+    /// Moved along a scripted trajectory or by a gripper controller.
+    Kinematic,
+}
+
+/// One rigid body.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodySpec {
+    /// Unique name (used by fingertips, the gripper and the recording).
+    pub name: String,
+    /// `fixed`, `dynamic` or `kinematic`.
+    pub kind: BodyKindSpec,
+    /// Initial position [m] (default origin).
+    #[serde(default)]
+    pub position: [f64; 3],
+    /// Initial orientation as a rotation vector (axis * angle) [rad] (default none).
+    #[serde(default)]
+    pub rotation: [f64; 3],
+    /// Scripted path of a kinematic body: waypoints with increasing `t`, linear in between;
+    /// the body holds the first position before and the last after.
+    #[serde(default)]
+    pub trajectory: Vec<WaypointSpec>,
+    /// Collision shapes.
+    #[serde(default, rename = "shape")]
+    pub shapes: Vec<ShapeSpec>,
+}
+
+/// A point of a kinematic trajectory.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WaypointSpec {
+    /// Time [s], >= 0, strictly increasing along the trajectory.
+    pub t: f64,
+    /// Body position at `t` [m].
+    pub position: [f64; 3],
+}
+
+/// A collision shape of a body: its `type`, the fields that type takes, placement, material.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ShapeSpec {
+    /// `plane`, `cuboid`, `ball`, `cylinder`, `convex_mesh` or `triangle_mesh`.
+    #[serde(rename = "type")]
+    pub kind: ShapeKind,
+    /// `plane`: outward normal (normalised on load), non-zero.
+    #[serde(default)]
+    pub normal: Option<[f64; 3]>,
+    /// `cuboid`: half extents [m], each finite and > 0.
+    #[serde(default)]
+    pub half_extents: Option<[f64; 3]>,
+    /// `ball`, `cylinder`: radius [m], finite and > 0.
+    #[serde(default)]
+    pub radius: Option<f64>,
+    /// `cylinder` (along the body's y axis): half height [m], finite and > 0.
+    #[serde(default)]
+    pub half_height: Option<f64>,
+    /// `convex_mesh`, `triangle_mesh`: OBJ or STL file, relative to the scene file.
+    #[serde(default)]
+    pub file: Option<String>,
+    /// `convex_mesh`, `triangle_mesh`: scale of the vertices, finite and > 0 (default 1).
+    #[serde(default)]
+    pub scale: Option<f64>,
+    /// Offset from the body origin [m] (default none).
+    #[serde(default)]
+    pub offset: [f64; 3],
+    /// Density [kg/m^3], finite and > 0 (default 1000).
+    #[serde(default = "default_density")]
+    pub density: f64,
+    /// rapier's Coulomb friction for rigid contacts, >= 0 (default 0.5). Soft contacts use the
+    /// fingertip's friction.
+    #[serde(default = "default_friction")]
+    pub friction: f64,
+    /// rapier's restitution for rigid contacts, in [0, 1] (default 0).
+    #[serde(default)]
+    pub restitution: f64,
+}
+
+fn default_density() -> f64 {
+    1000.0
+}
+fn default_friction() -> f64 {
+    0.5
+}
+
+/// A shape's geometry type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ShapeKind {
+    /// An infinite plane through the offset point, solid below its normal (fixed bodies only).
+    Plane,
+    /// A box.
+    Cuboid,
+    /// A sphere.
+    Ball,
+    /// A cylinder along the body's y axis.
+    Cylinder,
+    /// The convex hull of a mesh file's vertices.
+    ConvexMesh,
+    /// A triangle mesh from a file.
+    TriangleMesh,
+}
+
+/// A material given by its constants.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    /// Young's modulus E [Pa], finite and > 0.
+    pub youngs_modulus: f64,
+    /// Poisson's ratio nu [-], in (-1, 0.5].
+    pub poisson_ratio: f64,
+}
+
+/// A soft spherical fingertip on a body.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FingertipSpec {
+    /// Unique name (readouts, summary, recording).
+    pub name: String,
+    /// Name of the body that carries it.
+    pub body: String,
+    /// Centre of the sphere relative to the body origin [m] (default none).
+    #[serde(default)]
+    pub offset: [f64; 3],
+    /// Radius R [m], finite and > 0.
+    pub radius: f64,
+    /// A literature material by name (`ecoflex-00-30`, `dragon-skin-10`, `dragon-skin-20`,
+    /// `dragon-skin-30`, `sylgard-184`, `live-cell`, `fixed-cell`); exclusive with `material`.
+    #[serde(default)]
+    pub preset: Option<String>,
+    /// The material's constants; exclusive with `preset`.
+    #[serde(default)]
+    pub material: Option<MaterialSpec>,
+    /// Level of the law (`linear`, `hertz`, `fit`, `incompressible`, `neo-hookean`,
+    /// `neo-hookean-exact`, `tatara`, `calibrated`, `auto`; default `auto`).
+    #[serde(default = "default_level")]
+    pub level: String,
+    /// Force tolerance of `auto` against the full theory, in (0, 0.5] (default 0.01).
+    #[serde(default)]
+    pub tolerance: Option<f64>,
+    /// Coefficient of restitution e, in (0, 1] (default 0.5).
+    #[serde(default = "default_tip_restitution")]
+    pub restitution: f64,
+    /// Coulomb friction coefficient, >= 0 (default 0.8).
+    #[serde(default = "default_tip_friction")]
+    pub friction: f64,
+    /// Density of the fingertip's ball [kg/m^3], finite and > 0 (default 1070, silicone).
+    #[serde(default = "default_tip_density")]
+    pub density: f64,
+}
+
+fn default_level() -> String {
+    String::from("auto")
+}
+fn default_tip_restitution() -> f64 {
+    softgrip_rapier::DEFAULT_RESTITUTION
+}
+fn default_tip_friction() -> f64 {
+    softgrip_rapier::DEFAULT_FRICTION
+}
+fn default_tip_density() -> f64 {
+    1070.0
+}
+
+/// A parallel-jaw gripper: two kinematic jaws that approach, squeeze, lift, hold and release.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GripperSpec {
+    /// Name of the gripper (default `gripper`).
+    #[serde(default = "default_gripper_name")]
+    pub name: String,
+    /// The two jaw bodies (kinematic, each carrying at least one fingertip).
+    pub jaws: [String; 2],
+    /// Closing direction of the first jaw (normalised; the second closes along its opposite).
+    pub axis: [f64; 3],
+    /// Lift direction (normalised; default opposite to gravity).
+    #[serde(default)]
+    pub up: Option<[f64; 3]>,
+    /// Closing speed until the fingertips touch [m/s], finite and > 0.
+    pub approach_speed: f64,
+    /// The commanded grip.
+    pub squeeze: SqueezeSpec,
+    /// Lift after the grip is reached.
+    pub lift: MoveSpec,
+    /// Hold time at the top [s], finite and >= 0.
+    pub hold: f64,
+    /// Opening of each jaw after the hold.
+    pub release: MoveSpec,
+}
+
+fn default_gripper_name() -> String {
+    String::from("gripper")
+}
+
+/// The squeeze: position control to a compression depth, or force control to a grip force
+/// through the law's inverse.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SqueezeSpec {
+    /// Compression of each fingertip past first touch [m], finite and > 0; exclusive with
+    /// `force`.
+    #[serde(default)]
+    pub depth: Option<f64>,
+    /// Grip force per fingertip [N], finite and > 0; the depth is the law's
+    /// `compression_for_force(force)`. Exclusive with `depth`.
+    #[serde(default)]
+    pub force: Option<f64>,
+    /// Closing speed while squeezing [m/s], finite and > 0.
+    pub speed: f64,
+    /// Time to wait at the commanded depth before lifting [s], finite and >= 0 (default 0.2).
+    #[serde(default = "default_settle")]
+    pub settle: f64,
+}
+
+fn default_settle() -> f64 {
+    0.2
+}
+
+/// A straight move of a given length at a given speed.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MoveSpec {
+    /// Length of the move [m], finite and >= 0.
+    pub distance: f64,
+    /// Speed [m/s], finite and > 0.
+    pub speed: f64,
+}

@@ -1,0 +1,191 @@
+//! Small mesh readers: Wavefront OBJ (`v` and `f` lines) and STL (binary and ASCII).
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use super::error::SceneError;
+
+/// A triangle mesh: vertices [m] and counter-clockwise triangles (indices into `vertices`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Mesh {
+    /// Vertex positions.
+    pub vertices: Vec<[f64; 3]>,
+    /// Triangles as vertex indices.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+/// Reads an `.obj` or `.stl` file (chosen by extension, case-insensitive).
+pub fn load_mesh(path: &Path) -> Result<Mesh, SceneError> {
+    let err = |line, message: String| SceneError::Mesh {
+        path: path.to_path_buf(),
+        line,
+        message,
+    };
+    let bytes = std::fs::read(path).map_err(|e| err(0, format!("cannot read: {e}")))?;
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let mesh = match ext.as_deref() {
+        Some("obj") => parse_obj(&String::from_utf8_lossy(&bytes)),
+        Some("stl") => parse_stl(&bytes),
+        _ => Err((
+            0,
+            String::from("unknown mesh format: expected .obj or .stl"),
+        )),
+    }
+    .map_err(|(line, m)| err(line, m))?;
+    if mesh.triangles.is_empty() {
+        return Err(err(0, String::from("the mesh has no triangles")));
+    }
+    Ok(mesh)
+}
+
+/// Parses OBJ text: `v x y z` and `f i j k ...` (1-based or negative indices, `i/t/n` forms;
+/// polygons are fanned into triangles). Other lines are ignored. Errors carry the line.
+pub fn parse_obj(text: &str) -> Result<Mesh, (usize, String)> {
+    let mut mesh = Mesh::default();
+    for (i, line) in text.lines().enumerate() {
+        let n = i + 1;
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => {
+                let mut p = [0.0; 3];
+                for c in &mut p {
+                    let w = words
+                        .next()
+                        .ok_or((n, String::from("`v` needs 3 numbers")))?;
+                    *c = w
+                        .parse()
+                        .map_err(|_| (n, format!("`{w}` is not a number")))?;
+                }
+                mesh.vertices.push(p);
+            }
+            Some("f") => {
+                let mut idx = Vec::new();
+                for w in words {
+                    let first = w.split('/').next().unwrap_or(w);
+                    let k: i64 = first
+                        .parse()
+                        .map_err(|_| (n, format!("`{w}` is not a vertex index")))?;
+                    let count = mesh.vertices.len() as i64;
+                    let k = if k < 0 { count + k } else { k - 1 };
+                    if !(0..count).contains(&k) {
+                        return Err((n, format!("vertex index `{w}` is out of range")));
+                    }
+                    idx.push(k as u32);
+                }
+                if idx.len() < 3 {
+                    return Err((n, String::from("a face needs at least 3 vertices")));
+                }
+                for j in 1..idx.len() - 1 {
+                    mesh.triangles.push([idx[0], idx[j], idx[j + 1]]);
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(mesh)
+}
+
+/// Parses STL, binary (80-byte header, count, 50-byte records) or ASCII (`vertex` lines).
+/// Equal vertices are merged.
+pub fn parse_stl(bytes: &[u8]) -> Result<Mesh, (usize, String)> {
+    let binary_len = |b: &[u8]| {
+        b.get(80..84)
+            .map(|c| 84 + 50 * u32::from_le_bytes([c[0], c[1], c[2], c[3]]) as usize)
+    };
+    let mut corners: Vec<[f64; 3]> = Vec::new();
+    if binary_len(bytes) == Some(bytes.len()) {
+        for rec in bytes[84..].chunks_exact(50) {
+            for v in 0..3 {
+                let mut p = [0.0; 3];
+                for (c, x) in p.iter_mut().enumerate() {
+                    let o = 12 + 12 * v + 4 * c;
+                    *x = f32::from_le_bytes([rec[o], rec[o + 1], rec[o + 2], rec[o + 3]]) as f64;
+                }
+                corners.push(p);
+            }
+        }
+    } else {
+        let text = std::str::from_utf8(bytes)
+            .map_err(|_| (0, String::from("neither binary STL nor ASCII text")))?;
+        if !text.trim_start().starts_with("solid") {
+            return Err((1, String::from("ASCII STL must start with `solid`")));
+        }
+        for (i, line) in text.lines().enumerate() {
+            let mut words = line.split_whitespace();
+            if words.next() != Some("vertex") {
+                continue;
+            }
+            let mut p = [0.0; 3];
+            for c in &mut p {
+                let w = words
+                    .next()
+                    .ok_or((i + 1, String::from("`vertex` needs 3 numbers")))?;
+                *c = w
+                    .parse()
+                    .map_err(|_| (i + 1, format!("`{w}` is not a number")))?;
+            }
+            corners.push(p);
+        }
+        if !corners.len().is_multiple_of(3) {
+            return Err((0, String::from("the vertex count is not a multiple of 3")));
+        }
+    }
+    let mut mesh = Mesh::default();
+    let mut index: HashMap<[u64; 3], u32> = HashMap::new();
+    let mut tri = [0u32; 3];
+    for (k, p) in corners.iter().enumerate() {
+        let key = p.map(f64::to_bits);
+        let id = *index.entry(key).or_insert_with(|| {
+            mesh.vertices.push(*p);
+            (mesh.vertices.len() - 1) as u32
+        });
+        tri[k % 3] = id;
+        if k % 3 == 2 {
+            mesh.triangles.push(tri);
+        }
+    }
+    Ok(mesh)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn obj_quad_is_two_triangles() {
+        let m = parse_obj("# quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1/1 2/2 3/3 -1\n")
+            .expect("valid OBJ");
+        assert_eq!(m.vertices.len(), 4);
+        assert_eq!(m.triangles, vec![[0, 1, 2], [0, 2, 3]]);
+        assert_eq!(parse_obj("v 0 0 0\nf 1 2 3\n").err().map(|e| e.0), Some(2));
+    }
+
+    #[test]
+    fn stl_ascii_and_binary_agree() {
+        let ascii = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n\
+                     vertex 0 1 0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\n\
+                     vertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n";
+        let a = parse_stl(ascii.as_bytes()).expect("valid ASCII STL");
+        let mut bin = vec![0u8; 80];
+        bin.extend_from_slice(&2u32.to_le_bytes());
+        for tri in [
+            [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.]],
+            [[1., 0., 0.], [1., 1., 0.], [0., 1., 0.]],
+        ] {
+            bin.extend_from_slice(&[0u8; 12]);
+            for v in tri {
+                for c in v {
+                    bin.extend_from_slice(&(c as f32).to_le_bytes());
+                }
+            }
+            bin.extend_from_slice(&[0u8; 2]);
+        }
+        let b = parse_stl(&bin).expect("valid binary STL");
+        assert_eq!(a, b);
+        assert_eq!(a.vertices.len(), 4);
+        assert_eq!(a.triangles, vec![[0, 1, 2], [1, 3, 2]]);
+    }
+}

@@ -1,0 +1,274 @@
+//! Range and cross-reference checks of a parsed [`SceneFile`], into typed [`SceneError`]s
+//! naming the field.
+
+use std::collections::HashSet;
+use std::path::Path;
+
+use softgrip_law::{Level, Material};
+use softgrip_rapier::{Preset, SoftAccuracy, SoftFingertip};
+
+use super::error::SceneError;
+use super::format::{BodyKindSpec, SceneFile, ShapeKind, ShapeSpec};
+use super::mesh::{Mesh, load_mesh};
+
+/// Builds typed errors for one file.
+pub(crate) struct Checker<'a> {
+    pub origin: &'a str,
+}
+
+impl Checker<'_> {
+    pub fn invalid(
+        &self,
+        field: impl Into<String>,
+        value: impl std::fmt::Debug,
+        expected: &str,
+    ) -> SceneError {
+        SceneError::Invalid {
+            origin: self.origin.to_string(),
+            field: field.into(),
+            value: format!("{value:?}"),
+            expected: expected.to_string(),
+        }
+    }
+
+    pub fn name(&self, field: impl Into<String>, message: impl Into<String>) -> SceneError {
+        SceneError::Name {
+            origin: self.origin.to_string(),
+            field: field.into(),
+            message: message.into(),
+        }
+    }
+
+    /// `v` finite and > 0.
+    pub fn positive(&self, field: impl Into<String>, v: f64, unit: &str) -> Result<(), SceneError> {
+        if v.is_finite() && v > 0.0 {
+            Ok(())
+        } else {
+            Err(self.invalid(field, v, &format!("finite and > 0 {unit}")))
+        }
+    }
+
+    /// `v` finite and >= 0.
+    pub fn non_negative(
+        &self,
+        field: impl Into<String>,
+        v: f64,
+        unit: &str,
+    ) -> Result<(), SceneError> {
+        if v.is_finite() && v >= 0.0 {
+            Ok(())
+        } else {
+            Err(self.invalid(field, v, &format!("finite and >= 0 {unit}")))
+        }
+    }
+
+    /// Every component finite.
+    pub fn finite3(&self, field: impl Into<String>, v: [f64; 3]) -> Result<(), SceneError> {
+        if v.iter().all(|c| c.is_finite()) {
+            Ok(())
+        } else {
+            Err(self.invalid(field, v, "three finite numbers"))
+        }
+    }
+
+    /// A non-zero finite vector, normalised.
+    pub fn direction(&self, field: impl Into<String>, v: [f64; 3]) -> Result<[f64; 3], SceneError> {
+        let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        if n.is_finite() && n > 0.0 {
+            Ok(v.map(|c| c / n))
+        } else {
+            Err(self.invalid(field, v, "a finite, non-zero direction"))
+        }
+    }
+}
+
+/// Checks the simulation settings and bodies; loads the meshes (one per shape, `None` for
+/// primitive shapes).
+pub(crate) fn check_bodies(
+    c: &Checker,
+    file: &SceneFile,
+    base: &Path,
+) -> Result<Vec<Vec<Option<Mesh>>>, SceneError> {
+    c.positive("duration", file.duration, "s")?;
+    c.positive("dt", file.dt, "s")?;
+    c.finite3("gravity", file.gravity)?;
+    SoftAccuracy::try_new(file.accuracy)
+        .map_err(|_| c.invalid("accuracy", file.accuracy, "in (0, 2] rad"))?;
+    if file.record.every_n_steps == 0 {
+        return Err(c.invalid("record.every_n_steps", 0u64, ">= 1 (1 = every step)"));
+    }
+    let mut names = HashSet::new();
+    let mut meshes = Vec::new();
+    for (i, b) in file.bodies.iter().enumerate() {
+        let f = |s: &str| format!("body[{i}].{s}");
+        if b.name.is_empty() || !names.insert(b.name.as_str()) {
+            return Err(c.name(f("name"), format!("`{}` is empty or used twice", b.name)));
+        }
+        c.finite3(f("position"), b.position)?;
+        c.finite3(f("rotation"), b.rotation)?;
+        if !b.trajectory.is_empty() && b.kind != BodyKindSpec::Kinematic {
+            return Err(c.invalid(f("trajectory"), b.kind, "given only for a `kinematic` body"));
+        }
+        let mut last = -1.0;
+        for (k, w) in b.trajectory.iter().enumerate() {
+            if !(w.t.is_finite() && w.t >= 0.0 && w.t > last) {
+                return Err(c.invalid(
+                    f(&format!("trajectory[{k}].t")),
+                    w.t,
+                    "finite, >= 0 s and increasing",
+                ));
+            }
+            last = w.t;
+            c.finite3(f(&format!("trajectory[{k}].position")), w.position)?;
+        }
+        let mut body_meshes = Vec::new();
+        for (j, s) in b.shapes.iter().enumerate() {
+            let g = |x: &str| format!("body[{i}].shape[{j}].{x}");
+            body_meshes.push(check_shape(c, s, b.kind, base, &g)?);
+        }
+        meshes.push(body_meshes);
+    }
+    Ok(meshes)
+}
+
+fn check_shape(
+    c: &Checker,
+    s: &ShapeSpec,
+    kind: BodyKindSpec,
+    base: &Path,
+    g: &dyn Fn(&str) -> String,
+) -> Result<Option<Mesh>, SceneError> {
+    let need = |name: &str, present: bool| {
+        if present {
+            Ok(())
+        } else {
+            Err(c.name(g(name), format!("required by shape type {:?}", s.kind)))
+        }
+    };
+    let allowed: &[&str] = match s.kind {
+        ShapeKind::Plane => &["normal"],
+        ShapeKind::Cuboid => &["half_extents"],
+        ShapeKind::Ball => &["radius"],
+        ShapeKind::Cylinder => &["radius", "half_height"],
+        ShapeKind::ConvexMesh | ShapeKind::TriangleMesh => &["file", "scale"],
+    };
+    let given = [
+        ("normal", s.normal.is_some()),
+        ("half_extents", s.half_extents.is_some()),
+        ("radius", s.radius.is_some()),
+        ("half_height", s.half_height.is_some()),
+        ("file", s.file.is_some()),
+        ("scale", s.scale.is_some()),
+    ];
+    for (name, present) in given {
+        if present && !allowed.contains(&name) {
+            return Err(c.name(g(name), format!("not a field of shape type {:?}", s.kind)));
+        }
+    }
+    c.finite3(g("offset"), s.offset)?;
+    c.positive(g("density"), s.density, "kg/m^3")?;
+    c.non_negative(g("friction"), s.friction, "")?;
+    if !(0.0..=1.0).contains(&s.restitution) {
+        return Err(c.invalid(g("restitution"), s.restitution, "in [0, 1]"));
+    }
+    match s.kind {
+        ShapeKind::Plane => {
+            need("normal", s.normal.is_some())?;
+            c.direction(g("normal"), s.normal.unwrap_or_default())?;
+            if kind != BodyKindSpec::Fixed {
+                return Err(c.invalid(g("type"), "plane", "used on a `fixed` body only"));
+            }
+        }
+        ShapeKind::Cuboid => {
+            need("half_extents", s.half_extents.is_some())?;
+            for (k, h) in s.half_extents.unwrap_or_default().iter().enumerate() {
+                c.positive(g(&format!("half_extents[{k}]")), *h, "m")?;
+            }
+        }
+        ShapeKind::Ball => {
+            need("radius", s.radius.is_some())?;
+            c.positive(g("radius"), s.radius.unwrap_or_default(), "m")?;
+        }
+        ShapeKind::Cylinder => {
+            need("radius", s.radius.is_some())?;
+            need("half_height", s.half_height.is_some())?;
+            c.positive(g("radius"), s.radius.unwrap_or_default(), "m")?;
+            c.positive(g("half_height"), s.half_height.unwrap_or_default(), "m")?;
+        }
+        ShapeKind::ConvexMesh | ShapeKind::TriangleMesh => {
+            need("file", s.file.is_some())?;
+            let scale = s.scale.unwrap_or(1.0);
+            c.positive(g("scale"), scale, "")?;
+            let mut mesh = load_mesh(&base.join(s.file.as_deref().unwrap_or_default()))?;
+            for v in &mut mesh.vertices {
+                *v = v.map(|x| x * scale);
+            }
+            return Ok(Some(mesh));
+        }
+    }
+    Ok(None)
+}
+
+/// Builds every fingertip (the plugin validates radius, restitution, friction and material).
+pub(crate) fn check_fingertips(
+    c: &Checker,
+    file: &SceneFile,
+) -> Result<Vec<SoftFingertip>, SceneError> {
+    let mut names = HashSet::new();
+    let mut tips = Vec::new();
+    for (i, t) in file.fingertips.iter().enumerate() {
+        let f = |s: &str| format!("fingertip[{i}].{s}");
+        if t.name.is_empty() || !names.insert(t.name.as_str()) {
+            return Err(c.name(f("name"), format!("`{}` is empty or used twice", t.name)));
+        }
+        if !file.bodies.iter().any(|b| b.name == t.body) {
+            return Err(c.name(f("body"), format!("no body is named `{}`", t.body)));
+        }
+        c.finite3(f("offset"), t.offset)?;
+        c.positive(f("density"), t.density, "kg/m^3")?;
+        let material = match (&t.preset, &t.material) {
+            (Some(p), None) => Preset::ALL
+                .iter()
+                .find(|q| q.name() == p)
+                .map(|q| q.material())
+                .ok_or_else(|| {
+                    let all: Vec<_> = Preset::ALL.iter().map(|q| q.name()).collect();
+                    c.invalid(f("preset"), p, &format!("one of {}", all.join(", ")))
+                })?,
+            (None, Some(m)) => {
+                Material::try_new(m.youngs_modulus, m.poisson_ratio).map_err(|e| {
+                    c.invalid(
+                        f("material"),
+                        (m.youngs_modulus, m.poisson_ratio),
+                        &e.to_string(),
+                    )
+                })?
+            }
+            _ => return Err(c.name(f("preset"), "give exactly one of `preset` and `material`")),
+        };
+        let mut level: Level = t
+            .level
+            .parse()
+            .map_err(|e: String| c.invalid(f("level"), &t.level, &e))?;
+        if let Some(tol) = t.tolerance {
+            match level {
+                Level::Auto { .. } => level = Level::Auto { tolerance: tol },
+                _ => return Err(c.name(f("tolerance"), "applies only to `level = \"auto\"`")),
+            }
+        }
+        let tip = SoftFingertip::builder(t.radius)
+            .name(t.name.clone())
+            .material(material)
+            .level(level)
+            .restitution(t.restitution)
+            .friction(t.friction)
+            .build()
+            .map_err(|e| SceneError::Fingertip {
+                origin: c.origin.to_string(),
+                field: format!("fingertip[{i}]"),
+                source: e,
+            })?;
+        tips.push(tip);
+    }
+    Ok(tips)
+}

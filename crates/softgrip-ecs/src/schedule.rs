@@ -1,0 +1,82 @@
+//! [`SoftgripSet`] and [`build_schedule`]: the systems in their documented order.
+
+use bevy_ecs::message::message_update_system;
+use bevy_ecs::prelude::{IntoScheduleConfigs, Res, Schedule, SystemSet, World};
+use bevy_ecs::schedule::ScheduleLabel;
+
+use crate::resources::{Publisher, Recorder, SimClock};
+use crate::summary::{Summary, accumulate_summary};
+use crate::systems::{
+    assemble_frame, follow_trajectories, physics_step, publish, read_contacts, read_poses, record,
+    run_grippers, sync_to_rapier,
+};
+
+/// The label of the softgrip schedule (one run = one physics step).
+#[derive(ScheduleLabel, Debug, Clone, PartialEq, Eq, Hash)]
+pub struct SoftgripStep;
+
+/// The sets of one step, run in this order (chained).
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SoftgripSet {
+    /// Message buffers are rotated; new bodies, colliders and fingertips are created in rapier.
+    Sync,
+    /// Controllers write kinematic targets (trajectories, grippers, your own controllers).
+    Control,
+    /// The plugin's `SoftWorld::step` (kinematic targets applied first).
+    Physics,
+    /// Poses, `SoftContact` entities, fingertip wrenches, transition messages, the summary.
+    Readout,
+    /// The frame is assembled and written to the [`Recorder`].
+    Record,
+    /// The frame is written to the [`Publisher`].
+    Publish,
+}
+
+/// Builds the step schedule for `world`. Only what is needed is scheduled: the recording
+/// system only if a [`Recorder`] resource exists, the publishing system only with a
+/// [`Publisher`], the summary only with a [`Summary`]; so insert those first.
+pub fn build_schedule(world: &World) -> Schedule {
+    use SoftgripSet::*;
+    let mut s = Schedule::new(SoftgripStep);
+    s.configure_sets((Sync, Control, Physics, Readout, Record, Publish).chain());
+    s.add_systems((message_update_system, sync_to_rapier).chain().in_set(Sync));
+    s.add_systems((follow_trajectories, run_grippers).in_set(Control));
+    s.add_systems(physics_step.in_set(Physics));
+    s.add_systems((read_poses, read_contacts).chain().in_set(Readout));
+    if world.contains_resource::<Summary>() {
+        s.add_systems(accumulate_summary.after(read_contacts).in_set(Readout));
+    }
+    let recorder = world.contains_resource::<Recorder>();
+    let publisher = world.contains_resource::<Publisher>();
+    if recorder || publisher {
+        // Only on steps some sink takes (the recorder writes every n-th step).
+        s.add_systems(assemble_frame.run_if(frame_wanted).in_set(Record));
+    }
+    if recorder {
+        s.add_systems(
+            record
+                .run_if(recorder_wants_step)
+                .after(assemble_frame)
+                .in_set(Record),
+        );
+    }
+    if publisher {
+        s.add_systems(publish.in_set(Publish));
+    }
+    s
+}
+
+/// Run condition: the recorder takes this step.
+fn recorder_wants_step(clock: Res<SimClock>, recorder: Option<Res<Recorder>>) -> bool {
+    recorder.is_some_and(|r| r.0.wants(clock.step))
+}
+
+/// Run condition: some sink takes this step (so the frame is assembled).
+fn frame_wanted(
+    clock: Res<SimClock>,
+    recorder: Option<Res<Recorder>>,
+    publisher: Option<Res<Publisher>>,
+) -> bool {
+    publisher.is_some_and(|p| p.0.wants(clock.step))
+        || recorder.is_some_and(|r| r.0.wants(clock.step))
+}

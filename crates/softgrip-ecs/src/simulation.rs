@@ -1,0 +1,133 @@
+//! [`Simulation`]: a scene's world and schedule, stepped for the scene's duration (what
+//! `softgrip run` uses).
+
+use std::time::{Duration, Instant};
+
+use bevy_ecs::prelude::{Schedule, World};
+
+use crate::resources::{Publisher, Recorder};
+use crate::scene::Scene;
+use crate::schedule::build_schedule;
+use crate::sink::{SinkError, StepSink};
+use crate::spawn::{SceneEntities, spawn_scene};
+use crate::summary::Summary;
+
+/// What a run took.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunReport {
+    /// Steps taken.
+    pub steps: u64,
+    /// Simulated time [s].
+    pub sim_time: f64,
+    /// Wall-clock time of the steps.
+    pub wall: Duration,
+}
+
+impl RunReport {
+    /// Simulated seconds per wall-clock second.
+    pub fn real_time_factor(&self) -> f64 {
+        self.sim_time / self.wall.as_secs_f64().max(1e-12)
+    }
+}
+
+/// A scene spawned into a bevy_ecs [`World`] with the softgrip schedule.
+///
+/// Insert sinks ([`with_recorder`](Self::with_recorder), ...) before the first step: the
+/// schedule is built then, with only the systems that something needs.
+pub struct Simulation {
+    /// The ECS world.
+    pub world: World,
+    /// The scene's entities.
+    pub entities: SceneEntities,
+    schedule: Option<Schedule>,
+    steps: u64,
+}
+
+impl Simulation {
+    /// Spawns `scene` into a new world.
+    pub fn new(scene: &Scene) -> Self {
+        let mut world = World::new();
+        let entities = spawn_scene(&mut world, scene);
+        Self {
+            world,
+            entities,
+            schedule: None,
+            steps: scene.steps(),
+        }
+    }
+
+    /// Adds a recorder sink.
+    pub fn with_recorder(mut self, sink: impl StepSink) -> Self {
+        self.world.insert_resource(Recorder::new(sink));
+        self
+    }
+
+    /// Adds a publisher sink.
+    pub fn with_publisher(mut self, sink: impl StepSink) -> Self {
+        self.world.insert_resource(Publisher::new(sink));
+        self
+    }
+
+    /// Accumulates a [`Summary`].
+    pub fn with_summary(mut self) -> Self {
+        self.world.init_resource::<Summary>();
+        self
+    }
+
+    /// The schedule (built on first use).
+    pub fn schedule_mut(&mut self) -> &mut Schedule {
+        let world = &self.world;
+        self.schedule.get_or_insert_with(|| build_schedule(world))
+    }
+
+    /// Builds and initialises the schedule now (otherwise done by the first step): system
+    /// state, the dependency graph and its sync points.
+    pub fn initialize(&mut self) {
+        self.schedule_mut();
+        if let Some(s) = self.schedule.as_mut() {
+            s.initialize(&mut self.world)
+                .expect("invariant: the softgrip sets are acyclic");
+        }
+    }
+
+    /// One step.
+    pub fn step(&mut self) {
+        self.schedule_mut();
+        if let Some(s) = self.schedule.as_mut() {
+            s.run(&mut self.world);
+        }
+    }
+
+    /// Steps of the scene's duration.
+    pub fn total_steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// Runs the scene's duration; `progress(step, total)` is called after every step.
+    pub fn run(&mut self, mut progress: impl FnMut(u64, u64)) -> RunReport {
+        let start = Instant::now();
+        let dt = self.world.resource::<crate::Physics>().world.params.dt as f64;
+        for k in 0..self.steps {
+            self.step();
+            progress(k + 1, self.steps);
+        }
+        RunReport {
+            steps: self.steps,
+            sim_time: self.steps as f64 * dt,
+            wall: start.elapsed(),
+        }
+    }
+
+    /// Finishes the sinks (flush, close); returns the first error of either.
+    pub fn finish(&mut self) -> Result<(), SinkError> {
+        let r = match self.world.get_resource_mut::<Recorder>() {
+            Some(mut r) => r.0.finish(),
+            None => Ok(()),
+        };
+        let p = match self.world.get_resource_mut::<Publisher>() {
+            Some(mut p) => p.0.finish(),
+            None => Ok(()),
+        };
+        r.and(p)
+    }
+}

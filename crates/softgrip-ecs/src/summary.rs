@@ -1,0 +1,154 @@
+//! [`Summary`]: per-fingertip peaks, slips, validity excursions and the grip at the commanded
+//! depth, accumulated by [`accumulate_summary`].
+
+use std::fmt;
+
+use bevy_ecs::prelude::{Entity, MessageReader, Name, Query, Res, ResMut, Resource, With};
+
+use crate::components::Fingertip;
+use crate::gripper::{Gripper, Phase};
+use crate::messages::{SlipStarted, ValidityExcursion};
+use crate::resources::Physics;
+
+/// One fingertip's summary.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct TipSummary {
+    /// Fingertip name.
+    pub name: String,
+    /// Largest normal force of any contact of the fingertip (substep peak) [N].
+    pub peak_force: f64,
+    /// Largest compression ratio x = delta / R [-].
+    pub peak_x: f64,
+    /// Contact radius at the largest compression [m].
+    pub peak_radius: f64,
+    /// Slip events (`SlipStarted`).
+    pub slips: u32,
+    /// Validity excursions (`ValidityExcursion`).
+    pub validity_excursions: u32,
+    /// Commanded compression of the gripper's squeeze [m] (fingertips on a gripper jaw).
+    pub commanded_depth: Option<f64>,
+    /// Normal force at the end of the squeeze's settle phase [N].
+    pub squeeze_force: Option<f64>,
+    /// Compression at the end of the squeeze's settle phase [m].
+    pub squeeze_delta: Option<f64>,
+}
+
+/// The run's summary: one entry per fingertip, in spawn (scene) order.
+#[derive(Resource, Debug, Clone, Default)]
+pub struct Summary {
+    /// Per fingertip.
+    pub tips: Vec<(Entity, TipSummary)>,
+}
+
+impl Summary {
+    /// The summary of the fingertip named `name`.
+    pub fn tip(&self, name: &str) -> Option<&TipSummary> {
+        self.tips.iter().map(|(_, t)| t).find(|t| t.name == name)
+    }
+
+    fn entry(&mut self, tip: Entity, name: &str) -> &mut TipSummary {
+        let i = match self
+            .tips
+            .binary_search_by_key(&tip.index_u32(), |(e, _)| e.index_u32())
+        {
+            Ok(i) => i,
+            Err(i) => {
+                let t = TipSummary {
+                    name: name.to_string(),
+                    ..TipSummary::default()
+                };
+                self.tips.insert(i, (tip, t));
+                i
+            }
+        };
+        &mut self.tips[i].1
+    }
+}
+
+/// Updates the [`Summary`] from the last step's contacts and messages.
+pub fn accumulate_summary(
+    physics: Res<Physics>,
+    mut summary: ResMut<Summary>,
+    tips: Query<(Entity, &Name), With<Fingertip>>,
+    grippers: Query<&Gripper>,
+    mut slips: MessageReader<SlipStarted>,
+    mut excursions: MessageReader<ValidityExcursion>,
+) {
+    for (e, name) in &tips {
+        summary.entry(e, name.as_str());
+    }
+    for c in physics.world.soft.contacts() {
+        let Some(tip) = physics.collider_entity(c.fingertip) else {
+            continue;
+        };
+        let Ok((_, name)) = tips.get(tip) else {
+            continue;
+        };
+        let s = summary.entry(tip, name.as_str());
+        s.peak_force = s.peak_force.max(c.peak_normal_force);
+        if c.x > s.peak_x {
+            s.peak_x = c.x;
+            s.peak_radius = c.patch().radius;
+        }
+    }
+    for m in slips.read() {
+        if let Ok((_, name)) = tips.get(m.fingertip) {
+            summary.entry(m.fingertip, name.as_str()).slips += 1;
+        }
+    }
+    for m in excursions.read() {
+        if let Ok((_, name)) = tips.get(m.fingertip) {
+            summary
+                .entry(m.fingertip, name.as_str())
+                .validity_excursions += 1;
+        }
+    }
+    for g in &grippers {
+        if g.state.phase != Phase::Settle {
+            continue;
+        }
+        for k in 0..2 {
+            for &tip in &g.tips[k] {
+                let Ok((_, name)) = tips.get(tip) else {
+                    continue;
+                };
+                let handle = physics
+                    .world
+                    .soft
+                    .contacts()
+                    .iter()
+                    .filter(|c| physics.collider_entity(c.fingertip) == Some(tip));
+                let (force, delta) = handle.fold((0.0, 0.0f64), |(f, d), c| {
+                    (f + c.normal_force, d.max(c.delta))
+                });
+                let s = summary.entry(tip, name.as_str());
+                s.commanded_depth = Some(g.program.depth[k]);
+                s.squeeze_force = Some(force);
+                s.squeeze_delta = Some(delta);
+            }
+        }
+    }
+}
+
+impl fmt::Display for TipSummary {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}: peak force {:.4} N, peak x {:.4}, peak contact radius {:.3} mm, slips {}, validity excursions {}",
+            self.name,
+            self.peak_force,
+            self.peak_x,
+            self.peak_radius * 1e3,
+            self.slips,
+            self.validity_excursions
+        )?;
+        if let (Some(d), Some(force)) = (self.commanded_depth, self.squeeze_force) {
+            write!(
+                f,
+                ", squeeze {force:.4} N at commanded depth {:.4} mm",
+                d * 1e3
+            )?;
+        }
+        Ok(())
+    }
+}

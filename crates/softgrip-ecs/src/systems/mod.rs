@@ -1,0 +1,13 @@
+//! The systems, one file per set (see [`SoftgripSet`](crate::SoftgripSet) for the order).
+
+mod control;
+mod physics;
+mod readout;
+mod record;
+mod sync;
+
+pub use control::{follow_trajectories, run_grippers};
+pub use physics::physics_step;
+pub use readout::{read_contacts, read_poses};
+pub use record::{assemble_frame, publish, record};
+pub use sync::sync_to_rapier;

@@ -1,0 +1,94 @@
+//! Recording and publishing: the step's data is assembled once ([`CurrentFrame`]) and handed
+//! to the [`Recorder`] and the [`Publisher`] sinks.
+
+use bevy_ecs::prelude::{Entity, Name, Query, Res, ResMut, With};
+
+use crate::components::{BodyPose, Fingertip, FingertipWrench, RigidBody};
+use crate::resources::{
+    CurrentFrame, Physics, Publisher, RecordSelection, Recorder, SceneInfoResource, SimClock,
+};
+use crate::sink::{BodySample, ContactSample, WrenchSample};
+
+/// Fills [`CurrentFrame`] with what [`RecordSelection`] asks for, names resolved. Scheduled
+/// only on steps that a sink takes ([`StepSink::wants`](crate::StepSink::wants)): with only
+/// the MCAP recorder, every `record.every_n_steps`-th step.
+pub fn assemble_frame(
+    physics: Res<Physics>,
+    clock: Res<SimClock>,
+    selection: Res<RecordSelection>,
+    mut frame: ResMut<CurrentFrame>,
+    bodies: Query<(Entity, &Name, &BodyPose), With<RigidBody>>,
+    tips: Query<(Entity, &Name, &FingertipWrench), With<Fingertip>>,
+    names: Query<&Name>,
+) {
+    let sel = &selection.0;
+    let f = &mut frame.0;
+    f.step = clock.step;
+    f.time = clock.time;
+    f.bodies.clear();
+    f.wrenches.clear();
+    f.contacts.clear();
+    if sel.poses {
+        let mut list: Vec<_> = bodies.iter().collect();
+        list.sort_by_key(|(e, ..)| e.index_u32());
+        f.bodies
+            .extend(list.into_iter().map(|(_, n, p)| BodySample {
+                name: n.as_str().to_string(),
+                translation: p.translation,
+                rotation: p.rotation,
+            }));
+    }
+    if sel.wrenches {
+        let mut list: Vec<_> = tips.iter().collect();
+        list.sort_by_key(|(e, ..)| e.index_u32());
+        f.wrenches
+            .extend(list.into_iter().map(|(_, n, w)| WrenchSample {
+                fingertip: n.as_str().to_string(),
+                force: w.force,
+                torque: w.torque,
+            }));
+    }
+    if sel.contacts {
+        let name_of = |e: Option<Entity>| {
+            e.and_then(|e| names.get(e).ok())
+                .map_or_else(|| String::from("world"), |n| n.as_str().to_string())
+        };
+        for c in physics.world.soft.contacts() {
+            let tip = physics.collider_entity(c.fingertip);
+            let other = if physics.world.soft.is_soft(c.other) {
+                physics.collider_entity(c.other)
+            } else {
+                physics
+                    .world
+                    .colliders
+                    .get(c.other)
+                    .and_then(|co| co.parent())
+                    .and_then(|b| physics.body_entity(b))
+            };
+            f.contacts.push(ContactSample {
+                fingertip: name_of(tip),
+                other: name_of(other),
+                contact: c.clone(),
+                patch: sel.pressure.then(|| c.patch()),
+            });
+        }
+    }
+}
+
+/// Hands the frame to the recorder (scheduled only on the steps it takes).
+pub fn record(
+    frame: Res<CurrentFrame>,
+    info: Option<Res<SceneInfoResource>>,
+    mut recorder: ResMut<Recorder>,
+) {
+    recorder.0.write(info.as_ref().map(|i| &i.0), &frame.0);
+}
+
+/// Hands the frame to the publisher.
+pub fn publish(
+    frame: Res<CurrentFrame>,
+    info: Option<Res<SceneInfoResource>>,
+    mut publisher: ResMut<Publisher>,
+) {
+    publisher.0.write(info.as_ref().map(|i| &i.0), &frame.0);
+}

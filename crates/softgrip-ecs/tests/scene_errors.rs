@@ -1,0 +1,112 @@
+//! Scene files: unknown fields and invalid values give typed errors naming the field (and the
+//! line, for parse errors); mesh shapes load from OBJ and STL.
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+use std::path::Path;
+
+use softgrip_ecs::{Scene, SceneError, Simulation};
+
+const BASE: &str = "duration = 1.0\n[[body]]\nname = \"table\"\nkind = \"fixed\"\n";
+
+fn parse(text: &str) -> Result<Scene, SceneError> {
+    Scene::parse(text, "test.toml", Path::new("."))
+}
+
+#[test]
+fn unknown_field_names_the_field_and_line() {
+    let text = format!(
+        "{BASE}[[body.shape]]\ntype = \"plane\"\nnormal = [0.0, 1.0, 0.0]\nfrction = 0.4\n"
+    );
+    let err = parse(&text).unwrap_err();
+    let SceneError::Parse { line, message, .. } = &err else {
+        panic!("expected a parse error, got {err}");
+    };
+    assert_eq!(*line, 8);
+    assert!(message.contains("frction"), "{message}");
+    assert!(err.to_string().starts_with("test.toml:8:"), "{err}");
+}
+
+#[test]
+fn wrong_type_names_the_line() {
+    let err = parse("duration = \"long\"\n").unwrap_err();
+    assert!(matches!(err, SceneError::Parse { line: 1, .. }), "{err}");
+}
+
+#[test]
+fn invalid_values_are_typed_errors_naming_the_field() {
+    let cases = [
+        ("duration = -1.0\n", "duration"),
+        (
+            &format!("{BASE}[[body.shape]]\ntype = \"cuboid\"\nhalf_extents = [0.1, 0.0, 0.1]\n"),
+            "body[0].shape[0].half_extents[1]",
+        ),
+        (
+            &format!("{BASE}[[body.shape]]\ntype = \"ball\"\n"),
+            "body[0].shape[0].radius",
+        ),
+        (
+            &format!(
+                "{BASE}[[body.shape]]\ntype = \"ball\"\nradius = 0.1\nnormal = [0.0, 1.0, 0.0]\n"
+            ),
+            "body[0].shape[0].normal",
+        ),
+        (
+            &format!(
+                "{BASE}[[fingertip]]\nname = \"t\"\nbody = \"nope\"\nradius = 0.01\npreset = \"dragon-skin-30\"\n"
+            ),
+            "fingertip[0].body",
+        ),
+        (
+            &format!(
+                "{BASE}[[fingertip]]\nname = \"t\"\nbody = \"table\"\nradius = 0.01\npreset = \"rubber\"\n"
+            ),
+            "fingertip[0].preset",
+        ),
+        (
+            &format!(
+                "{BASE}[[fingertip]]\nname = \"t\"\nbody = \"table\"\nradius = -0.01\npreset = \"dragon-skin-30\"\n"
+            ),
+            "fingertip[0]",
+        ),
+    ];
+    for (text, field) in cases {
+        let err = parse(text).unwrap_err();
+        assert_eq!(err.field(), Some(field), "{err}");
+        assert!(err.to_string().contains(field), "{err}");
+    }
+    let err = parse("duration = 1.0\naccuracy = 3.0\n").unwrap_err();
+    assert!(
+        matches!(&err, SceneError::Invalid { field, .. } if field == "accuracy"),
+        "{err}"
+    );
+}
+
+#[test]
+fn mesh_shapes_load_from_obj_and_stl() {
+    let dir = std::env::temp_dir().join(format!("softgrip-ecs-mesh-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // A tetrahedron as OBJ (convex hull) and a two-triangle floor as ASCII STL.
+    std::fs::write(
+        dir.join("tet.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("floor.stl"),
+        "solid f\nfacet normal 0 1 0\nouter loop\nvertex -1 0 -1\nvertex -1 0 1\nvertex 1 0 1\nendloop\nendfacet\n\
+         facet normal 0 1 0\nouter loop\nvertex -1 0 -1\nvertex 1 0 1\nvertex 1 0 -1\nendloop\nendfacet\nendsolid f\n",
+    )
+    .unwrap();
+    let text = "duration = 0.5\n[[body]]\nname = \"floor\"\nkind = \"fixed\"\n[[body.shape]]\ntype = \"triangle_mesh\"\nfile = \"floor.stl\"\n\
+                [[body]]\nname = \"tet\"\nkind = \"dynamic\"\nposition = [0.0, 0.2, 0.0]\n[[body.shape]]\ntype = \"convex_mesh\"\nfile = \"tet.obj\"\nscale = 0.05\n";
+    let scene = Scene::parse(text, "mesh.toml", &dir).unwrap();
+    assert_eq!(scene.shapes(0)[0].as_trimesh().unwrap().indices().len(), 2);
+    assert!(scene.shapes(1)[0].as_convex_polyhedron().is_some());
+    let mut sim = Simulation::new(&scene);
+    sim.run(|_, _| {});
+    let missing =
+        Scene::parse(&text.replace("tet.obj", "none.obj"), "mesh.toml", &dir).unwrap_err();
+    assert!(matches!(missing, SceneError::Mesh { .. }), "{missing}");
+    std::fs::remove_dir_all(&dir).ok();
+}

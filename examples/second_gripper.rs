@@ -1,0 +1,124 @@
+//! A user's own bevy_ecs app: the default scene, plus a second gripper (two kinematic jaws
+//! with soft fingertips around a second box) driven by a custom system that reads the
+//! `SoftContact` components: a proportional grip-force controller holding 4 N per fingertip.
+//!
+//! `cargo run -p softgrip-ecs --example second_gripper`
+
+use softgrip_ecs::bevy_ecs::prelude::*;
+use softgrip_ecs::softgrip_rapier::rapier3d::prelude::SharedShape;
+use softgrip_ecs::softgrip_rapier::{Preset, SoftFingertip};
+use softgrip_ecs::{
+    AttachedTo, BodyKind, BodyPose, Collider, Fingertip, KinematicTarget, RigidBody, Scene,
+    SoftContact, SoftgripSet, build_schedule, spawn_scene,
+};
+
+/// A jaw of the second gripper: closes along `dir` until its fingertip pushes with `target` N.
+#[derive(Component)]
+struct ForceJaw {
+    dir: f64,
+    x: f64,
+    target: f64,
+}
+
+/// The custom controller: reads every SoftContact, moves each jaw by a gain times the force error.
+fn grip_force_controller(
+    contacts: Query<&SoftContact>,
+    tips: Query<&AttachedTo, With<Fingertip>>,
+    mut jaws: Query<(Entity, &mut ForceJaw, &mut KinematicTarget)>,
+) {
+    for (entity, mut jaw, mut target) in &mut jaws {
+        let force: f64 = contacts
+            .iter()
+            .filter(|c| tips.get(c.fingertip).is_ok_and(|a| a.0 == entity))
+            .map(|c| c.contact.normal_force)
+            .sum();
+        // 0.01 mm/N per step, at most 0.02 mm per step (1.2 mm/s at 60 Hz): slow enough that
+        // the contact's damping force stays small (a faster jaw makes it chatter).
+        let step = (1e-5 * (jaw.target - force)).clamp(-2e-5, 2e-5);
+        jaw.x += jaw.dir * step;
+        target.0 = Some([jaw.x, 0.02, 0.2]);
+    }
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let mut world = World::new();
+    spawn_scene(&mut world, &Scene::default_scene());
+
+    // The second box, 20 cm behind the first, and its two jaws.
+    let cube = world
+        .spawn((
+            Name::new("box2"),
+            RigidBody {
+                kind: BodyKind::Dynamic,
+                position: [0.0, 0.02, 0.2],
+                rotation: [0.0; 3],
+            },
+        ))
+        .id();
+    let shape = SharedShape::cuboid(0.02, 0.02, 0.02);
+    world.spawn((
+        Collider {
+            shape,
+            offset: [0.0; 3],
+            density: 500.0,
+            friction: 0.5,
+            restitution: 0.0,
+        },
+        AttachedTo(cube),
+    ));
+    for (name, x, dir) in [("jaw2_left", -0.034, 1.0), ("jaw2_right", 0.034, -1.0)] {
+        let body = RigidBody {
+            kind: BodyKind::Kinematic,
+            position: [x, 0.02, 0.2],
+            rotation: [0.0; 3],
+        };
+        let jaw = world
+            .spawn((
+                Name::new(name),
+                body,
+                KinematicTarget::default(),
+                ForceJaw {
+                    dir,
+                    x,
+                    target: 4.0,
+                },
+            ))
+            .id();
+        let tip = SoftFingertip::builder(0.01)
+            .name(format!("{name}_tip"))
+            .preset(Preset::DragonSkin20)
+            .build()?;
+        world.spawn((
+            Name::new(format!("{name}_tip")),
+            Fingertip {
+                tip,
+                offset: [0.0; 3],
+                density: 1070.0,
+            },
+            AttachedTo(jaw),
+        ));
+    }
+
+    let mut schedule = build_schedule(&world);
+    schedule.add_systems(grip_force_controller.in_set(SoftgripSet::Control));
+    for _ in 0..600 {
+        schedule.run(&mut world);
+    }
+
+    let mut q = world.query::<&SoftContact>();
+    for c in q.iter(&world) {
+        let name = world.get::<Name>(c.fingertip).map_or("?", |n| n.as_str());
+        println!(
+            "{name}: {:.3} N at x = {:.3}",
+            c.contact.normal_force, c.contact.x
+        );
+    }
+    let mut boxes = world.query::<(&Name, &BodyPose)>();
+    for (n, p) in boxes
+        .iter(&world)
+        .filter(|(n, _)| n.as_str().starts_with("box"))
+    {
+        println!("{n}: y = {:.4} m", p.translation[1]);
+    }
+    Ok(())
+}
