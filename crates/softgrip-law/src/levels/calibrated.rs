@@ -95,12 +95,15 @@ impl Calibrated {
         let n = w + x * x * (1.0 / 3.0);
         let sf = w + self.c * s + E * x * x;
         let d = w * w + self.b2 * x * x;
-        let chi = n * sf / d;
-        // x chi' = chi (x N'/N + x S'/S - x D'/D), with x S' = -x + c s/2 + 2 e x^2.
+        // One division: with inv = 1/D, chi = N S inv and
+        // x chi' = (x N' S + N x S' - N S x D' inv) inv.
+        let inv = 1.0 / d;
+        let ns = n * sf;
+        let chi = ns * inv;
         let xn = x * (-1.0 + 2.0 / 3.0 * x);
         let xs = -x + 0.5 * self.c * s + 2.0 * E * x * x;
         let xd = x * (-2.0 * w + 2.0 * self.b2 * x);
-        (chi, chi * (xn / n + xs / sf - xd / d))
+        (chi, (xn * sf + n * xs - ns * xd * inv) * inv)
     }
 }
 
