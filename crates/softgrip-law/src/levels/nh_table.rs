@@ -67,7 +67,12 @@ impl NeoHookeanTable {
                 let ([c0, d0], [c1, d1]) = (w[0], w[1]);
                 let (d0, d1) = (d0 * H, d1 * H);
                 // Hermite basis expanded in t.
-                [c0, d0, 3.0 * (c1 - c0) - 2.0 * d0 - d1, 2.0 * (c0 - c1) + d0 + d1]
+                [
+                    c0,
+                    d0,
+                    3.0 * (c1 - c0) - 2.0 * d0 - d1,
+                    2.0 * (c0 - c1) + d0 + d1,
+                ]
             })
             .collect();
         let mut table = Self {
