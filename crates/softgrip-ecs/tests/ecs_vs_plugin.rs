@@ -7,7 +7,7 @@ mod common;
 
 use std::path::Path;
 
-use common::{Probe, contact_bits};
+use common::{Probe, contact_bits, readout_bits};
 use softgrip_ecs::scene::Trajectory;
 use softgrip_ecs::softgrip_rapier::rapier3d::prelude::*;
 use softgrip_ecs::softgrip_rapier::{SoftAccuracy, SoftWorld};
@@ -24,20 +24,7 @@ fn bits(world: &SoftWorld) -> Vec<u64> {
         .soft
         .contacts()
         .iter()
-        .flat_map(|k| {
-            let mut v = vec![
-                k.normal_force,
-                k.delta,
-                k.x,
-                k.torsional_moment,
-                k.stiffness,
-                k.peak_normal_force,
-            ];
-            v.extend(k.friction_force);
-            v.extend(k.point);
-            v.extend(k.normal);
-            v.into_iter().map(f64::to_bits)
-        })
+        .flat_map(readout_bits)
         .collect()
 }
 

@@ -31,22 +31,24 @@ pub fn contact_bits(frames: &[StepFrame]) -> Vec<Vec<u64>> {
         .map(|f| {
             f.contacts
                 .iter()
-                .flat_map(|c| {
-                    let k = &c.contact;
-                    let mut v = vec![
-                        k.normal_force,
-                        k.delta,
-                        k.x,
-                        k.torsional_moment,
-                        k.stiffness,
-                        k.peak_normal_force,
-                    ];
-                    v.extend(k.friction_force);
-                    v.extend(k.point);
-                    v.extend(k.normal);
-                    v.into_iter().map(f64::to_bits)
-                })
+                .flat_map(|c| readout_bits(&c.contact))
                 .collect()
         })
         .collect()
+}
+
+/// The bits of one plugin readout, in the order the equivalence tests compare them.
+pub fn readout_bits(k: &softgrip_ecs::softgrip_rapier::SoftContact) -> Vec<u64> {
+    let mut v = vec![
+        k.normal_force,
+        k.delta,
+        k.x,
+        k.torsional_moment,
+        k.stiffness,
+        k.peak_normal_force,
+    ];
+    v.extend(k.friction_force);
+    v.extend(k.point);
+    v.extend(k.normal);
+    v.into_iter().map(f64::to_bits).collect()
 }
