@@ -92,7 +92,7 @@ impl Curve {
     }
 
     /// Normalised force and stiffness inside the range, with the level that computed them.
-    #[inline]
+    #[inline(always)]
     fn force_stiffness(&self, x: f64) -> (f64, f64, LevelKind) {
         let with = |(f, k): (f64, f64), kind| (f, k, kind);
         match self {
@@ -281,7 +281,7 @@ impl ContactLaw {
     /// Never fails and never returns NaN: `delta <= 0` is [`Regime::Separated`] (zero force),
     /// NaN or infinite `delta` is [`Regime::NonFinite`] (zero force), past `x_max` the
     /// extension is used ([`Regime::Extended`]). It does not compute the radius or pressure.
-    #[inline]
+    #[inline(always)]
     pub fn response(&self, delta: f64) -> NormalResponse {
         let x = delta * self.inv_radius;
         // NaN fails both comparisons and goes to the cold path.

@@ -116,7 +116,18 @@ fn table_interpolation_error_is_below_1e_6() {
         assert_eq!(table.x_max(), exact.x_max());
         let (mut ef, mut ek, mut k_max, mut er, mut ew) =
             (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
-        for x in grid(exact.x_max(), 3000) {
+        // Plus the points where a cell lookup can go wrong: the first cell (x < H/2, where
+        // rounding picks the cell), the nodes themselves and their neighbours in f64.
+        let nodes = (0..40).flat_map(|i| {
+            let x = f64::from(i) / 1024.0;
+            [x.next_down(), x, x.next_up(), x + 0.25 / 1024.0]
+        });
+        let probes = [1e-12, 1e-9, 1e-6, 1e-4, 0.5 / 1024.0, exact.x_max()];
+        for x in grid(exact.x_max(), 3000)
+            .into_iter()
+            .chain(nodes.filter(|&x| x > 0.0))
+            .chain(probes)
+        {
             let (t, e) = (table.response(x), exact.response(x));
             ef = ef.max((t.force / e.force - 1.0).abs());
             ek = ek.max((t.stiffness - e.stiffness).abs());

@@ -219,7 +219,7 @@ impl Segment {
 
 impl Auto {
     /// Force, stiffness and the level that served them, in one segment lookup.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn force_stiffness_kind(&self, x: f64) -> (f64, f64, LevelKind) {
         let s = self.segment(x);
         let (f, k) = s.candidate.force_stiffness(x);

@@ -259,7 +259,9 @@ impl NeoHookeanExact {
 }
 
 impl Normalised for NeoHookeanExact {
-    #[inline]
+    // An iterative solve: a call costs nothing next to it, and keeping it out of line keeps
+    // the callers' hot loops (`ContactLaw::response` is inlined) small.
+    #[inline(never)]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let (chi, dchi) = self.uniaxial.chi(x);
         scale_by_chi(x, chi, dchi)

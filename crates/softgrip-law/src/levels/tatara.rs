@@ -85,7 +85,9 @@ impl Tatara {
 }
 
 impl Normalised for Tatara {
-    #[inline]
+    // An iterative solve: a call costs nothing next to it, and keeping it out of line keeps
+    // the callers' hot loops (`ContactLaw::response` is inlined) small.
+    #[inline(never)]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let s = self.s_of_x(x);
         if s == 0.0 {
