@@ -1,9 +1,12 @@
 //! ns per evaluation of every level: force + stiffness only (the hot path), and with the
-//! contact radius and pressure. `cargo bench -p softgrip-law`.
+//! contact radius and pressure; plus the arithmetic floor. `cargo bench -p softgrip-law`.
+//! Each benchmark is one pass over 1024 compressions: divide its time by 1024.
 
 use std::hint::black_box;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{
+    BenchmarkGroup, Criterion, criterion_group, criterion_main, measurement::WallTime,
+};
 use softgrip_law::{ContactLaw, ContactParams, Level, Material};
 
 /// 1024 compressions spread over (0, delta_max) in a scrambled order, as contacts of a scene
@@ -17,84 +20,63 @@ fn deltas(law: &ContactLaw) -> Vec<f64> {
         .collect()
 }
 
+/// Times one pass of `eval` over `inputs`, summing its results (so nothing is optimised away).
+fn bench_pass(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    name: &str,
+    inputs: &[f64],
+    eval: impl Fn(f64) -> f64,
+) {
+    group.bench_function(name, |b| {
+        b.iter(|| inputs.iter().map(|&v| eval(black_box(v))).sum::<f64>())
+    });
+}
+
 fn bench_levels(c: &mut Criterion) {
     let material = Material::try_new(3.0e6, 0.49).expect("valid material");
     let params = ContactParams::try_new(material, 0.01).expect("valid params");
+    let law = |level| ContactLaw::try_new(params, level).expect("level builds");
+
     // The arithmetic floor of the explicit levels: one square root (x^(3/2)) and one division
     // (chi_L = 1/(1 - k x)) per evaluation, on the same inputs, with nothing else. On a core
     // whose divider is not pipelined this, not the law, sets the cost of fit and incompressible.
     let mut floor = c.benchmark_group("floor");
-    {
-        let law = ContactLaw::try_new(params, Level::fit()).expect("level builds");
-        let xs: Vec<f64> = deltas(&law).iter().map(|d| d / 0.01).collect();
-        floor.bench_function("sqrt", |b| {
-            b.iter(|| {
-                let mut sum = 0.0;
-                for &x in &xs {
-                    sum += black_box(x).sqrt();
-                }
-                sum
-            })
-        });
-        floor.bench_function("sqrt+div", |b| {
-            b.iter(|| {
-                let mut sum = 0.0;
-                for &x in &xs {
-                    let x = black_box(x);
-                    sum += x.sqrt() + 1.0 / (1.0 - 0.5 * x);
-                }
-                sum
-            })
-        });
-    }
+    let xs: Vec<f64> = deltas(&law(Level::fit()))
+        .iter()
+        .map(|d| d / 0.01)
+        .collect();
+    bench_pass(&mut floor, "sqrt", &xs, f64::sqrt);
+    bench_pass(&mut floor, "sqrt+div", &xs, |x| {
+        x.sqrt() + 1.0 / (1.0 - 0.5 * x)
+    });
     floor.finish();
+
     let mut force = c.benchmark_group("force_stiffness");
     for level in Level::ALL {
-        let law = ContactLaw::try_new(params, level).expect("level builds");
-        let ds = deltas(&law);
-        force.bench_function(level.name(), |b| {
-            b.iter(|| {
-                let mut sum = 0.0;
-                for &d in &ds {
-                    let r = law.response(black_box(d));
-                    sum += r.force + r.stiffness;
-                }
-                sum
-            })
+        let law = law(level);
+        bench_pass(&mut force, level.name(), &deltas(&law), |d| {
+            let r = law.response(d);
+            r.force + r.stiffness
         });
     }
-    // Auto picks its level by x: with scrambled x the pick is a mispredicted branch about
-    // every other call. A contact's x changes little from one step to the next, so also time
-    // it on the same compressions in ascending order (the predictable case).
-    {
-        let law = ContactLaw::try_new(params, Level::auto()).expect("level builds");
-        let mut ds = deltas(&law);
-        ds.sort_by(f64::total_cmp);
-        force.bench_function("auto-ascending-x", |b| {
-            b.iter(|| {
-                let mut sum = 0.0;
-                for &d in &ds {
-                    let r = law.response(black_box(d));
-                    sum += r.force + r.stiffness;
-                }
-                sum
-            })
-        });
-    }
+    // Auto picks its level by x. A contact's x changes little from one step to the next, so
+    // also time it on the same compressions in ascending order (predictable picks).
+    let auto = law(Level::auto());
+    let mut ascending = deltas(&auto);
+    ascending.sort_by(f64::total_cmp);
+    bench_pass(&mut force, "auto-ascending-x", &ascending, |d| {
+        let r = auto.response(d);
+        r.force + r.stiffness
+    });
     force.finish();
+
     let mut patch = c.benchmark_group("with_radius_pressure");
     for level in Level::ALL {
-        let law = ContactLaw::try_new(params, level).expect("level builds");
-        let ds = deltas(&law);
-        patch.bench_function(level.name(), |b| {
-            b.iter(|| {
-                let mut sum = 0.0;
-                for &d in &ds {
-                    let r = law.response(black_box(d));
-                    sum += r.force + law.patch(d).peak_pressure;
-                }
-                sum
-            })
+        let law = law(level);
+        bench_pass(&mut patch, level.name(), &deltas(&law), |d| {
+            let r = law.response(d);
+            let p = law.patch(d);
+            r.force + r.stiffness + p.radius + p.peak_pressure
         });
     }
     patch.finish();

@@ -10,7 +10,8 @@ use plotters::prelude::*;
 use softgrip_law::ContactLaw;
 
 use super::style::{
-    CAPTION_SIZE, FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE, ensure_font, series_colour,
+    CAPTION_SIZE, FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE, draw_curve, draw_legend, ensure_font,
+    series_colour,
 };
 use crate::fe::FePoint;
 
@@ -139,7 +140,6 @@ fn chart<DB: DrawingBackend>(
         } else {
             2
         };
-        let style = colour.stroke_width(width);
         let x_end = law.x_max().min(X_PLOT);
         let n = (x_end / DX).floor() as usize;
         let points = (1..=n)
@@ -147,28 +147,13 @@ fn chart<DB: DrawingBackend>(
             .chain(std::iter::once(x_end))
             .map(|x| (x, shown.of(x, law.response(x).force)));
         // The line ends at the level's x_max; parts outside the chart (poles, a spring's
-        // chi at small x) are left out.
-        let mut first = true;
-        for segment in inside(points, y_top) {
-            let anno = if dashed {
-                chart.draw_series(DashedLineSeries::new(segment, 10, 6, style))?
-            } else {
-                chart.draw_series(LineSeries::new(segment, style))?
-            };
-            if std::mem::take(&mut first) {
-                anno.label(*name).legend(move |(x, y)| {
-                    PathElement::new([(x, y), (x + 24, y)], colour.stroke_width(3))
-                });
-            }
+        // chi at small x) are left out. Only the first part gets the legend entry.
+        for (j, segment) in inside(points, y_top).into_iter().enumerate() {
+            let label = if j == 0 { *name } else { "" };
+            draw_curve(&mut chart, segment, label, colour, width, dashed)?;
         }
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .label_font((FONT, TICK_SIZE))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK.mix(0.3))
-        .draw()?;
+    draw_legend(&mut chart)?;
     Ok(())
 }
 

@@ -48,3 +48,50 @@ pub fn series_colour(i: usize) -> RGBColor {
     let (r, g, b) = TAB10[i % TAB10.len()];
     RGBColor(r, g, b)
 }
+
+/// A chart with `f64` axes, as every figure here draws.
+pub type Chart<'a, DB> = plotters::chart::ChartContext<
+    'a,
+    DB,
+    plotters::coord::cartesian::Cartesian2d<
+        plotters::coord::types::RangedCoordf64,
+        plotters::coord::types::RangedCoordf64,
+    >,
+>;
+
+/// Draws one curve, solid or dashed, with a legend entry `label` (a line swatch).
+pub fn draw_curve<'a, DB: plotters::prelude::DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+    points: Vec<(f64, f64)>,
+    label: &str,
+    colour: RGBColor,
+    width: u32,
+    dashed: bool,
+) -> Result<(), plotters::drawing::DrawingAreaErrorKind<DB::ErrorType>> {
+    use plotters::prelude::{Color, DashedLineSeries, LineSeries, PathElement};
+    let style = colour.stroke_width(width);
+    let anno = if dashed {
+        chart.draw_series(DashedLineSeries::new(points, 10, 6, style))?
+    } else {
+        chart.draw_series(LineSeries::new(points, style))?
+    };
+    if !label.is_empty() {
+        anno.label(label)
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 24, y)], colour.stroke_width(3)));
+    }
+    Ok(())
+}
+
+/// The legend box of the upper-left corner, in the style of every figure here.
+pub fn draw_legend<'a, DB: plotters::prelude::DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+) -> Result<(), plotters::drawing::DrawingAreaErrorKind<DB::ErrorType>> {
+    use plotters::prelude::{BLACK, Color, SeriesLabelPosition, WHITE};
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .label_font((FONT, TICK_SIZE))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK.mix(0.3))
+        .draw()
+}

@@ -12,7 +12,8 @@ use softgrip_law::{ContactLaw, Level};
 
 use super::{contact_radius, contacts, fingertips, laws, open};
 use crate::plot::style::{
-    CAPTION_SIZE, FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE, ensure_font, series_colour,
+    CAPTION_SIZE, FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE, draw_curve, draw_legend, ensure_font,
+    series_colour,
 };
 
 /// Arguments of `softgrip plot`.
@@ -200,24 +201,10 @@ fn force_vs_x<DB: DrawingBackend>(
                 .map(|x| (x, l.response(x * law.radius).force * k))
                 .filter(|&(_, f)| f.is_finite() && f <= y_top * k)
                 .collect();
-            let style = colour.stroke_width(width);
-            let anno = if i == 0 {
-                chart.draw_series(DashedLineSeries::new(pts, 10, 6, style))?
-            } else {
-                chart.draw_series(LineSeries::new(pts, style))?
-            };
-            anno.label(name.clone()).legend(move |(x, y)| {
-                PathElement::new([(x, y), (x + 24, y)], colour.stroke_width(3))
-            });
+            draw_curve(&mut chart, pts, name, colour, width, i == 0)?;
         }
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .label_font((FONT, TICK_SIZE))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK.mix(0.3))
-        .draw()?;
+    draw_legend(&mut chart)?;
     Ok(())
 }
 
