@@ -5,4 +5,5 @@ pub mod fe;
 pub mod fem_ball;
 pub mod icosphere;
 pub mod overhead;
+pub mod scenes;
 pub mod squeeze;
