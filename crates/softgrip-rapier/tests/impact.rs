@@ -8,6 +8,7 @@
 mod common;
 
 use rapier3d::prelude::*;
+use softgrip_bench::scenes::half_space_ground;
 use softgrip_law::Level;
 use softgrip_rapier::{Preset, SoftFingertip, SoftWorld};
 
@@ -15,9 +16,7 @@ use softgrip_rapier::{Preset, SoftFingertip, SoftWorld};
 fn fingertip_hitting_plane_at_10_m_s_does_not_tunnel_and_flags_excursion() {
     let r = 0.01;
     let mut world = SoftWorld::new();
-    world
-        .colliders
-        .insert(ColliderBuilder::new(SharedShape::halfspace(Vector::Y)));
+    half_space_ground(&mut world);
     let body = world.bodies.insert(
         RigidBodyBuilder::dynamic()
             .translation(Vector::new(0.0, 0.05, 0.0))

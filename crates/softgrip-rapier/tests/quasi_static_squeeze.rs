@@ -1,90 +1,44 @@
 //! A dynamic fingertip ball between a fixed floor and a kinematic plate, squeezed slowly to
-//! x = 0.8 per contact: the contact force equals the law's F(x) at every sample.
+//! x = 0.8 per contact: the contact force equals the law's F(x) at every sample. The scene is
+//! `softgrip_bench::scenes::PlateSqueeze`, the one the benchmark tables squeeze.
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
-use rapier3d::prelude::*;
-use softgrip_law::{Level, Material};
-use softgrip_rapier::{SoftFingertip, SoftWorld};
-
-const R: f64 = 0.01;
+use softgrip_bench::scenes::{PlateSqueeze, RADIUS as R, fingertip};
+use softgrip_law::Level;
 
 /// Worst errors of a squeeze at `speed` [m/s] (plate approach) with restitution `e`: (vs the
 /// law at half the approach, vs the law at the readout's delta, x reached, substeps total).
 fn squeeze(restitution: f64, speed: f64, tolerance: f64) -> (f64, f64, f64, u64) {
-    let mut world = SoftWorld::new();
-    let floor = world
-        .colliders
-        .insert(ColliderBuilder::cuboid(0.1, 0.01, 0.1).translation(Vector::new(0.0, -0.01, 0.0)));
-    let tip = SoftFingertip::builder(R)
-        .material(Material::try_new(3.0e6, 0.49).unwrap())
-        .level(Level::fit())
-        .restitution(restitution)
-        .build()
-        .unwrap();
-    let law = tip.law().clone();
-    // Start at rest, already squeezed to x0 = 0.02 per contact, at equilibrium under gravity:
+    // Starts at rest, already squeezed to x0 = 0.02 per contact, at equilibrium under gravity:
     // an elastic (e = 1) ball that the plate hits at 2 mm/s rings for a while (physically
     // right: nothing damps it), which is not the quasi-static squeeze this test is about.
-    let mass = 1070.0 * 4.0 / 3.0 * std::f64::consts::PI * R.powi(3);
-    let d0 = 0.02 * R;
-    let k0 = law.response(d0).stiffness;
-    let d_eq = d0 + mass * 9.81 / (2.0 * k0);
-    let ball_body = world.bodies.insert(
-        RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, (R - d_eq) as f32, 0.0))
-            .can_sleep(false),
-    );
-    let ball = world.colliders.insert_with_parent(
-        ColliderBuilder::ball(R as f32).density(1070.0),
-        ball_body,
-        &mut world.bodies,
-    );
-    let half = 0.005f32;
-    let plate_body = world.bodies.insert(
-        RigidBodyBuilder::kinematic_position_based().translation(Vector::new(
-            0.0,
-            (2.0 * R - 2.0 * d0) as f32 + half,
-            0.0,
-        )),
-    );
-    let plate = world.colliders.insert_with_parent(
-        ColliderBuilder::cuboid(0.05, half, 0.05),
-        plate_body,
-        &mut world.bodies,
-    );
-    world.register(ball, tip).unwrap();
+    let mut s = PlateSqueeze::new(fingertip(Level::fit(), restitution).build().unwrap());
 
-    let dt = world.params.dt as f64;
+    let dt = s.world.params.dt as f64;
     let (mut worst, mut worst_geom, mut samples) = (0.0f64, 0.0f64, 0);
     let mut x_reached = 0.0;
     for _ in 0..2000 {
-        let y = world.bodies[plate_body].translation().y as f64;
-        let plate_bottom_next = y - half as f64 - speed * dt;
+        let plate_bottom_next = s.plate_bottom() - speed * dt;
         if 2.0 * R - plate_bottom_next > 1.6 * R {
             break;
         }
-        world.bodies[plate_body].set_next_kinematic_translation(Vector::new(
-            0.0,
-            (y - speed * dt) as f32,
-            0.0,
-        ));
-        world.step();
-        let plate_bottom = world.bodies[plate_body].translation().y as f64 - half as f64;
-        let approach = 2.0 * R - plate_bottom;
+        s.lower_plate(speed * dt);
+        s.world.step();
+        let approach = 2.0 * R - s.plate_bottom();
         let delta = approach / 2.0;
         let x = delta / R;
-        let top = world.soft.contacts().iter().find(|c| c.other == plate);
-        let bottom = world.soft.contacts().iter().find(|c| c.other == floor);
+        let top = s.world.soft.contacts().iter().find(|c| c.other == s.plate);
+        let bottom = s.world.soft.contacts().iter().find(|c| c.other == s.floor);
         if x < 0.05 {
             continue;
         }
         let (top, bottom) = (top.expect("top contact"), bottom.expect("bottom contact"));
-        let f_law = law.response(delta).force;
+        let f_law = s.law.response(delta).force;
         let err = (top.normal_force / f_law - 1.0).abs();
         let err_b = (bottom.normal_force / f_law - 1.0).abs();
         // Against the law at the readout's own compression (the end-of-step geometry).
-        let err_geom = (top.normal_force / law.response(top.delta).force - 1.0).abs();
+        let err_geom = (top.normal_force / s.law.response(top.delta).force - 1.0).abs();
         worst = worst.max(err).max(err_b);
         worst_geom = worst_geom.max(err_geom);
         samples += 1;
@@ -101,7 +55,7 @@ fn squeeze(restitution: f64, speed: f64, tolerance: f64) -> (f64, f64, f64, u64)
         worst,
         worst_geom,
         x_reached,
-        world.soft.counters().substeps_total,
+        s.world.soft.counters().substeps_total,
     )
 }
 
