@@ -19,7 +19,7 @@ pub const DROP: f64 = 0.1;
 pub const SIM_TIME: f64 = 1.0;
 
 /// A first impact: the plugin's, or the 1-DOF reference's.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub struct Impact {
     /// Peak normal force [N].
     pub peak_force: f64,
@@ -75,6 +75,47 @@ pub fn reference(law: &ContactLaw, mass: f64, v0: f64) -> Impact {
     }
 }
 
+/// The plugin's first impact in a [`BallDrop`], measured step by step: call
+/// [`before_step`](Self::before_step), step the world, then [`after_step`](Self::after_step).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FirstImpact {
+    /// Peak force and compression of the contact's readouts, and the sum of their
+    /// durations, from the first touch to the first step without contact.
+    pub impact: Impact,
+    /// Speed at first touch [m/s], from the free fall over the gap before the touching step
+    /// (with the ball's true velocity, [`BallDrop::true_velocity_y`]).
+    pub speed: f64,
+    touched: bool,
+    v_before: f64,
+    gap_before: f64,
+}
+
+impl FirstImpact {
+    /// Notes the ball's downward true velocity and gap before a step.
+    pub fn before_step(&mut self, s: &BallDrop) {
+        self.v_before = -s.true_velocity_y();
+        self.gap_before = s.gap();
+    }
+
+    /// Adds the step's contact readout; true once the ball has touched and left the ground.
+    pub fn after_step(&mut self, s: &BallDrop) -> bool {
+        match s.world.soft.contacts().first() {
+            Some(c) => {
+                if !self.touched {
+                    // Speed at first touch, from the free fall over the gap before the step.
+                    self.speed = (self.v_before * self.v_before + 2.0 * G * self.gap_before).sqrt();
+                }
+                self.touched = true;
+                self.impact.peak_force = self.impact.peak_force.max(c.peak_normal_force);
+                self.impact.peak_delta = self.impact.peak_delta.max(c.max_delta);
+                self.impact.duration += c.contact_duration;
+                false
+            }
+            None => self.touched,
+        }
+    }
+}
+
 /// Runs the drop with `level` and `accuracy` for [`SIM_TIME`].
 pub fn bounce(level: Level, accuracy: SoftAccuracy) -> BounceResult {
     let tip = fingertip(level, 1.0)
@@ -87,41 +128,21 @@ pub fn bounce(level: Level, accuracy: SoftAccuracy) -> BounceResult {
     // Energy with the true velocity of rapier's N-pass symplectic Euler in free flight
     // (`BallDrop::energy`): exactly conserved in free flight.
     let e0 = s.energy();
-    let (mut peak, mut peak_delta, mut duration, mut v_impact) = (0.0f64, 0.0f64, 0.0, 0.0);
-    let (mut touched, mut energy_error) = (false, None);
+    let (mut first, mut energy_error) = (FirstImpact::default(), None);
     let mut wall = Duration::ZERO;
     for _ in 0..(SIM_TIME / dt).round() as usize {
-        let v_before = -s.true_velocity_y();
-        let y_before = s.gap();
+        first.before_step(&s);
         let t = Instant::now();
         s.world.step();
         wall += t.elapsed();
-        if energy_error.is_some() {
-            continue;
-        }
-        match s.world.soft.contacts().first() {
-            Some(c) => {
-                if !touched {
-                    // Speed at first touch, from the free fall over the gap before the step.
-                    v_impact = (v_before * v_before + 2.0 * G * y_before).sqrt();
-                }
-                touched = true;
-                peak = peak.max(c.peak_normal_force);
-                peak_delta = peak_delta.max(c.max_delta);
-                duration += c.contact_duration;
-            }
-            None if touched => energy_error = Some(s.energy() / e0 - 1.0),
-            None => {}
+        if energy_error.is_none() && first.after_step(&s) {
+            energy_error = Some(s.energy() / e0 - 1.0);
         }
     }
     let c = s.world.soft.counters();
     BounceResult {
-        impact: Impact {
-            peak_force: peak,
-            peak_delta,
-            duration,
-        },
-        reference: reference(&s.law, s.mass, v_impact),
+        impact: first.impact,
+        reference: reference(&s.law, s.mass, first.speed),
         energy_error: energy_error.unwrap_or(f64::NAN),
         substeps: c.substeps_total,
         steps: c.steps,

@@ -5,7 +5,7 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
-use softgrip_bench::bounce::{Impact, reference};
+use softgrip_bench::bounce::{FirstImpact, Impact, reference};
 use softgrip_bench::scenes::{BallDrop, G, fingertip};
 use softgrip_law::Level;
 
@@ -62,29 +62,20 @@ fn elastic_bounce_keeps_energy() {
 #[test]
 fn first_impact_matches_one_dof_reference() {
     let mut s = scene(1.0);
-    let (mut peak_f, mut peak_d, mut duration, mut touched) = (0.0f64, 0.0f64, 0.0, false);
-    let mut v_impact = 0.0;
+    let mut first = FirstImpact::default();
     for _ in 0..200 {
-        // The true velocity before the impact step (see `BallDrop::energy`).
-        let v_before = -s.true_velocity_y();
-        let y_before = s.gap();
+        first.before_step(&s);
         s.world.step();
-        let c = s.world.soft.contacts().first().cloned();
-        match c {
-            Some(c) => {
-                if !touched {
-                    // Speed at first touch: from the energy of the free fall over y_before.
-                    v_impact = (v_before * v_before + 2.0 * G * y_before).sqrt();
-                }
-                touched = true;
-                peak_f = peak_f.max(c.peak_normal_force);
-                peak_d = peak_d.max(c.max_delta);
-                duration += c.contact_duration;
-            }
-            None if touched => break,
-            None => {}
+        if first.after_step(&s) {
+            break;
         }
     }
+    let (v_impact, peak_f, peak_d, duration) = (
+        first.speed,
+        first.impact.peak_force,
+        first.impact.peak_delta,
+        first.impact.duration,
+    );
     let Impact {
         peak_force: ref_f,
         peak_delta: ref_d,
