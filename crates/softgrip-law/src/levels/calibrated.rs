@@ -86,37 +86,34 @@ impl Calibrated {
         })
     }
 
-    /// `chi_cal(x)` and `x chi_cal'(x)` (the latter finite at x = 0, where `chi'` is not:
-    /// `chi = 1 + c sqrt(x) + O(x)`).
-    #[inline]
-    fn chi(&self, x: f64) -> (f64, f64) {
-        let s = x.sqrt();
+    /// `chi_cal(x)` (for the energy; the force and stiffness group its terms differently).
+    fn chi(&self, x: f64) -> f64 {
         let w = 1.0 - x;
         let n = w + x * x * (1.0 / 3.0);
-        let sf = w + self.c * s + E * x * x;
-        let d = w * w + self.b2 * x * x;
-        // One division: with inv = 1/D, chi = N S inv and
-        // x chi' = (x N' S + N x S' - N S x D' inv) inv.
-        let inv = 1.0 / d;
-        let ns = n * sf;
-        let chi = ns * inv;
-        let xn = x * (-1.0 + 2.0 / 3.0 * x);
-        let xs = -x + 0.5 * self.c * s + 2.0 * E * x * x;
-        let xd = x * (-2.0 * w + 2.0 * self.b2 * x);
-        (chi, (xn * sf + n * xs - ns * xd * inv) * inv)
+        let sf = w + self.c * x.sqrt() + E * x * x;
+        n * sf / (w * w + self.b2 * x * x)
     }
 }
 
 impl Normalised for Calibrated {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
-        let (chi, x_dchi) = self.chi(x);
+        // f = (4/3) chi x^(3/2) and df/dx = (4/3) sqrt(x) (3/2 chi + x chi'), with the terms of
+        // `chi` grouped so that everything that does not need sqrt(x) (the division included)
+        // runs while the square root is computed:
+        // 3/2 chi + x chi' = (N S (3/2 - x D'/D) + x N' S + N x S') / D.
         let s = x.sqrt();
-        // f = (4/3) chi x^(3/2); df/dx = (4/3) sqrt(x) (3/2 chi + x chi')
-        (
-            4.0 / 3.0 * chi * x * s,
-            4.0 / 3.0 * s * (1.5 * chi + x_dchi),
-        )
+        let w = 1.0 - x;
+        let x2 = x * x;
+        let n = w + x2 * (1.0 / 3.0);
+        let xn = -x + 2.0 / 3.0 * x2;
+        let inv = 1.0 / (w * w + self.b2 * x2);
+        let q = 1.5 - (-2.0 * x * w + 2.0 * self.b2 * x2) * inv;
+        let sf = w + self.c * s + E * x2;
+        let xs = -x + 0.5 * self.c * s + 2.0 * E * x2;
+        let ns = n * sf;
+        let si = 4.0 / 3.0 * s * inv;
+        (si * x * ns, si * (ns * q + xn * sf + n * xs))
     }
 
     fn energy(&self, x: f64) -> f64 {
@@ -125,7 +122,7 @@ impl Normalised for Calibrated {
         // Gauss-Legendre reach 1e-14.
         integrate(0.0, x.sqrt(), 4, |u| {
             let s = u * u;
-            8.0 / 3.0 * self.chi(s).0 * s * s
+            8.0 / 3.0 * self.chi(s) * s * s
         })
     }
 
