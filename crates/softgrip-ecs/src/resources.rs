@@ -15,7 +15,31 @@ pub(crate) struct Tracked {
     pub entity: Entity,
     pub sliding: bool,
     pub extended: bool,
-    pub seen: bool,
+    /// The last step whose readout had the contact.
+    pub seen: u64,
+}
+
+/// The entity of each synchronised rapier handle, addressed by the handle's arena index and
+/// checked against its generation: the readout looks up two or three handles per contact
+/// every step, and this costs an index instead of a hash.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct HandleEntities(Vec<Option<(u32, Entity)>>);
+
+impl HandleEntities {
+    pub(crate) fn insert(&mut self, (index, generation): (u32, u32), entity: Entity) {
+        let i = index as usize;
+        if self.0.len() <= i {
+            self.0.resize(i + 1, None);
+        }
+        self.0[i] = Some((generation, entity));
+    }
+
+    pub(crate) fn get(&self, (index, generation): (u32, u32)) -> Option<Entity> {
+        match self.0.get(index as usize) {
+            Some(&Some((g, e))) if g == generation => Some(e),
+            _ => None,
+        }
+    }
 }
 
 /// The plugin's world and the maps between rapier handles and entities.
@@ -23,8 +47,8 @@ pub(crate) struct Tracked {
 pub struct Physics {
     /// The rapier world with the soft-fingertip plugin (gravity, `params.dt`, accuracy).
     pub world: SoftWorld,
-    pub(crate) body_entity: HashMap<RigidBodyHandle, Entity>,
-    pub(crate) collider_entity: HashMap<ColliderHandle, Entity>,
+    pub(crate) body_entity: HandleEntities,
+    pub(crate) collider_entity: HandleEntities,
     pub(crate) entity_body: HashMap<Entity, RigidBodyHandle>,
     pub(crate) contacts: BTreeMap<(Entity, Entity), Tracked>,
 }
@@ -34,8 +58,8 @@ impl Physics {
     pub fn new(world: SoftWorld) -> Self {
         Self {
             world,
-            body_entity: HashMap::new(),
-            collider_entity: HashMap::new(),
+            body_entity: HandleEntities::default(),
+            collider_entity: HandleEntities::default(),
             entity_body: HashMap::new(),
             contacts: BTreeMap::new(),
         }
@@ -43,12 +67,12 @@ impl Physics {
 
     /// The entity of a rapier body.
     pub fn body_entity(&self, handle: RigidBodyHandle) -> Option<Entity> {
-        self.body_entity.get(&handle).copied()
+        self.body_entity.get(handle.into_raw_parts())
     }
 
     /// The entity of a rapier collider (a `Collider` or a `Fingertip`).
     pub fn collider_entity(&self, handle: ColliderHandle) -> Option<Entity> {
-        self.collider_entity.get(&handle).copied()
+        self.collider_entity.get(handle.into_raw_parts())
     }
 
     /// The rapier body of an entity.

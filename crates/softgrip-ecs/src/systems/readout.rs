@@ -1,7 +1,7 @@
 //! Readout: poses back from rapier, one [`SoftContact`] entity per live contact, fingertip
 //! wrenches, and the transition messages.
 
-use bevy_ecs::prelude::{Commands, MessageWriter, Query, Res, ResMut};
+use bevy_ecs::prelude::{Commands, Query, Res, ResMut};
 use softgrip_law::Regime;
 
 use crate::components::{BodyPose, FingertipWrench, RapierBody};
@@ -28,16 +28,14 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
-/// The messages the readout writes.
-type Writers<'a> = (
-    MessageWriter<'a, ContactStarted>,
-    MessageWriter<'a, ContactEnded>,
-    MessageWriter<'a, SlipStarted>,
-    MessageWriter<'a, ValidityExcursion>,
-);
-
 /// Spawns, updates and despawns the [`SoftContact`] entities, sums the [`FingertipWrench`]es
 /// and writes one message per transition (started, ended, slip started, validity excursion).
+///
+/// A live contact's entity is updated in place; entities are only spawned and despawned when
+/// contacts start and end. Spawns, despawns and messages go through [`Commands`], in that
+/// order per contact, so they take effect together at the sync point after this system (bevy
+/// inserts one before any system ordered after it, e.g. in the `Record` set) or at the end of
+/// the step: a transition costs a command, a step without one touches no message buffer.
 pub fn read_contacts(
     mut physics: ResMut<Physics>,
     clock: Res<SimClock>,
@@ -45,59 +43,62 @@ pub fn read_contacts(
     mut commands: Commands,
     mut contacts: Query<&mut SoftContact>,
     mut wrenches: Query<&mut FingertipWrench>,
-    (mut started, mut ended, mut slip, mut excursion): Writers,
 ) {
     let physics = &mut *physics;
-    let time = clock.time;
+    let (time, step) = (clock.time, clock.step);
     for mut w in &mut wrenches {
         if *w != FingertipWrench::default() {
             *w = FingertipWrench::default();
         }
     }
-    for t in physics.contacts.values_mut() {
-        t.seen = false;
-    }
+    // Tracked contacts seen in this readout (including the new ones).
+    let mut live = 0;
     for c in physics.world.soft.contacts() {
         let (Some(tip), Some(other)) = (
-            physics.collider_entity.get(&c.fingertip).copied(),
-            physics.collider_entity.get(&c.other).copied(),
+            physics.collider_entity(c.fingertip),
+            physics.collider_entity(c.other),
         ) else {
             continue;
         };
-        let other_body = physics
-            .world
-            .colliders
+        let colliders = &physics.world.colliders;
+        let other_body = colliders
             .get(c.other)
             .and_then(|co| co.parent())
-            .and_then(|b| physics.body_entity.get(&b).copied());
+            .and_then(|b| physics.body_entity.get(b.into_raw_parts()));
         let patch = patches.as_ref().map(|_| c.patch());
         let (sliding, extended) = (c.sliding, c.regime == Regime::Extended);
-        let readout = SoftContact {
-            fingertip: tip,
-            other,
-            other_body,
-            contact: c.clone(),
-            patch,
-        };
         let (entity, was_sliding, was_extended) = match physics.contacts.get_mut(&(tip, other)) {
             Some(t) => {
                 if let Ok(mut sc) = contacts.get_mut(t.entity) {
-                    *sc = readout;
+                    let sc = &mut *sc;
+                    (sc.fingertip, sc.other, sc.other_body) = (tip, other, other_body);
+                    sc.contact.clone_from(c);
+                    sc.patch = patch;
                 }
                 let old = (t.entity, t.sliding, t.extended);
-                (t.sliding, t.extended, t.seen) = (sliding, extended, true);
+                live += usize::from(t.seen != step);
+                (t.sliding, t.extended, t.seen) = (sliding, extended, step);
                 old
             }
             None => {
-                let entity = commands.spawn(readout).id();
+                let entity = commands
+                    .spawn(SoftContact {
+                        fingertip: tip,
+                        other,
+                        other_body,
+                        contact: c.clone(),
+                        patch,
+                    })
+                    .id();
                 let t = Tracked {
                     entity,
                     sliding,
                     extended,
-                    seen: true,
+                    seen: step,
                 };
                 physics.contacts.insert((tip, other), t);
-                started.write(ContactStarted {
+                live += 1;
+                commands.write_message(ContactStarted {
                     contact: entity,
                     fingertip: tip,
                     other,
@@ -107,7 +108,7 @@ pub fn read_contacts(
             }
         };
         if sliding && !was_sliding {
-            slip.write(SlipStarted {
+            commands.write_message(SlipStarted {
                 contact: entity,
                 fingertip: tip,
                 other,
@@ -115,7 +116,7 @@ pub fn read_contacts(
             });
         }
         if extended && !was_extended {
-            excursion.write(ValidityExcursion {
+            commands.write_message(ValidityExcursion {
                 contact: entity,
                 fingertip: tip,
                 x: c.x,
@@ -124,9 +125,7 @@ pub fn read_contacts(
             });
         }
         if let Ok(mut w) = wrenches.get_mut(tip) {
-            let center = physics
-                .world
-                .colliders
+            let center = colliders
                 .get(c.fingertip)
                 .map(|co| co.translation())
                 .map(|t| [t.x as f64, t.y as f64, t.z as f64])
@@ -140,15 +139,20 @@ pub fn read_contacts(
             }
         }
     }
+    // Every tracked contact is live again: none ended (the common case, no pass over them).
+    if live == physics.contacts.len() {
+        return;
+    }
     physics.contacts.retain(|&(tip, other), t| {
-        if !t.seen {
+        let seen = t.seen == step;
+        if !seen {
             commands.entity(t.entity).despawn();
-            ended.write(ContactEnded {
+            commands.write_message(ContactEnded {
                 fingertip: tip,
                 other,
                 time,
             });
         }
-        t.seen
+        seen
     });
 }

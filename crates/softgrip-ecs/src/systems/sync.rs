@@ -25,7 +25,7 @@ pub fn sync_to_rapier(
     new_bodies.sort_by_key(|(e, _)| e.index_u32());
     for (e, b) in new_bodies {
         let h = physics.world.bodies.insert(b.builder());
-        physics.body_entity.insert(h, e);
+        physics.body_entity.insert(h.into_raw_parts(), e);
         physics.entity_body.insert(e, h);
         commands.entity(e).insert(RapierBody(h));
     }
@@ -40,7 +40,7 @@ pub fn sync_to_rapier(
             Some(None) => continue, // its body is not synchronised yet
             None => w.colliders.insert(c.builder()),
         };
-        physics.collider_entity.insert(h, e);
+        physics.collider_entity.insert(h.into_raw_parts(), e);
         commands.entity(e).insert(RapierCollider(h));
     }
     let mut new_tips: Vec<_> = tips.iter().collect();
@@ -55,7 +55,7 @@ pub fn sync_to_rapier(
             .insert_with_parent(t.builder(), b, &mut w.bodies);
         w.register(h, t.tip.clone())
             .expect("invariant: the fingertip's own ball collider was just inserted");
-        physics.collider_entity.insert(h, e);
+        physics.collider_entity.insert(h.into_raw_parts(), e);
         commands.entity(e).insert(RapierCollider(h));
     }
 }
