@@ -1,6 +1,6 @@
 //! [`SoftgripSet`] and [`build_schedule`]: the systems in their documented order.
 
-use bevy_ecs::message::message_update_system;
+use bevy_ecs::message::{MessageRegistry, message_update_system};
 use bevy_ecs::prelude::{IntoScheduleConfigs, Res, Schedule, SystemSet, World};
 use bevy_ecs::schedule::ScheduleLabel;
 
@@ -34,12 +34,18 @@ pub enum SoftgripSet {
 
 /// Builds the step schedule for `world`. Only what is needed is scheduled: the recording
 /// system only if a [`Recorder`] resource exists, the publishing system only with a
-/// [`Publisher`], the summary only with a [`Summary`]; so insert those first.
+/// [`Publisher`], the summary only with a [`Summary`], bevy's `message_update_system` only if
+/// messages of your own are registered in bevy's `MessageRegistry` (the softgrip messages are
+/// rotated by [`sync_to_rapier`]); so insert or register those first.
 pub fn build_schedule(world: &World) -> Schedule {
     use SoftgripSet::*;
     let mut s = Schedule::new(SoftgripStep);
     s.configure_sets((Sync, Control, Physics, Readout, Record, Publish).chain());
-    s.add_systems((message_update_system, sync_to_rapier).chain().in_set(Sync));
+    s.add_systems(sync_to_rapier.in_set(Sync));
+    if world.contains_resource::<MessageRegistry>() {
+        // Messages of your own, registered with bevy: rotated by bevy's system.
+        s.add_systems(message_update_system.after(sync_to_rapier).in_set(Sync));
+    }
     s.add_systems((follow_trajectories, run_grippers).in_set(Control));
     s.add_systems(physics_step.in_set(Physics));
     s.add_systems((read_poses, read_contacts).chain().in_set(Readout));

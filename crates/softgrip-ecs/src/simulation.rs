@@ -3,7 +3,7 @@
 
 use std::time::{Duration, Instant};
 
-use bevy_ecs::prelude::{Schedule, World};
+use bevy_ecs::prelude::{FromWorld, Schedule, World};
 
 use crate::resources::{Publisher, Recorder};
 use crate::scene::Scene;
@@ -11,6 +11,7 @@ use crate::schedule::build_schedule;
 use crate::sink::{SinkError, StepSink};
 use crate::spawn::{SceneEntities, spawn_scene};
 use crate::summary::Summary;
+use crate::systems::{Unsynchronised, create_in_rapier};
 
 /// What a run took.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -80,14 +81,19 @@ impl Simulation {
         self.schedule.get_or_insert_with(|| build_schedule(world))
     }
 
-    /// Builds and initialises the schedule now (otherwise done by the first step): system
-    /// state, the dependency graph and its sync points.
+    /// Does now what the first step would otherwise do before stepping: builds and initialises
+    /// the schedule (system state, the dependency graph and its sync points) and creates the
+    /// rapier bodies, colliders and fingertips of the entities spawned so far (what
+    /// [`sync_to_rapier`](crate::systems::sync_to_rapier) does in the `Sync` set, in the same
+    /// order). Entities spawned later are created by the `Sync` set of the next step.
     pub fn initialize(&mut self) {
         self.schedule_mut();
         if let Some(s) = self.schedule.as_mut() {
             s.initialize(&mut self.world)
                 .expect("invariant: the softgrip sets are acyclic");
         }
+        let mut new = Unsynchronised::from_world(&mut self.world);
+        create_in_rapier(&mut self.world, &mut new);
     }
 
     /// One step.

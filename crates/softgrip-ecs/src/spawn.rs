@@ -1,7 +1,6 @@
 //! [`spawn_scene`]: a scene as entities and resources.
 
-use bevy_ecs::message::MessageRegistry;
-use bevy_ecs::prelude::{Entity, Name, World};
+use bevy_ecs::prelude::{Entity, Messages, Name, World};
 use softgrip_rapier::{SoftAccuracy, SoftWorld};
 
 use crate::components::{AttachedTo, BodyKind, KinematicPath, KinematicTarget};
@@ -34,14 +33,16 @@ pub fn soft_world_for(scene: &Scene) -> SoftWorld {
     w
 }
 
-/// Registers the softgrip messages and inserts the resources every world needs
-/// ([`Physics`], [`SimClock`], [`CurrentFrame`]) if they are missing.
+/// Inserts the softgrip messages' buffers and the resources every world needs ([`Physics`],
+/// [`SimClock`], [`CurrentFrame`]) if they are missing. The message buffers are rotated by the
+/// schedule's [`sync_to_rapier`](crate::systems::sync_to_rapier), not through bevy's
+/// `MessageRegistry`.
 pub fn init_world(world: &mut World, soft_world: SoftWorld) {
-    MessageRegistry::register_message::<ContactStarted>(world);
-    MessageRegistry::register_message::<ContactEnded>(world);
-    MessageRegistry::register_message::<SlipStarted>(world);
-    MessageRegistry::register_message::<ValidityExcursion>(world);
-    MessageRegistry::register_message::<GripReached>(world);
+    world.init_resource::<Messages<ContactStarted>>();
+    world.init_resource::<Messages<ContactEnded>>();
+    world.init_resource::<Messages<SlipStarted>>();
+    world.init_resource::<Messages<ValidityExcursion>>();
+    world.init_resource::<Messages<GripReached>>();
     if !world.contains_resource::<Physics>() {
         world.insert_resource(Physics::new(soft_world));
     }

@@ -10,4 +10,5 @@ pub use control::{follow_trajectories, run_grippers};
 pub use physics::physics_step;
 pub use readout::{read_contacts, read_poses};
 pub use record::{assemble_frame, publish, record};
-pub use sync::sync_to_rapier;
+pub(crate) use sync::create_in_rapier;
+pub use sync::{Unsynchronised, sync_to_rapier};
