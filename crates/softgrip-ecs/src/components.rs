@@ -122,7 +122,7 @@ pub struct BodyPose {
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
 pub struct KinematicTarget(pub Option<[f64; 3]>);
 
-/// A scripted path of a kinematic body (followed by the `follow_trajectories` system).
+/// A scripted path of a kinematic body (followed by the `run_controllers` system).
 #[derive(Component, Debug, Clone, PartialEq)]
 #[require(KinematicTarget)]
 pub struct KinematicPath(pub crate::scene::Trajectory);

@@ -7,8 +7,7 @@ use bevy_ecs::schedule::ScheduleLabel;
 use crate::resources::{Publisher, Recorder, SimClock};
 use crate::summary::{Summary, accumulate_summary};
 use crate::systems::{
-    assemble_frame, follow_trajectories, physics_step, publish, read_contacts, read_poses, record,
-    run_grippers, sync_to_rapier,
+    assemble_frame, physics_step, publish, readout, record, run_controllers, sync_to_rapier,
 };
 
 /// The label of the softgrip schedule (one run = one physics step).
@@ -46,11 +45,11 @@ pub fn build_schedule(world: &World) -> Schedule {
         // Messages of your own, registered with bevy: rotated by bevy's system.
         s.add_systems(message_update_system.after(sync_to_rapier).in_set(Sync));
     }
-    s.add_systems((follow_trajectories, run_grippers).in_set(Control));
+    s.add_systems(run_controllers.in_set(Control));
     s.add_systems(physics_step.in_set(Physics));
-    s.add_systems((read_poses, read_contacts).chain().in_set(Readout));
+    s.add_systems(readout.in_set(Readout));
     if world.contains_resource::<Summary>() {
-        s.add_systems(accumulate_summary.after(read_contacts).in_set(Readout));
+        s.add_systems(accumulate_summary.after(readout).in_set(Readout));
     }
     let recorder = world.contains_resource::<Recorder>();
     let publisher = world.contains_resource::<Publisher>();

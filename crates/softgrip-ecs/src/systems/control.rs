@@ -1,7 +1,7 @@
 //! Controllers: scripted trajectories and grippers write the kinematic targets of the coming
 //! step.
 
-use bevy_ecs::prelude::{MessageWriter, Query, Res};
+use bevy_ecs::prelude::{Entity, MessageWriter, Query, Res};
 
 use crate::components::{KinematicPath, KinematicTarget};
 use crate::contact::SoftContact;
@@ -9,22 +9,9 @@ use crate::gripper::{Gripper, GripperEvent};
 use crate::messages::GripReached;
 use crate::resources::{Physics, SimClock};
 
-/// Moves every kinematic body with a [`KinematicPath`] to its position at the end of the
-/// coming step.
-pub fn follow_trajectories(
-    physics: Res<Physics>,
-    clock: Res<SimClock>,
-    mut paths: Query<(&KinematicPath, &mut KinematicTarget)>,
-) {
-    let t = (clock.step + 1) as f64 * physics.world.params.dt as f64;
-    for (path, mut target) in &mut paths {
-        target.0 = path.0.position_at(t);
-    }
-}
-
 /// Largest compression of each jaw's fingertips in the last step's readout.
 fn jaw_compressions<'a>(
-    tips: &[Vec<bevy_ecs::prelude::Entity>; 2],
+    tips: &[Vec<Entity>; 2],
     contacts: impl Iterator<Item = &'a SoftContact>,
 ) -> [Option<f64>; 2] {
     let mut delta = [None, None];
@@ -39,16 +26,24 @@ fn jaw_compressions<'a>(
     delta
 }
 
-/// Advances every gripper's program and writes its jaws' targets; writes [`GripReached`].
-pub fn run_grippers(
+/// The built-in controllers, one system: moves every kinematic body with a [`KinematicPath`]
+/// to its position at the end of the coming step, then advances every [`Gripper`]'s program
+/// and writes its jaws' targets (a [`GripReached`] message when the grip is reached).
+pub fn run_controllers(
     physics: Res<Physics>,
     clock: Res<SimClock>,
-    mut grippers: Query<(bevy_ecs::prelude::Entity, &mut Gripper)>,
+    mut targets: Query<(Option<&KinematicPath>, &mut KinematicTarget)>,
+    mut grippers: Query<(Entity, &mut Gripper)>,
     contacts: Query<&SoftContact>,
-    mut targets: Query<&mut KinematicTarget>,
     mut reached: MessageWriter<GripReached>,
 ) {
     let dt = physics.world.params.dt as f64;
+    let t = (clock.step + 1) as f64 * dt;
+    for (path, mut target) in &mut targets {
+        if let Some(path) = path {
+            target.0 = path.0.position_at(t);
+        }
+    }
     for (entity, mut g) in &mut grippers {
         let g = &mut *g;
         let delta = jaw_compressions(&g.tips, contacts.iter());
@@ -56,12 +51,12 @@ pub fn run_grippers(
             reached.write(GripReached {
                 gripper: entity,
                 depth: g.program.depth,
-                time: (clock.step + 1) as f64 * dt,
+                time: t,
             });
         }
         for k in 0..2 {
-            if let Ok(mut t) = targets.get_mut(g.jaws[k]) {
-                t.0 = Some(g.state.jaws[k].position);
+            if let Ok((_, mut target)) = targets.get_mut(g.jaws[k]) {
+                target.0 = Some(g.state.jaws[k].position);
             }
         }
     }

@@ -6,9 +6,9 @@ mod readout;
 mod record;
 mod sync;
 
-pub use control::{follow_trajectories, run_grippers};
+pub use control::run_controllers;
 pub use physics::physics_step;
-pub use readout::{read_contacts, read_poses};
+pub use readout::readout;
 pub use record::{assemble_frame, publish, record};
 pub(crate) use sync::create_in_rapier;
 pub use sync::{Unsynchronised, sync_to_rapier};

@@ -1,5 +1,5 @@
 //! Readout: poses back from rapier, one [`SoftContact`] entity per live contact, fingertip
-//! wrenches, and the transition messages.
+//! wrenches, and the transition messages (one system, [`readout`]).
 
 use bevy_ecs::prelude::{Commands, Query, Res, ResMut};
 use softgrip_law::Regime;
@@ -10,8 +10,8 @@ use crate::messages::{ContactEnded, ContactStarted, SlipStarted, ValidityExcursi
 use crate::resources::{PatchRequest, Physics, SimClock, Tracked};
 
 /// Copies every synchronised body's pose into its [`BodyPose`].
-pub fn read_poses(physics: Res<Physics>, mut poses: Query<(&RapierBody, &mut BodyPose)>) {
-    for (body, mut pose) in &mut poses {
+fn read_poses(physics: &Physics, poses: &mut Query<(&RapierBody, &mut BodyPose)>) {
+    for (body, mut pose) in poses {
         if let Some(rb) = physics.world.bodies.get(body.0) {
             let (t, q) = (rb.translation(), rb.rotation());
             pose.translation = [t.x as f64, t.y as f64, t.z as f64];
@@ -28,22 +28,26 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
-/// Spawns, updates and despawns the [`SoftContact`] entities, sums the [`FingertipWrench`]es
-/// and writes one message per transition (started, ended, slip started, validity excursion).
+/// The whole `Readout` set, one system: copies every synchronised body's pose into its
+/// [`BodyPose`], then spawns, updates and despawns the [`SoftContact`] entities, sums the
+/// [`FingertipWrench`]es and writes one message per transition (started, ended, slip started,
+/// validity excursion).
 ///
 /// A live contact's entity is updated in place; entities are only spawned and despawned when
 /// contacts start and end. Spawns, despawns and messages go through [`Commands`], in that
 /// order per contact, so they take effect together at the sync point after this system (bevy
 /// inserts one before any system ordered after it, e.g. in the `Record` set) or at the end of
 /// the step: a transition costs a command, a step without one touches no message buffer.
-pub fn read_contacts(
+pub fn readout(
     mut physics: ResMut<Physics>,
     clock: Res<SimClock>,
     patches: Option<Res<PatchRequest>>,
     mut commands: Commands,
+    mut poses: Query<(&RapierBody, &mut BodyPose)>,
     mut contacts: Query<&mut SoftContact>,
     mut wrenches: Query<&mut FingertipWrench>,
 ) {
+    read_poses(&physics, &mut poses);
     let physics = &mut *physics;
     let (time, step) = (clock.time, clock.step);
     for mut w in &mut wrenches {
