@@ -44,59 +44,28 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut world = World::new();
     spawn_scene(&mut world, &Scene::default_scene());
 
-    // The second box, 20 cm behind the first, and its two jaws.
-    let cube = world
-        .spawn((
-            Name::new("box2"),
-            RigidBody {
-                kind: BodyKind::Dynamic,
-                position: [0.0, 0.02, 0.2],
-                rotation: [0.0; 3],
-            },
-        ))
-        .id();
-    let shape = SharedShape::cuboid(0.02, 0.02, 0.02);
-    world.spawn((
-        Collider {
-            shape,
-            offset: [0.0; 3],
-            density: 500.0,
-            friction: 0.5,
-            restitution: 0.0,
-        },
-        AttachedTo(cube),
-    ));
+    // The second box (500 kg/m^3), 20 cm behind the first, and its two jaws.
+    let cube = RigidBody::at(BodyKind::Dynamic, [0.0, 0.02, 0.2]);
+    let cube = world.spawn((Name::new("box2"), cube)).id();
+    let shape = Collider::new(SharedShape::cuboid(0.02, 0.02, 0.02)).with_density(500.0);
+    world.spawn((shape, AttachedTo(cube)));
     for (name, x, dir) in [("jaw2_left", -0.034, 1.0), ("jaw2_right", 0.034, -1.0)] {
-        let body = RigidBody {
-            kind: BodyKind::Kinematic,
-            position: [x, 0.02, 0.2],
-            rotation: [0.0; 3],
+        let body = RigidBody::at(BodyKind::Kinematic, [x, 0.02, 0.2]);
+        let controller = ForceJaw {
+            dir,
+            x,
+            target: 4.0,
         };
-        let jaw = world
-            .spawn((
-                Name::new(name),
-                body,
-                KinematicTarget::default(),
-                ForceJaw {
-                    dir,
-                    x,
-                    target: 4.0,
-                },
-            ))
-            .id();
-        let tip = SoftFingertip::builder(0.01)
-            .name(format!("{name}_tip"))
-            .preset(Preset::DragonSkin20)
-            .build()?;
-        world.spawn((
-            Name::new(format!("{name}_tip")),
-            Fingertip {
-                tip,
-                offset: [0.0; 3],
-                density: 1070.0,
-            },
-            AttachedTo(jaw),
-        ));
+        let jaw = (
+            Name::new(name),
+            body,
+            KinematicTarget::default(),
+            controller,
+        );
+        let jaw = world.spawn(jaw).id();
+        let tip = SoftFingertip::builder(0.01).name(format!("{name}_tip"));
+        let tip = Fingertip::new(tip.preset(Preset::DragonSkin20).build()?);
+        world.spawn((Name::new(format!("{name}_tip")), tip, AttachedTo(jaw)));
     }
 
     let mut schedule = build_schedule(&world);
@@ -105,20 +74,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         schedule.run(&mut world);
     }
 
-    let mut q = world.query::<&SoftContact>();
-    for c in q.iter(&world) {
+    for c in world.query::<&SoftContact>().iter(&world) {
         let name = world.get::<Name>(c.fingertip).map_or("?", |n| n.as_str());
-        println!(
-            "{name}: {:.3} N at x = {:.3}",
-            c.contact.normal_force, c.contact.x
-        );
+        let (f, x) = (c.contact.normal_force, c.contact.x);
+        println!("{name}: {f:.3} N at x = {x:.3}");
     }
-    let mut boxes = world.query::<(&Name, &BodyPose)>();
-    for (n, p) in boxes
-        .iter(&world)
-        .filter(|(n, _)| n.as_str().starts_with("box"))
-    {
-        println!("{n}: y = {:.4} m", p.translation[1]);
+    for (n, p) in world.query::<(&Name, &BodyPose)>().iter(&world) {
+        if n.as_str().starts_with("box") {
+            println!("{n}: y = {:.4} m", p.translation[1]);
+        }
     }
     Ok(())
 }

@@ -34,6 +34,15 @@ pub struct RigidBody {
 }
 
 impl RigidBody {
+    /// A body of `kind` at `position` [m], not rotated.
+    pub fn at(kind: BodyKind, position: [f64; 3]) -> Self {
+        Self {
+            kind,
+            position,
+            rotation: [0.0; 3],
+        }
+    }
+
     /// rapier's builder for this body (sleeping disabled: a held object must not fall asleep
     /// between the jaws).
     pub fn builder(&self) -> RigidBodyBuilder {
@@ -64,6 +73,23 @@ pub struct Collider {
 }
 
 impl Collider {
+    /// `shape` at the body origin with the scene file's defaults: density 1000 kg/m^3,
+    /// friction 0.5, restitution 0.
+    pub fn new(shape: SharedShape) -> Self {
+        Self {
+            shape,
+            offset: [0.0; 3],
+            density: 1000.0,
+            friction: 0.5,
+            restitution: 0.0,
+        }
+    }
+
+    /// The same with density `density` [kg/m^3].
+    pub fn with_density(self, density: f64) -> Self {
+        Self { density, ..self }
+    }
+
     /// rapier's builder for this collider.
     pub fn builder(&self) -> ColliderBuilder {
         ColliderBuilder::new(self.shape.clone())
@@ -88,6 +114,16 @@ pub struct Fingertip {
 }
 
 impl Fingertip {
+    /// `tip` centred on its body's origin, density 1070 kg/m^3 (silicone; the scene file's
+    /// default).
+    pub fn new(tip: SoftFingertip) -> Self {
+        Self {
+            tip,
+            offset: [0.0; 3],
+            density: 1070.0,
+        }
+    }
+
     /// rapier's builder for the fingertip's ball collider.
     pub fn builder(&self) -> ColliderBuilder {
         ColliderBuilder::ball(self.tip.radius() as f32)
