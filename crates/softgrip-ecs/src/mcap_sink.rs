@@ -16,7 +16,8 @@ use softgrip_rapier::SoftFingertip;
 use softgrip_record::msgs::geometry_msgs::{Point, Vector3, Wrench};
 use softgrip_record::msgs::softgrip_msgs::SoftContact;
 use softgrip_record::{
-    BodyPose, FingertipState, Recorder, RecorderOptions, RecordingInfo, RecordingStats, StepRecord,
+    BodyPose, FingertipState, RUN_SUMMARY_NAME, Recorder, RecorderOptions, RecordingInfo,
+    RecordingStats, StepRecord,
 };
 
 use crate::scene::Scene;
@@ -230,6 +231,8 @@ pub struct McapSink {
     every_n_steps: u64,
     tips: Vec<TipMount>,
     report: Arc<Mutex<McapReport>>,
+    /// The run's summary, written by the writer thread just before it finishes the file.
+    run_summary: Arc<Mutex<Option<BTreeMap<String, String>>>>,
 }
 
 /// What the sink did, readable while the sink is owned by the world
@@ -274,6 +277,7 @@ fn writer_loop(
     spent: &Sender<Vec<StepRecord>>,
     report: &Mutex<McapReport>,
     failed: &AtomicBool,
+    run_summary: &Mutex<Option<BTreeMap<String, String>>>,
 ) -> Result<RecordingStats, softgrip_record::Error> {
     for mut batch in batches {
         let start = Instant::now();
@@ -291,6 +295,16 @@ fn writer_loop(
         }
         // The simulation may have stopped listening: then the batch is simply dropped.
         let _ = spent.send(batch);
+    }
+    let summary = run_summary
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .take();
+    if let Some(summary) = summary
+        && let Err(e) = recorder.write_metadata(RUN_SUMMARY_NAME, summary)
+    {
+        failed.store(true, Ordering::SeqCst);
+        return Err(e);
     }
     match recorder.finish() {
         Ok(stats) => {
@@ -362,12 +376,23 @@ impl McapSink {
         let failed = Arc::new(AtomicBool::new(false));
         let (tx, batches) = mpsc::channel::<Vec<StepRecord>>();
         let (spent_tx, spent) = mpsc::channel::<Vec<StepRecord>>();
+        let run_summary: Arc<Mutex<Option<BTreeMap<String, String>>>> = Arc::default();
         let writer = {
             let report = Arc::clone(&report);
             let failed = Arc::clone(&failed);
+            let run_summary = Arc::clone(&run_summary);
             std::thread::Builder::new()
                 .name("softgrip-mcap".into())
-                .spawn(move || writer_loop(recorder, &batches, &spent_tx, &report, &failed))
+                .spawn(move || {
+                    writer_loop(
+                        recorder,
+                        &batches,
+                        &spent_tx,
+                        &report,
+                        &failed,
+                        &run_summary,
+                    )
+                })
                 .map_err(|source| softgrip_record::Error::Io {
                     path: path.to_path_buf(),
                     source,
@@ -383,6 +408,7 @@ impl McapSink {
             every_n_steps,
             tips,
             report,
+            run_summary,
         })
     }
 
@@ -580,6 +606,13 @@ impl StepSink for McapSink {
         let elapsed = start.elapsed();
         lock(&self.report).write_time += elapsed;
         Ok(sent?)
+    }
+
+    fn run_summary(&mut self, summary: &BTreeMap<String, String>) {
+        *self
+            .run_summary
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner) = Some(summary.clone());
     }
 
     fn finish(&mut self) -> Result<(), SinkError> {

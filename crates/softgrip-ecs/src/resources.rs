@@ -151,6 +151,13 @@ impl SinkSlot {
         self.sink.finish()
     }
 
+    /// Hands the sink the run's summary (before [`finish`](Self::finish)).
+    pub fn run_summary(&mut self, summary: &std::collections::BTreeMap<String, String>) {
+        if self.error.is_none() {
+            self.sink.run_summary(summary);
+        }
+    }
+
     /// Whether the sink takes step `step` (not once it stopped on an error).
     pub fn wants(&self, step: u64) -> bool {
         self.error.is_none() && self.sink.wants(step)

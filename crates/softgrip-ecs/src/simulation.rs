@@ -5,7 +5,7 @@ use std::time::{Duration, Instant};
 
 use bevy_ecs::prelude::{FromWorld, Schedule, World};
 
-use crate::resources::{Publisher, Recorder};
+use crate::resources::{Publisher, Recorder, SimClock};
 use crate::scene::Scene;
 use crate::schedule::build_schedule;
 use crate::sink::{SinkError, StepSink};
@@ -124,14 +124,32 @@ impl Simulation {
         }
     }
 
-    /// Finishes the sinks (flush, close); returns the first error of either.
+    /// Finishes the sinks (flush, close); returns the first error of either. With a
+    /// [`Summary`] ([`with_summary`](Self::with_summary)), the sinks first get it as
+    /// [`Summary::to_metadata`] (the MCAP recorder writes it into the file: counted over every
+    /// step, where the recording may hold only every n-th).
     pub fn finish(&mut self) -> Result<(), SinkError> {
+        let steps = self.world.get_resource::<SimClock>().map_or(0, |c| c.step);
+        let summary = self
+            .world
+            .get_resource::<Summary>()
+            .map(|s| s.to_metadata(steps));
         let r = match self.world.get_resource_mut::<Recorder>() {
-            Some(mut r) => r.0.finish(),
+            Some(mut r) => {
+                if let Some(s) = &summary {
+                    r.0.run_summary(s);
+                }
+                r.0.finish()
+            }
             None => Ok(()),
         };
         let p = match self.world.get_resource_mut::<Publisher>() {
-            Some(mut p) => p.0.finish(),
+            Some(mut p) => {
+                if let Some(s) = &summary {
+                    p.0.run_summary(s);
+                }
+                p.0.finish()
+            }
             None => Ok(()),
         };
         r.and(p)

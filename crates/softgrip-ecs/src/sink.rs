@@ -1,5 +1,7 @@
 //! [`StepSink`]: how a recorder (MCAP) or publisher (ROS 2) receives each step's data.
 
+use std::collections::BTreeMap;
+
 use softgrip_law::ContactPatch;
 
 /// An error of a sink (I/O, encoding, transport).
@@ -90,6 +92,12 @@ pub trait StepSink: Send + Sync + 'static {
     }
     /// Called after every step the sink [`wants`](Self::wants).
     fn write(&mut self, frame: &StepFrame) -> Result<(), SinkError>;
+    /// Called once at the end of the run, before [`finish`](Self::finish), with the run's
+    /// summary counted over every step (`key = value` lines; see
+    /// [`Simulation::finish`](crate::Simulation::finish)). Default: ignored.
+    fn run_summary(&mut self, summary: &BTreeMap<String, String>) {
+        let _ = summary;
+    }
     /// Called once at the end of the run (flush, close).
     fn finish(&mut self) -> Result<(), SinkError> {
         Ok(())

@@ -1,6 +1,7 @@
 //! [`Summary`]: per-fingertip peaks, slips, validity excursions and the grip at the commanded
 //! depth, accumulated by [`accumulate_summary`].
 
+use std::collections::BTreeMap;
 use std::fmt;
 
 use bevy_ecs::prelude::{Entity, MessageReader, Name, Query, Res, ResMut, Resource, With};
@@ -44,6 +45,25 @@ impl Summary {
     /// The summary of the fingertip named `name`.
     pub fn tip(&self, name: &str) -> Option<&TipSummary> {
         self.tips.iter().map(|(_, t)| t).find(|t| t.name == name)
+    }
+
+    /// The summary as `key = value` pairs (for a recording's metadata): `steps` (steps run),
+    /// and per fingertip `<name>.slips`, `<name>.validity_excursions`, `<name>.peak_force`
+    /// [N] and `<name>.peak_x`.
+    pub fn to_metadata(&self, steps: u64) -> BTreeMap<String, String> {
+        let mut m = BTreeMap::new();
+        m.insert("steps".to_string(), steps.to_string());
+        for (_, t) in &self.tips {
+            let n = &t.name;
+            m.insert(format!("{n}.slips"), t.slips.to_string());
+            m.insert(
+                format!("{n}.validity_excursions"),
+                t.validity_excursions.to_string(),
+            );
+            m.insert(format!("{n}.peak_force"), t.peak_force.to_string());
+            m.insert(format!("{n}.peak_x"), t.peak_x.to_string());
+        }
+        m
     }
 
     fn entry(&mut self, tip: Entity, name: &str) -> &mut TipSummary {

@@ -16,7 +16,8 @@ pub use decoded::Message;
 pub use error::{Error, Result};
 pub use message::RosMessage;
 pub use recorder::{
-    METADATA_NAME, Recorder, RecorderOptions, RecordingInfo, RecordingStats, SOFTGRIP_VERSION,
+    METADATA_NAME, RUN_SUMMARY_NAME, Recorder, RecorderOptions, RecordingInfo, RecordingStats,
+    SOFTGRIP_VERSION,
 };
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
 pub use step::{BodyPose, FingertipState, StepRecord, contact_wrench};

@@ -20,6 +20,9 @@ use crate::visuals;
 
 /// Name of the metadata record softgrip writes.
 pub const METADATA_NAME: &str = "softgrip";
+/// Name of the metadata record with the run's own summary, counted over every simulated step
+/// (a recording may hold only every n-th step), written when the run finishes.
+pub const RUN_SUMMARY_NAME: &str = "softgrip_run_summary";
 /// The version of this crate, written in the metadata as `softgrip_version`.
 pub const SOFTGRIP_VERSION: &str = env!("CARGO_PKG_VERSION");
 
@@ -284,6 +287,17 @@ impl Recorder {
         }
 
         self.write(topics::MARKERS, t, &visuals::markers(step))
+    }
+
+    /// Writes a metadata record `name` (MCAP metadata may come anywhere before the summary
+    /// section; readers find it through the metadata index).
+    pub fn write_metadata(&mut self, name: &str, metadata: BTreeMap<String, String>) -> Result<()> {
+        self.writer()
+            .write_metadata(&Metadata {
+                name: name.into(),
+                metadata,
+            })
+            .map_err(Error::Write)
     }
 
     /// Closes the current chunk and hands the file everything written so far (it then

@@ -329,6 +329,15 @@ impl Recording {
             .and_then(|m| m.get(key))
             .map(String::as_str)
     }
+
+    /// Value `key` of the run's own summary ([`RUN_SUMMARY_NAME`](crate::RUN_SUMMARY_NAME)),
+    /// counted over every simulated step; absent if the run did not finish normally.
+    pub fn run_summary(&self, key: &str) -> Option<&str> {
+        self.metadata
+            .get(crate::recorder::RUN_SUMMARY_NAME)
+            .and_then(|m| m.get(key))
+            .map(String::as_str)
+    }
 }
 
 /// The end of the complete record starting at `offset` (opcode u8, body length u64 LE, body),

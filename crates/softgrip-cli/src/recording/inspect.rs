@@ -141,13 +141,21 @@ fn report(name: &str, rec: &Recording) -> String {
             f.peak_x_t,
             f.peak_radius * 1e3
         );
+        // The run's own counts cover every step; the recording may hold every n-th only, and
+        // a slip or excursion shorter than n steps falls between recorded steps.
+        let events = |key: &str, seen: &[f64]| match rec.run_summary(&format!("{tip}.{key}")) {
+            Some(all) => format!(
+                "{all} (every step; {} in the recorded steps{})",
+                seen.len(),
+                times(seen)
+            ),
+            None => format!("{} (in the recorded steps){}", seen.len(), times(seen)),
+        };
         let _ = writeln!(
             out,
-            "  slip events: {}{}; validity excursions: {}{}",
-            f.slips.len(),
-            times(&f.slips),
-            f.excursions.len(),
-            times(&f.excursions)
+            "  slip events: {}; validity excursions: {}",
+            events("slips", &f.slips),
+            events("validity_excursions", &f.excursions)
         );
     }
     if let Some(l) = rec.softgrip_metadata("law") {
