@@ -92,16 +92,10 @@ impl PlainReadout {
                     .map(|co| co.translation())
                     .map(|t| [t.x as f64, t.y as f64, t.z as f64])
                     .unwrap_or(c.point);
-                let f = [0, 1, 2].map(|i| c.normal[i] * c.normal_force + c.friction_force[i]);
-                let r = [0, 1, 2].map(|i| c.point[i] - center[i]);
-                let tau = [
-                    r[1] * f[2] - r[2] * f[1],
-                    r[2] * f[0] - r[0] * f[2],
-                    r[0] * f[1] - r[1] * f[0],
-                ];
+                let (f, tau) = c.wrench_about(center);
                 for i in 0..3 {
                     self.wrenches[k][i] += f[i];
-                    self.wrenches[k][3 + i] += tau[i] + c.normal[i] * c.torsional_moment;
+                    self.wrenches[k][3 + i] += tau[i];
                 }
             }
         }

@@ -81,6 +81,24 @@ impl SoftContact {
     pub fn law(&self) -> &ContactLaw {
         &self.model.law
     }
+
+    /// Force and torque the contact puts on the fingertip, the torque about `center` (world
+    /// [m], e.g. the fingertip's centre): normal plus friction force, `r x f` plus the
+    /// torsional moment about the normal. Summed over a fingertip's contacts this is its
+    /// contact wrench [N], [N m].
+    pub fn wrench_about(&self, center: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+        let (n, p) = (self.normal, self.point);
+        let f: [f64; 3] =
+            std::array::from_fn(|i| n[i] * self.normal_force + self.friction_force[i]);
+        let r: [f64; 3] = std::array::from_fn(|i| p[i] - center[i]);
+        let rxf = [
+            r[1] * f[2] - r[2] * f[1],
+            r[2] * f[0] - r[0] * f[2],
+            r[0] * f[1] - r[1] * f[0],
+        ];
+        let torque = std::array::from_fn(|i| rxf[i] + n[i] * self.torsional_moment);
+        (f, torque)
+    }
 }
 
 /// Per-contact sums over the substeps of a step.

@@ -20,14 +20,6 @@ fn read_poses(physics: &Physics, poses: &mut Query<(&RapierBody, &mut BodyPose)>
     }
 }
 
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 /// The whole `Readout` set, one system: copies every synchronised body's pose into its
 /// [`BodyPose`], then spawns, updates and despawns the [`SoftContact`] entities, sums the
 /// [`FingertipWrench`]es and writes one message per transition (started, ended, slip started,
@@ -134,12 +126,10 @@ pub fn readout(
                 .map(|co| co.translation())
                 .map(|t| [t.x as f64, t.y as f64, t.z as f64])
                 .unwrap_or(c.point);
-            let f = [0, 1, 2].map(|i| c.normal[i] * c.normal_force + c.friction_force[i]);
-            let arm = [0, 1, 2].map(|i| c.point[i] - center[i]);
-            let tau = cross(arm, f);
+            let (f, tau) = c.wrench_about(center);
             for i in 0..3 {
                 w.force[i] += f[i];
-                w.torque[i] += tau[i] + c.normal[i] * c.torsional_moment;
+                w.torque[i] += tau[i];
             }
         }
     }
