@@ -13,7 +13,6 @@ use crate::cdr::CdrWriter;
 use crate::error::{Error, Result};
 use crate::message::RosMessage;
 use crate::msgs::geometry_msgs::WrenchStamped;
-use crate::msgs::softgrip_msgs::SoftContactArray;
 use crate::step::StepRecord;
 use crate::topics;
 use crate::visuals;
@@ -253,15 +252,8 @@ impl Recorder {
         self.write(topics::CLOCK, t, &step.clock())?;
         self.write(topics::TF, t, &step.tf())?;
 
-        for c in &mut step.contacts {
-            c.header.stamp = header.stamp;
-            c.header.frame_id.clone_from(&header.frame_id);
-        }
         // Encode the contacts in place (no copy of the vector).
-        let array = SoftContactArray {
-            header: header.clone(),
-            contacts: std::mem::take(&mut step.contacts),
-        };
+        let array = step.take_contact_array();
         let written = self.write(topics::CONTACTS, t, &array);
         step.contacts = array.contacts;
         written?;

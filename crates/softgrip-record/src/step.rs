@@ -4,7 +4,7 @@
 use crate::msgs::builtin_interfaces::Time;
 use crate::msgs::geometry_msgs::{Quaternion, Transform, TransformStamped, Vector3, Wrench};
 use crate::msgs::rosgraph_msgs::Clock;
-use crate::msgs::softgrip_msgs::SoftContact;
+use crate::msgs::softgrip_msgs::{SoftContact, SoftContactArray};
 use crate::msgs::std_msgs::Header;
 use crate::msgs::tf2_msgs::TFMessage;
 
@@ -54,6 +54,20 @@ impl StepRecord {
     /// The step's header: its time in the world frame.
     pub fn header(&self) -> Header {
         Header::new(self.time_ns, &self.world_frame)
+    }
+
+    /// The step's contacts as one `SoftContactArray`, each stamped with the step's header;
+    /// moves them out of the step (no copy: put `array.contacts` back to reuse them).
+    pub fn take_contact_array(&mut self) -> SoftContactArray {
+        let header = self.header();
+        for c in &mut self.contacts {
+            c.header.stamp = header.stamp;
+            c.header.frame_id.clone_from(&header.frame_id);
+        }
+        SoftContactArray {
+            header,
+            contacts: std::mem::take(&mut self.contacts),
+        }
     }
 
     /// `/clock`.

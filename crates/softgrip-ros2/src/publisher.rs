@@ -356,14 +356,7 @@ impl Worker {
         Self::send(shared, &self.tf, topics::TF, step.tf());
         // The markers are built from the step before its contacts move into the array.
         let markers = visuals::markers(&step);
-        for c in &mut step.contacts {
-            c.header.stamp = header.stamp;
-            c.header.frame_id.clone_from(&header.frame_id);
-        }
-        let array = SoftContactArray {
-            header: header.clone(),
-            contacts: std::mem::take(&mut step.contacts),
-        };
+        let array = step.take_contact_array();
         Self::send(shared, &self.contacts, topics::CONTACTS, array);
         for tip in &step.fingertips {
             let (topic, publisher) = match self.wrenches.get(&tip.name) {
