@@ -7,6 +7,7 @@
 mod common;
 
 use std::io::{BufRead, BufReader};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -24,18 +25,24 @@ fn wait_for_size(path: &std::path::Path, bytes: u64) {
     }
 }
 
+/// `softgrip run SCENE --out OUT`, not yet started.
+fn run_command(scene: &Path, out: &Path) -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_softgrip"));
+    c.args([
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    c
+}
+
 #[test]
 fn ctrl_c_finishes_the_recording() {
     let dir = common::temp_dir("sigint");
     let scene = common::long_scene(&dir, 10_000.0);
     let out = dir.join("int.mcap");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_softgrip"))
-        .args([
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
+    let mut child = run_command(&scene, &out)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -96,13 +103,7 @@ fn a_panic_in_the_loop_still_finishes_the_recording() {
     let dir = common::temp_dir("panic");
     let scene = common::long_scene(&dir, 2.0);
     let out = dir.join("panic.mcap");
-    let o = Command::new(env!("CARGO_BIN_EXE_softgrip"))
-        .args([
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
+    let o = run_command(&scene, &out)
         .env("SOFTGRIP_TEST_PANIC_AT_STEP", "50")
         .output()
         .unwrap();
@@ -123,13 +124,7 @@ fn sigkill_keeps_the_closed_chunks_and_inspect_says_recovered() {
     let dir = common::temp_dir("sigkill");
     let scene = common::long_scene(&dir, 10_000.0);
     let out = dir.join("killed.mcap");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_softgrip"))
-        .args([
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
+    let mut child = run_command(&scene, &out)
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .spawn()
