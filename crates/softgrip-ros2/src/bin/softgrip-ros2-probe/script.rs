@@ -13,10 +13,10 @@ pub const STEPS: u64 = 4;
 pub const TIPS: [&str; 2] = ["thumb", "index finger"];
 /// The other body: not ASCII, so strings are checked byte for byte through UTF-8.
 pub const OTHER: &str = "box \u{fc}ber-gr\u{f6}\u{df}e";
-/// Fingertip radius R [m].
+/// Fingertip radius R \[m\].
 pub const RADIUS: f64 = 0.0125;
 
-/// Simulation time of step `k` [ns]: distinct seconds and nanoseconds.
+/// Simulation time of step `k` \[ns\]: distinct seconds and nanoseconds.
 pub fn time_ns(k: u64) -> u64 {
     (k + 1) * 1_250_000_017 + 3
 }
