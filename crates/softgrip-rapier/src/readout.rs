@@ -1,4 +1,4 @@
-//! [`SoftContact`]: what one soft contact did over the last step, and its assembly from the
+//! [`TipContact`]: what one soft contact did over the last step, and its assembly from the
 //! substeps' impulses.
 
 use std::collections::HashMap;
@@ -19,7 +19,7 @@ use crate::solve::Row;
 /// (`delta - h v_n`, what rapier's position update produces), so `normal_force` and
 /// `law(delta)` agree for a quasi-static contact.
 #[derive(Debug, Clone)]
-pub struct SoftContact {
+pub struct TipContact {
     /// The fingertip's collider.
     pub fingertip: ColliderHandle,
     /// The other collider (a rigid body, or a second fingertip).
@@ -59,7 +59,7 @@ pub struct SoftContact {
     pub(crate) model: Arc<Model>,
 }
 
-impl SoftContact {
+impl TipContact {
     /// Contact radius and pressure at `delta` (computed now).
     pub fn patch(&self) -> ContactPatch {
         self.model.law.patch(self.delta)
@@ -220,14 +220,14 @@ fn add(e: &mut Accum, row: &Row, delta: f64, delta_end: f64, h: f64) {
 
 /// The readout of a step of `dt` seconds (impulses / dt), in a deterministic order, written to
 /// `out`; `acc` is emptied (its buffer kept).
-pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<SoftContact>) {
+pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
     out.clear();
     for ((tip, other), a) in acc.list.drain(..) {
         if a.jn <= 0.0 && a.delta_end <= 0.0 {
             continue;
         }
         let resp = a.model.law.response(a.delta_end);
-        out.push(SoftContact {
+        out.push(TipContact {
             fingertip: tip,
             other,
             point: a.point.into(),
