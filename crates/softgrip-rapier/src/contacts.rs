@@ -18,7 +18,7 @@ use crate::substep::SoftAccuracy;
 /// Memory of one contact between steps.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PairState {
-    /// Friction anchor on the other body, in its collider's frame [m].
+    /// Friction anchor on the other body, in its collider's frame \[m\].
     pub anchor_local: Vector3<f64>,
     /// The last substep in contact (`Scratch::stamp`).
     pub stamp: u64,

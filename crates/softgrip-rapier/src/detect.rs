@@ -23,7 +23,7 @@ use softgrip_law::{ContactLaw, ContactParams};
 use crate::counters::SoftCounters;
 use crate::fingertip::SoftFingertip;
 
-/// The compression `delta` [m] of the law from parry's signed distance `dist` [m] (negative =
+/// The compression `delta` \[m\] of the law from parry's signed distance `dist` \[m\] (negative =
 /// penetration): `delta = -dist`. The one place where the engine's sign convention meets the
 /// law's. `delta <= 0` is a gap, which the law reads as "separated".
 ///
@@ -46,7 +46,7 @@ pub(crate) struct Model {
     pub friction: f64,
     /// Torsional friction from the contact patch is on.
     pub torsion: bool,
-    /// Effective radius R of the contact [m].
+    /// Effective radius R of the contact \[m\].
     pub radius: f64,
 }
 
@@ -85,13 +85,13 @@ pub(crate) struct Geom {
     pub other: ColliderHandle,
     pub body_tip: Option<RigidBodyHandle>,
     pub body_other: Option<RigidBodyHandle>,
-    /// Contact point, midway between the two surfaces (world) [m].
+    /// Contact point, midway between the two surfaces (world) \[m\].
     pub point: Vector3<f64>,
-    /// Closest point on the other body's surface (world) [m].
+    /// Closest point on the other body's surface (world) \[m\].
     pub point_other: Vector3<f64>,
     /// Unit normal from the other body to the fingertip (world).
     pub normal: Vector3<f64>,
-    /// Signed distance [m], negative = penetration.
+    /// Signed distance \[m\], negative = penetration.
     pub dist: f64,
     /// Key of the law: (tip, other) for soft-soft pairs, else the tip alone.
     pub soft_pair: bool,
@@ -123,7 +123,7 @@ pub(crate) struct Scene<'a> {
 
 /// Finds the soft contacts of every fingertip (`scene.tip_order`; `tips` tells the soft
 /// colliders apart), within a prediction distance that
-/// covers the step `dt` [s], and writes them to `out` (`candidates` is a reused buffer).
+/// covers the step `dt` \[s\], and writes them to `out` (`candidates` is a reused buffer).
 ///
 /// Candidates come from one query of rapier's broad-phase BVH per fingertip, so the cost per
 /// fingertip depends on its neighbourhood, not on the scene. The query box is the fingertip's
@@ -192,7 +192,7 @@ struct Tip<'a> {
     /// Linear [m/s] and angular [rad/s] velocity of its body (zero without one).
     v: Vector,
     w: Vector,
-    /// Radius [m].
+    /// Radius \[m\].
     r: f32,
     /// Its current AABB.
     aabb: Aabb,
@@ -236,7 +236,7 @@ impl<'a> Tip<'a> {
         })
     }
 
-    /// How far apart `other`'s current AABB is from the fingertip's [m] (< 0: overlapping).
+    /// How far apart `other`'s current AABB is from the fingertip's \[m\] (< 0: overlapping).
     /// The shapes are at least that far apart.
     fn gap_to(&self, other: &Collider) -> f32 {
         let other_aabb = other.compute_aabb();
@@ -245,7 +245,7 @@ impl<'a> Tip<'a> {
             .max_element()
     }
 
-    /// The prediction distance [m] of a pair whose other side moves at up to `v_other` [m/s]
+    /// The prediction distance \[m\] of a pair whose other side moves at up to `v_other` [m/s]
     /// at the fingertip's radius: `0.05 R + 1.5 (|v_tip| + |w_tip| R + v_other) dt`.
     fn prediction(&self, v_other: f32) -> f32 {
         0.05 * self.r + (self.v.length() + self.w.length() * self.r + v_other) * self.dt * 1.5
@@ -346,29 +346,36 @@ impl<'a> Tip<'a> {
                 return None;
             }
         };
-        let (point, point_other, normal, dist) = geometry(&c, counters)?;
+        let s = surfaces(&c, counters)?;
         Some(Geom {
             tip: self.handle,
             other: other_h,
             body_tip: self.body,
             body_other: other_body,
-            point,
-            point_other,
-            normal,
-            dist,
+            point: s.point,
+            point_other: s.point_other,
+            normal: s.normal,
+            dist: s.dist,
             soft_pair,
         })
     }
 }
 
-/// parry's contact (other shape first) in `f64`: the point midway between the surfaces, the
-/// point on the other surface (world) [m], the unit normal from the other body to the fingertip
-/// and the signed distance [m]; `None` (counted as non-finite) unless finite with a normal of
-/// length > 0.5.
-fn geometry(
-    c: &query::Contact,
-    counters: &mut SoftCounters,
-) -> Option<(Vector3<f64>, Vector3<f64>, Vector3<f64>, f64)> {
+/// parry's contact of a pair in the plugin's `f64` algebra.
+struct Surfaces {
+    /// The point midway between the two surfaces (world) \[m\].
+    point: Vector3<f64>,
+    /// The closest point on the other body's surface (world) \[m\].
+    point_other: Vector3<f64>,
+    /// Unit normal from the other body to the fingertip (world).
+    normal: Vector3<f64>,
+    /// Signed distance \[m\], negative = penetration.
+    dist: f64,
+}
+
+/// parry's contact (other shape first) as [`Surfaces`]; `None` (counted as non-finite) unless
+/// finite with a normal of length > 0.5.
+fn surfaces(c: &query::Contact, counters: &mut SoftCounters) -> Option<Surfaces> {
     let (p1, p2, n, dist) = (
         to_f64(c.point1),
         to_f64(c.point2),
@@ -390,7 +397,12 @@ fn geometry(
         counters.non_finite += 1;
         return None;
     }
-    Some((0.5 * (p1 + p2), p1, n / norm, dist))
+    Some(Surfaces {
+        point: 0.5 * (p1 + p2),
+        point_other: p1,
+        normal: n / norm,
+        dist,
+    })
 }
 
 /// A collider handle as a sortable pair (index, generation).

@@ -24,21 +24,21 @@ pub struct TipContact {
     pub fingertip: ColliderHandle,
     /// The other collider (a rigid body, or a second fingertip).
     pub other: ColliderHandle,
-    /// Contact point, world [m].
+    /// Contact point, world \[m\].
     pub point: [f64; 3],
     /// Unit normal, world, from the other body to the fingertip.
     pub normal: [f64; 3],
-    /// Compression delta [m] (> 0 in contact).
+    /// Compression delta \[m\] (> 0 in contact).
     pub delta: f64,
     /// Compression ratio x = delta / R [-].
     pub x: f64,
-    /// Normal force on the fingertip [N], >= 0 (step average; includes the dissipative part).
+    /// Normal force on the fingertip \[N\], >= 0 (step average; includes the dissipative part).
     pub normal_force: f64,
-    /// Friction force on the fingertip, world [N] (step average, tangent to the contact).
+    /// Friction force on the fingertip, world \[N\] (step average, tangent to the contact).
     pub friction_force: [f64; 3],
     /// Torsional friction moment on the fingertip about `normal` [N m] (step average).
     pub torsional_moment: f64,
-    /// Law stiffness K = dF/d delta at `delta` [N/m].
+    /// Law stiffness K = dF/d delta at `delta` \[N/m\].
     pub stiffness: f64,
     /// The level that computed the force.
     pub level: LevelKind,
@@ -49,12 +49,12 @@ pub struct TipContact {
     pub validity_exceeded: bool,
     /// Friction was saturated (the contact slid) in some substep of the step.
     pub sliding: bool,
-    /// Largest normal force of any substep of the step [N] (an impact's peak; equals
+    /// Largest normal force of any substep of the step \[N\] (an impact's peak; equals
     /// `normal_force` for an unsplit step).
     pub peak_normal_force: f64,
-    /// Largest compression at the start of any substep of the step [m].
+    /// Largest compression at the start of any substep of the step \[m\].
     pub max_delta: f64,
-    /// Time in contact (compression > 0) during the step [s].
+    /// Time in contact (compression > 0) during the step \[s\].
     pub contact_duration: f64,
     pub(crate) model: Arc<Model>,
 }
@@ -71,7 +71,7 @@ impl TipContact {
         self.validity_exceeded
     }
 
-    /// Magnitude of the friction force [N].
+    /// Magnitude of the friction force \[N\].
     pub fn friction_magnitude(&self) -> f64 {
         let [a, b, c] = self.friction_force;
         (a * a + b * b + c * c).sqrt()
@@ -83,9 +83,9 @@ impl TipContact {
     }
 
     /// Force and torque the contact puts on the fingertip, the torque about `center` (world
-    /// [m], e.g. the fingertip's centre): normal plus friction force, `r x f` plus the
+    /// \[m\], e.g. the fingertip's centre): normal plus friction force, `r x f` plus the
     /// torsional moment about the normal. Summed over a fingertip's contacts this is its
-    /// contact wrench [N], [N m].
+    /// contact wrench \[N\], [N m].
     pub fn wrench_about(&self, center: [f64; 3]) -> ([f64; 3], [f64; 3]) {
         let (n, p) = (self.normal, self.point);
         let f: [f64; 3] =
@@ -152,7 +152,7 @@ impl Accums {
 }
 
 /// Adds one substep of `h` seconds of a contact: its solved `row`, its `model`, its
-/// compression at the start of the substep `delta` and at its end `delta_end` [m]. Within a
+/// compression at the start of the substep `delta` and at its end `delta_end` \[m\]. Within a
 /// substep each key comes at most once.
 pub(crate) fn accumulate(
     acc: &mut Accums,

@@ -167,7 +167,7 @@ impl Step<'_> {
         self.soft.scratch = scratch;
     }
 
-    /// The substep count of a step of `dt` [s] from its prepared rows (the largest any contact
+    /// The substep count of a step of `dt` \[s\] from its prepared rows (the largest any contact
     /// needs), counted in the diagnostics.
     fn substep_count(&mut self, dt: f64, scratch: &Scratch) -> u32 {
         let theta = self.soft.accuracy.theta();
@@ -202,7 +202,7 @@ impl Step<'_> {
         n
     }
 
-    /// `n` substeps of `h` [s]: fresh contacts (the first substep's are the prepared ones),
+    /// `n` substeps of `h` \[s\]: fresh contacts (the first substep's are the prepared ones),
     /// kinematic bodies along their paths, impulses, rapier's pipeline.
     fn substeps(&mut self, n: u32, h: f64, kinematic: &[KinematicPath], scratch: &mut Scratch) {
         scratch.accums.clear();

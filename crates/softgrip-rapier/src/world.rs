@@ -16,7 +16,7 @@ use crate::fingertip::SoftFingertip;
 #[derive(Default)]
 pub struct SoftWorld {
     /// rapier's world: gravity [m/s^2] (default -9.81 along y), `integration_parameters`
-    /// (`dt` [s] is the step, default 1/60 s; for micro-scale scenes set `length_unit` to about
+    /// (`dt` \[s\] is the step, default 1/60 s; for micro-scale scenes set `length_unit` to about
     /// the fingertip radius), the body and collider sets, the pipeline and its phases.
     pub physics: PhysicsWorld,
     /// The soft fingertips, their contacts and counters.

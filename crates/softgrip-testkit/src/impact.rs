@@ -1,6 +1,6 @@
 //! The first impact of a [`BallDrop`]: the plugin's, measured step by step
 //! ([`FirstImpact`]), and a 1-DOF RK4 reference of `m delta'' = m g - F(delta)` at a step of
-//! 1e-7 s ([`reference`]). Shared by `softgrip-rapier`'s bounce test and `softgrip-bench`'s
+//! 1e-7 s ([`reference()`]). Shared by `softgrip-rapier`'s bounce test and `softgrip-bench`'s
 //! speed-vs-error table.
 
 use softgrip_law::ContactLaw;
@@ -10,11 +10,11 @@ use crate::scenes::{BallDrop, G};
 /// A first impact: the plugin's, or the 1-DOF reference's.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Impact {
-    /// Peak normal force [N].
+    /// Peak normal force \[N\].
     pub peak_force: f64,
-    /// Peak compression delta [m].
+    /// Peak compression delta \[m\].
     pub peak_delta: f64,
-    /// Contact duration [s].
+    /// Contact duration \[s\].
     pub duration: f64,
 }
 

@@ -13,7 +13,7 @@ use rapier3d::prelude::*;
 use softgrip_law::{ContactLaw, Level, Material};
 use softgrip_rapier::{SoftFingertip, SoftFingertipBuilder, SoftWorld};
 
-/// Fingertip radius of the scenes [m].
+/// Fingertip radius of the scenes \[m\].
 pub const RADIUS: f64 = 0.01;
 /// Gravity [m/s^2], the magnitude of [`SoftWorld`]'s default (along -y).
 pub const G: f64 = 9.81;
@@ -59,7 +59,7 @@ pub struct PlateSqueeze {
 }
 
 impl PlateSqueeze {
-    /// Half-thickness of the plate [m].
+    /// Half-thickness of the plate \[m\].
     pub const HALF: f32 = 0.005;
 
     /// The scene with `tip` as the ball (of the tip's radius).
@@ -110,12 +110,12 @@ impl PlateSqueeze {
         }
     }
 
-    /// Height of the plate's bottom face [m] (the floor's top face is at 0).
+    /// Height of the plate's bottom face \[m\] (the floor's top face is at 0).
     pub fn plate_bottom(&self) -> f64 {
         self.world.physics.bodies[self.plate_body].translation().y as f64 - Self::HALF as f64
     }
 
-    /// Sets the plate's next kinematic position `step` [m] below its current one (reached at
+    /// Sets the plate's next kinematic position `step` \[m\] below its current one (reached at
     /// the end of the next `world.step()`).
     pub fn lower_plate(&mut self, step: f64) {
         let plate = &mut self.world.physics.bodies[self.plate_body];
@@ -133,14 +133,14 @@ pub struct BallDrop {
     pub body: RigidBodyHandle,
     /// The fingertip's law.
     pub law: ContactLaw,
-    /// The ball's mass as rapier computed it [kg].
+    /// The ball's mass as rapier computed it \[kg\].
     pub mass: f64,
-    /// The ball's radius [m].
+    /// The ball's radius \[m\].
     pub radius: f64,
 }
 
 impl BallDrop {
-    /// The scene with `tip` as the ball (of the tip's radius), dropped from `h0` [m].
+    /// The scene with `tip` as the ball (of the tip's radius), dropped from `h0` \[m\].
     pub fn new(tip: SoftFingertip, h0: f64) -> Self {
         let r = tip.radius();
         let mut world = SoftWorld::new();
@@ -185,12 +185,12 @@ impl BallDrop {
         self.world.physics.bodies[self.body].linvel().y as f64 - 0.5 * G * dt / n
     }
 
-    /// Height of the ball's lowest point above the ground [m] (negative in contact).
+    /// Height of the ball's lowest point above the ground \[m\] (negative in contact).
     pub fn gap(&self) -> f64 {
         self.world.physics.bodies[self.body].translation().y as f64 - self.radius
     }
 
-    /// Energy of the ball [J] with the [true velocity](Self::true_velocity_y):
+    /// Energy of the ball \[J\] with the [true velocity](Self::true_velocity_y):
     /// `E = m/2 |v + g dt/(2N)|^2 + m g y + W(delta)`, exactly conserved in free flight under
     /// constant gravity.
     pub fn energy(&self) -> f64 {
