@@ -10,13 +10,13 @@ use softgrip_rapier::SoftAccuracy;
 pub use softgrip_testkit::impact::{FirstImpact, Impact, reference};
 use softgrip_testkit::scenes::{BallDrop, fingertip};
 
-/// Fingertip radius [m].
+/// Fingertip radius \[m\].
 pub const RADIUS: f64 = softgrip_testkit::scenes::RADIUS;
 /// Gravity [m/s^2].
 pub const G: f64 = softgrip_testkit::scenes::G;
-/// Drop height of the ball's lowest point [m].
+/// Drop height of the ball's lowest point \[m\].
 pub const DROP: f64 = 0.1;
-/// Simulated time of a run [s]: three and a half bounce periods.
+/// Simulated time of a run \[s\]: three and a half bounce periods.
 pub const SIM_TIME: f64 = 1.0;
 
 /// What one bounce run measured.

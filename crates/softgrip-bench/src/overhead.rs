@@ -8,11 +8,11 @@ use rapier3d::prelude::*;
 use softgrip_law::{Level, Material};
 use softgrip_rapier::{SoftCounters, SoftFingertip, SoftWorld};
 
-/// Fingertip radius [m].
+/// Fingertip radius \[m\].
 pub const RADIUS: f64 = 0.01;
 /// Fingertip density [kg/m^3] (silicone).
 pub const DENSITY: f32 = 1070.0;
-/// Grid pitch [m]: three radii, so neighbours never touch.
+/// Grid pitch \[m\]: three radii, so neighbours never touch.
 pub const PITCH: f32 = 0.03;
 /// Steps run before measuring: long enough for the e = 0.5 contacts to come to rest.
 pub const SETTLE_STEPS: usize = 120;

@@ -11,7 +11,7 @@ use softgrip_rapier::SoftAccuracy;
 use crate::fe::{fe_at, fe_curve};
 use softgrip_testkit::scenes::{PlateSqueeze, fingertip};
 
-/// Fingertip radius [m].
+/// Fingertip radius \[m\].
 pub const RADIUS: f64 = softgrip_testkit::scenes::RADIUS;
 /// Plate speed [m/s].
 pub const SPEED: f64 = 0.001;
@@ -34,7 +34,7 @@ pub struct SqueezeResult {
     pub substeps: u64,
     /// Steps.
     pub steps: u64,
-    /// Simulated time [s].
+    /// Simulated time \[s\].
     pub sim_time: f64,
     /// Wall time of the steps.
     pub wall: Duration,
