@@ -40,7 +40,7 @@ pub struct FemSqueeze {
     pub solver: SoftBodySolver,
     /// Plate speed, in radii per second.
     pub speed: f32,
-    /// Step [s].
+    /// Step \[s\].
     pub dt: f32,
     /// Compression ratios x at which the force is sampled (increasing).
     pub samples: &'static [f32],
@@ -72,7 +72,7 @@ pub struct FemResult {
 }
 
 impl FemResult {
-    /// Mean wall time per step [ms].
+    /// Mean wall time per step \[ms\].
     pub fn ms_per_step(&self) -> f64 {
         self.wall.as_secs_f64() * 1e3 / self.steps.max(1) as f64
     }

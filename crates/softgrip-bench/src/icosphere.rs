@@ -5,7 +5,7 @@ use std::collections::HashMap;
 
 use rapier3d::prelude::Vector;
 
-/// Vertices and outward triangles of an icosphere of `radius` [m] about `center`, with
+/// Vertices and outward triangles of an icosphere of `radius` \[m\] about `center`, with
 /// `subdivisions` levels of 4-to-1 refinement (20 * 4^subdivisions triangles).
 pub fn icosphere(center: Vector, radius: f32, subdivisions: u32) -> (Vec<Vector>, Vec<[u32; 3]>) {
     let t = (1.0 + 5.0f32.sqrt()) / 2.0;

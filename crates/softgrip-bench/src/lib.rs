@@ -5,5 +5,4 @@ pub mod fe;
 pub mod fem_ball;
 pub mod icosphere;
 pub mod overhead;
-pub mod scenes;
 pub mod squeeze;

@@ -8,11 +8,11 @@ use rapier3d::prelude::*;
 use softgrip_law::{Level, Material};
 use softgrip_rapier::{SoftCounters, SoftFingertip, SoftWorld};
 
-/// Fingertip radius [m].
+/// Fingertip radius \[m\].
 pub const RADIUS: f64 = 0.01;
 /// Fingertip density [kg/m^3] (silicone).
 pub const DENSITY: f32 = 1070.0;
-/// Grid pitch [m]: three radii, so neighbours never touch.
+/// Grid pitch \[m\]: three radii, so neighbours never touch.
 pub const PITCH: f32 = 0.03;
 /// Steps run before measuring: long enough for the e = 0.5 contacts to come to rest.
 pub const SETTLE_STEPS: usize = 120;
@@ -33,7 +33,7 @@ impl OverheadScene {
         let mut world = SoftWorld::new();
         let side = (n as f64).sqrt().ceil() as usize;
         let half = 0.5 * side as f32 * PITCH + PITCH;
-        world.colliders.insert(
+        world.physics.colliders.insert(
             ColliderBuilder::cuboid(half, 0.01, half).translation(Vector::new(0.0, -0.01, 0.0)),
         );
         let tip = SoftFingertip::builder(RADIUS)
@@ -51,15 +51,15 @@ impl OverheadScene {
             let (row, col) = (i / side, i % side);
             let x = (col as f32 - 0.5 * (side - 1) as f32) * PITCH;
             let z = (row as f32 - 0.5 * (side - 1) as f32) * PITCH;
-            let body = world.bodies.insert(
+            let body = world.physics.bodies.insert(
                 RigidBodyBuilder::dynamic()
                     .translation(Vector::new(x, (RADIUS - rest) as f32, z))
                     .can_sleep(false),
             );
-            let ball = world.colliders.insert_with_parent(
+            let ball = world.physics.colliders.insert_with_parent(
                 ColliderBuilder::ball(RADIUS as f32).density(DENSITY),
                 body,
-                &mut world.bodies,
+                &mut world.physics.bodies,
             );
             if soft {
                 world
@@ -74,28 +74,13 @@ impl OverheadScene {
         scene
     }
 
-    /// One step: `SoftWorld::step` with softgrip, rapier's `PhysicsPipeline::step` alone
-    /// (with no hooks) without.
+    /// One step: `SoftWorld::step` with softgrip, rapier's own `PhysicsWorld::step` (no hooks,
+    /// no events) without.
     pub fn step(&mut self) {
         if self.soft {
             self.world.step();
         } else {
-            let w = &mut self.world;
-            w.pipeline.step(
-                w.gravity,
-                &w.params,
-                &mut w.islands,
-                &mut w.broad_phase,
-                &mut w.narrow_phase,
-                &mut w.bodies,
-                &mut w.colliders,
-                &mut w.impulse_joints,
-                &mut w.multibody_joints,
-                &mut w.soft_bodies,
-                &mut w.ccd_solver,
-                &(),
-                &(),
-            );
+            self.world.physics.step();
         }
     }
 

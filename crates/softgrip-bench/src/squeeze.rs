@@ -9,10 +9,10 @@ use softgrip_law::Level;
 use softgrip_rapier::SoftAccuracy;
 
 use crate::fe::{fe_at, fe_curve};
-use crate::scenes::{PlateSqueeze, fingertip};
+use softgrip_testkit::scenes::{PlateSqueeze, fingertip};
 
-/// Fingertip radius [m].
-pub const RADIUS: f64 = crate::scenes::RADIUS;
+/// Fingertip radius \[m\].
+pub const RADIUS: f64 = softgrip_testkit::scenes::RADIUS;
 /// Plate speed [m/s].
 pub const SPEED: f64 = 0.001;
 /// Compression ratio per contact at the end of the squeeze.
@@ -34,7 +34,7 @@ pub struct SqueezeResult {
     pub substeps: u64,
     /// Steps.
     pub steps: u64,
-    /// Simulated time [s].
+    /// Simulated time \[s\].
     pub sim_time: f64,
     /// Wall time of the steps.
     pub wall: Duration,
@@ -51,7 +51,7 @@ pub fn squeeze(level: Level, accuracy: SoftAccuracy) -> SqueezeResult {
     let e_star = s.law.params().effective_modulus();
 
     let fe = fe_curve();
-    let dt = s.world.params.dt as f64;
+    let dt = s.world.physics.integration_parameters.dt as f64;
     let (mut law_error, mut fe_error, mut samples) = (0.0f64, 0.0f64, 0);
     let mut wall = Duration::ZERO;
     loop {

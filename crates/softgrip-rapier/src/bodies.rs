@@ -88,7 +88,7 @@ pub(crate) fn gravity_kick(bodies: &mut RigidBodySet, gravity: Vector, tau: f64)
 }
 
 /// The body's row in the solver's table: for a dynamic body, its velocity with the external
-/// accelerations (gravity, user force and torque) integrated over `h_drift` [s] (see
+/// accelerations (gravity, user force and torque) integrated over `h_drift` \[s\] (see
 /// `SoftWorld::prepare`), its inverse mass and inertia.
 pub(crate) fn body_index(
     bodies: &RigidBodySet,

@@ -1,25 +1,24 @@
 //! [`SoftContacts`]: the plugin's state: registered fingertips, per-contact memory, readout.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use nalgebra::Vector3;
-use rapier3d::prelude::{ActiveCollisionTypes, ColliderHandle, ColliderSet, InteractionGroups};
+use rapier3d::prelude::{ActiveCollisionTypes, ColliderHandle, InteractionGroups, PhysicsWorld};
 
 use crate::bodies::BodyTable;
 use crate::counters::SoftCounters;
 use crate::detect::{Geom, Model, raw};
 use crate::error::{Error, Result};
 use crate::fingertip::SoftFingertip;
-use crate::hooks::SoftHooks;
-use crate::readout::{Accums, SoftContact};
+use crate::readout::{Accums, TipContact};
 use crate::solve::{Row, SolveScratch};
 use crate::substep::SoftAccuracy;
 
 /// Memory of one contact between steps.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PairState {
-    /// Friction anchor on the other body, in its collider's frame [m].
+    /// Friction anchor on the other body, in its collider's frame \[m\].
     pub anchor_local: Vector3<f64>,
     /// The last substep in contact (`Scratch::stamp`).
     pub stamp: u64,
@@ -62,12 +61,15 @@ pub struct SoftContacts {
     pub(crate) groups: HashMap<ColliderHandle, InteractionGroups>,
     /// The fingertips and their collision groups, in handle order (the detection's order).
     pub(crate) tip_order: Vec<(ColliderHandle, InteractionGroups)>,
-    pub(crate) hooks: SoftHooks,
+    /// The fingertips' colliders, for the hooks and events passed to rapier (`hooks`).
+    pub(crate) soft_colliders: HashSet<ColliderHandle>,
+    /// The first step has primed rapier's broad and narrow phases (`step`).
+    pub(crate) started: bool,
     pub(crate) pairs: HashMap<(ColliderHandle, ColliderHandle), PairState>,
     pub(crate) soft_pairs: HashMap<(ColliderHandle, ColliderHandle), Option<Arc<Model>>>,
     /// The contact model of each fingertip on a rigid body (shared by its contacts).
     pub(crate) tip_models: HashMap<ColliderHandle, Arc<Model>>,
-    pub(crate) contacts: Vec<SoftContact>,
+    pub(crate) contacts: Vec<TipContact>,
     pub(crate) counters: SoftCounters,
     pub(crate) accuracy: SoftAccuracy,
     pub(crate) geoms: Vec<Geom>,
@@ -80,7 +82,7 @@ impl SoftContacts {
         Self::default()
     }
 
-    /// Marks `collider` as the soft fingertip `fingertip`.
+    /// Marks `collider` of `world` as the soft fingertip `fingertip`.
     ///
     /// The collider must be a ball of the fingertip's radius (to 1e-5 relative).
     ///
@@ -97,14 +99,16 @@ impl SoftContacts {
     /// back to anything but `none()` makes rapier compute (and ignore, the solver groups being
     /// `none()` too) the manifolds again. Also adds `KINEMATIC_FIXED | KINEMATIC_KINEMATIC`
     /// to its active collision types (a fingertip on a kinematic finger must still see fixed
-    /// and kinematic objects).
+    /// and kinematic objects). The user's hooks and events passed to [`step`](Self::step)
+    /// never see a fingertip's pairs either.
     pub fn register(
         &mut self,
+        world: &mut PhysicsWorld,
         collider: ColliderHandle,
         fingertip: SoftFingertip,
-        colliders: &mut ColliderSet,
     ) -> Result<()> {
-        let co = colliders
+        let co = world
+            .colliders
             .get_mut(collider)
             .ok_or(Error::UnknownCollider(collider))?;
         let Some(ball) = co.shape().as_ball() else {
@@ -136,7 +140,7 @@ impl SoftContacts {
                 | ActiveCollisionTypes::KINEMATIC_FIXED
                 | ActiveCollisionTypes::KINEMATIC_KINEMATIC,
         );
-        self.hooks.insert(collider);
+        self.soft_colliders.insert(collider);
         self.tip_models
             .insert(collider, Arc::new(Model::of_tip(&fingertip)));
         self.tips.insert(collider, fingertip);
@@ -157,20 +161,15 @@ impl SoftContacts {
     }
 
     /// The soft contacts of the last step.
-    pub fn contacts(&self) -> &[SoftContact] {
+    pub fn contacts(&self) -> &[TipContact] {
         &self.contacts
     }
 
     /// The contacts of one fingertip in the last step.
-    pub fn contacts_of(&self, fingertip: ColliderHandle) -> impl Iterator<Item = &SoftContact> {
+    pub fn contacts_of(&self, fingertip: ColliderHandle) -> impl Iterator<Item = &TipContact> {
         self.contacts
             .iter()
             .filter(move |c| c.fingertip == fingertip)
-    }
-
-    /// The hooks to pass to rapier's `PhysicsPipeline::step` (`SoftWorld` does it for you).
-    pub fn hooks(&self) -> &SoftHooks {
-        &self.hooks
     }
 
     /// Diagnostics counters.

@@ -15,15 +15,15 @@ use nalgebra::Vector3;
 use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query;
 use rapier3d::prelude::{
-    BroadPhaseBvh, ColliderHandle, ColliderSet, InteractionGroups, NarrowPhase, QueryFilter,
-    RigidBodyHandle, RigidBodySet, Vector,
+    BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, NarrowPhase,
+    QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
 };
 use softgrip_law::{ContactLaw, ContactParams};
 
 use crate::counters::SoftCounters;
 use crate::fingertip::SoftFingertip;
 
-/// The compression `delta` [m] of the law from parry's signed distance `dist` [m] (negative =
+/// The compression `delta` \[m\] of the law from parry's signed distance `dist` \[m\] (negative =
 /// penetration): `delta = -dist`. The one place where the engine's sign convention meets the
 /// law's. `delta <= 0` is a gap, which the law reads as "separated".
 ///
@@ -46,7 +46,7 @@ pub(crate) struct Model {
     pub friction: f64,
     /// Torsional friction from the contact patch is on.
     pub torsion: bool,
-    /// Effective radius R of the contact [m].
+    /// Effective radius R of the contact \[m\].
     pub radius: f64,
 }
 
@@ -85,13 +85,13 @@ pub(crate) struct Geom {
     pub other: ColliderHandle,
     pub body_tip: Option<RigidBodyHandle>,
     pub body_other: Option<RigidBodyHandle>,
-    /// Contact point, midway between the two surfaces (world) [m].
+    /// Contact point, midway between the two surfaces (world) \[m\].
     pub point: Vector3<f64>,
-    /// Closest point on the other body's surface (world) [m].
+    /// Closest point on the other body's surface (world) \[m\].
     pub point_other: Vector3<f64>,
     /// Unit normal from the other body to the fingertip (world).
     pub normal: Vector3<f64>,
-    /// Signed distance [m], negative = penetration.
+    /// Signed distance \[m\], negative = penetration.
     pub dist: f64,
     /// Key of the law: (tip, other) for soft-soft pairs, else the tip alone.
     pub soft_pair: bool,
@@ -123,7 +123,7 @@ pub(crate) struct Scene<'a> {
 
 /// Finds the soft contacts of every fingertip (`scene.tip_order`; `tips` tells the soft
 /// colliders apart), within a prediction distance that
-/// covers the step `dt` [s], and writes them to `out` (`candidates` is a reused buffer).
+/// covers the step `dt` \[s\], and writes them to `out` (`candidates` is a reused buffer).
 ///
 /// Candidates come from one query of rapier's broad-phase BVH per fingertip, so the cost per
 /// fingertip depends on its neighbourhood, not on the scene. The query box is the fingertip's
@@ -152,158 +152,257 @@ pub(crate) fn detect(
         scene.colliders,
         QueryFilter::default(),
     );
-    // The fastest body of the world bounds the other side's motion in every prediction.
+    let (v_max, w_max) = fastest_motion(scene.bodies);
+    // In handle order: the contacts come out sorted by (fingertip, other).
+    for &(tip_h, tip_groups) in scene.tip_order {
+        let Some(tip) = Tip::of(scene, tip_h, tip_groups, dt, counters) else {
+            continue;
+        };
+        tip.candidates(&qp, v_max, w_max, candidates);
+        for &other_h in candidates.iter() {
+            if let Some(g) = tip.contact_with(scene, tips, other_h, counters) {
+                out.push(g);
+            }
+        }
+    }
+    // Deterministic order (already sorted: fingertips and candidates in handle order).
+    out.sort_by_key(|g| (raw(g.tip), raw(g.other)));
+}
+
+/// The largest linear [m/s] and angular [rad/s] speed of any moving body of the world: it
+/// bounds the other side's motion in every prediction.
+fn fastest_motion(bodies: &RigidBodySet) -> (f32, f32) {
     let (mut v_max, mut w_max) = (0.0f32, 0.0f32);
-    for (_, rb) in scene.bodies.iter() {
+    for (_, rb) in bodies.iter() {
         if !rb.is_fixed() && !rb.is_sleeping() {
             v_max = v_max.max(rb.linvel().length());
             w_max = w_max.max(rb.angvel().length());
         }
     }
-    // In handle order: the contacts come out sorted by (fingertip, other).
-    for &(tip_h, tip_groups) in scene.tip_order {
-        let Some(tip_co) = scene.colliders.get(tip_h) else {
-            continue;
-        };
-        if !tip_co.is_enabled() {
-            continue;
+    (v_max, w_max)
+}
+
+/// One fingertip's side of its pairs in a detection over `dt`.
+struct Tip<'a> {
+    handle: ColliderHandle,
+    /// Its collision groups (moved into the plugin at registration).
+    groups: InteractionGroups,
+    collider: &'a Collider,
+    body: Option<RigidBodyHandle>,
+    /// Linear [m/s] and angular [rad/s] velocity of its body (zero without one).
+    v: Vector,
+    w: Vector,
+    /// Radius \[m\].
+    r: f32,
+    /// Its current AABB.
+    aabb: Aabb,
+    dt: f32,
+}
+
+impl<'a> Tip<'a> {
+    /// The fingertip `handle`, if its collider exists, is enabled, is a ball and has a finite
+    /// centre (a non-finite centre is counted).
+    fn of(
+        scene: &Scene<'a>,
+        handle: ColliderHandle,
+        groups: InteractionGroups,
+        dt: f64,
+        counters: &mut SoftCounters,
+    ) -> Option<Self> {
+        let collider = scene.colliders.get(handle)?;
+        if !collider.is_enabled() {
+            return None;
         }
-        let Some(ball) = tip_co.shape().as_ball() else {
-            continue;
-        };
-        let tip_pose = tip_co.position();
-        let centre = tip_pose.translation;
-        if !centre.is_finite() {
+        let ball = collider.shape().as_ball()?;
+        if !collider.position().translation.is_finite() {
             counters.non_finite += 1;
-            continue;
+            return None;
         }
-        let tip_body = tip_co.parent();
-        let (v_tip, w_tip) = tip_body
+        let body = collider.parent();
+        let (v, w) = body
             .and_then(|b| scene.bodies.get(b))
             .map(|rb| (rb.linvel(), rb.angvel()))
             .unwrap_or((Vector::ZERO, Vector::ZERO));
-        let r = ball.radius;
-        let sweep = v_tip * dt as f32;
+        Some(Self {
+            handle,
+            groups,
+            collider,
+            body,
+            v,
+            w,
+            r: ball.radius,
+            aabb: collider.compute_aabb(),
+            dt: dt as f32,
+        })
+    }
+
+    /// How far apart `other`'s current AABB is from the fingertip's \[m\] (< 0: overlapping).
+    /// The shapes are at least that far apart.
+    fn gap_to(&self, other: &Collider) -> f32 {
+        let other_aabb = other.compute_aabb();
+        (other_aabb.mins - self.aabb.maxs)
+            .max(self.aabb.mins - other_aabb.maxs)
+            .max_element()
+    }
+
+    /// The prediction distance \[m\] of a pair whose other side moves at up to `v_other` [m/s]
+    /// at the fingertip's radius: `0.05 R + 1.5 (|v_tip| + |w_tip| R + v_other) dt`.
+    fn prediction(&self, v_other: f32) -> f32 {
+        0.05 * self.r + (self.v.length() + self.w.length() * self.r + v_other) * self.dt * 1.5
+    }
+
+    /// The candidate colliders of the fingertip, in handle order, each once, written to
+    /// `out`: one query of the broad-phase BVH over the swept AABB grown by the largest
+    /// prediction distance of its pairs (the other side at up to `v_max` [m/s] and `w_max`
+    /// [rad/s]), prefiltered on the query's own iteration by their current AABBs (no second
+    /// collider lookup, nothing sorted but the survivors).
+    fn candidates(
+        &self,
+        qp: &QueryPipeline<'_>,
+        v_max: f32,
+        w_max: f32,
+        out: &mut Vec<ColliderHandle>,
+    ) {
+        let centre = self.collider.position().translation;
+        let r = self.r;
+        let sweep = self.v * self.dt;
         // Conservative reach: the ball, a margin and the largest prediction distance of its
-        // pairs (see below), so that every pair within prediction is a candidate.
+        // pairs, so that every pair within prediction is a candidate.
         let reach =
-            r * 1.1 + (v_tip.length() + w_tip.length() * r + v_max + w_max * r) * dt as f32 * 1.5;
+            r * 1.1 + (self.v.length() + self.w.length() * r + v_max + w_max * r) * self.dt * 1.5;
         let lo = centre.min(centre + sweep) - Vector::splat(reach);
         let hi = centre.max(centre + sweep) + Vector::splat(reach);
-
-        let tip_aabb = tip_co.compute_aabb();
-        // The largest prediction distance of this fingertip's pairs (see below), for the
-        // prefilter before any per-pair lookup.
+        // The largest prediction distance of this fingertip's pairs (`prediction` with the
+        // fastest other side), for the prefilter before any per-pair lookup.
         let max_prediction =
-            0.05 * r + (v_tip.length() + w_tip.length() * r + v_max + w_max * r) * dt as f32 * 1.5;
-        // AABB prefilter, on the query's own iteration (no second collider lookup, nothing
-        // sorted but the survivors): the shapes are at least as far apart as their current
-        // AABBs.
-        let gap_of = |other_co: &rapier3d::prelude::Collider| {
-            let other_aabb = other_co.compute_aabb();
-            (other_aabb.mins - tip_aabb.maxs)
-                .max(tip_aabb.mins - other_aabb.maxs)
-                .max_element()
-        };
-        candidates.clear();
-        candidates.extend(
+            0.05 * r + (self.v.length() + self.w.length() * r + v_max + w_max * r) * self.dt * 1.5;
+        out.clear();
+        out.extend(
             qp.intersect_aabb_conservative(Aabb::new(lo, hi))
-                .filter(|(h, co)| *h != tip_h && gap_of(co) <= max_prediction + 0.01 * r)
+                .filter(|(h, co)| *h != self.handle && self.gap_to(co) <= max_prediction + 0.01 * r)
                 .map(|(h, _)| h),
         );
         // Each candidate once (sort + dedup: linear-logarithmic in the candidates).
-        candidates.sort_unstable_by_key(|h| raw(*h));
-        candidates.dedup();
-
-        for &other_h in candidates.iter() {
-            let Some(other_co) = scene.colliders.get(other_h) else {
-                continue;
-            };
-            let gap = gap_of(other_co);
-            if other_co.is_sensor() || !other_co.is_enabled() {
-                continue;
-            }
-            let other_body = other_co.parent();
-            if tip_body.is_some() && tip_body == other_body {
-                continue;
-            }
-            // A fingertip's own collision groups are `none()` (moved into `scene.groups`).
-            let soft_pair = tips.contains_key(&other_h);
-            let other_groups = if soft_pair {
-                scene
-                    .groups
-                    .get(&other_h)
-                    .copied()
-                    .unwrap_or(other_co.collision_groups())
-            } else {
-                other_co.collision_groups()
-            };
-            if !tip_groups.test(other_groups) {
-                continue;
-            }
-            if soft_pair && raw(other_h) < raw(tip_h) {
-                // Soft-soft pairs are handled once, from the fingertip with the smaller handle.
-                continue;
-            }
-            let v_other = other_body
-                .and_then(|b| scene.bodies.get(b))
-                .map(|rb| rb.linvel().length() + rb.angvel().length() * r)
-                .unwrap_or(0.0);
-            let prediction =
-                0.05 * r + (v_tip.length() + w_tip.length() * r + v_other) * dt as f32 * 1.5;
-            if gap > prediction + 0.01 * r {
-                continue;
-            }
-            let c = match query::contact(
-                other_co.position(),
-                other_co.shape(),
-                tip_pose,
-                tip_co.shape(),
-                prediction,
-            ) {
-                Ok(Some(c)) => c,
-                Ok(None) => continue,
-                Err(_) => {
-                    counters.unsupported_pairs += 1;
-                    continue;
-                }
-            };
-            let (p1, p2, n, dist) = (
-                to_f64(c.point1),
-                to_f64(c.point2),
-                to_f64(c.normal1),
-                c.dist as f64,
-            );
-            if !(p1
-                .iter()
-                .chain(p2.iter())
-                .chain(n.iter())
-                .all(|v| v.is_finite())
-                && dist.is_finite())
-            {
-                counters.non_finite += 1;
-                continue;
-            }
-            let norm = n.norm();
-            if !(norm > 0.5) {
-                counters.non_finite += 1;
-                continue;
-            }
-            out.push(Geom {
-                tip: tip_h,
-                other: other_h,
-                body_tip: tip_body,
-                body_other: other_body,
-                point: 0.5 * (p1 + p2),
-                point_other: p1,
-                normal: n / norm,
-                dist,
-                soft_pair,
-            });
-        }
+        out.sort_unstable_by_key(|h| raw(*h));
+        out.dedup();
     }
-    // Deterministic order (already sorted: fingertips and candidates in handle order).
-    out.sort_by_key(|g| (raw(g.tip), raw(g.other)));
+
+    /// The contact of the fingertip with the candidate `other_h`, if the pair is one the
+    /// plugin handles (not a sensor, not disabled, not the same body, groups that interact,
+    /// a soft-soft pair from its smaller handle) and is within its prediction distance.
+    fn contact_with(
+        &self,
+        scene: &Scene<'_>,
+        tips: &HashMap<ColliderHandle, SoftFingertip>,
+        other_h: ColliderHandle,
+        counters: &mut SoftCounters,
+    ) -> Option<Geom> {
+        let other_co = scene.colliders.get(other_h)?;
+        let gap = self.gap_to(other_co);
+        if other_co.is_sensor() || !other_co.is_enabled() {
+            return None;
+        }
+        let other_body = other_co.parent();
+        if self.body.is_some() && self.body == other_body {
+            return None;
+        }
+        // A fingertip's own collision groups are `none()` (moved into `scene.groups`).
+        let soft_pair = tips.contains_key(&other_h);
+        let other_groups = if soft_pair {
+            scene
+                .groups
+                .get(&other_h)
+                .copied()
+                .unwrap_or(other_co.collision_groups())
+        } else {
+            other_co.collision_groups()
+        };
+        if !self.groups.test(other_groups) {
+            return None;
+        }
+        if soft_pair && raw(other_h) < raw(self.handle) {
+            // Soft-soft pairs are handled once, from the fingertip with the smaller handle.
+            return None;
+        }
+        let v_other = other_body
+            .and_then(|b| scene.bodies.get(b))
+            .map(|rb| rb.linvel().length() + rb.angvel().length() * self.r)
+            .unwrap_or(0.0);
+        let prediction = self.prediction(v_other);
+        if gap > prediction + 0.01 * self.r {
+            return None;
+        }
+        let c = match query::contact(
+            other_co.position(),
+            other_co.shape(),
+            self.collider.position(),
+            self.collider.shape(),
+            prediction,
+        ) {
+            Ok(Some(c)) => c,
+            Ok(None) => return None,
+            Err(_) => {
+                counters.unsupported_pairs += 1;
+                return None;
+            }
+        };
+        let s = surfaces(&c, counters)?;
+        Some(Geom {
+            tip: self.handle,
+            other: other_h,
+            body_tip: self.body,
+            body_other: other_body,
+            point: s.point,
+            point_other: s.point_other,
+            normal: s.normal,
+            dist: s.dist,
+            soft_pair,
+        })
+    }
+}
+
+/// parry's contact of a pair in the plugin's `f64` algebra.
+struct Surfaces {
+    /// The point midway between the two surfaces (world) \[m\].
+    point: Vector3<f64>,
+    /// The closest point on the other body's surface (world) \[m\].
+    point_other: Vector3<f64>,
+    /// Unit normal from the other body to the fingertip (world).
+    normal: Vector3<f64>,
+    /// Signed distance \[m\], negative = penetration.
+    dist: f64,
+}
+
+/// parry's contact (other shape first) as [`Surfaces`]; `None` (counted as non-finite) unless
+/// finite with a normal of length > 0.5.
+fn surfaces(c: &query::Contact, counters: &mut SoftCounters) -> Option<Surfaces> {
+    let (p1, p2, n, dist) = (
+        to_f64(c.point1),
+        to_f64(c.point2),
+        to_f64(c.normal1),
+        c.dist as f64,
+    );
+    if !(p1
+        .iter()
+        .chain(p2.iter())
+        .chain(n.iter())
+        .all(|v| v.is_finite())
+        && dist.is_finite())
+    {
+        counters.non_finite += 1;
+        return None;
+    }
+    let norm = n.norm();
+    if !(norm > 0.5) {
+        counters.non_finite += 1;
+        return None;
+    }
+    Some(Surfaces {
+        point: 0.5 * (p1 + p2),
+        point_other: p1,
+        normal: n / norm,
+        dist,
+    })
 }
 
 /// A collider handle as a sortable pair (index, generation).

@@ -40,9 +40,9 @@ pub enum Error {
     RadiusMismatch {
         /// The collider that was passed.
         handle: ColliderHandle,
-        /// Radius of the collider's ball [m].
+        /// Radius of the collider's ball \[m\].
         collider_radius: f64,
-        /// Radius of the fingertip [m].
+        /// Radius of the fingertip \[m\].
         fingertip_radius: f64,
     },
 }

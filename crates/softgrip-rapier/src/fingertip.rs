@@ -41,7 +41,7 @@ pub struct SoftFingertip {
 }
 
 impl SoftFingertip {
-    /// Starts a builder for a fingertip of radius `radius` R [m] (finite, > 0).
+    /// Starts a builder for a fingertip of radius `radius` R \[m\] (finite, > 0).
     pub fn builder(radius: f64) -> SoftFingertipBuilder {
         SoftFingertipBuilder {
             name: String::from("fingertip"),
@@ -60,7 +60,7 @@ impl SoftFingertip {
         &self.name
     }
 
-    /// Radius R [m].
+    /// Radius R \[m\].
     pub fn radius(&self) -> f64 {
         self.radius
     }

@@ -12,6 +12,7 @@ mod hooks;
 mod presets;
 mod readout;
 mod solve;
+mod step;
 mod substep;
 mod world;
 
@@ -23,9 +24,8 @@ pub use fingertip::{
     DEFAULT_FRICTION, DEFAULT_RESTITUTION, DEFAULT_RESTITUTION_SPEED, SoftFingertip,
     SoftFingertipBuilder, hunt_crossley_zeta,
 };
-pub use hooks::SoftHooks;
 pub use presets::Preset;
-pub use readout::SoftContact;
+pub use readout::TipContact;
 pub use substep::{AMPLITUDE_FRACTION, MAX_SUBSTEPS, SoftAccuracy};
 pub use world::SoftWorld;
 

@@ -56,7 +56,7 @@ impl Preset {
         m.expect("invariant: preset values are finite, positive, and nu is in (-1, 0.5]")
     }
 
-    /// The radius measured with the material, for the cell presets [m]; `None` for rubbers.
+    /// The radius measured with the material, for the cell presets \[m\]; `None` for rubbers.
     pub fn measured_radius(self) -> Option<f64> {
         match self {
             Preset::LiveCell => Some(14.2e-6),

@@ -1,4 +1,4 @@
-//! [`SoftContact`]: what one soft contact did over the last step, and its assembly from the
+//! [`TipContact`]: what one soft contact did over the last step, and its assembly from the
 //! substeps' impulses.
 
 use std::collections::HashMap;
@@ -19,26 +19,26 @@ use crate::solve::Row;
 /// (`delta - h v_n`, what rapier's position update produces), so `normal_force` and
 /// `law(delta)` agree for a quasi-static contact.
 #[derive(Debug, Clone)]
-pub struct SoftContact {
+pub struct TipContact {
     /// The fingertip's collider.
     pub fingertip: ColliderHandle,
     /// The other collider (a rigid body, or a second fingertip).
     pub other: ColliderHandle,
-    /// Contact point, world [m].
+    /// Contact point, world \[m\].
     pub point: [f64; 3],
     /// Unit normal, world, from the other body to the fingertip.
     pub normal: [f64; 3],
-    /// Compression delta [m] (> 0 in contact).
+    /// Compression delta \[m\] (> 0 in contact).
     pub delta: f64,
     /// Compression ratio x = delta / R [-].
     pub x: f64,
-    /// Normal force on the fingertip [N], >= 0 (step average; includes the dissipative part).
+    /// Normal force on the fingertip \[N\], >= 0 (step average; includes the dissipative part).
     pub normal_force: f64,
-    /// Friction force on the fingertip, world [N] (step average, tangent to the contact).
+    /// Friction force on the fingertip, world \[N\] (step average, tangent to the contact).
     pub friction_force: [f64; 3],
     /// Torsional friction moment on the fingertip about `normal` [N m] (step average).
     pub torsional_moment: f64,
-    /// Law stiffness K = dF/d delta at `delta` [N/m].
+    /// Law stiffness K = dF/d delta at `delta` \[N/m\].
     pub stiffness: f64,
     /// The level that computed the force.
     pub level: LevelKind,
@@ -49,17 +49,17 @@ pub struct SoftContact {
     pub validity_exceeded: bool,
     /// Friction was saturated (the contact slid) in some substep of the step.
     pub sliding: bool,
-    /// Largest normal force of any substep of the step [N] (an impact's peak; equals
+    /// Largest normal force of any substep of the step \[N\] (an impact's peak; equals
     /// `normal_force` for an unsplit step).
     pub peak_normal_force: f64,
-    /// Largest compression at the start of any substep of the step [m].
+    /// Largest compression at the start of any substep of the step \[m\].
     pub max_delta: f64,
-    /// Time in contact (compression > 0) during the step [s].
+    /// Time in contact (compression > 0) during the step \[s\].
     pub contact_duration: f64,
     pub(crate) model: Arc<Model>,
 }
 
-impl SoftContact {
+impl TipContact {
     /// Contact radius and pressure at `delta` (computed now).
     pub fn patch(&self) -> ContactPatch {
         self.model.law.patch(self.delta)
@@ -71,7 +71,7 @@ impl SoftContact {
         self.validity_exceeded
     }
 
-    /// Magnitude of the friction force [N].
+    /// Magnitude of the friction force \[N\].
     pub fn friction_magnitude(&self) -> f64 {
         let [a, b, c] = self.friction_force;
         (a * a + b * b + c * c).sqrt()
@@ -83,9 +83,9 @@ impl SoftContact {
     }
 
     /// Force and torque the contact puts on the fingertip, the torque about `center` (world
-    /// [m], e.g. the fingertip's centre): normal plus friction force, `r x f` plus the
+    /// \[m\], e.g. the fingertip's centre): normal plus friction force, `r x f` plus the
     /// torsional moment about the normal. Summed over a fingertip's contacts this is its
-    /// contact wrench [N], [N m].
+    /// contact wrench \[N\], [N m].
     pub fn wrench_about(&self, center: [f64; 3]) -> ([f64; 3], [f64; 3]) {
         let (n, p) = (self.normal, self.point);
         let f: [f64; 3] =
@@ -152,7 +152,7 @@ impl Accums {
 }
 
 /// Adds one substep of `h` seconds of a contact: its solved `row`, its `model`, its
-/// compression at the start of the substep `delta` and at its end `delta_end` [m]. Within a
+/// compression at the start of the substep `delta` and at its end `delta_end` \[m\]. Within a
 /// substep each key comes at most once.
 pub(crate) fn accumulate(
     acc: &mut Accums,
@@ -220,14 +220,14 @@ fn add(e: &mut Accum, row: &Row, delta: f64, delta_end: f64, h: f64) {
 
 /// The readout of a step of `dt` seconds (impulses / dt), in a deterministic order, written to
 /// `out`; `acc` is emptied (its buffer kept).
-pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<SoftContact>) {
+pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
     out.clear();
     for ((tip, other), a) in acc.list.drain(..) {
         if a.jn <= 0.0 && a.delta_end <= 0.0 {
             continue;
         }
         let resp = a.model.law.response(a.delta_end);
-        out.push(SoftContact {
+        out.push(TipContact {
             fingertip: tip,
             other,
             point: a.point.into(),

@@ -38,7 +38,7 @@ pub(crate) struct BodyState {
     pub inv_m: Vector3<f64>,
     /// World inverse inertia [1/(kg m^2)].
     pub inv_i: Matrix3<f64>,
-    /// World centre of mass [m].
+    /// World centre of mass \[m\].
     pub com: Vector3<f64>,
     /// External acceleration (gravity, user force / m) [m/s^2]; zero if not dynamic.
     pub a_ext: Vector3<f64>,
@@ -82,7 +82,7 @@ pub(crate) struct Row {
     pub a: Option<usize>,
     /// Index of the other body.
     pub b: Option<usize>,
-    /// Contact point (world) [m].
+    /// Contact point (world) \[m\].
     pub p: Vector3<f64>,
     /// Unit normal, other -> fingertip.
     pub n: Vector3<f64>,
@@ -90,9 +90,9 @@ pub(crate) struct Row {
     pub t1: Vector3<f64>,
     /// Tangent basis.
     pub t2: Vector3<f64>,
-    /// Law force F [N].
+    /// Law force F \[N\].
     pub force: f64,
-    /// Law stiffness K [N/m].
+    /// Law stiffness K \[N/m\].
     pub stiffness: f64,
     /// Damping coefficient c = alpha F [N s/m].
     pub damping: f64,
@@ -100,13 +100,13 @@ pub(crate) struct Row {
     pub theta: f64,
     /// Friction coefficient.
     pub mu: f64,
-    /// Torsion limit per unit normal impulse, (3 pi/16) mu a [m].
+    /// Torsion limit per unit normal impulse, (3 pi/16) mu a \[m\].
     pub torsion_arm: f64,
-    /// Tangential offset of the contact from its anchor (world, in the tangent plane) [m].
+    /// Tangential offset of the contact from its anchor (world, in the tangent plane) \[m\].
     pub offset: Vector3<f64>,
-    /// Normal impulse [N s], >= 0.
+    /// Normal impulse \[N s\], >= 0.
     pub jn: f64,
-    /// Tangential impulse (world, in the tangent plane) [N s].
+    /// Tangential impulse (world, in the tangent plane) \[N s\].
     pub jt: Vector3<f64>,
     /// Torsional impulse about n [N m s].
     pub jtw: f64,
@@ -386,7 +386,7 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
     i
 }
 
-/// Solves all rows over a step `h` [s], starting from the body velocities `bodies` (external
+/// Solves all rows over a step `h` \[s\], starting from the body velocities `bodies` (external
 /// impulses of the step already included). On return `bodies` holds the velocities after the
 /// impulses and every row its impulses.
 ///

@@ -18,7 +18,7 @@ pub const AMPLITUDE_FRACTION: f64 = 0.05;
 /// Largest number of substeps per step (counted in `SoftCounters::substep_cap_hits`).
 pub const MAX_SUBSTEPS: u32 = 2000;
 
-/// The one accuracy setting: contact phase `omega h` [rad] per substep of a dynamic contact.
+/// The one accuracy setting: contact phase `omega h` \[rad\] per substep of a dynamic contact.
 ///
 /// Cost and error scale together: the number of substeps of an impact step is
 /// `omega dt / theta`, and the symplectic (explicit) update's error on the peak force,
@@ -32,7 +32,7 @@ impl SoftAccuracy {
     /// Default phase per substep: 0.05 rad (about 125 substeps per contact period).
     pub const DEFAULT: SoftAccuracy = SoftAccuracy(0.05);
 
-    /// Phase per substep `theta` [rad], finite and in (0, 2].
+    /// Phase per substep `theta` \[rad\], finite and in (0, 2].
     pub fn try_new(theta: f64) -> crate::Result<Self> {
         if theta > 0.0 && theta <= 2.0 {
             Ok(Self(theta))
@@ -45,7 +45,7 @@ impl SoftAccuracy {
         }
     }
 
-    /// The phase per substep [rad].
+    /// The phase per substep \[rad\].
     pub fn theta(self) -> f64 {
         self.0
     }

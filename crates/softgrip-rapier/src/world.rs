@@ -1,439 +1,50 @@
-//! [`SoftWorld`]: rapier's sets and pipeline bundled with the plugin; `step()` advances `dt`.
-//!
-//! One step:
-//! 1. rapier's step is `N = num_solver_iterations` passes of symplectic Euler ("kick, then
-//!    drift"), so under gravity its stored velocity lags the true (velocity-Verlet) velocity by
-//!    `g dt / (2N)`. A step split into `n` substeps of `h = dt/n` must keep that convention,
-//!    or every bounce gains or loses `g (dt - h) / (2N)` of speed (measured: +8 % energy per
-//!    bounce of a ball dropped 10 cm at 60 Hz before this rule). So a split step first applies
-//!    the impulse `m g (dt - h) / (2N)`, runs its substeps with gravity, and removes
-//!    `m g (dt - h) / (2N)` at the end. In free flight that is *exactly* one rapier step of
-//!    `dt`; in contact it is a fine symplectic integration.
-//! 2. The soft contacts are found fresh at the current poses (`detect`).
-//! 3. The substep count `n` is chosen (`substep`); position-based kinematic bodies are moved
-//!    along their path in `n` equal parts (linear in translation, slerp in rotation).
-//! 4. Per substep: contacts, impulses (`solve`), `apply_impulse_at_point`, then rapier's
-//!    pipeline with `dt / n`.
-//! 5. The readout is assembled (`SoftContacts::contacts`).
+//! [`SoftWorld`]: rapier's own [`PhysicsWorld`] with the plugin's [`SoftContacts`] beside it.
 
-use std::time::Instant;
+use rapier3d::prelude::{ColliderHandle, EventHandler, PhysicsHooks, PhysicsWorld};
 
-use nalgebra::Vector3;
-use rapier3d::prelude::{
-    BroadPhaseBvh, CCDSolver, ColliderHandle, ColliderSet, ImpulseJointSet, IntegrationParameters,
-    IslandManager, MultibodyJointSet, NarrowPhase, PhysicsPipeline, RigidBodySet, SoftBodySet,
-    Vector,
-};
-use softgrip_law::Regime;
-
-use crate::bodies::{self, KinematicVelocity, body_index, interpolate};
-use crate::contacts::{PairState, Scratch, SoftContacts};
-use crate::detect::{self, Scene, compression_from_signed_distance, to_f32, to_f64};
+use crate::contacts::SoftContacts;
 use crate::error::Result;
 use crate::fingertip::SoftFingertip;
-use crate::readout;
-use crate::solve::{self, Row};
-use crate::substep::{self, theta_blend};
 
-/// A rapier world with soft fingertips. All fields are public: build the scene with rapier's
-/// own API on `bodies` and `colliders`, register fingertips, then call [`step`](Self::step).
+/// A rapier [`PhysicsWorld`] with soft fingertips. Build the scene with rapier's own API on
+/// `physics` (`physics.insert(..)`, or `physics.bodies` and `physics.colliders`), register
+/// fingertips, then call [`step`](Self::step) (or [`step_with`](Self::step_with) to pass your
+/// own hooks and event handler).
+///
+/// A thin bundle: everything it does is [`SoftContacts::register`] and
+/// [`SoftContacts::step`] on `physics`, which work the same on a `PhysicsWorld` of your own.
+#[derive(Default)]
 pub struct SoftWorld {
-    /// Gravity [m/s^2].
-    pub gravity: Vector,
-    /// rapier's integration parameters; `dt` [s] is the step. For micro-scale scenes set
-    /// `length_unit` to about the fingertip radius.
-    pub params: IntegrationParameters,
-    /// Rigid bodies.
-    pub bodies: RigidBodySet,
-    /// Colliders.
-    pub colliders: ColliderSet,
-    /// Impulse joints.
-    pub impulse_joints: ImpulseJointSet,
-    /// Multibody joints.
-    pub multibody_joints: MultibodyJointSet,
-    /// rapier's own soft bodies (unrelated to the fingertips; passed through).
-    pub soft_bodies: SoftBodySet,
-    /// Islands.
-    pub islands: IslandManager,
-    /// Broad phase.
-    pub broad_phase: BroadPhaseBvh,
-    /// Narrow phase.
-    pub narrow_phase: NarrowPhase,
-    /// CCD solver.
-    pub ccd_solver: CCDSolver,
-    /// The pipeline.
-    pub pipeline: PhysicsPipeline,
+    /// rapier's world: gravity [m/s^2] (default -9.81 along y), `integration_parameters`
+    /// (`dt` \[s\] is the step, default 1/60 s; for micro-scale scenes set `length_unit` to about
+    /// the fingertip radius), the body and collider sets, the pipeline and its phases.
+    pub physics: PhysicsWorld,
     /// The soft fingertips, their contacts and counters.
     pub soft: SoftContacts,
-    started: bool,
-}
-
-impl Default for SoftWorld {
-    fn default() -> Self {
-        Self::new()
-    }
 }
 
 impl SoftWorld {
-    /// An empty world: gravity -9.81 m/s^2 along y, rapier's default parameters (dt = 1/60 s).
+    /// An empty world: rapier's `PhysicsWorld::default()` (gravity -9.81 m/s^2 along y,
+    /// dt = 1/60 s) and no fingertip.
     pub fn new() -> Self {
-        Self {
-            gravity: Vector::new(0.0, -9.81, 0.0),
-            params: IntegrationParameters::default(),
-            bodies: RigidBodySet::new(),
-            colliders: ColliderSet::new(),
-            impulse_joints: ImpulseJointSet::new(),
-            multibody_joints: MultibodyJointSet::new(),
-            soft_bodies: SoftBodySet::new(),
-            islands: IslandManager::new(),
-            broad_phase: BroadPhaseBvh::new(),
-            narrow_phase: NarrowPhase::new(),
-            ccd_solver: CCDSolver::new(),
-            pipeline: PhysicsPipeline::new(),
-            soft: SoftContacts::new(),
-            started: false,
-        }
+        Self::default()
     }
 
     /// Registers `collider` as the soft fingertip `fingertip` (see [`SoftContacts::register`]).
     pub fn register(&mut self, collider: ColliderHandle, fingertip: SoftFingertip) -> Result<()> {
-        self.soft.register(collider, fingertip, &mut self.colliders)
+        self.soft.register(&mut self.physics, collider, fingertip)
     }
 
-    fn pipeline_step(&mut self, h: f64, gravity: Vector) {
-        let t = Instant::now();
-        let mut p = self.params;
-        p.dt = h as f32;
-        self.pipeline.step(
-            gravity,
-            &p,
-            &mut self.islands,
-            &mut self.broad_phase,
-            &mut self.narrow_phase,
-            &mut self.bodies,
-            &mut self.colliders,
-            &mut self.impulse_joints,
-            &mut self.multibody_joints,
-            &mut self.soft_bodies,
-            &mut self.ccd_solver,
-            &self.soft.hooks,
-            &(),
-        );
-        self.soft.counters.pipeline_time += t.elapsed();
-    }
-
-    fn detect(&mut self, dt: f64, candidates: &mut Vec<ColliderHandle>) {
-        let t = Instant::now();
-        let soft = &mut self.soft;
-        let scene = Scene {
-            bodies: &self.bodies,
-            colliders: &self.colliders,
-            narrow_phase: &self.narrow_phase,
-            broad_phase: &self.broad_phase,
-            groups: &soft.groups,
-            tip_order: &soft.tip_order,
-        };
-        detect::detect(
-            &scene,
-            &soft.tips,
-            dt,
-            &mut soft.geoms,
-            candidates,
-            &mut soft.counters,
-        );
-        soft.counters.detect_time += t.elapsed();
-    }
-
-    /// Advances the world by `params.dt`.
+    /// Advances the world by `physics.integration_parameters.dt`, with no user hooks and no
+    /// event handler.
     pub fn step(&mut self) {
-        let dt = self.params.dt as f64;
-        if !(dt > 0.0) {
-            self.pipeline_step(0.0, self.gravity);
-            return;
-        }
-        if !self.started {
-            // Fill the broad phase and narrow phase before the first soft detection.
-            self.pipeline_step(0.0, self.gravity);
-            self.started = true;
-        }
-        self.soft.counters.steps += 1;
-
-        // Kinematic paths.
-        let kinematic = bodies::kinematic_paths(&self.bodies);
-
-        // The plugin's buffers, reused from step to step (no allocation once warm).
-        let mut scratch = std::mem::take(&mut self.soft.scratch);
-
-        // 2.-3. Contacts now, and the substep count.
-        self.detect(dt, &mut scratch.candidates);
-        let kin_vel = bodies::kinematic_velocities(&self.bodies, &kinematic, 1.0, dt);
-        self.prepare(dt, &kin_vel, &mut scratch);
-        let theta = self.soft.accuracy.theta();
-        let mut n = 1u32;
-        let table = &scratch.body_table.table;
-        for ((row, model), gi) in scratch.rows.iter().zip(&scratch.models).zip(&scratch.geom) {
-            let delta = compression_from_signed_distance(self.soft.geoms[*gi].dist);
-            let mut vn = solve::normal_velocity(table, row);
-            if delta > 0.0 {
-                // A touching contact's velocity is known only up to the external velocity
-                // increment of one step (rapier's stored velocity lags or leads the true one
-                // by up to |a| dt): only the excess counts as dynamic.
-                let a = solve::normal_external_acceleration(table, row).abs();
-                vn = vn.signum() * (vn.abs() - a * dt).max(0.0);
-            }
-            let w = solve::normal_mobility(table, row);
-            n = n.max(substep::substeps_for(
-                &model.law,
-                model.radius,
-                delta,
-                vn,
-                w,
-                dt,
-                theta,
-            ));
-        }
-        if n >= substep::MAX_SUBSTEPS {
-            self.soft.counters.substep_cap_hits += 1;
-        }
-        self.soft.counters.substeps_last = n;
-        self.soft.counters.substeps_total += n as u64;
-        let h = dt / n as f64;
-        // rapier's step of h is N internal "kick, drift" passes (N = num_solver_iterations):
-        // its stored velocity lags the true one by g h / (2N).
-        let lag = 0.5 / self.params.num_solver_iterations.max(1) as f64;
-        if n > 1 {
-            bodies::gravity_kick(&mut self.bodies, self.gravity, lag * (dt - h));
-        }
-
-        // 4. Substeps.
-        scratch.accums.clear();
-        for i in 0..n {
-            if i > 0 {
-                self.detect(h, &mut scratch.candidates);
-            }
-            // An unsplit step's rows are those of the substep count's pass above: same
-            // geometry, same step, same kinematic velocities (they read the current poses).
-            let fresh = n == 1;
-            let s = (i + 1) as f64 / n as f64;
-            for (handle, start, target) in &kinematic {
-                if let Some(rb) = self.bodies.get_mut(*handle) {
-                    rb.set_next_kinematic_position(interpolate(start, target, s as f32));
-                }
-            }
-            let kin_vel = bodies::kinematic_velocities(&self.bodies, &kinematic, s, h);
-            self.substep_contacts(h, &kin_vel, fresh, &mut scratch);
-            self.pipeline_step(h, self.gravity);
-        }
-        if n > 1 {
-            bodies::gravity_kick(&mut self.bodies, self.gravity, -lag * (dt - h));
-        }
-
-        // 5. Readout.
-        readout::assemble(&mut scratch.accums, dt, &mut self.soft.contacts);
-        self.soft.scratch = scratch;
+        self.step_with(&(), &());
     }
 
-    /// Body table and rows of the current geometry, for a step of `h` seconds, written to
-    /// `s` (`body_table`, `rows`, `models`, `geom`, `mobility`), without the law's response
-    /// (see [`prepare_state`](Self::prepare_state)).
-    fn prepare(&mut self, h: f64, kin_vel: &KinematicVelocity, s: &mut Scratch) {
-        s.body_table.clear();
-        s.rows.clear();
-        s.models.clear();
-        s.geom.clear();
-        s.mobility.clear();
-        s.skipped.clear();
-        let tb = &mut s.body_table;
-        let geoms = std::mem::take(&mut self.soft.geoms);
-        // rapier's step of h is N passes of "kick h/N, drift h/N": a constant acceleration a
-        // moves a body by h (v + a h (N+1)/(2N)). The solver works on that drift velocity.
-        let passes = self.params.num_solver_iterations.max(1) as f64;
-        let h_drift = h * (passes + 1.0) / (2.0 * passes);
-        for (gi, g) in geoms.iter().enumerate() {
-            let Some(model) = self.soft.model(g) else {
-                if compression_from_signed_distance(g.dist) > 0.0 {
-                    s.skipped.push((g.tip, g.other));
-                }
-                continue;
-            };
-            let a = g
-                .body_tip
-                .and_then(|b| body_index(&self.bodies, b, h_drift, self.gravity, kin_vel, tb));
-            let b = g
-                .body_other
-                .and_then(|b| body_index(&self.bodies, b, h_drift, self.gravity, kin_vel, tb));
-            let n = g.normal;
-            let (t1, t2) = tangents(&n);
-            let row = Row {
-                a,
-                b,
-                p: g.point,
-                n,
-                t1,
-                t2,
-                force: 0.0,
-                stiffness: 0.0,
-                damping: 0.0,
-                theta: 1.0,
-                mu: model.friction,
-                torsion_arm: 0.0,
-                offset: Vector3::zeros(),
-                jn: 0.0,
-                jt: Vector3::zeros(),
-                jtw: 0.0,
-                sliding: false,
-                vn_end: 0.0,
-                extended: false,
-                friction_mobility: None,
-            };
-            let vn = solve::normal_velocity(&tb.table, &row);
-            let w = solve::normal_mobility(&tb.table, &row);
-            if !(vn.is_finite() && w.is_finite()) {
-                self.soft.counters.non_finite += 1;
-                if compression_from_signed_distance(g.dist) > 0.0 {
-                    s.skipped.push((g.tip, g.other));
-                }
-                continue;
-            }
-            s.rows.push(row);
-            s.models.push(model);
-            s.geom.push(gi);
-            s.mobility.push(w);
-        }
-        self.soft.geoms = geoms;
+    /// Advances the world by `physics.integration_parameters.dt`, passing the user's `hooks`
+    /// and `events` to rapier's pipeline for every pair that is not a soft contact (see
+    /// [`SoftContacts::step`]).
+    pub fn step_with(&mut self, hooks: &dyn PhysicsHooks, events: &dyn EventHandler) {
+        self.soft.step(&mut self.physics, hooks, events);
     }
-
-    /// The law's response of the prepared rows over a (sub)step of `h` seconds, and the
-    /// contacts' memory (friction anchors): started for new contacts, ended for pairs that are
-    /// no longer in contact.
-    fn prepare_state(&mut self, h: f64, s: &mut Scratch) {
-        s.stamp = s.stamp.wrapping_add(1);
-        let stamp = s.stamp;
-        let soft = &mut self.soft;
-        for (((row, model), &gi), &w) in s
-            .rows
-            .iter_mut()
-            .zip(&s.models)
-            .zip(&s.geom)
-            .zip(&s.mobility)
-        {
-            let g = &soft.geoms[gi];
-            let delta = compression_from_signed_distance(g.dist);
-            let key = (g.tip, g.other);
-            if !(delta > 0.0) {
-                soft.pairs.remove(&key);
-                continue;
-            }
-            let other_pose = self.colliders.get(g.other).map(|c| *c.position());
-            let resp = model.law.response(delta);
-            match resp.regime {
-                Regime::Extended => {
-                    soft.counters.validity_excursions += 1;
-                    row.extended = true;
-                }
-                Regime::NonFinite => soft.counters.non_finite += 1,
-                _ => {}
-            }
-            soft.counters.contacts_evaluated += 1;
-            let state = soft.pairs.entry(key).or_insert_with(|| PairState {
-                anchor_local: other_pose
-                    .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
-                    .unwrap_or(g.point_other),
-                stamp,
-            });
-            state.stamp = stamp;
-            // Hunt-Crossley: F_total = F (1 + alpha d delta/dt), alpha a material constant.
-            row.force = resp.force;
-            row.stiffness = resp.stiffness;
-            row.damping = model.alpha * resp.force;
-            row.theta = if w > 0.0 {
-                theta_blend((resp.stiffness * w).sqrt() * h)
-            } else {
-                1.0
-            };
-            if model.friction > 0.0 {
-                if model.torsion {
-                    // Only the torsion limit needs the contact radius.
-                    let a = model.law.patch(delta).radius;
-                    row.torsion_arm = 3.0 * std::f64::consts::PI / 16.0 * model.friction * a;
-                }
-                let anchor = other_pose
-                    .map(|p| to_f64(p.transform_point(to_f32(&state.anchor_local))))
-                    .unwrap_or(state.anchor_local);
-                let d = g.point_other - anchor;
-                row.offset = d - n_proj(&row.n, &d);
-            }
-        }
-        // Pairs in contact but without a row this substep (no model, non-finite) keep their
-        // memory.
-        for key in &s.skipped {
-            if let Some(state) = soft.pairs.get_mut(key) {
-                state.stamp = stamp;
-            }
-        }
-        // Forget pairs that are no longer in contact (not stamped this substep).
-        soft.pairs.retain(|_, v| v.stamp == stamp);
-    }
-
-    fn substep_contacts(
-        &mut self,
-        h: f64,
-        kin_vel: &KinematicVelocity,
-        fresh: bool,
-        s: &mut Scratch,
-    ) {
-        let t = Instant::now();
-        if !fresh {
-            self.prepare(h, kin_vel, s);
-        }
-        self.prepare_state(h, s);
-        s.accums.begin_substep();
-
-        if !s.rows.is_empty() {
-            let failed = solve::solve(&mut s.body_table.table, &mut s.rows, h, &mut s.solve);
-            self.soft.counters.non_finite += failed;
-        }
-        bodies::apply_impulses(
-            &mut self.bodies,
-            &s.body_table.table,
-            &s.body_table.handles,
-            &s.rows,
-            &mut self.soft.counters,
-            &mut s.net,
-        );
-        for ((row, model), gi) in s.rows.iter().zip(s.models.drain(..)).zip(&s.geom) {
-            let g = &self.soft.geoms[*gi];
-            let key = (g.tip, g.other);
-            // Contact memory: a sliding contact drags its anchor along.
-            if row.sliding
-                && let Some(state) = self.soft.pairs.get_mut(&key)
-                && let Some(co) = self.colliders.get(g.other)
-            {
-                state.anchor_local = to_f64(
-                    co.position()
-                        .inverse_transform_point(to_f32(&g.point_other)),
-                );
-            }
-            let delta_end = compression_from_signed_distance(g.dist) - h * row.vn_end;
-            let delta = compression_from_signed_distance(g.dist);
-            readout::accumulate(&mut s.accums, key, row, model, delta, delta_end, h);
-        }
-        self.soft.counters.solve_time += t.elapsed();
-    }
-}
-
-/// The component of `d` along the unit normal `n`.
-#[inline]
-fn n_proj(n: &Vector3<f64>, d: &Vector3<f64>) -> Vector3<f64> {
-    n * n.dot(d)
-}
-
-fn tangents(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
-    let a = if n.x.abs() < 0.9 {
-        Vector3::x()
-    } else {
-        Vector3::y()
-    };
-    let t1 = n.cross(&a).normalize();
-    (t1, n.cross(&t1))
 }

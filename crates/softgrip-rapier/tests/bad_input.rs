@@ -79,15 +79,16 @@ fn bad_input_is_rejected_with_typed_errors() {
 
     let mut world = SoftWorld::new();
     let boxed = world
+        .physics
         .colliders
         .insert(ColliderBuilder::cuboid(0.01, 0.01, 0.01));
     let tip = SoftFingertip::builder(0.01).material(m).build().unwrap();
     let e = world.register(boxed, tip.clone()).unwrap_err();
     assert!(matches!(e, Error::NotABall { .. }), "{e}");
-    let small = world.colliders.insert(ColliderBuilder::ball(0.005));
+    let small = world.physics.colliders.insert(ColliderBuilder::ball(0.005));
     let e = world.register(small, tip.clone()).unwrap_err();
     assert!(matches!(e, Error::RadiusMismatch { .. }), "{e}");
-    let ok = world.colliders.insert(ColliderBuilder::ball(0.01));
+    let ok = world.physics.colliders.insert(ColliderBuilder::ball(0.01));
     world.register(ok, tip).unwrap();
     assert!(world.soft.is_soft(ok));
 }

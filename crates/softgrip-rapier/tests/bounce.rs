@@ -1,13 +1,13 @@
 //! Elastic bounce of a soft ball on rigid ground: energy kept over 10 bounces, first impact
 //! against a 1-DOF RK4 reference, and the rebound ratio for e = 0.5. The scene
-//! (`softgrip_bench::scenes::BallDrop`) and the reference (`softgrip_bench::bounce::reference`)
+//! (`softgrip_testkit::scenes::BallDrop`) and the reference (`softgrip_testkit::impact::reference`)
 //! are the benchmark tables'.
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
-use softgrip_bench::bounce::{FirstImpact, Impact, reference};
-use softgrip_bench::scenes::{BallDrop, G, fingertip};
 use softgrip_law::Level;
+use softgrip_testkit::impact::{FirstImpact, Impact, reference};
+use softgrip_testkit::scenes::{BallDrop, G, fingertip};
 
 const H0: f64 = 0.1; // drop height of the ball's lowest point [m]
 
@@ -55,8 +55,19 @@ fn elastic_bounce_keeps_energy() {
         s.world.soft.counters().substeps_total
     );
     assert_eq!(bounces, 10);
-    assert!((e10 / e0 - 1.0).abs() < 0.02);
-    assert!(e_max / e0 - 1.0 < 0.005);
+    // The READMEs state +0.085 % after 10 bounces and at most +0.089 %: +-0.2 % absolute
+    // around each (they were asserted within 2 % and below 0.5 %, which a 10x regression
+    // passed). The drift is the O(theta^2) energy error of the explicit update.
+    assert!(
+        (e10 / e0 - 1.0 - 0.00085).abs() < 0.002,
+        "E10/E0 - 1 = {}, README: +0.085 %",
+        e10 / e0 - 1.0
+    );
+    assert!(
+        (e_max / e0 - 1.0 - 0.00089).abs() < 0.002,
+        "max E/E0 - 1 = {}, README: +0.089 %",
+        e_max / e0 - 1.0
+    );
 }
 
 #[test]
@@ -87,9 +98,13 @@ fn first_impact_matches_one_dof_reference() {
         peak_d / ref_d - 1.0,
         duration / ref_t - 1.0
     );
-    assert!((peak_f / ref_f - 1.0).abs() < 0.02);
-    assert!((peak_d / ref_d - 1.0).abs() < 0.02);
-    assert!((duration / ref_t - 1.0).abs() < 0.02);
+    // The READMEs state -0.009 %, -0.006 % and -0.15 % ("within 0.15 % of RK4"); asserted
+    // within 2 % before. Now 0.05 % on the peaks (the O(theta) error of theta = 0.05 that the
+    // speed-vs-error table shows at 0.01-0.02 %), twice the stated 0.15 % on the duration
+    // (the contact's start and end fall inside substeps).
+    assert!((peak_f / ref_f - 1.0).abs() < 5e-4);
+    assert!((peak_d / ref_d - 1.0).abs() < 5e-4);
+    assert!((duration / ref_t - 1.0).abs() < 3e-3);
 }
 
 /// Rebound velocity ratio of a drop that hits the ground at `v` [m/s].
@@ -116,7 +131,8 @@ fn rebound_ratio(restitution: f64, v: f64) -> f64 {
 fn restitution_half_gives_half_rebound_speed() {
     let ratio = rebound_ratio(0.5, softgrip_rapier::DEFAULT_RESTITUTION_SPEED);
     println!("restitution 0.5 at v_ref = 1 m/s: measured rebound velocity ratio {ratio:.4}");
-    assert!((ratio - 0.5).abs() < 0.02);
+    // The READMEs state 0.4934 (0.493); was asserted within 0.02 of 0.5.
+    assert!((ratio - 0.4934).abs() < 0.005, "README: 0.4934");
 }
 
 /// With a constant Hunt-Crossley alpha the restitution falls with the impact speed (as for
@@ -133,6 +149,13 @@ fn restitution_varies_with_impact_speed() {
         e[0], e[1], e[2]
     );
     assert!(e[0] > e[1] && e[1] > e[2]);
-    assert!((e[1] - 0.5).abs() < 0.02);
-    assert!((elastic - 1.0).abs() < 0.02);
+    // The README states e = 0.791 / 0.493 / 0.171 and 1.0000 for e = 1 at 4 m/s (asserted
+    // within 0.02 at 1 m/s and for e = 1 before): 0.01 on each, 0.002 on the elastic one.
+    for (measured, stated) in e.iter().zip([0.791, 0.493, 0.171]) {
+        assert!(
+            (measured - stated).abs() < 0.01,
+            "{measured}, README: {stated}"
+        );
+    }
+    assert!((elastic - 1.0).abs() < 0.002, "{elastic}, README: 1.0000");
 }

@@ -17,10 +17,10 @@ const R: f64 = 0.01;
 /// returns (F / m g, contact count).
 fn rest_on(ground: ColliderBuilder) -> (f64, usize) {
     let mut world = SoftWorld::new();
-    world.colliders.insert(ground);
+    world.physics.colliders.insert(ground);
     let tip = common::tip(R, 0.59e6, Level::auto(), 0.5, 0.8);
     let (body, _) = common::dynamic_tip(&mut world, Vector::new(0.0, R as f32, 0.0), 1070.0, tip);
-    let mass = world.bodies[body].mass() as f64;
+    let mass = world.physics.bodies[body].mass() as f64;
     for _ in 0..120 {
         world.step();
         assert!(common::all_finite(&world));
@@ -84,7 +84,8 @@ fn fingertip_rests_on_every_shape_with_its_weight() {
         let (ratio, n) = rest_on(shape);
         println!("fingertip on {name}: {n} contact(s), F/mg = {ratio:.6}");
         assert_eq!(n, 1, "{name}");
-        assert!((ratio - 1.0).abs() < 0.01, "{name}: F/mg = {ratio}");
+        // The README states 1.000000 (ball 0.999999, cylinder 1.000003); was 1 %.
+        assert!((ratio - 1.0).abs() < 1e-4, "{name}: F/mg = {ratio}");
     }
 }
 
@@ -94,7 +95,10 @@ fn two_soft_fingertips_pressed_together_follow_combined_law() {
     // The lower fingertip is fixed (a finger on a fixed mount), softer and larger.
     let (r1, m1) = (0.015, Material::try_new(0.3e6, 0.49).unwrap());
     let (r2, m2) = (R, Material::try_new(0.59e6, 0.49).unwrap());
-    let lower = world.colliders.insert(ColliderBuilder::ball(r1 as f32));
+    let lower = world
+        .physics
+        .colliders
+        .insert(ColliderBuilder::ball(r1 as f32));
     let tip1 = softgrip_rapier::SoftFingertip::builder(r1)
         .material(m1)
         .build()
@@ -110,7 +114,7 @@ fn two_soft_fingertips_pressed_together_follow_combined_law() {
         5000.0,
         tip2,
     );
-    let mass = world.bodies[body].mass() as f64;
+    let mass = world.physics.bodies[body].mass() as f64;
     for _ in 0..180 {
         world.step();
         assert!(common::all_finite(&world));
@@ -127,7 +131,7 @@ fn two_soft_fingertips_pressed_together_follow_combined_law() {
         .expect("soft-soft contact")
         .clone();
     // Compression from the poses: the approach of the two centres.
-    let gap = world.bodies[body].translation().y as f64;
+    let gap = world.physics.bodies[body].translation().y as f64;
     let delta = r1 + r2 - gap;
     let f_law = combined.response(delta).force;
     println!(
@@ -139,7 +143,8 @@ fn two_soft_fingertips_pressed_together_follow_combined_law() {
         world.soft.contacts().len()
     );
     assert_eq!(world.soft.contacts().len(), 1);
-    assert!((c.normal_force / (mass * common::G) - 1.0).abs() < 0.01);
-    assert!((c.normal_force / f_law - 1.0).abs() < 0.01);
+    // The README states 1.000000 and 0.999988 (was 1 % each).
+    assert!((c.normal_force / (mass * common::G) - 1.0).abs() < 1e-4);
+    assert!((c.normal_force / f_law - 1.0).abs() < 1e-4);
     assert!((c.law().params().radius() / combined.params().radius() - 1.0).abs() < 1e-12);
 }

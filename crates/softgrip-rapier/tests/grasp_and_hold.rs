@@ -59,10 +59,22 @@ fn box_held_10_s_slips_less_than_1_mm() {
         "grasp 5 N: slip {:.3e} m (hold only {:.3e} m), lifted {:.4} m, grip {:.4} N, turn {:.3} deg",
         o.slip, o.slip_hold_max, o.lifted, o.grip_force, o.turn_deg
     );
-    assert!(o.slip.abs() < 1e-3);
-    assert!(o.slip_hold_max < 1e-3);
+    // The READMEs state "slip 62 um (all during the lift's acceleration), 0 m during the hold;
+    // grip 5.000 N". A factor 2 either way on the slip (it was asserted < 1 mm, which a 10x
+    // regression passed), 1 um on the hold (f32 poses near 0.1 m are ~1e-8 m apart), 0.5 % on
+    // the grip.
+    assert!(
+        (31e-6..=124e-6).contains(&o.slip),
+        "slip {} m, README: 62 um",
+        o.slip
+    );
+    assert!(
+        o.slip_hold_max < 1e-6,
+        "hold slip {} m, README: 0",
+        o.slip_hold_max
+    );
     assert!((o.lifted - 0.1).abs() < 2e-3);
-    assert!((o.grip_force / 5.0 - 1.0).abs() < 0.05);
+    assert!((o.grip_force / 5.0 - 1.0).abs() < 0.005);
 }
 
 #[test]
@@ -82,8 +94,18 @@ fn off_centre_load_turns_less_than_2_degrees_thanks_to_torsion() {
         "off-centre load: turn {:.3} deg with torsion, {:.2} deg without; slip {:.3e} m",
         with.turn_deg, without.turn_deg, with.slip
     );
-    assert!(with.turn_deg < 2.0);
-    assert!(without.turn_deg > 10.0);
+    // The READMEs state 0.095 deg with torsion and 136 deg without: a factor 2 on the first
+    // (was < 2 deg), +-25 % on the second (was > 10 deg).
+    assert!(
+        with.turn_deg < 0.19,
+        "turn {} deg, README: 0.095",
+        with.turn_deg
+    );
+    assert!(
+        (100.0..=170.0).contains(&without.turn_deg),
+        "turn {} deg without torsion, README: 136",
+        without.turn_deg
+    );
     assert!(with.slip.abs() < 1e-3);
 }
 
@@ -97,5 +119,6 @@ fn half_grip_below_friction_limit_slips() {
         "grasp 2.5 N (limit 1.5 N < 1.96 N weight): slip {:.4} m, lifted {:.4} m",
         o.slip, o.lifted
     );
-    assert!(o.slip > 0.05);
+    // The READMEs state 0.100 m (the whole lift: the box stays on the ground); was > 5 cm.
+    assert!(o.slip > 0.09, "slip {} m, README: 0.100", o.slip);
 }

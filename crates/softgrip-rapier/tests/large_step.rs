@@ -21,14 +21,14 @@ fn one_kg_box_squeezed_and_lifted_at_30_hz_stays_bounded() {
         ..GraspSpec::default()
     });
     let (mut ke_max, mut w_max, mut f_max) = (0.0f64, 0.0f64, 0.0f64);
-    let dt = g.world.params.dt as f64;
+    let dt = g.world.physics.integration_parameters.dt as f64;
     // Velocities from the poses of consecutive steps: rapier's stored velocity of a supported
     // body is offset by g dt (N-1)/(2N) (N-pass kick-drift), which is not motion.
-    let mut prev = (g.jaw_y(), *g.world.bodies[g.object].position());
+    let mut prev = (g.jaw_y(), *g.world.physics.bodies[g.object].position());
     let mut rel0 = None;
     g.run(0.1, 5.0, |g: &Grasp, phase| {
         assert!(common::all_finite(&g.world), "non-finite in {phase}");
-        let pose = *g.world.bodies[g.object].position();
+        let pose = *g.world.physics.bodies[g.object].position();
         let v_jaw = (g.jaw_y() - prev.0) / dt;
         let v = (pose.translation - prev.1.translation) / dt as f32;
         let (_, angle) = (pose.rotation * prev.1.rotation.inverse()).to_axis_angle();
@@ -53,12 +53,21 @@ fn one_kg_box_squeezed_and_lifted_at_30_hz_stays_bounded() {
         g.object_y() - g.half,
         g.world.soft.counters().substeps_total
     );
-    assert!(ke_max < 1e-4, "relative kinetic energy {ke_max} J");
+    // The README states 3.4e-5 J, 0.18 rad/s, 20.1 N and a slip of 0.39 mm (asserted below
+    // 1e-4 J, 0.3 rad/s, 30 N and 1 mm): a factor 2 on the energy and the slip, 10 % on the
+    // force.
+    assert!(
+        ke_max < 7e-5,
+        "relative kinetic energy {ke_max} J, README: 3.4e-5"
+    );
     // 0.18 rad/s, during the lift's acceleration: the box rocks in the grip. Before the
     // velocity-independent Hunt-Crossley alpha (e at 1 m/s), the slow grip contacts got
     // chi = zeta / (R * 1/s), 100x today's damping, and the peak was 0.05 rad/s.
     assert!(w_max < 0.3);
-    assert!(f_max < 30.0); // 20 N grip plus the lift's share, no spikes
-    assert!(slip.abs() < 1e-3);
+    assert!(f_max < 22.0, "max force {f_max} N, README: 20.1"); // 20 N grip plus the lift's share, no spikes
+    assert!(
+        (0.2e-3..=0.8e-3).contains(&slip.abs()),
+        "slip {slip} m, README: 0.39 mm"
+    );
     assert!((g.object_y() - g.half - 0.1).abs() < 2e-3);
 }

@@ -27,8 +27,8 @@ struct Result {
 fn squeeze(preset: Preset, length_unit: f32, offset: f64) -> Result {
     let r = preset.measured_radius().unwrap();
     let mut world = SoftWorld::new();
-    world.gravity = Vector::ZERO;
-    world.params.length_unit = length_unit;
+    world.physics.gravity = Vector::ZERO;
+    world.physics.integration_parameters.length_unit = length_unit;
     let tip = SoftFingertip::builder(r)
         .preset(preset)
         .level(Level::fit())
@@ -51,12 +51,13 @@ fn squeeze(preset: Preset, length_unit: f32, offset: f64) -> Result {
     let mut plates = Vec::new();
     for sign in [1.0, -1.0] {
         let body = world
+            .physics
             .bodies
             .insert(RigidBodyBuilder::kinematic_position_based().translation(at(sign, x0)));
-        let co = world.colliders.insert_with_parent(
+        let co = world.physics.colliders.insert_with_parent(
             ColliderBuilder::cuboid((4.0 * r) as f32, half as f32, (4.0 * r) as f32),
             body,
-            &mut world.bodies,
+            &mut world.physics.bodies,
         );
         plates.push((body, co, sign));
     }
@@ -69,8 +70,8 @@ fn squeeze(preset: Preset, length_unit: f32, offset: f64) -> Result {
         }
         world.step();
         assert!(common::all_finite(&world));
-        let top = world.bodies[plates[0].0].translation().y as f64 - half;
-        let bottom = world.bodies[plates[1].0].translation().y as f64 + half;
+        let top = world.physics.bodies[plates[0].0].translation().y as f64 - half;
+        let bottom = world.physics.bodies[plates[1].0].translation().y as f64 + half;
         let delta = (2.0 * r - (top - bottom)) / 2.0;
         let x = delta / r;
         if x < 0.05 {
@@ -114,8 +115,9 @@ fn fixed_and_live_cells_squeezed_to_x07_match_law_within_1_percent() {
                 res.worst_requested
             );
             assert!(res.x_reached > 0.699);
-            assert!(res.worst < 0.01, "{} at length_unit {name}", preset.name());
-            assert!(res.worst_requested < 0.01);
+            // The READMEs state a worst 0.096 % ("within 0.1 % of the law"); was 1 %.
+            assert!(res.worst < 0.002, "{} at length_unit {name}", preset.name());
+            assert!(res.worst_requested < 0.002);
         }
     }
 }
@@ -138,4 +140,7 @@ fn cell_force_error_grows_with_distance_from_origin_f32_limit() {
     }
     assert!(errors[0] < 0.01);
     assert!(errors[2] > 0.01); // past the f32 limit: stated in the README
+    // The README states 0.11 % / 0.41 % / 4.3 % at 1 cm / 10 cm / 1 m.
+    assert!(errors[0] < 0.0022 && errors[1] < 0.008, "{errors:?}");
+    assert!((0.02..=0.09).contains(&errors[2]), "{errors:?}");
 }

@@ -15,6 +15,7 @@ fn pressing_past_chi_l_singularity_to_x095_is_finite_monotonic_and_flagged() {
     let r = 0.01;
     let mut world = softgrip_rapier::SoftWorld::new();
     world
+        .physics
         .colliders
         .insert(ColliderBuilder::cuboid(0.1, 0.05, 0.1).translation(Vector::new(0.0, -0.05, 0.0)));
     let tip = common::tip(r, 0.59e6, Level::fit(), 1.0, 0.8);
@@ -60,7 +61,9 @@ fn pressing_past_chi_l_singularity_to_x095_is_finite_monotonic_and_flagged() {
         law.force_max(),
         counters.validity_excursions
     );
-    assert!(worst < 0.01);
+    // The README states 0.32 % and 29 flagged steps (asserted < 1 % and > 20).
+    assert!(worst < 0.005, "{worst}, README: 0.32 %");
+    assert!((26..=32).contains(&extended_steps), "README: 29");
     // The counter counts evaluations at the start of a step, the readout flags its end: the
     // first flagged step started inside the range.
     assert!(extended_steps > 20 && counters.validity_excursions + 1 >= extended_steps);

@@ -1,11 +1,11 @@
 //! A dynamic fingertip ball between a fixed floor and a kinematic plate, squeezed slowly to
 //! x = 0.8 per contact: the contact force equals the law's F(x) at every sample. The scene is
-//! `softgrip_bench::scenes::PlateSqueeze`, the one the benchmark tables squeeze.
+//! `softgrip_testkit::scenes::PlateSqueeze`, the one the benchmark tables squeeze.
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
-use softgrip_bench::scenes::{PlateSqueeze, RADIUS as R, fingertip};
 use softgrip_law::Level;
+use softgrip_testkit::scenes::{PlateSqueeze, RADIUS as R, fingertip};
 
 /// Worst errors of a squeeze at `speed` [m/s] (plate approach) with restitution `e`: (vs the
 /// law at half the approach, vs the law at the readout's delta, x reached, substeps total).
@@ -15,7 +15,7 @@ fn squeeze(restitution: f64, speed: f64, tolerance: f64) -> (f64, f64, f64, u64)
     // right: nothing damps it), which is not the quasi-static squeeze this test is about.
     let mut s = PlateSqueeze::new(fingertip(Level::fit(), restitution).build().unwrap());
 
-    let dt = s.world.params.dt as f64;
+    let dt = s.world.physics.integration_parameters.dt as f64;
     let (mut worst, mut worst_geom, mut samples) = (0.0f64, 0.0f64, 0);
     let mut x_reached = 0.0;
     for _ in 0..2000 {
@@ -66,7 +66,11 @@ fn quasi_static_squeeze_matches_law() {
         "quasi-static squeeze (e = 1, 2 mm/s): to x = {x_reached:.3}, worst |F/F_law - 1| = {worst:.2e} (half approach), {worst_geom:.2e} (readout delta); substeps total {substeps}"
     );
     assert!(x_reached > 0.79);
-    assert!(worst_geom < 0.005);
+    // The READMEs state 0.41 % vs the law at half the approach (every sample is asserted
+    // < 0.5 % above: the imbalance m g / 2F of the ball's weight) and 0.05 % vs the law at the
+    // readout's delta: 0.1 % on that one (was 0.5 %, which a 10x regression passed).
+    assert!(worst < 0.005);
+    assert!(worst_geom < 0.001, "{worst_geom}, README: 0.05 %");
 }
 
 /// A dissipative fingertip (e = 0.5 at 1 m/s) squeezed at 5 mm/s reads the elastic law: the
@@ -79,5 +83,9 @@ fn slow_squeeze_with_dissipation_reads_elastic_law() {
         "squeeze (e = 0.5, 5 mm/s): to x = {x_reached:.3}, worst |F/F_law - 1| = {worst:.2e} (half approach), {worst_geom:.2e} (readout delta); substeps total {substeps}"
     );
     assert!(x_reached > 0.79);
-    assert!(worst < 0.01 && worst_geom < 0.01);
+    // The README states 0.35 % and 0.33 % (the damping's alpha d delta/dt); was 1 %.
+    assert!(
+        worst < 0.005 && worst_geom < 0.005,
+        "{worst} {worst_geom}, README: 0.35 %, 0.33 %"
+    );
 }

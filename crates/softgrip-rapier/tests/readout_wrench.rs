@@ -1,10 +1,10 @@
-//! `SoftContact::wrench_about`: the contact's force and torque on a fingertip resting on the
+//! `TipContact::wrench_about`: the contact's force and torque on a fingertip resting on the
 //! ground, about its centre and about a point beside it.
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
-use softgrip_bench::scenes::{BallDrop, G, fingertip};
 use softgrip_law::Level;
+use softgrip_testkit::scenes::{BallDrop, G, fingertip};
 
 #[test]
 fn wrench_of_a_resting_fingertip() {
@@ -16,7 +16,7 @@ fn wrench_of_a_resting_fingertip() {
     let contacts = s.world.soft.contacts();
     assert_eq!(contacts.len(), 1);
     let c = &contacts[0];
-    let t = s.world.bodies[s.body].translation();
+    let t = s.world.physics.bodies[s.body].translation();
     let center = [t.x as f64, t.y as f64, t.z as f64];
     let weight = s.mass * G;
 

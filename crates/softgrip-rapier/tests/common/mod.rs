@@ -28,15 +28,15 @@ pub fn dynamic_tip(
     rho: f32,
     tip: SoftFingertip,
 ) -> (RigidBodyHandle, ColliderHandle) {
-    let body = world.bodies.insert(
+    let body = world.physics.bodies.insert(
         RigidBodyBuilder::dynamic()
             .translation(pos)
             .can_sleep(false),
     );
-    let co = world.colliders.insert_with_parent(
+    let co = world.physics.colliders.insert_with_parent(
         ColliderBuilder::ball(tip.radius() as f32).density(rho),
         body,
-        &mut world.bodies,
+        &mut world.physics.bodies,
     );
     world.register(co, tip).unwrap();
     (body, co)
@@ -49,12 +49,13 @@ pub fn kinematic_tip(
     tip: SoftFingertip,
 ) -> (RigidBodyHandle, ColliderHandle) {
     let body = world
+        .physics
         .bodies
         .insert(RigidBodyBuilder::kinematic_position_based().translation(pos));
-    let co = world.colliders.insert_with_parent(
+    let co = world.physics.colliders.insert_with_parent(
         ColliderBuilder::ball(tip.radius() as f32),
         body,
-        &mut world.bodies,
+        &mut world.physics.bodies,
     );
     world.register(co, tip).unwrap();
     (body, co)
@@ -62,7 +63,7 @@ pub fn kinematic_tip(
 
 /// Moves a kinematic body to `pos` over the next step.
 pub fn move_to(world: &mut SoftWorld, body: RigidBodyHandle, pos: Vector) {
-    world.bodies[body].set_next_kinematic_translation(pos);
+    world.physics.bodies[body].set_next_kinematic_translation(pos);
 }
 
 /// Smoothstep 0 -> 1 over s in [0, 1] (zero velocity at both ends).
@@ -73,7 +74,7 @@ pub fn smoothstep(s: f64) -> f64 {
 
 /// `true` if every pose and velocity in the world is finite.
 pub fn all_finite(world: &SoftWorld) -> bool {
-    world.bodies.iter().all(|(_, rb)| {
+    world.physics.bodies.iter().all(|(_, rb)| {
         rb.translation().is_finite()
             && rb.rotation().is_finite()
             && rb.linvel().is_finite()
@@ -136,23 +137,25 @@ pub const GRASP_R: f64 = 0.01;
 
 pub fn grasp(spec: &GraspSpec) -> Grasp {
     let mut world = SoftWorld::new();
-    world.params.dt = spec.dt;
+    world.physics.integration_parameters.dt = spec.dt;
     world
+        .physics
         .colliders
         .insert(ColliderBuilder::cuboid(1.0, 0.1, 1.0).translation(Vector::new(0.0, -0.1, 0.0)));
     let h = spec.half as f32;
     let object = world
+        .physics
         .bodies
         .insert(RigidBodyBuilder::dynamic().translation(Vector::new(0.0, h, 0.0)));
     let i = spec.mass * (2.0 * h * h) / 3.0; // solid cube about its centre
-    world.colliders.insert_with_parent(
+    world.physics.colliders.insert_with_parent(
         ColliderBuilder::cuboid(h, h, h).mass_properties(MassProperties::new(
             Vector::new(0.0, 0.0, spec.com_offset_z),
             spec.mass,
             Vector::splat(i),
         )),
         object,
-        &mut world.bodies,
+        &mut world.physics.bodies,
     );
     let make_tip = || {
         SoftFingertip::builder(GRASP_R)
@@ -207,17 +210,19 @@ impl Grasp {
 
     /// Jaw height [m].
     pub fn jaw_y(&self) -> f64 {
-        self.world.bodies[self.jaws[0]].translation().y as f64
+        self.world.physics.bodies[self.jaws[0]].translation().y as f64
     }
 
     /// Box centre height [m].
     pub fn object_y(&self) -> f64 {
-        self.world.bodies[self.object].translation().y as f64
+        self.world.physics.bodies[self.object].translation().y as f64
     }
 
     /// Rotation angle of the box from its start [deg].
     pub fn object_turn_deg(&self) -> f64 {
-        let (_, angle) = self.world.bodies[self.object].rotation().to_axis_angle();
+        let (_, angle) = self.world.physics.bodies[self.object]
+            .rotation()
+            .to_axis_angle();
         let a = angle as f64;
         let a = if a > std::f64::consts::PI {
             2.0 * std::f64::consts::PI - a
@@ -230,7 +235,7 @@ impl Grasp {
     /// Runs the standard schedule: close over 0.5 s, settle 0.5 s, lift `lift` [m] over 1 s,
     /// hold `hold` [s]. `each` is called after every step with the phase name.
     pub fn run(&mut self, lift: f64, hold: f64, mut each: impl FnMut(&Grasp, &str)) {
-        let dt = self.world.params.dt as f64;
+        let dt = self.world.physics.integration_parameters.dt as f64;
         let n = |t: f64| (t / dt).round() as usize;
         for i in 1..=n(0.5) {
             let s = smoothstep(i as f64 / n(0.5) as f64);

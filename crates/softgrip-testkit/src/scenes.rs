@@ -13,7 +13,7 @@ use rapier3d::prelude::*;
 use softgrip_law::{ContactLaw, Level, Material};
 use softgrip_rapier::{SoftFingertip, SoftFingertipBuilder, SoftWorld};
 
-/// Fingertip radius of the scenes [m].
+/// Fingertip radius of the scenes \[m\].
 pub const RADIUS: f64 = 0.01;
 /// Gravity [m/s^2], the magnitude of [`SoftWorld`]'s default (along -y).
 pub const G: f64 = 9.81;
@@ -32,6 +32,7 @@ pub fn fingertip(level: Level, restitution: f64) -> SoftFingertipBuilder {
 /// Inserts the rigid half-space `y <= 0` (normal +y) as a fixed collider.
 pub fn half_space_ground(world: &mut SoftWorld) -> ColliderHandle {
     world
+        .physics
         .colliders
         .insert(ColliderBuilder::new(SharedShape::halfspace(Vector::Y)))
 }
@@ -58,42 +59,42 @@ pub struct PlateSqueeze {
 }
 
 impl PlateSqueeze {
-    /// Half-thickness of the plate [m].
+    /// Half-thickness of the plate \[m\].
     pub const HALF: f32 = 0.005;
 
     /// The scene with `tip` as the ball (of the tip's radius).
     pub fn new(tip: SoftFingertip) -> Self {
         let r = tip.radius();
         let mut world = SoftWorld::new();
-        let floor = world.colliders.insert(
+        let floor = world.physics.colliders.insert(
             ColliderBuilder::cuboid(0.1, 0.01, 0.1).translation(Vector::new(0.0, -0.01, 0.0)),
         );
         let law = tip.law().clone();
         let mass = DENSITY as f64 * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3);
         let d0 = 0.02 * r;
         let d_eq = d0 + mass * G / (2.0 * law.response(d0).stiffness);
-        let ball_body = world.bodies.insert(
+        let ball_body = world.physics.bodies.insert(
             RigidBodyBuilder::dynamic()
                 .translation(Vector::new(0.0, (r - d_eq) as f32, 0.0))
                 .can_sleep(false),
         );
-        let ball = world.colliders.insert_with_parent(
+        let ball = world.physics.colliders.insert_with_parent(
             ColliderBuilder::ball(r as f32).density(DENSITY),
             ball_body,
-            &mut world.bodies,
+            &mut world.physics.bodies,
         );
         let half = Self::HALF;
-        let plate_body = world.bodies.insert(
+        let plate_body = world.physics.bodies.insert(
             RigidBodyBuilder::kinematic_position_based().translation(Vector::new(
                 0.0,
                 (2.0 * r - 2.0 * d0) as f32 + half,
                 0.0,
             )),
         );
-        let plate = world.colliders.insert_with_parent(
+        let plate = world.physics.colliders.insert_with_parent(
             ColliderBuilder::cuboid(0.05, half, 0.05),
             plate_body,
-            &mut world.bodies,
+            &mut world.physics.bodies,
         );
         world
             .register(ball, tip)
@@ -109,15 +110,15 @@ impl PlateSqueeze {
         }
     }
 
-    /// Height of the plate's bottom face [m] (the floor's top face is at 0).
+    /// Height of the plate's bottom face \[m\] (the floor's top face is at 0).
     pub fn plate_bottom(&self) -> f64 {
-        self.world.bodies[self.plate_body].translation().y as f64 - Self::HALF as f64
+        self.world.physics.bodies[self.plate_body].translation().y as f64 - Self::HALF as f64
     }
 
-    /// Sets the plate's next kinematic position `step` [m] below its current one (reached at
+    /// Sets the plate's next kinematic position `step` \[m\] below its current one (reached at
     /// the end of the next `world.step()`).
     pub fn lower_plate(&mut self, step: f64) {
-        let plate = &mut self.world.bodies[self.plate_body];
+        let plate = &mut self.world.physics.bodies[self.plate_body];
         let y = plate.translation().y as f64;
         plate.set_next_kinematic_translation(Vector::new(0.0, (y - step) as f32, 0.0));
     }
@@ -132,35 +133,35 @@ pub struct BallDrop {
     pub body: RigidBodyHandle,
     /// The fingertip's law.
     pub law: ContactLaw,
-    /// The ball's mass as rapier computed it [kg].
+    /// The ball's mass as rapier computed it \[kg\].
     pub mass: f64,
-    /// The ball's radius [m].
+    /// The ball's radius \[m\].
     pub radius: f64,
 }
 
 impl BallDrop {
-    /// The scene with `tip` as the ball (of the tip's radius), dropped from `h0` [m].
+    /// The scene with `tip` as the ball (of the tip's radius), dropped from `h0` \[m\].
     pub fn new(tip: SoftFingertip, h0: f64) -> Self {
         let r = tip.radius();
         let mut world = SoftWorld::new();
         half_space_ground(&mut world);
-        let body = world.bodies.insert(
+        let body = world.physics.bodies.insert(
             RigidBodyBuilder::dynamic()
                 .translation(Vector::new(0.0, (r + h0) as f32, 0.0))
                 .can_sleep(false),
         );
-        let ball = world.colliders.insert_with_parent(
+        let ball = world.physics.colliders.insert_with_parent(
             ColliderBuilder::ball(r as f32)
                 .density(DENSITY)
                 .friction(0.0),
             body,
-            &mut world.bodies,
+            &mut world.physics.bodies,
         );
         let law = tip.law().clone();
         world
             .register(ball, tip)
             .expect("invariant: a ball of the fingertip's radius");
-        let mass = world.bodies[body].mass() as f64;
+        let mass = world.physics.bodies[body].mass() as f64;
         Self {
             world,
             body,
@@ -174,21 +175,26 @@ impl BallDrop {
     /// `num_solver_iterations` passes of symplectic Euler, whose stored velocity lags the true
     /// one by `g dt / (2N)`: this is `v_y + g dt / (2N)` with g = -[`G`] y.
     pub fn true_velocity_y(&self) -> f64 {
-        let dt = self.world.params.dt as f64;
-        let n = self.world.params.num_solver_iterations.max(1) as f64;
-        self.world.bodies[self.body].linvel().y as f64 - 0.5 * G * dt / n
+        let dt = self.world.physics.integration_parameters.dt as f64;
+        let n = self
+            .world
+            .physics
+            .integration_parameters
+            .num_solver_iterations
+            .max(1) as f64;
+        self.world.physics.bodies[self.body].linvel().y as f64 - 0.5 * G * dt / n
     }
 
-    /// Height of the ball's lowest point above the ground [m] (negative in contact).
+    /// Height of the ball's lowest point above the ground \[m\] (negative in contact).
     pub fn gap(&self) -> f64 {
-        self.world.bodies[self.body].translation().y as f64 - self.radius
+        self.world.physics.bodies[self.body].translation().y as f64 - self.radius
     }
 
-    /// Energy of the ball [J] with the [true velocity](Self::true_velocity_y):
+    /// Energy of the ball \[J\] with the [true velocity](Self::true_velocity_y):
     /// `E = m/2 |v + g dt/(2N)|^2 + m g y + W(delta)`, exactly conserved in free flight under
     /// constant gravity.
     pub fn energy(&self) -> f64 {
-        let rb = &self.world.bodies[self.body];
+        let rb = &self.world.physics.bodies[self.body];
         let v = rb.linvel();
         let vy = self.true_velocity_y();
         let y = rb.translation().y as f64;
