@@ -1,14 +1,13 @@
 //! The finite-element reference of `tests/data/fe/` (CalculiX, compressible neo-Hookean
-//! hemisphere, R = 1 mm, mu = 1 MPa), embedded in the binary and normalised like the law.
+//! hemisphere, R = 1 mm, mu = 1 MPa), as `softgrip bench-law` uses it: the data sets it plots,
+//! loaded through `softgrip-fe` (which embeds the files and parses them) and normalised like
+//! the law.
 //!
 //! Units of the files: `force_N` [N], radii [mm]. With R = 1 mm the normalised force is
 //! `f = F / (E* R^2) = force_N / E*[MPa]`, `E* = 2 mu (1 + nu) / (1 - nu^2)`, and the radius in
 //! mm is `a / R`.
 
-use anyhow::{Context, Result, bail};
-
-/// Shear modulus of the FE runs, mu [MPa].
-const SHEAR_MODULUS_MPA: f64 = 1.0;
+use anyhow::{Context, Result};
 
 /// One embedded FE data set.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -56,14 +55,6 @@ impl Dataset {
         }
     }
 
-    /// Poisson ratio of the runs [-].
-    pub fn nu(self) -> f64 {
-        match self {
-            Self::ForceNu03 | Self::FullNu03 => 0.3,
-            Self::ForceNu049 => 0.49,
-        }
-    }
-
     /// File name in `tests/data/fe/`.
     pub fn file_name(self) -> &'static str {
         match self {
@@ -73,66 +64,26 @@ impl Dataset {
         }
     }
 
-    fn text(self) -> &'static str {
-        match self {
-            Self::ForceNu03 => include_str!("../../../tests/data/fe/force_nu0.3.csv"),
-            Self::ForceNu049 => include_str!("../../../tests/data/fe/force_nu0.49.csv"),
-            Self::FullNu03 => include_str!("../../../tests/data/fe/full_nu0.3.csv"),
-        }
-    }
-
-    /// Effective modulus of the runs, E* = 2 mu (1 + nu) / (1 - nu^2) [MPa].
-    pub fn effective_modulus_mpa(self) -> f64 {
-        let nu = self.nu();
-        2.0 * SHEAR_MODULUS_MPA * (1.0 + nu) / (1.0 - nu * nu)
-    }
-
-    /// Parses the embedded file and normalises it.
+    /// Loads the embedded file (through `softgrip-fe`), normalised.
     pub fn load(self) -> Result<FeCurve> {
-        let points = parse(self.text(), self.effective_modulus_mpa())
-            .with_context(|| format!("FE reference {}", self.file_name()))?;
+        let file = softgrip_fe::file(self.file_name())
+            .with_context(|| format!("FE reference {} is not embedded", self.file_name()))?;
+        let points = file
+            .points()
+            .with_context(|| format!("FE reference {}", self.file_name()))?
+            .into_iter()
+            .map(|p| FePoint {
+                x: p.x,
+                force_norm: p.force_norm,
+                radius_norm: p.radius_norm,
+                min_element_j: p.min_element_j,
+            })
+            .collect();
         Ok(FeCurve {
             dataset: self,
             points,
         })
     }
-}
-
-/// Parses an FE CSV with columns `delta_over_R`, `force_N`, a radius column
-/// (`contact_radius_mm` or `a_lin_mm...`) and optionally `min_element_J`; normalises the force
-/// by `e_star_mpa`.
-pub fn parse(text: &str, e_star_mpa: f64) -> Result<Vec<FePoint>> {
-    let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-    let header: Vec<&str> = lines.next().context("empty file")?.split(',').collect();
-    let column = |prefix: &str| header.iter().position(|h| h.trim().starts_with(prefix));
-    let (Some(ix), Some(iforce), Some(iradius)) = (
-        column("delta_over_R"),
-        column("force_N"),
-        column("contact_radius_mm").or_else(|| column("a_lin_mm")),
-    ) else {
-        bail!("header lacks delta_over_R, force_N or a radius column: {header:?}");
-    };
-    let ij = column("min_element_J");
-    let mut points = Vec::new();
-    for (n, line) in lines.enumerate() {
-        let fields: Vec<&str> = line.split(',').collect();
-        let value = |i: usize| -> Result<f64> {
-            let s = fields.get(i).context("missing field")?;
-            s.trim()
-                .parse::<f64>()
-                .with_context(|| format!("`{s}` is not a number"))
-        };
-        let row = || -> Result<FePoint> {
-            Ok(FePoint {
-                x: value(ix)?,
-                force_norm: value(iforce)? / e_star_mpa,
-                radius_norm: value(iradius)?,
-                min_element_j: ij.map(value).transpose()?,
-            })
-        };
-        points.push(row().with_context(|| format!("data line {}", n + 1))?);
-    }
-    Ok(points)
 }
 
 #[cfg(test)]
@@ -155,12 +106,5 @@ mod tests {
         // FE is 1-3.5 % above Hertz at small x (MODEL.md).
         let ratio = f03.points[0].force_norm / (4.0 / 3.0 * 0.01f64.powf(1.5));
         assert!(ratio > 1.01 && ratio < 1.05, "{ratio}");
-    }
-
-    #[test]
-    fn malformed_lines_are_reported() {
-        let err = parse("delta_over_R,force_N,contact_radius_mm\n0.1,abc,0.3\n", 1.0)
-            .expect_err("bad number");
-        assert!(format!("{err:#}").contains("data line 1"));
     }
 }

@@ -48,12 +48,49 @@ pub enum Error {
     ForceOutOfRange {
         /// The level that was queried.
         level: LevelKind,
-        /// The force that was asked for [N].
+        /// The force that was asked for \[N\].
         force: f64,
-        /// The largest force inside the validity range [N].
+        /// The largest force inside the validity range \[N\].
         force_max: f64,
         /// The compression ratio at which `force_max` is reached.
         x_max: f64,
+    },
+    /// A sample of a measured curve ([`crate::TabulatedCurve`]) is invalid, or the table as a
+    /// whole is (too short, columns of different lengths: then `index` is `None` and `value` is
+    /// the count).
+    #[error("`{field}{}` must be {range}, got {value}", index_suffix(.index))]
+    InvalidTable {
+        /// The column: `delta_m` \[m\] or `force_n` \[N\].
+        field: &'static str,
+        /// The sample's index, if one sample is at fault: in the column as given to
+        /// [`crate::TabulatedCurve::try_new`], or, from [`crate::ContactLaw::tabulated`], in
+        /// [`crate::TabulatedCurve::delta_m`] (which starts at the origin).
+        index: Option<usize>,
+        /// The offending value (or count).
+        value: f64,
+        /// The valid range, with its unit.
+        range: String,
+    },
+    /// A level that needs data, not just parameters ([`crate::Level::Tabulated`],
+    /// [`crate::Level::Custom`]), was passed to [`crate::ContactLaw::try_new`].
+    #[error("level `{level}` needs more than parameters: {hint}")]
+    LevelNeedsData {
+        /// The level that was asked for.
+        level: LevelKind,
+        /// How to build it.
+        hint: &'static str,
+    },
+    /// A user's [`crate::NormalisedLaw`] failed the checks of [`crate::ContactLaw::custom`].
+    #[error("custom law: {quantity} at x = {x} must be {range}, got {value}")]
+    InvalidCustomLaw {
+        /// What was checked: `x_max`, `force`, `stiffness`, `energy` or `radius`.
+        quantity: &'static str,
+        /// The compression ratio where it failed [-].
+        x: f64,
+        /// The value the law returned.
+        value: f64,
+        /// What it must be.
+        range: &'static str,
     },
     /// Material fitting was given too little or inconsistent data.
     #[error("material fit: {0}")]
@@ -62,6 +99,11 @@ pub enum Error {
 
 /// `Result` with this crate's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// `[i]` for a sample's index, nothing for the whole table.
+fn index_suffix(index: &Option<usize>) -> String {
+    index.map(|i| format!("[{i}]")).unwrap_or_default()
+}
 
 /// Checks that `value` is finite and strictly positive.
 pub(crate) fn positive(field: &'static str, value: f64, range: &'static str) -> Result<f64> {

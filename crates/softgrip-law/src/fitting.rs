@@ -11,9 +11,9 @@ use crate::material::{ContactParams, Material};
 /// One measured point of a squeeze.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
-    /// Compression delta [m] (for two plates: half the plate approach), finite and >= 0.
+    /// Compression delta \[m\] (for two plates: half the plate approach), finite and >= 0.
     pub delta: f64,
-    /// Measured force F [N], finite.
+    /// Measured force F \[N\], finite.
     pub force: f64,
 }
 
@@ -38,7 +38,7 @@ pub struct MaterialFit {
     pub material: Material,
     /// Number of samples with `x <= x_fit` used for the fit.
     pub fitted: usize,
-    /// Compressions [m] of the samples past `x_fit`, where the levels are compared.
+    /// Compressions \[m\] of the samples past `x_fit`, where the levels are compared.
     pub predicted: Vec<f64>,
     /// One entry per level of [`Level::ALL`] that can be built for this nu.
     pub residuals: Vec<LevelResidual>,
@@ -111,37 +111,40 @@ pub fn fit_material(
         .iter()
         .filter(|s| s.delta / radius > x_fit && s.force != 0.0)
         .collect();
-    let mut residuals = Vec::new();
-    for level in Level::ALL {
-        let Ok(law) = ContactLaw::try_new(params, level) else {
-            continue;
-        };
-        let relative_errors: Vec<Option<f64>> = rest
-            .iter()
-            .map(|s| {
-                law.try_response(s.delta)
-                    .ok()
-                    .map(|r| r.force / s.force - 1.0)
-            })
-            .collect();
-        let inside: Vec<f64> = relative_errors.iter().flatten().copied().collect();
-        let max_abs_error = inside.iter().fold(0.0_f64, |m, e| m.max(e.abs()));
-        let rms_error = if inside.is_empty() {
-            0.0
-        } else {
-            (inside.iter().map(|e| e * e).sum::<f64>() / inside.len() as f64).sqrt()
-        };
-        residuals.push(LevelResidual {
-            level,
-            relative_errors,
-            max_abs_error,
-            rms_error,
-        });
-    }
+    let residuals = Level::ALL
+        .into_iter()
+        .filter_map(|level| ContactLaw::try_new(params, level).ok())
+        .map(|law| residual(&law, &rest))
+        .collect();
     Ok(MaterialFit {
         material,
         fitted,
         predicted: rest.iter().map(|s| s.delta).collect(),
         residuals,
     })
+}
+
+/// How `law` predicts the samples `rest`.
+fn residual(law: &ContactLaw, rest: &[&Sample]) -> LevelResidual {
+    let relative_errors: Vec<Option<f64>> = rest
+        .iter()
+        .map(|s| {
+            law.try_response(s.delta)
+                .ok()
+                .map(|r| r.force / s.force - 1.0)
+        })
+        .collect();
+    let inside: Vec<f64> = relative_errors.iter().flatten().copied().collect();
+    let max_abs_error = inside.iter().fold(0.0_f64, |m, e| m.max(e.abs()));
+    let rms_error = if inside.is_empty() {
+        0.0
+    } else {
+        (inside.iter().map(|e| e * e).sum::<f64>() / inside.len() as f64).sqrt()
+    };
+    LevelResidual {
+        level: law.level(),
+        relative_errors,
+        max_abs_error,
+        rms_error,
+    }
 }

@@ -2,20 +2,15 @@
 
 use std::sync::Arc;
 
+use crate::curve::{Curve, finite_non_negative};
 use crate::error::{Error, Result};
 use crate::level::{Level, LevelKind};
-use crate::levels::Normalised;
-use crate::levels::auto::{Auto, Reference};
-use crate::levels::calibrated::Calibrated;
-use crate::levels::fit::Fit;
-use crate::levels::hertz::Hertz;
-use crate::levels::incompressible::Incompressible;
-use crate::levels::linear::Linear;
-use crate::levels::neo_hookean::NeoHookeanExact;
-use crate::levels::nh_table::NeoHookeanTable;
-use crate::levels::tatara::Tatara;
+use crate::levels::NormalisedLaw;
+use crate::levels::tabulated::Tabulated;
 use crate::material::ContactParams;
 use crate::pressure::ContactPatch;
+use crate::root::{Probe, Stop, newton_bracketed};
+use crate::tabulated::TabulatedCurve;
 
 /// Where a hot-path evaluation fell.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -33,7 +28,7 @@ pub enum Regime {
 /// Normal force and stiffness at one compression: all that a time step needs.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct NormalResponse {
-    /// Normal force F [N], >= 0.
+    /// Normal force F \[N\], >= 0.
     pub force: f64,
     /// Stiffness K = dF/d delta [N/m], >= 0: the exact derivative of `force`.
     pub stiffness: f64,
@@ -46,15 +41,15 @@ pub struct NormalResponse {
 /// Everything the law says about one compression (checked API).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactState {
-    /// Compression delta [m].
+    /// Compression delta \[m\].
     pub delta: f64,
     /// Compression ratio x = delta / R [-].
     pub x: f64,
-    /// Normal force F [N].
+    /// Normal force F \[N\].
     pub force: f64,
     /// Stiffness dF/d delta [N/m].
     pub stiffness: f64,
-    /// Stored elastic energy W = integral of F d delta [J].
+    /// Stored elastic energy W = integral of F d delta \[J\].
     pub energy: f64,
     /// Contact radius, mean and peak pressure.
     pub patch: ContactPatch,
@@ -62,55 +57,8 @@ pub struct ContactState {
     pub level: LevelKind,
 }
 
-/// The chosen level, dispatched statically on the hot path.
-#[derive(Debug, Clone)]
-enum Curve {
-    Linear(Linear),
-    Hertz(Hertz),
-    Fit(Fit),
-    Incompressible(Incompressible),
-    NeoHookean(Arc<NeoHookeanTable>),
-    NeoHookeanExact(NeoHookeanExact),
-    Tatara(Tatara),
-    Calibrated(Calibrated),
-    Auto(Arc<Auto>),
-}
-
-impl Curve {
-    fn as_dyn(&self) -> &dyn Normalised {
-        match self {
-            Curve::Linear(c) => c,
-            Curve::Hertz(c) => c,
-            Curve::Fit(c) => c,
-            Curve::Incompressible(c) => c,
-            Curve::NeoHookean(c) => c.as_ref(),
-            Curve::NeoHookeanExact(c) => c,
-            Curve::Tatara(c) => c,
-            Curve::Calibrated(c) => c,
-            Curve::Auto(c) => c.as_ref(),
-        }
-    }
-
-    /// Normalised force and stiffness inside the range, with the level that computed them.
-    #[inline(always)]
-    fn force_stiffness(&self, x: f64) -> (f64, f64, LevelKind) {
-        let with = |(f, k): (f64, f64), kind| (f, k, kind);
-        match self {
-            Curve::Linear(c) => with(c.force_stiffness(x), LevelKind::Linear),
-            Curve::Hertz(c) => with(c.force_stiffness(x), LevelKind::Hertz),
-            Curve::Fit(c) => with(c.force_stiffness(x), LevelKind::Fit),
-            Curve::Incompressible(c) => with(c.force_stiffness(x), LevelKind::Incompressible),
-            Curve::NeoHookean(c) => with(c.force_stiffness(x), LevelKind::NeoHookean),
-            Curve::NeoHookeanExact(c) => with(c.force_stiffness(x), LevelKind::NeoHookeanExact),
-            Curve::Tatara(c) => with(c.force_stiffness(x), LevelKind::Tatara),
-            Curve::Calibrated(c) => with(c.force_stiffness(x), LevelKind::Calibrated),
-            Curve::Auto(c) => c.force_stiffness_kind(x),
-        }
-    }
-}
-
 /// Compression ratio past which the extension is frozen (see [`ContactLaw`]).
-const X_FROZEN: f64 = 4.0;
+pub(crate) const X_FROZEN: f64 = 4.0;
 
 /// The normalised law at the end of its validity range, where the extension starts.
 #[derive(Debug, Clone, Copy)]
@@ -157,7 +105,7 @@ pub struct ContactLaw {
     level: Level,
     curve: Curve,
     inv_radius: f64,
-    /// E* R^2 [N]
+    /// E* R^2 \[N\]
     force_scale: f64,
     /// E* R [N/m]
     stiffness_scale: f64,
@@ -165,58 +113,74 @@ pub struct ContactLaw {
 }
 
 impl ContactLaw {
-    /// Binds `level` to `params`. Fails if the level's settings are invalid or the level cannot
-    /// be used with this Poisson ratio (the compressible theory needs `nu < 0.5`).
+    /// Binds the built-in `level` to `params`. Fails if the level's settings are invalid, if
+    /// the level cannot be used with this Poisson ratio (the compressible theory needs
+    /// `nu < 0.5`), or for [`Level::Tabulated`] and [`Level::Custom`], which need data
+    /// ([`Error::LevelNeedsData`]: use [`tabulated`](Self::tabulated), [`custom`](Self::custom)).
     pub fn try_new(params: ContactParams, level: Level) -> Result<Self> {
-        level.validate()?;
-        let nu = params.poisson_ratio();
-        let needs_compressible = |kind| {
-            if nu < 0.5 {
-                Ok(())
-            } else {
-                Err(Error::IncompatibleLevel {
-                    level: kind,
-                    nu,
-                    reason: "the compressible neo-Hookean theory needs nu < 0.5 (use `incompressible` at nu = 0.5)",
-                })
-            }
-        };
-        let curve = match level {
-            Level::Linear { match_x } => Curve::Linear(Linear::new(match_x)),
-            Level::Hertz => Curve::Hertz(Hertz),
-            Level::Fit { k } => Curve::Fit(Fit::new(k, nu)),
-            Level::Incompressible => Curve::Incompressible(Incompressible),
-            Level::NeoHookean => {
-                needs_compressible(LevelKind::NeoHookean)?;
-                Curve::NeoHookean(Arc::new(NeoHookeanTable::new(nu)))
-            }
-            Level::NeoHookeanExact => {
-                needs_compressible(LevelKind::NeoHookeanExact)?;
-                Curve::NeoHookeanExact(NeoHookeanExact::new(nu))
-            }
-            Level::Tatara => Curve::Tatara(Tatara::new(nu)),
-            Level::Calibrated => Curve::Calibrated(Calibrated::try_new(nu)?),
-            Level::Auto { tolerance } => {
-                let reference = if nu < 0.5 {
-                    Reference::Table(Arc::new(NeoHookeanTable::new(nu)))
-                } else {
-                    Reference::Incompressible
-                };
-                Curve::Auto(Arc::new(Auto::new(nu, tolerance, reference)))
-            }
-        };
+        let curve = Curve::try_new(level, params.poisson_ratio())?;
+        Ok(Self::bind(params, level, curve))
+    }
+
+    /// The `tabulated` level: a user's measured squeeze curve (`delta` \[m\], `F` \[N\]) for this
+    /// contact, interpolated by a monotone cubic Hermite (PCHIP) so that the force is
+    /// non-decreasing and C1 through every sample; stiffness and energy are the exact derivative
+    /// and integral of that interpolant, the radius is Hertz's radius of the measured force,
+    /// `a = (3 F R / (4 E*))^(1/3)` (the force does not depend on `params`, the radius does,
+    /// through E* and R). Valid to the table's last compression; past it the hot path extends
+    /// by the tangent ([`Regime::Extended`]) and the checked API returns
+    /// [`Error::OutOfRange`].
+    ///
+    /// Fails if the table reaches past `x = delta/R = 4` or its values overflow once normalised
+    /// by `params` ([`Error::InvalidTable`]).
+    ///
+    /// ```
+    /// use softgrip_law::{ContactLaw, ContactParams, Material, Regime, TabulatedCurve};
+    /// let tip = ContactParams::try_new(Material::try_new(3.0e6, 0.49)?, 0.010)?;
+    /// // A measured squeeze: 1, 2, 3, 4 mm and the forces at them.
+    /// let curve = TabulatedCurve::try_new(vec![0.001, 0.002, 0.003, 0.004], vec![1.3, 3.9, 7.6, 12.6])?;
+    /// let law = ContactLaw::tabulated(tip, curve)?;
+    /// assert!((law.response(0.002).force - 3.9).abs() < 1e-12); // through every sample
+    /// let f = law.response(0.0025).force; // between them, monotone
+    /// assert!(f > 3.9 && f < 7.6);
+    /// assert_eq!(law.response(0.005).regime, Regime::Extended);
+    /// assert!(law.evaluate(0.005).is_err()); // past the table's end
+    /// # Ok::<(), softgrip_law::Error>(())
+    /// ```
+    pub fn tabulated(params: ContactParams, curve: TabulatedCurve) -> Result<Self> {
+        let r = params.radius();
+        let table = Tabulated::try_new(curve, params.effective_modulus() * r * r, r)?;
+        Ok(Self::bind(
+            params,
+            Level::Tabulated,
+            Curve::Tabulated(Arc::new(table)),
+        ))
+    }
+
+    /// A user's own normalised law `law` bound to `params` ([`Level::Custom`]).
+    ///
+    /// Checked once: `x_max` finite in `(0, 4]`, and at 64 points of `(0, x_max]` the force,
+    /// stiffness, energy and radius finite and `>= 0` and the force and energy non-decreasing
+    /// ([`Error::InvalidCustomLaw`]); a sampled check, not a proof. On the hot path a value the
+    /// law returns NaN, infinite or negative becomes 0. See [`NormalisedLaw`] for an example.
+    pub fn custom(params: ContactParams, law: Arc<dyn NormalisedLaw>) -> Result<Self> {
+        check_custom(law.as_ref())?;
+        Ok(Self::bind(params, Level::Custom, Curve::Custom(law)))
+    }
+
+    fn bind(params: ContactParams, level: Level, curve: Curve) -> Self {
         let c = curve.as_dyn();
         let x = c.x_max();
-        let (f, k) = c.force_stiffness(x);
+        let (f, k, _) = curve.force_stiffness(x);
         let edge = Edge {
             x,
             f,
             k,
-            w: c.energy(x),
-            radius: c.radius(x),
+            w: finite_non_negative(c.energy(x)),
+            radius: finite_non_negative(c.radius(x)),
         };
         let (e, r) = (params.effective_modulus(), params.radius());
-        Ok(Self {
+        Self {
             params,
             level,
             curve,
@@ -224,7 +188,15 @@ impl ContactLaw {
             force_scale: e * r * r,
             stiffness_scale: e * r,
             edge,
-        })
+        }
+    }
+
+    /// For [`Level::Tabulated`]: the measured curve it was built from.
+    pub fn tabulated_curve(&self) -> Option<&TabulatedCurve> {
+        match &self.curve {
+            Curve::Tabulated(t) => Some(t.curve()),
+            _ => None,
+        }
     }
 
     /// The contact's parameters.
@@ -242,28 +214,21 @@ impl ContactLaw {
         self.edge.x
     }
 
-    /// Largest compression of the validity range, `x_max R` [m].
+    /// Largest compression of the validity range, `x_max R` \[m\].
     pub fn delta_max(&self) -> f64 {
         self.edge.x * self.params.radius()
     }
 
-    /// Force at the end of the validity range [N].
+    /// Force at the end of the validity range \[N\].
     pub fn force_max(&self) -> f64 {
         self.edge.f * self.force_scale
     }
 
     /// The level that serves compression ratio `x` (differs from the chosen level for `Auto`).
     pub fn kind_at(&self, x: f64) -> LevelKind {
-        match (&self.curve, self.level) {
-            (Curve::Auto(a), _) => a.kind_at(x.clamp(0.0, self.edge.x)),
-            (_, Level::Linear { .. }) => LevelKind::Linear,
-            (_, Level::Hertz) => LevelKind::Hertz,
-            (_, Level::Fit { .. }) => LevelKind::Fit,
-            (_, Level::Incompressible) => LevelKind::Incompressible,
-            (_, Level::NeoHookean) => LevelKind::NeoHookean,
-            (_, Level::NeoHookeanExact) => LevelKind::NeoHookeanExact,
-            (_, Level::Tatara) => LevelKind::Tatara,
-            (_, Level::Calibrated | Level::Auto { .. }) => LevelKind::Calibrated,
+        match &self.curve {
+            Curve::Auto(a) => a.kind_at(x.clamp(0.0, self.edge.x)),
+            curve => curve.kind(),
         }
     }
 
@@ -276,7 +241,7 @@ impl ContactLaw {
         }
     }
 
-    /// Hot path: normal force and stiffness at compression `delta` [m] (> 0 in contact).
+    /// Hot path: normal force and stiffness at compression `delta` \[m\] (> 0 in contact).
     ///
     /// Never fails and never returns NaN: `delta <= 0` is [`Regime::Separated`] (zero force),
     /// NaN or infinite `delta` is [`Regime::NonFinite`] (zero force), past `x_max` the
@@ -318,7 +283,7 @@ impl ContactLaw {
         }
     }
 
-    /// Stored elastic energy W(delta) [J], the exact integral of [`response`](Self::response)'s
+    /// Stored elastic energy W(delta) \[J\], the exact integral of [`response`](Self::response)'s
     /// force (extension included); 0 when separated or for non-finite input.
     pub fn energy(&self, delta: f64) -> f64 {
         let x = delta * self.inv_radius;
@@ -327,7 +292,7 @@ impl ContactLaw {
         }
         let e = &self.edge;
         let w = if x <= e.x {
-            self.curve.as_dyn().energy(x)
+            finite_non_negative(self.curve.as_dyn().energy(x))
         } else {
             let dx = x.min(X_FROZEN) - e.x;
             e.w + e.f * dx + 0.5 * e.k * dx * dx
@@ -335,7 +300,7 @@ impl ContactLaw {
         w * self.force_scale * self.params.radius()
     }
 
-    /// Contact radius and pressure at compression `delta` [m] (extension included; an empty
+    /// Contact radius and pressure at compression `delta` \[m\] (extension included; an empty
     /// patch when separated or for non-finite input). Costs more than the force: call it only
     /// when someone reads it.
     pub fn patch(&self, delta: f64) -> ContactPatch {
@@ -345,14 +310,14 @@ impl ContactLaw {
         }
         let e = &self.edge;
         let rho = if x <= e.x {
-            self.curve.as_dyn().radius(x)
+            finite_non_negative(self.curve.as_dyn().radius(x))
         } else {
             e.radius * (x.min(X_FROZEN) / e.x).sqrt()
         };
         ContactPatch::new(self.response(delta).force, rho * self.params.radius())
     }
 
-    /// Checked: the whole state at compression `delta` [m], finite and in
+    /// Checked: the whole state at compression `delta` \[m\], finite and in
     /// `[0, delta_max]`; a typed error otherwise.
     pub fn evaluate(&self, delta: f64) -> Result<ContactState> {
         let x = self.checked_x(delta)?;
@@ -369,7 +334,7 @@ impl ContactLaw {
         })
     }
 
-    /// Checked: force and stiffness only, at compression `delta` [m] in `[0, delta_max]`.
+    /// Checked: force and stiffness only, at compression `delta` \[m\] in `[0, delta_max]`.
     pub fn try_response(&self, delta: f64) -> Result<NormalResponse> {
         self.checked_x(delta)?;
         Ok(self.response(delta))
@@ -394,7 +359,7 @@ impl ContactLaw {
         Ok(x)
     }
 
-    /// Inverse: the compression delta [m] at which the law gives `force` [N] (finite, >= 0 and
+    /// Inverse: the compression delta \[m\] at which the law gives `force` \[N\] (finite, >= 0 and
     /// at most [`force_max`](Self::force_max)), to a relative accuracy of 1e-12.
     ///
     /// ```
@@ -427,29 +392,59 @@ impl ContactLaw {
         let x = match &self.curve {
             Curve::Tatara(t) => t.x_of_force(f_target),
             curve => {
-                // Safeguarded Newton on f(x) = f_target in [0, x_max]; f is increasing.
-                let (mut lo, mut hi) = (0.0, self.edge.x);
-                let mut x = (0.75 * f_target).powf(2.0 / 3.0).min(hi);
-                for _ in 0..200 {
+                // Safeguarded Newton on f(x) = f_target in [0, x_max]; f is non-decreasing.
+                let hi = self.edge.x;
+                let start = (0.75 * f_target).powf(2.0 / 3.0).min(hi);
+                let stop = Stop {
+                    step: 1e-14,
+                    width: Some(1e-15),
+                    max_iterations: 200,
+                };
+                newton_bracketed(0.0, hi, start, stop, |x| {
                     let (f, k, _) = curve.force_stiffness(x);
-                    if f < f_target {
-                        lo = x;
-                    } else {
-                        hi = x;
+                    Probe {
+                        below_root: f < f_target,
+                        step: (f - f_target) / k,
                     }
-                    let mut next = x - (f - f_target) / k;
-                    if !(next > lo && next < hi) {
-                        next = 0.5 * (lo + hi);
-                    }
-                    let done = (next - x).abs() <= 1e-14 * x || hi - lo <= 1e-15 * hi;
-                    x = next;
-                    if done {
-                        break;
-                    }
-                }
-                x
+                })
             }
         };
         Ok(x * self.params.radius())
     }
+}
+
+/// The checks of [`ContactLaw::custom`].
+fn check_custom(law: &dyn NormalisedLaw) -> Result<()> {
+    let bad = |quantity, x, value, range| {
+        Err(Error::InvalidCustomLaw {
+            quantity,
+            x,
+            value,
+            range,
+        })
+    };
+    let x_max = law.x_max();
+    if !(x_max > 0.0 && x_max <= X_FROZEN) {
+        return bad("x_max", x_max, x_max, "finite and in (0, 4]");
+    }
+    const POINTS: u32 = 64;
+    let (mut f_prev, mut w_prev) = (0.0, 0.0);
+    for i in 1..=POINTS {
+        let x = x_max * f64::from(i) / f64::from(POINTS);
+        let (f, k) = law.force_stiffness(x);
+        let (w, a) = (law.energy(x), law.radius(x));
+        for (quantity, v) in [("force", f), ("stiffness", k), ("energy", w), ("radius", a)] {
+            if !(v.is_finite() && v >= 0.0) {
+                return bad(quantity, x, v, "finite and >= 0");
+            }
+        }
+        if f < f_prev {
+            return bad("force", x, f, "non-decreasing in x");
+        }
+        if w < w_prev {
+            return bad("energy", x, w, "non-decreasing in x");
+        }
+        (f_prev, w_prev) = (f, w);
+    }
+    Ok(())
 }

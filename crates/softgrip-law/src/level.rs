@@ -45,6 +45,11 @@ pub enum Level {
     Tatara,
     /// softgrip's explicit correction fitted to the finite-element reference.
     Calibrated,
+    /// A user's measured squeeze curve, monotone cubic interpolation (the curve lives in the
+    /// law: build it with [`crate::ContactLaw::tabulated`]).
+    Tabulated,
+    /// A user's own [`crate::NormalisedLaw`] (build it with [`crate::ContactLaw::custom`]).
+    Custom,
     /// Per call, the cheapest of Hertz, fit, incompressible and the tabulated full theory whose
     /// error against the full theory is within `tolerance` at that `x`.
     Auto {
@@ -73,7 +78,8 @@ impl Level {
         }
     }
 
-    /// Every level with its default settings, in the order of [`LevelKind::ALL`] plus auto.
+    /// Every level that [`crate::ContactLaw::try_new`] builds from parameters alone, with its
+    /// default settings (not [`Level::Tabulated`] and [`Level::Custom`], which need data).
     pub const ALL: [Level; 9] = [
         Level::linear(),
         Level::Hertz,
@@ -97,6 +103,8 @@ impl Level {
             Level::NeoHookeanExact => "neo-hookean-exact",
             Level::Tatara => "tatara",
             Level::Calibrated => "calibrated",
+            Level::Tabulated => "tabulated",
+            Level::Custom => "custom",
             Level::Auto { .. } => "auto",
         }
     }
@@ -135,7 +143,8 @@ impl FromStr for Level {
     type Err = String;
 
     /// Parses a level name with default settings (`linear`, `hertz`, `fit`, `incompressible`,
-    /// `neo-hookean`, `neo-hookean-exact`, `tatara`, `calibrated`, `auto`).
+    /// `neo-hookean`, `neo-hookean-exact`, `tatara`, `calibrated`, `auto`; not `tabulated` and
+    /// `custom`, which need data).
     fn from_str(s: &str) -> std::result::Result<Self, Self::Err> {
         Level::ALL
             .iter()
@@ -167,6 +176,10 @@ pub enum LevelKind {
     Tatara,
     /// softgrip's calibrated correction.
     Calibrated,
+    /// A user's measured curve.
+    Tabulated,
+    /// A user's own normalised law.
+    Custom,
 }
 
 impl LevelKind {
@@ -181,10 +194,13 @@ impl LevelKind {
             LevelKind::NeoHookeanExact => "neo-hookean-exact",
             LevelKind::Tatara => "tatara",
             LevelKind::Calibrated => "calibrated",
+            LevelKind::Tabulated => "tabulated",
+            LevelKind::Custom => "custom",
         }
     }
 
-    /// A small stable code, for recordings (0 = linear ... 7 = calibrated).
+    /// A small stable code, for recordings (0 = linear ... 7 = calibrated, 8 = tabulated,
+    /// 9 = custom).
     pub fn code(&self) -> u8 {
         *self as u8
     }

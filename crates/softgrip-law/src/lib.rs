@@ -1,17 +1,23 @@
 #![doc = include_str!("../README.md")]
 
+mod curve;
 mod error;
 pub mod fitting;
 mod law;
 mod level;
 mod levels;
 mod material;
+mod normalised;
 mod pressure;
 mod quadrature;
+mod root;
+mod tabulated;
 
 pub use error::{Error, Result};
 pub use law::{ContactLaw, ContactState, NormalResponse, Regime};
 pub use level::{DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, Level, LevelKind};
 pub use levels::neo_hookean::neo_hookean_limit_point;
 pub use material::{ContactParams, Material};
+pub use normalised::NormalisedLaw;
 pub use pressure::ContactPatch;
+pub use tabulated::{MIN_TABULATED_SAMPLES, TabulatedCurve};

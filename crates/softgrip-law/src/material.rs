@@ -22,7 +22,7 @@ pub struct Material {
 }
 
 impl Material {
-    /// Material from Young's modulus `youngs_modulus` E [Pa] (finite, > 0) and Poisson ratio
+    /// Material from Young's modulus `youngs_modulus` E \[Pa\] (finite, > 0) and Poisson ratio
     /// `poisson_ratio` nu [-] (in (-1, 0.5]).
     pub fn try_new(youngs_modulus: f64, poisson_ratio: f64) -> Result<Self> {
         positive("youngs_modulus", youngs_modulus, "finite and > 0 Pa")?;
@@ -33,7 +33,7 @@ impl Material {
         })
     }
 
-    /// Material from the shear modulus `shear_modulus` mu [Pa] (finite, > 0) and Poisson ratio
+    /// Material from the shear modulus `shear_modulus` mu \[Pa\] (finite, > 0) and Poisson ratio
     /// nu [-] (in (-1, 0.5]): `E = 2 mu (1 + nu)`.
     pub fn try_from_shear_modulus(shear_modulus: f64, poisson_ratio: f64) -> Result<Self> {
         positive("shear_modulus", shear_modulus, "finite and > 0 Pa")?;
@@ -42,7 +42,7 @@ impl Material {
     }
 
     /// Material from the effective (plane-strain) modulus `effective_modulus`
-    /// E* = E / (1 - nu^2) [Pa] (finite, > 0), as measured by a Hertz fit, and the Poisson
+    /// E* = E / (1 - nu^2) \[Pa\] (finite, > 0), as measured by a Hertz fit, and the Poisson
     /// ratio nu [-] (in (-1, 0.5]; use 0.5 for rubbers and cells when it is unknown).
     pub fn try_from_effective_modulus(effective_modulus: f64, poisson_ratio: f64) -> Result<Self> {
         positive("effective_modulus", effective_modulus, "finite and > 0 Pa")?;
@@ -53,7 +53,7 @@ impl Material {
         )
     }
 
-    /// Young's modulus E [Pa].
+    /// Young's modulus E \[Pa\].
     pub fn youngs_modulus(&self) -> f64 {
         self.youngs_modulus
     }
@@ -63,12 +63,12 @@ impl Material {
         self.poisson_ratio
     }
 
-    /// Shear modulus mu = E / (2 (1 + nu)) [Pa].
+    /// Shear modulus mu = E / (2 (1 + nu)) \[Pa\].
     pub fn shear_modulus(&self) -> f64 {
         self.youngs_modulus / (2.0 * (1.0 + self.poisson_ratio))
     }
 
-    /// Effective modulus E* = E / (1 - nu^2) [Pa] against a rigid body.
+    /// Effective modulus E* = E / (1 - nu^2) \[Pa\] against a rigid body.
     pub fn effective_modulus(&self) -> f64 {
         self.youngs_modulus / (1.0 - self.poisson_ratio * self.poisson_ratio)
     }
@@ -105,7 +105,7 @@ pub struct ContactParams {
 }
 
 impl ContactParams {
-    /// A soft sphere of radius `radius` R [m] (finite, > 0) made of `material`, pressed on a
+    /// A soft sphere of radius `radius` R \[m\] (finite, > 0) made of `material`, pressed on a
     /// rigid flat body.
     ///
     /// ```
@@ -173,19 +173,19 @@ impl ContactParams {
         })
     }
 
-    /// Parameters given directly: E* [Pa] (finite, > 0), R [m] (finite, > 0), nu [-]
+    /// Parameters given directly: E* \[Pa\] (finite, > 0), R \[m\] (finite, > 0), nu [-]
     /// (in (-1, 0.5]).
     pub fn try_from_parts(effective_modulus: f64, radius: f64, poisson_ratio: f64) -> Result<Self> {
         let m = Material::try_from_effective_modulus(effective_modulus, poisson_ratio)?;
         Self::try_new(m, radius)
     }
 
-    /// Effective modulus E* [Pa].
+    /// Effective modulus E* \[Pa\].
     pub fn effective_modulus(&self) -> f64 {
         self.effective_modulus
     }
 
-    /// Effective radius R [m].
+    /// Effective radius R \[m\].
     pub fn radius(&self) -> f64 {
         self.radius
     }

@@ -15,11 +15,11 @@
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactPatch {
-    /// Contact radius a [m], >= 0.
+    /// Contact radius a \[m\], >= 0.
     pub radius: f64,
-    /// Mean pressure F / (pi a^2) [Pa].
+    /// Mean pressure F / (pi a^2) \[Pa\].
     pub mean_pressure: f64,
-    /// Peak pressure at the centre, 3/2 of the mean [Pa].
+    /// Peak pressure at the centre, 3/2 of the mean \[Pa\].
     pub peak_pressure: f64,
 }
 
@@ -31,7 +31,7 @@ impl ContactPatch {
         peak_pressure: 0.0,
     };
 
-    /// The patch of force `force` [N] spread over radius `radius` [m]; empty if either is not
+    /// The patch of force `force` \[N\] spread over radius `radius` \[m\]; empty if either is not
     /// positive.
     pub fn new(force: f64, radius: f64) -> Self {
         if !(force > 0.0 && radius > 0.0) {
@@ -45,7 +45,7 @@ impl ContactPatch {
         }
     }
 
-    /// Pressure p(r) [Pa] at distance `r` [m] from the centre; 0 outside the patch.
+    /// Pressure p(r) \[Pa\] at distance `r` \[m\] from the centre; 0 outside the patch.
     pub fn pressure_at(&self, r: f64) -> f64 {
         if self.radius <= 0.0 || r.abs() >= self.radius {
             return 0.0;
@@ -55,7 +55,7 @@ impl ContactPatch {
     }
 
     /// Torsional friction limit `(3 pi / 16) mu_f F a` [N m] of this Hertz-shaped patch for a
-    /// Coulomb friction coefficient `friction` and normal force `force` [N].
+    /// Coulomb friction coefficient `friction` and normal force `force` \[N\].
     pub fn torsion_limit(&self, friction: f64, force: f64) -> f64 {
         3.0 * std::f64::consts::PI / 16.0 * friction * force * self.radius
     }

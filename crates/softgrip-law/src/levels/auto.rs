@@ -14,7 +14,7 @@
 
 use std::sync::Arc;
 
-use super::Normalised;
+use super::NormalisedLaw;
 use super::fit::Fit;
 use super::hertz::Hertz;
 use super::incompressible::Incompressible;
@@ -32,7 +32,7 @@ pub(crate) enum Reference {
 }
 
 impl Reference {
-    fn curve(&self) -> &dyn Normalised {
+    fn curve(&self) -> &dyn NormalisedLaw {
         match self {
             Reference::Table(t) => t.as_ref(),
             Reference::Incompressible => &Incompressible,
@@ -57,7 +57,7 @@ enum Candidate {
 }
 
 impl Candidate {
-    fn curve(&self) -> &dyn Normalised {
+    fn curve(&self) -> &dyn NormalisedLaw {
         match self {
             Candidate::Hertz => &Hertz,
             Candidate::Fit(f) => f,
@@ -228,7 +228,7 @@ impl Auto {
     }
 }
 
-impl Normalised for Auto {
+impl NormalisedLaw for Auto {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let (f, k, _) = self.force_stiffness_kind(x);

@@ -43,7 +43,7 @@
 //! collapses past 0.65. The force stays monotone well past `x_max` (its first maximum is at
 //! x = 0.96 for nu = 0.3), so the range is set by accuracy, not by the form.
 
-use super::Normalised;
+use super::NormalisedLaw;
 use crate::error::{Error, Result};
 use crate::level::LevelKind;
 use crate::quadrature::integrate;
@@ -96,7 +96,7 @@ impl Calibrated {
     }
 }
 
-impl Normalised for Calibrated {
+impl NormalisedLaw for Calibrated {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         // f = (4/3) chi x^(3/2) and df/dx = (4/3) sqrt(x) (3/2 chi + x chi'), with the terms of

@@ -1,7 +1,7 @@
 //! The paper's explicit law (Eqs. 37-38 and 39-42): `chi_L = 1 / (1 - k x)`, `k = 10/9`, and the
 //! compressible radius fit `a = [1 - (10/9)(1/2 - nu) x] a_IC`.
 
-use super::{Normalised, scale_by_chi};
+use super::{NormalisedLaw, scale_by_chi};
 
 /// The paper's linear fit of `1/chi` (Eq. 38). `k = 10/9` comes from the least-squares fit of
 /// `1/chi_IC = 1 - k x` on `0 <= x <= 0.5` (1.1141).
@@ -34,7 +34,7 @@ impl Fit {
     }
 }
 
-impl Normalised for Fit {
+impl NormalisedLaw for Fit {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let d = 1.0 / (1.0 - self.k * x);

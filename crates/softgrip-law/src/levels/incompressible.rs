@@ -1,7 +1,7 @@
 //! Exact incompressible neo-Hookean law (Eq. 36) and radius (Eq. 26):
 //! `chi_IC = (1 - x + x^2/3) / (1 - x)^2`, `a_IC = R artanh(sqrt(x))`.
 
-use super::{Normalised, scale_by_chi};
+use super::{NormalisedLaw, scale_by_chi};
 
 /// The incompressible (`nu = 0.5`) limit of the full theory. Singular at `x = 1`; valid for
 /// `0 <= x <= 0.9` (where `chi = 37`).
@@ -25,7 +25,7 @@ pub(crate) fn radius_ic(x: f64) -> f64 {
     x.sqrt().atanh()
 }
 
-impl Normalised for Incompressible {
+impl NormalisedLaw for Incompressible {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let (chi, dchi) = chi_ic(x);

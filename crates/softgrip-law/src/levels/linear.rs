@@ -1,7 +1,7 @@
 //! Linear spring `F = k delta`, what rapier's softness, MuJoCo's solref and Drake's point
 //! contact reduce to. A baseline only.
 
-use super::Normalised;
+use super::NormalisedLaw;
 
 /// Linear spring matched to Hertz's force at `x = match_x`: `f = (4/3) sqrt(match_x) x`.
 #[derive(Debug, Clone, Copy)]
@@ -18,7 +18,7 @@ impl Linear {
     }
 }
 
-impl Normalised for Linear {
+impl NormalisedLaw for Linear {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         (self.rate * x, self.rate)

@@ -7,8 +7,9 @@
 //! - `T = (2/3) mu J^(-2/3) (lam - J/lam^2) + kappa J (J - 1) / lam` (Eq. 32 with the factor
 //!   `J^(-2/3)` that the print lacks).
 
-use super::{Normalised, scale_by_chi};
+use super::{NormalisedLaw, scale_by_chi};
 use crate::quadrature::integrate;
+use crate::root::{Probe, Stop, newton_bracketed};
 
 /// The uniaxial compression of a compressible neo-Hookean bar, in the unknown `j = J - 1`.
 ///
@@ -75,28 +76,22 @@ impl Uniaxial {
                 break;
             }
         }
-        let mut j = 0.5 * (lo + hi);
-        for _ in 0..100 {
+        // Newton on G, safeguarded in the bracket: G > 0 above the root.
+        let stop = Stop {
+            step: 1e-15,
+            width: Some(1e-16),
+            max_iterations: 100,
+        };
+        newton_bracketed(lo, hi, 0.5 * (lo + hi), stop, |j| {
             let cb = (1.0 + j).cbrt();
             let p23 = cb * cb;
             let g = m * (j + c) + 3.0 * (1.0 + j) * p23 * w * j;
-            if g > 0.0 {
-                hi = j;
-            } else {
-                lo = j;
-            }
             let dg = m + 3.0 * w * p23 * (1.0 + 8.0 / 3.0 * j);
-            let mut next = j - g / dg;
-            if !(next > lo && next < hi) {
-                next = 0.5 * (lo + hi);
+            Probe {
+                below_root: g <= 0.0 || g.is_nan(),
+                step: g / dg,
             }
-            let done = (next - j).abs() <= 1e-15 * j.abs() || hi - lo <= 1e-16 * hi.abs();
-            j = next;
-            if done {
-                break;
-            }
-        }
-        j
+        })
     }
 
     /// `chi(x)` and `chi'(x)`.
@@ -258,7 +253,7 @@ impl NeoHookeanExact {
     }
 }
 
-impl Normalised for NeoHookeanExact {
+impl NormalisedLaw for NeoHookeanExact {
     // An iterative solve: a call costs nothing next to it, and keeping it out of line keeps
     // the callers' hot loops (`ContactLaw::response` is inlined) small.
     #[inline(never)]

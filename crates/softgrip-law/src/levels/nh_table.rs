@@ -2,7 +2,7 @@
 //! levels with the accuracy of the exact solve.
 
 use super::neo_hookean::{NeoHookeanExact, Uniaxial};
-use super::{Normalised, scale_by_chi};
+use super::{NormalisedLaw, scale_by_chi};
 use crate::quadrature::integrate;
 
 /// Table spacing in x. The force interpolant is a cubic Hermite of `chi` with the exact `chi'`
@@ -127,7 +127,7 @@ impl NeoHookeanTable {
     }
 }
 
-impl Normalised for NeoHookeanTable {
+impl NormalisedLaw for NeoHookeanTable {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         let (i, t) = self.locate(x);

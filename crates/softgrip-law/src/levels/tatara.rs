@@ -9,8 +9,9 @@
 //! tests check. Normalised (`f = F/(E* R^2)`, `alpha = a/R = (3f/4)^(1/3)`):
 //! `x(f) = alpha^2 - (f/pi) [ (alpha^2+4)^(-1/2) + 2/(1-nu) (alpha^2+4)^(-3/2) ]`.
 
-use super::Normalised;
+use super::NormalisedLaw;
 use crate::quadrature::integrate;
+use crate::root::{Probe, Stop, newton_bracketed};
 
 /// Tatara's law: explicit in the force, solved for the force at each call.
 #[derive(Debug, Clone, Copy)]
@@ -57,25 +58,18 @@ impl Tatara {
             lo = hi;
             hi *= 2.0;
         }
-        let mut s = lo;
-        for _ in 0..100 {
+        let stop = Stop {
+            step: 1e-15,
+            width: None,
+            max_iterations: 100,
+        };
+        newton_bracketed(lo, hi, lo, stop, |s| {
             let (xs, dx) = self.x_of_s(s);
-            if xs < x {
-                lo = s;
-            } else {
-                hi = s;
+            Probe {
+                below_root: xs < x,
+                step: (xs - x) / dx,
             }
-            let mut next = s - (xs - x) / dx;
-            if !(next > lo && next < hi) {
-                next = 0.5 * (lo + hi);
-            }
-            let done = (next - s).abs() <= 1e-15 * s;
-            s = next;
-            if done {
-                break;
-            }
-        }
-        s
+        })
     }
 
     /// Normalised compression at normalised force `f` (the law's explicit direction).
@@ -84,7 +78,7 @@ impl Tatara {
     }
 }
 
-impl Normalised for Tatara {
+impl NormalisedLaw for Tatara {
     // An iterative solve: a call costs nothing next to it, and keeping it out of line keeps
     // the callers' hot loops (`ContactLaw::response` is inlined) small.
     #[inline(never)]

@@ -1,0 +1,109 @@
+//! Every embedded FE file parses into its typed rows, with the ranges its README states, and
+//! every CSV file of `tests/data/fe/` is in the table.
+
+use std::path::Path;
+
+use softgrip_fe::{FILES, ForceRow, FullRow, MeshConvergenceRow, Schema, SmallXRow};
+
+#[test]
+fn every_file_parses_into_its_rows_and_points() {
+    for f in FILES {
+        let rows = match f.schema {
+            Schema::Force => f.rows::<ForceRow>().map(|r| r.len()),
+            Schema::Full => f.rows::<FullRow>().map(|r| r.len()),
+            Schema::SmallX => f.rows::<SmallXRow>().map(|r| r.len()),
+            Schema::MeshConvergence => f.rows::<MeshConvergenceRow>().map(|r| r.len()),
+        }
+        .unwrap_or_else(|e| panic!("{e}"));
+        let points = f.points().unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(points.len(), rows, "{}", f.path);
+        assert!(rows >= 7, "{}: {rows} rows", f.path);
+        for p in &points {
+            assert!(p.x > 0.0 && p.x < 1.0, "{}: x = {}", f.path, p.x);
+            assert!(p.force_norm > 0.0 && p.force_norm.is_finite(), "{}", f.path);
+            assert!(p.radius_norm > 0.0 && p.radius_norm < 2.0, "{}", f.path);
+            assert!(p.nu == 0.3 || p.nu == 0.49, "{}: nu = {}", f.path, p.nu);
+        }
+        // A header line and one line per row (the files carry no comments yet).
+        assert_eq!(f.text().lines().count(), rows + 1 + f.provenance().len());
+    }
+}
+
+#[test]
+fn force_references_have_their_ranges() {
+    let f03 = softgrip_fe::force_reference(0.3)
+        .expect("nu = 0.3")
+        .points()
+        .expect("parses");
+    let f049 = softgrip_fe::force_reference(0.49)
+        .expect("nu = 0.49")
+        .points()
+        .expect("parses");
+    assert!(softgrip_fe::force_reference(0.4).is_none());
+    assert_eq!(f03.len(), 61);
+    assert_eq!(f03.last().map(|p| p.x), Some(0.61));
+    assert_eq!(f049.last().map(|p| p.x), Some(0.78));
+    // x = 0.01, nu = 0.3: 0.00397964 N / E*, E* = 2 (1.3) / (1 - 0.09) MPa.
+    let e_star = 2.0 * 1.3 / (1.0 - 0.09);
+    assert!((f03[0].force_norm - 0.00397964 / e_star).abs() < 1e-15);
+    // FE is 1-3.5 % above Hertz at small x (MODEL.md).
+    let ratio = f03[0].force_norm / (4.0 / 3.0 * 0.01f64.powf(1.5));
+    assert!(ratio > 1.01 && ratio < 1.05, "{ratio}");
+    let full = softgrip_fe::file("full_nu0.3.csv").expect("embedded");
+    let points = full.points().expect("parses");
+    assert_eq!(points.last().map(|p| p.x), Some(0.85));
+    assert_eq!(points[0].min_element_j, Some(0.9278));
+    assert_eq!(full.rows::<FullRow>().expect("parses")[0].v_over_v0, 0.9997);
+}
+
+#[test]
+fn small_x_rows_carry_their_own_nu() {
+    let rows: Vec<SmallXRow> = softgrip_fe::file("small_x_check.csv")
+        .expect("embedded")
+        .rows()
+        .expect("parses");
+    assert!(rows.iter().any(|r| r.nu == 0.3) && rows.iter().any(|r| r.nu == 0.49));
+    assert!(rows.iter().any(|r| r.extra_fine_mesh == 1));
+    assert!(rows.iter().all(|r| r.delta_over_r <= 0.01 + 1e-12));
+}
+
+#[test]
+fn the_wrong_row_type_is_a_typed_error_naming_the_file() {
+    let err = softgrip_fe::file("force_nu0.3.csv")
+        .expect("embedded")
+        .rows::<FullRow>()
+        .expect_err("force files have no a_fit_mm");
+    assert_eq!(err.path, "force_nu0.3.csv");
+    assert!(
+        err.to_string()
+            .starts_with("FE reference `force_nu0.3.csv`"),
+        "{err}"
+    );
+}
+
+#[test]
+fn every_csv_of_the_folder_is_in_the_table() {
+    //! Adding a file to tests/data/fe/ without its row in FILES fails here.
+    fn csvs(dir: &Path, base: &Path, out: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).expect("readable folder") {
+            let path = entry.expect("entry").path();
+            if path.is_dir() {
+                csvs(&path, base, out);
+            } else if path.extension().is_some_and(|e| e == "csv") {
+                let rel = path.strip_prefix(base).expect("inside");
+                out.push(rel.to_string_lossy().replace('\\', "/"));
+            }
+        }
+    }
+    let base = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/data/fe");
+    let mut found = Vec::new();
+    csvs(&base, &base, &mut found);
+    assert!(!found.is_empty());
+    for path in found {
+        assert!(
+            softgrip_fe::file(&path).is_some(),
+            "{path} is not in softgrip_fe::FILES"
+        );
+    }
+    assert!(softgrip_fe::PROVENANCE.contains("CalculiX"));
+}
