@@ -71,11 +71,14 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
         meta["scene"].as_str().unwrap(),
         std::fs::read_to_string(&scene).unwrap()
     );
+    // The law is JSON (a typed record): `[{"name":"left_tip","level":{"name":"auto",...},...}]`.
+    let law: serde_json::Value = serde_json::from_str(meta["law"].as_str().unwrap()).unwrap();
     assert!(
-        meta["law"]
-            .as_str()
+        law.as_array()
             .unwrap()
-            .contains("left_tip: level=auto")
+            .iter()
+            .any(|t| t["name"] == "left_tip" && t["level"]["name"] == "auto"),
+        "{law}"
     );
     assert!(meta["softgrip_version"].is_string());
     // 300 steps, 6 messages each.

@@ -7,7 +7,7 @@
 
 mod common;
 
-use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContact;
+use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_ecs::softgrip_record::{Message, Recording, topics};
 
 /// (recording, scene file).
@@ -19,7 +19,7 @@ const RECORDINGS: [(&str, &str); 5] = [
     ("cell_live_stained.mcap", "scenes/cell_live_stained.toml"),
 ];
 
-fn contacts(rec: &Recording) -> Vec<(u64, SoftContact)> {
+fn contacts(rec: &Recording) -> Vec<(u64, SoftContactMsg)> {
     rec.on_topic(topics::CONTACTS)
         .flat_map(|m| match &m.message {
             Message::Contacts(a) => a
@@ -78,7 +78,7 @@ fn committed_recordings_decode_and_regenerate_to_the_same_contacts() {
         let (a, b) = (contacts(&fresh), contacts(&committed));
         assert_eq!(a.len(), b.len(), "{file}: contact count");
         let max =
-            |f: fn(&SoftContact) -> f64| b.iter().map(|(_, c)| f(c).abs()).fold(0.0, f64::max);
+            |f: fn(&SoftContactMsg) -> f64| b.iter().map(|(_, c)| f(c).abs()).fold(0.0, f64::max);
         let (f_max, x_max, a_max) = (
             max(|c| c.normal_force),
             max(|c| c.ratio_x),

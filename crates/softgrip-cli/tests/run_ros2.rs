@@ -2,7 +2,7 @@
 //! (PyPI `cyclonedds`, with its own IDL definitions of the ROS 2 types, in
 //! crates/softgrip-ros2/tests/python/dds_roundtrip.py) subscribes to /softgrip/contacts and
 //! both fingertips' wrench topics while the default scene runs at real time, and every
-//! SoftContactArray and WrenchStamped it decodes equals the same step of the run's own MCAP
+//! SoftContactArrayMsg and WrenchStamped it decodes equals the same step of the run's own MCAP
 //! recording (floats to 1e-12 relative, strings and flags exactly).
 //!
 //! Both participants run inside a private network namespace (`unshare -n`, then `ip link set lo

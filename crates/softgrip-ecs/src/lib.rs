@@ -3,17 +3,16 @@
 mod components;
 mod contact;
 mod gripper;
-mod mcap_sink;
 mod messages;
 mod plain;
 mod resources;
 pub mod scene;
 mod schedule;
 mod simulation;
-mod sink;
 mod spawn;
 mod summary;
 pub mod systems;
+pub mod to_record;
 
 pub use components::{
     AttachedTo, BodyKind, BodyPose, Collider, Fingertip, FingertipWrench, KinematicPath,
@@ -21,9 +20,6 @@ pub use components::{
 };
 pub use contact::SoftContact;
 pub use gripper::{Gripper, GripperEvent, GripperProgram, GripperState, JawState, Phase, Squeeze};
-pub use mcap_sink::{
-    FingertipLaw, McapReport, McapSink, McapSinkError, StepConverter, WORLD_FRAME, soft_contact,
-};
 pub use messages::{ContactEnded, ContactStarted, GripReached, SlipStarted, ValidityExcursion};
 pub use plain::PlainRun;
 pub use resources::{
@@ -33,11 +29,15 @@ pub use resources::{
 pub use scene::{Scene, SceneError};
 pub use schedule::{SoftgripSet, SoftgripStep, build_schedule};
 pub use simulation::{RunReport, Simulation};
-pub use sink::{
-    BodySample, ContactSample, SceneInfo, SinkError, StepFrame, StepSink, WrenchSample,
+/// The sink interface and its plain data, from softgrip-record (re-exported for now).
+pub use softgrip_record::{
+    BodySample, ContactReading, ContactSample, FingertipInfo, FingertipLaw, McapReport,
+    McapSinkError, RunSummary, SceneInfo, SinkError, StepConverter, StepFrame, StepSink,
+    WORLD_FRAME, WrenchSample,
 };
 pub use spawn::{SceneEntities, init_world, soft_world_for, spawn_scene};
 pub use summary::{Summary, TipSummary, accumulate_summary};
+pub use to_record::{McapSink, contact_reading, fingertip_law, run_summary, scene_info};
 
 /// Re-exports of the crates the API uses.
 pub use bevy_ecs;

@@ -7,7 +7,7 @@ use softgrip_rapier::SoftWorld;
 use softgrip_rapier::rapier3d::prelude::{ColliderHandle, RigidBodyHandle};
 
 use crate::scene::RecordSpec;
-use crate::sink::{SceneInfo, SinkError, StepFrame, StepSink};
+use softgrip_record::{RunSummary, SceneInfo, SinkError, StepFrame, StepSink};
 
 /// What the readout remembers of a live contact.
 #[derive(Debug, Clone, Copy)]
@@ -152,7 +152,7 @@ impl SinkSlot {
     }
 
     /// Hands the sink the run's summary (before [`finish`](Self::finish)).
-    pub fn run_summary(&mut self, summary: &std::collections::BTreeMap<String, String>) {
+    pub fn run_summary(&mut self, summary: &RunSummary) {
         if self.error.is_none() {
             self.sink.run_summary(summary);
         }

@@ -8,10 +8,10 @@ use bevy_ecs::prelude::{FromWorld, Schedule, World};
 use crate::resources::{Publisher, Recorder, SimClock};
 use crate::scene::Scene;
 use crate::schedule::build_schedule;
-use crate::sink::{SinkError, StepSink};
 use crate::spawn::{SceneEntities, spawn_scene};
 use crate::summary::Summary;
 use crate::systems::{Unsynchronised, create_in_rapier};
+use softgrip_record::{SinkError, StepSink};
 
 /// What a run took.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -125,15 +125,15 @@ impl Simulation {
     }
 
     /// Finishes the sinks (flush, close); returns the first error of either. With a
-    /// [`Summary`] ([`with_summary`](Self::with_summary)), the sinks first get it as
-    /// [`Summary::to_metadata`] (the MCAP recorder writes it into the file: counted over every
+    /// [`Summary`] ([`with_summary`](Self::with_summary)), the sinks first get it as a
+    /// [`RunSummary`](crate::RunSummary) (the MCAP recorder writes it into the file: counted over every
     /// step, where the recording may hold only every n-th).
     pub fn finish(&mut self) -> Result<(), SinkError> {
         let steps = self.world.get_resource::<SimClock>().map_or(0, |c| c.step);
         let summary = self
             .world
             .get_resource::<Summary>()
-            .map(|s| s.to_metadata(steps));
+            .map(|s| crate::to_record::run_summary(s, steps));
         let r = match self.world.get_resource_mut::<Recorder>() {
             Some(mut r) => {
                 if let Some(s) = &summary {

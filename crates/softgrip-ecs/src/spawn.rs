@@ -8,7 +8,6 @@ use crate::gripper::{Gripper, GripperState};
 use crate::messages::{ContactEnded, ContactStarted, GripReached, SlipStarted, ValidityExcursion};
 use crate::resources::{CurrentFrame, Physics, RecordSelection, SceneInfoResource, SimClock};
 use crate::scene::{Scene, Trajectory, body_from_spec, collider_from_spec, fingertip_from_spec};
-use crate::sink::SceneInfo;
 
 /// The entities of a spawned scene, in scene order.
 #[derive(Debug, Clone, Default)]
@@ -57,12 +56,7 @@ pub fn spawn_scene(world: &mut World, scene: &Scene) -> SceneEntities {
     init_world(world, soft_world_for(scene));
     let f = scene.file();
     world.insert_resource(RecordSelection(f.record.clone()));
-    world.insert_resource(SceneInfoResource(SceneInfo {
-        origin: scene.origin().to_string(),
-        dt: f.dt,
-        bodies: f.bodies.iter().map(|b| b.name.clone()).collect(),
-        fingertips: scene.fingertips().to_vec(),
-    }));
+    world.insert_resource(SceneInfoResource(crate::to_record::scene_info(scene)));
     let mut out = SceneEntities::default();
     for b in &f.bodies {
         let body = body_from_spec(b);

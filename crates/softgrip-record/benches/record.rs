@@ -7,15 +7,15 @@
 mod common;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use softgrip_record::msgs::softgrip_msgs::SoftContactArray;
+use softgrip_record::msgs::softgrip_msgs::SoftContactArrayMsg;
 use softgrip_record::{Recorder, RecorderOptions, RecordingInfo, RosMessage, cdr::CdrWriter};
 
 fn bench(c: &mut Criterion) {
     let steps: Vec<_> = (0..1000).map(|k| common::step(k, 1_000_000)).collect();
 
-    c.bench_function("encode SoftContactArray (2 contacts)", |b| {
+    c.bench_function("encode SoftContactArrayMsg (2 contacts)", |b| {
         let mut w = CdrWriter::new();
-        let msg = SoftContactArray {
+        let msg = SoftContactArrayMsg {
             header: steps[0].header(),
             contacts: steps[0].contacts.clone(),
         };

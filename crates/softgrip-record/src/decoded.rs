@@ -4,7 +4,7 @@ use crate::cdr::CdrError;
 use crate::message::RosMessage;
 use crate::msgs::geometry_msgs::WrenchStamped;
 use crate::msgs::rosgraph_msgs::Clock;
-use crate::msgs::softgrip_msgs::SoftContactArray;
+use crate::msgs::softgrip_msgs::SoftContactArrayMsg;
 use crate::msgs::tf2_msgs::TFMessage;
 use crate::msgs::visualization_msgs::MarkerArray;
 
@@ -12,7 +12,7 @@ use crate::msgs::visualization_msgs::MarkerArray;
 #[derive(Debug, Clone, PartialEq)]
 pub enum Message {
     /// `softgrip_msgs/msg/SoftContactArray`.
-    Contacts(SoftContactArray),
+    Contacts(SoftContactArrayMsg),
     /// `geometry_msgs/msg/WrenchStamped`.
     Wrench(WrenchStamped),
     /// `tf2_msgs/msg/TFMessage`.
@@ -41,7 +41,7 @@ impl Message {
             return Ok(Self::other(schema_name, data));
         }
         Ok(match schema_name {
-            SoftContactArray::TYPE_NAME => Self::Contacts(SoftContactArray::from_cdr(data)?),
+            SoftContactArrayMsg::TYPE_NAME => Self::Contacts(SoftContactArrayMsg::from_cdr(data)?),
             WrenchStamped::TYPE_NAME => Self::Wrench(WrenchStamped::from_cdr(data)?),
             TFMessage::TYPE_NAME => Self::Tf(TFMessage::from_cdr(data)?),
             MarkerArray::TYPE_NAME => Self::Markers(MarkerArray::from_cdr(data)?),

@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use crate::cdr::CdrError;
+use crate::metadata::MetadataError;
 
 /// An error of `softgrip-record`.
 #[derive(Debug, thiserror::Error)]
@@ -33,6 +34,9 @@ pub enum Error {
         /// What was found wrong.
         reason: String,
     },
+    /// A metadata record that does not convert to or from its typed struct.
+    #[error(transparent)]
+    Metadata(#[from] MetadataError),
     /// A message whose CDR bytes do not decode as its schema's type.
     #[error("message on {topic} at log time {log_time_ns} ns does not decode: {source}")]
     Decode {

@@ -1,23 +1,36 @@
 #![doc = include_str!("../README.md")]
 
 pub mod cdr;
+mod convert;
 mod decoded;
 mod error;
+mod mcap_sink;
 mod message;
+pub mod metadata;
 pub mod msgs;
 mod recorder;
 mod recording;
 pub mod schema;
+pub mod sink;
 mod step;
+mod step_messages;
 pub mod topics;
 pub mod visuals;
 
+pub use convert::{StepConverter, WORLD_FRAME, soft_contact_msg};
 pub use decoded::Message;
 pub use error::{Error, Result};
+pub use mcap_sink::{McapReport, McapSink, McapSinkError};
 pub use message::RosMessage;
-pub use recorder::{
-    METADATA_NAME, RUN_SUMMARY_NAME, Recorder, RecorderOptions, RecordingInfo, RecordingStats,
-    SOFTGRIP_VERSION,
+pub use metadata::{
+    FingertipLaw, MetadataError, MetadataRecord, RecordingInfo, RunSummary, SOFTGRIP_VERSION,
+    TipRunSummary,
 };
+pub use recorder::{METADATA_NAME, RUN_SUMMARY_NAME, Recorder, RecorderOptions, RecordingStats};
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
+pub use sink::{
+    BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, SinkError, StepFrame,
+    StepSink, WrenchSample,
+};
 pub use step::{BodyPose, FingertipState, StepRecord, contact_wrench};
+pub use step_messages::{Delivery, StepTopic, StepVisitor, visit_step};

@@ -1,11 +1,14 @@
 //! [`RosMessage`]: a ROS 2 message type with its name, schema and CDR encoding, and the
 //! `ros_message!` macro that declares one field by field.
 
-use crate::cdr::{CdrError, CdrField, CdrReader, CdrWriter};
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+
+use crate::cdr::{self, CdrError, CdrWriter};
 use crate::schema::MsgDef;
 
-/// A ROS 2 message type.
-pub trait RosMessage: CdrField {
+/// A ROS 2 message type: serde in `.msg` field order, which is its CDR encoding.
+pub trait RosMessage: Serialize + DeserializeOwned + Clone + Send + Sync + 'static {
     /// Full ROS 2 name, `pkg/msg/Type` (the MCAP schema name).
     const TYPE_NAME: &'static str;
     /// The `.msg` definition and its dependencies.
@@ -18,32 +21,28 @@ pub trait RosMessage: CdrField {
         Self::DEFINITION.schema_text()
     }
 
-    /// Serialises the message, encapsulation header included, into `w` (after resetting it).
+    /// Serialises the message, encapsulation header included, into `w` (replacing its content).
     fn encode_into(&self, w: &mut CdrWriter) {
-        w.reset();
-        self.write_cdr(w);
+        w.encode(self);
     }
 
     /// Serialises the message, encapsulation header included.
     fn to_cdr(&self) -> Vec<u8> {
         let mut w = CdrWriter::new();
-        self.write_cdr(&mut w);
+        w.encode(self);
         w.into_bytes()
     }
 
-    /// Decodes a whole serialised message (header included); fails on any malformed byte or
+    /// Decodes a whole serialised message (header included); fails on any malformed value or
     /// left-over data.
     fn from_cdr(bytes: &[u8]) -> Result<Self, CdrError> {
-        let mut r = CdrReader::new(bytes)?;
-        let msg = Self::read_cdr(&mut r)?;
-        r.finish()?;
-        Ok(msg)
+        cdr::decode(bytes)
     }
 }
 
-/// Declares a ROS 2 message struct whose fields mirror its `.msg` file, with its CDR encoding
-/// (the fields in order), its [`RosMessage`] impl and serde `Serialize`/`Deserialize` (fields
-/// in the same order, for serde-based CDR such as ros2-client's).
+/// Declares a ROS 2 message struct whose fields mirror its `.msg` file, with serde
+/// `Serialize`/`Deserialize` (fields in the same order: that is its CDR encoding) and its
+/// [`RosMessage`] impl.
 ///
 /// `name = "pkg/msg/Type", file = "path from the crate root", deps = [Types...]`.
 macro_rules! ros_message {
@@ -55,25 +54,11 @@ macro_rules! ros_message {
         }
     ) => {
         $(#[$meta])*
-        // serde's data model sees the fields in `.msg` order, so serde CDR (ros2-client,
-        // RustDDS) writes the same bytes as `CdrField` (tested in softgrip-ros2).
+        // serde's data model sees the fields in `.msg` order, so serde CDR (cdr-encoding,
+        // RustDDS) writes them in wire order (tested byte for byte in softgrip-ros2).
         #[derive(::serde::Serialize, ::serde::Deserialize)]
         pub struct $name {
             $( $(#[$fmeta])* pub $field: $ty, )*
-        }
-
-        impl $crate::cdr::CdrField for $name {
-            fn write_cdr(&self, w: &mut $crate::cdr::CdrWriter) {
-                $( $crate::cdr::CdrField::write_cdr(&self.$field, w); )*
-            }
-
-            fn read_cdr(
-                r: &mut $crate::cdr::CdrReader<'_>,
-            ) -> ::core::result::Result<Self, $crate::cdr::CdrError> {
-                Ok(Self {
-                    $( $field: <$ty as $crate::cdr::CdrField>::read_cdr(r)?, )*
-                })
-            }
         }
 
         impl $crate::RosMessage for $name {

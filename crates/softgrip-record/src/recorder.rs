@@ -12,18 +12,16 @@ use mcap::{Compression, WriteOptions, Writer};
 use crate::cdr::CdrWriter;
 use crate::error::{Error, Result};
 use crate::message::RosMessage;
-use crate::msgs::geometry_msgs::WrenchStamped;
+use crate::metadata::{MetadataRecord, RecordingInfo, RunSummary, SOFTGRIP_VERSION};
 use crate::step::StepRecord;
-use crate::topics;
-use crate::visuals;
+use crate::step_messages::{StepTopic, StepVisitor, visit_step};
 
-/// Name of the metadata record softgrip writes.
-pub const METADATA_NAME: &str = "softgrip";
-/// Name of the metadata record with the run's own summary, counted over every simulated step
-/// (a recording may hold only every n-th step), written when the run finishes.
-pub const RUN_SUMMARY_NAME: &str = "softgrip_run_summary";
-/// The version of this crate, written in the metadata as `softgrip_version`.
-pub const SOFTGRIP_VERSION: &str = env!("CARGO_PKG_VERSION");
+/// Name of the metadata record softgrip writes ([`RecordingInfo`]).
+pub const METADATA_NAME: &str = RecordingInfo::NAME;
+/// Name of the metadata record with the run's own summary ([`RunSummary`]), counted over
+/// every simulated step (a recording may hold only every n-th step), written when the run
+/// finishes.
+pub const RUN_SUMMARY_NAME: &str = RunSummary::NAME;
 
 /// How the file is written.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -48,28 +46,6 @@ impl Default for RecorderOptions {
             compression_threads: 1,
             compression_level: 0,
         }
-    }
-}
-
-/// What the recording is of: written once as the `softgrip` metadata record.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub struct RecordingInfo {
-    /// The scene (its file's text, or a description).
-    pub scene: String,
-    /// The contact law's parameters (level, E, nu, R, friction, ...), as text.
-    pub law: String,
-    /// Anything else (`key -> value`); `scene`, `law` and `softgrip_version` are reserved.
-    pub extra: BTreeMap<String, String>,
-}
-
-impl RecordingInfo {
-    /// The metadata map: `extra`, then `scene`, `law` and `softgrip_version`.
-    pub fn to_metadata(&self) -> BTreeMap<String, String> {
-        let mut m = self.extra.clone();
-        m.insert("scene".into(), self.scene.clone());
-        m.insert("law".into(), self.law.clone());
-        m.insert("softgrip_version".into(), SOFTGRIP_VERSION.into());
-        m
     }
 }
 
@@ -113,7 +89,8 @@ pub struct Recorder {
     path: PathBuf,
     schemas: HashMap<&'static str, u16>,
     channels: HashMap<String, u16>,
-    wrench_channels: HashMap<String, u16>,
+    /// Channels of the step table's topics, by topic and fingertip (`""` for the others).
+    step_channels: HashMap<StepTopic, HashMap<String, u16>>,
     buf: CdrWriter,
     sequence: u32,
 }
@@ -159,7 +136,7 @@ impl Recorder {
         writer
             .write_metadata(&Metadata {
                 name: METADATA_NAME.into(),
-                metadata: info.to_metadata(),
+                metadata: info.to_metadata()?,
             })
             .map_err(Error::Write)?;
         Ok(Self {
@@ -167,7 +144,7 @@ impl Recorder {
             path,
             schemas: HashMap::new(),
             channels: HashMap::new(),
-            wrench_channels: HashMap::new(),
+            step_channels: HashMap::new(),
             buf: CdrWriter::with_capacity(4096),
             sequence: 0,
         })
@@ -244,41 +221,16 @@ impl Recorder {
         self.write_encoded(channel, time_ns)
     }
 
-    /// Writes one step: `/clock`, `/tf`, `/softgrip/contacts` (each contact's header set to
-    /// the step's), one `/softgrip/<fingertip>/wrench` per fingertip and `/softgrip/markers`.
+    /// Writes one step: the messages of [`visit_step`] (`/clock`, `/tf`, `/softgrip/contacts`
+    /// with each contact's header set to the step's, one `/softgrip/<fingertip>/wrench` per
+    /// fingertip, `/softgrip/markers`).
     pub fn write_step(&mut self, step: &mut StepRecord) -> Result<()> {
-        let t = step.time_ns;
-        let header = step.header();
-        self.write(topics::CLOCK, t, &step.clock())?;
-        self.write(topics::TF, t, &step.tf())?;
+        visit_step(step, self)
+    }
 
-        // Encode the contacts in place (no copy of the vector).
-        let array = step.take_contact_array();
-        let written = self.write(topics::CONTACTS, t, &array);
-        step.contacts = array.contacts;
-        written?;
-
-        for i in 0..step.fingertips.len() {
-            let tip = &step.fingertips[i];
-            let channel = match self.wrench_channels.get(&tip.name) {
-                Some(&id) => id,
-                None => {
-                    let name = tip.name.clone();
-                    let id = self.add_channel::<WrenchStamped>(&topics::wrench(&name))?;
-                    self.wrench_channels.insert(name, id);
-                    id
-                }
-            };
-            let tip = &step.fingertips[i];
-            let msg = WrenchStamped {
-                header: header.clone(),
-                wrench: tip.wrench,
-            };
-            msg.encode_into(&mut self.buf);
-            self.write_encoded(channel, t)?;
-        }
-
-        self.write(topics::MARKERS, t, &visuals::markers(step))
+    /// Writes a typed metadata record ([`RunSummary`], ...).
+    pub fn write_record<R: MetadataRecord>(&mut self, record: &R) -> Result<()> {
+        self.write_metadata(R::NAME, record.to_metadata()?)
     }
 
     /// Writes a metadata record `name` (MCAP metadata may come anywhere before the summary
@@ -318,6 +270,36 @@ impl Recorder {
             channels: stats.channel_count,
             time_range_ns: (stats.message_start_time, stats.message_end_time),
         })
+    }
+}
+
+impl StepVisitor for Recorder {
+    type Error = Error;
+
+    fn message<M: RosMessage>(
+        &mut self,
+        topic: StepTopic,
+        fingertip: &str,
+        time_ns: u64,
+        msg: &M,
+    ) -> Result<()> {
+        let known = self
+            .step_channels
+            .get(&topic)
+            .and_then(|by_tip| by_tip.get(fingertip));
+        let channel = match known {
+            Some(&id) => id,
+            None => {
+                let id = self.add_channel::<M>(&topic.name(fingertip))?;
+                self.step_channels
+                    .entry(topic)
+                    .or_default()
+                    .insert(fingertip.to_owned(), id);
+                id
+            }
+        };
+        msg.encode_into(&mut self.buf);
+        self.write_encoded(channel, time_ns)
     }
 }
 

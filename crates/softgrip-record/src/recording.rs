@@ -9,6 +9,7 @@ use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
 
 use crate::decoded::Message;
 use crate::error::{Error, Result};
+use crate::metadata::{MetadataError, MetadataRecord, RecordingInfo, RunSummary};
 
 /// A topic of the recording.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -54,8 +55,9 @@ pub struct Recovery {
 /// A recording read back.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Recording {
-    /// Metadata records by name (softgrip writes `softgrip` with `scene`, `law`,
-    /// `softgrip_version`).
+    /// Metadata records by name, as stored (softgrip writes [`RecordingInfo`] and
+    /// [`RunSummary`]: read them typed with [`info`](Self::info) and
+    /// [`run_summary`](Self::run_summary)).
     pub metadata: BTreeMap<String, BTreeMap<String, String>>,
     /// Topics, in channel-id order.
     pub channels: Vec<ChannelInfo>,
@@ -322,7 +324,8 @@ impl Recording {
         self.messages.iter().filter(move |m| m.topic == topic)
     }
 
-    /// A value of softgrip's metadata record (`scene`, `law`, `softgrip_version`, ...).
+    /// A value of softgrip's metadata record as stored (`scene`, `softgrip_version`, ...; the
+    /// typed record is [`info`](Self::info)).
     pub fn softgrip_metadata(&self, key: &str) -> Option<&str> {
         self.metadata
             .get(crate::recorder::METADATA_NAME)
@@ -330,13 +333,20 @@ impl Recording {
             .map(String::as_str)
     }
 
-    /// Value `key` of the run's own summary ([`RUN_SUMMARY_NAME`](crate::RUN_SUMMARY_NAME)),
-    /// counted over every simulated step; absent if the run did not finish normally.
-    pub fn run_summary(&self, key: &str) -> Option<&str> {
-        self.metadata
-            .get(crate::recorder::RUN_SUMMARY_NAME)
-            .and_then(|m| m.get(key))
-            .map(String::as_str)
+    /// The typed metadata record `R` (`None` if the file has no record of that name).
+    pub fn record<R: MetadataRecord>(&self) -> Result<Option<R>, MetadataError> {
+        self.metadata.get(R::NAME).map(R::from_metadata).transpose()
+    }
+
+    /// What the recording is of: its [`RecordingInfo`] (`softgrip` record).
+    pub fn info(&self) -> Result<Option<RecordingInfo>, MetadataError> {
+        self.record()
+    }
+
+    /// The run's own summary ([`RunSummary`], counted over every simulated step); `None` if
+    /// the run did not finish normally.
+    pub fn run_summary(&self) -> Result<Option<RunSummary>, MetadataError> {
+        self.record()
     }
 }
 

@@ -4,7 +4,7 @@
 use crate::msgs::builtin_interfaces::Time;
 use crate::msgs::geometry_msgs::{Quaternion, Transform, TransformStamped, Vector3, Wrench};
 use crate::msgs::rosgraph_msgs::Clock;
-use crate::msgs::softgrip_msgs::{SoftContact, SoftContactArray};
+use crate::msgs::softgrip_msgs::{SoftContactArrayMsg, SoftContactMsg};
 use crate::msgs::std_msgs::Header;
 use crate::msgs::tf2_msgs::TFMessage;
 
@@ -43,7 +43,7 @@ pub struct StepRecord {
     /// Name of the world frame (the `/tf` root), e.g. `world`.
     pub world_frame: String,
     /// The soft contacts of the step (their headers are overwritten with the step's).
-    pub contacts: Vec<SoftContact>,
+    pub contacts: Vec<SoftContactMsg>,
     /// The fingertips.
     pub fingertips: Vec<FingertipState>,
     /// Other bodies to publish on `/tf`.
@@ -56,15 +56,15 @@ impl StepRecord {
         Header::new(self.time_ns, &self.world_frame)
     }
 
-    /// The step's contacts as one `SoftContactArray`, each stamped with the step's header;
+    /// The step's contacts as one `SoftContactArrayMsg`, each stamped with the step's header;
     /// moves them out of the step (no copy: put `array.contacts` back to reuse them).
-    pub fn take_contact_array(&mut self) -> SoftContactArray {
+    pub fn take_contact_array(&mut self) -> SoftContactArrayMsg {
         let header = self.header();
         for c in &mut self.contacts {
             c.header.stamp = header.stamp;
             c.header.frame_id.clone_from(&header.frame_id);
         }
-        SoftContactArray {
+        SoftContactArrayMsg {
             header,
             contacts: std::mem::take(&mut self.contacts),
         }
@@ -107,9 +107,9 @@ impl StepRecord {
 ///
 /// ```
 /// use softgrip_record::contact_wrench;
-/// use softgrip_record::msgs::softgrip_msgs::SoftContact;
+/// use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 /// use softgrip_record::msgs::geometry_msgs::{Point, Vector3};
-/// let c = SoftContact {
+/// let c = SoftContactMsg {
 ///     point: Point { x: 0.0, y: 0.0, z: -0.01 },
 ///     normal: Vector3 { x: 0.0, y: 0.0, z: 1.0 },
 ///     normal_force: 2.0,
@@ -122,7 +122,7 @@ impl StepRecord {
 /// ```
 pub fn contact_wrench<'a>(
     center: [f64; 3],
-    contacts: impl IntoIterator<Item = &'a SoftContact>,
+    contacts: impl IntoIterator<Item = &'a SoftContactMsg>,
 ) -> Wrench {
     let mut force = [0.0; 3];
     let mut torque = [0.0; 3];

@@ -13,7 +13,7 @@ mod common;
 use std::process::Command;
 
 use serde_json::Value;
-use softgrip_record::msgs::softgrip_msgs::SoftContact;
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::{Recorder, RecorderOptions, RecordingInfo, StepRecord, topics};
 
 const DT_NS: u64 = 1_000_000;
@@ -55,7 +55,7 @@ fn assert_header(got: &Value, step: &StepRecord) {
     assert_eq!(got["frame_id"], step.world_frame.as_str());
 }
 
-fn assert_contact(got: &Value, want: &SoftContact, step: &StepRecord) {
+fn assert_contact(got: &Value, want: &SoftContactMsg, step: &StepRecord) {
     assert_header(&got["header"], step);
     assert_eq!(got["fingertip"], want.fingertip.as_str());
     assert_eq!(got["other"], want.other.as_str());
@@ -97,7 +97,6 @@ fn python_mcap_ros2_decodes_every_message() {
     let path = dir.path().join("squeeze.mcap");
     let info = RecordingInfo {
         scene: "external reader test".into(),
-        law: "calibrated".into(),
         ..Default::default()
     };
     // Small chunks, so the reader crosses many chunk boundaries.

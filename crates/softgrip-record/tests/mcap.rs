@@ -8,9 +8,11 @@ mod common;
 
 use std::path::Path;
 
+use softgrip_law::Level;
 use softgrip_record::msgs::geometry_msgs::Point;
 use softgrip_record::{
-    Error, Message, Recorder, RecorderOptions, Recording, RecordingInfo, StepRecord, topics,
+    Error, FingertipLaw, Message, Recorder, RecorderOptions, Recording, RecordingInfo, StepRecord,
+    topics,
 };
 
 const DT_NS: u64 = 1_000_000;
@@ -18,7 +20,15 @@ const DT_NS: u64 = 1_000_000;
 fn info() -> RecordingInfo {
     RecordingInfo {
         scene: "two fingers squeeze a box".into(),
-        law: "level=calibrated E=3e6 nu=0.49 R=0.01".into(),
+        law: vec![FingertipLaw {
+            name: "tip".into(),
+            level: Level::Calibrated,
+            youngs_modulus: 3e6,
+            poisson_ratio: 0.49,
+            radius: 0.01,
+            friction: 0.8,
+            restitution: 0.5,
+        }],
         ..Default::default()
     }
 }
@@ -93,6 +103,8 @@ fn write_then_read_back() {
         rec.softgrip_metadata("softgrip_version"),
         Some(softgrip_record::SOFTGRIP_VERSION)
     );
+    // The typed record reads back what was written.
+    assert_eq!(rec.info().unwrap(), Some(info()));
     let topics: Vec<_> = rec.channels.iter().map(|c| c.topic.as_str()).collect();
     assert_eq!(
         topics,

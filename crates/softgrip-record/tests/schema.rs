@@ -9,7 +9,7 @@ use softgrip_record::msgs::builtin_interfaces::{Duration, Time};
 use softgrip_record::msgs::geometry_msgs::*;
 use softgrip_record::msgs::rosgraph_msgs::Clock;
 use softgrip_record::msgs::sensor_msgs::CompressedImage;
-use softgrip_record::msgs::softgrip_msgs::{LEVEL_KINDS, SoftContact, SoftContactArray};
+use softgrip_record::msgs::softgrip_msgs::{LEVEL_KINDS, SoftContactArrayMsg, SoftContactMsg};
 use softgrip_record::msgs::std_msgs::{ColorRGBA, Header};
 use softgrip_record::msgs::tf2_msgs::TFMessage;
 use softgrip_record::msgs::visualization_msgs::*;
@@ -44,6 +44,8 @@ fn rust_type(msg_type: &str) -> String {
         "uint8" => "u8".into(),
         "bool" => "bool".into(),
         "string" => "String".into(),
+        // softgrip_msgs types are suffixed `Msg` in Rust (`SoftContactMsg`), the ROS names are not.
+        "SoftContact" | "SoftContactArray" => format!("{msg_type}Msg"),
         other => other.rsplit('/').next().unwrap_or(other).to_owned(),
     }
 }
@@ -110,8 +112,8 @@ fn fields_match_msg_text() {
     check::<MeshFile>();
     check::<Marker>();
     check::<MarkerArray>();
-    check::<SoftContact>();
-    check::<SoftContactArray>();
+    check::<SoftContactMsg>();
+    check::<SoftContactArrayMsg>();
 }
 
 #[test]
@@ -140,7 +142,7 @@ fn level_codes_match_the_msg_constants() {
     for (i, kind) in LEVEL_KINDS.iter().enumerate() {
         assert_eq!(usize::from(kind.code()), i);
     }
-    let text = SoftContact::DEFINITION.text;
+    let text = SoftContactMsg::DEFINITION.text;
     for kind in LEVEL_KINDS {
         let constant = format!(
             "uint8 LEVEL_{}={}",
@@ -149,7 +151,7 @@ fn level_codes_match_the_msg_constants() {
         );
         assert!(text.contains(&constant), "{constant}");
     }
-    let mut c = SoftContact::default();
+    let mut c = SoftContactMsg::default();
     c.set_level(LevelKind::Tatara);
     assert_eq!((c.level, c.level_name.as_str()), (6, "tatara"));
     assert_eq!(c.level_kind(), Some(LevelKind::Tatara));

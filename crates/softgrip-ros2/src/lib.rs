@@ -6,10 +6,12 @@ mod node;
 mod publisher;
 pub mod qos;
 pub mod queue;
+mod sink;
 mod subscriber;
 
 pub use domain::{MAX_DOMAIN_ID, ROS_DOMAIN_ID, domain_id_from_env, parse_domain_id};
 pub use error::{Error, Result};
 pub use node::{NodeOptions, dds_topic_name, dds_type_name};
 pub use publisher::{CLOSE_LINGER, PublisherStats, Ros2Publisher, Ros2PublisherOptions};
+pub use sink::{Ros2Sink, SINK_CLOSE_TIMEOUT};
 pub use subscriber::{COMMAND_TOPIC, Ros2Subscriber};

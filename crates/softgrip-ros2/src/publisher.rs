@@ -1,6 +1,8 @@
-//! [`Ros2Publisher`]: publishes each [`StepRecord`] on the recording's topics from its own
-//! thread, fed by a bounded drop-oldest queue so the simulation never waits for the network.
+//! [`Ros2Publisher`]: publishes each [`StepRecord`] on the recording's topics (softgrip-record's
+//! step table, [`visit_step`]) from its own thread, fed by a bounded drop-oldest queue so the
+//! simulation never waits for the network.
 
+use std::any::Any;
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
@@ -8,13 +10,7 @@ use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use ros2_client::{Context, Node, Publisher, QosProfile};
-use serde::Serialize;
-use softgrip_record::msgs::geometry_msgs::WrenchStamped;
-use softgrip_record::msgs::rosgraph_msgs::Clock;
-use softgrip_record::msgs::softgrip_msgs::SoftContactArray;
-use softgrip_record::msgs::tf2_msgs::TFMessage;
-use softgrip_record::msgs::visualization_msgs::MarkerArray;
-use softgrip_record::{RosMessage, StepRecord, topics, visuals};
+use softgrip_record::{Delivery, RosMessage, StepRecord, StepTopic, StepVisitor, visit_step};
 
 use crate::error::{Error, Result};
 use crate::node::{NodeOptions, create_node, create_topic};
@@ -95,10 +91,10 @@ impl Shared {
 ///
 /// [`new`](Self::new) creates the DDS participant (domain from `ROS_DOMAIN_ID` unless given),
 /// the node and the publishers, with the QoS of [`qos`](crate::qos).
-/// [`publish_step`](Self::publish_step) copies the step into a bounded queue and returns at once; a thread
-/// publishes `/clock`, `/tf`, `/softgrip/contacts`, one `/softgrip/<tip>/wrench` per fingertip
-/// and `/softgrip/markers`, exactly the messages [`softgrip_record::Recorder::write_step`]
-/// writes. A full queue drops its oldest step ([`dropped`](Self::dropped) counts them).
+/// [`publish_step`](Self::publish_step) copies the step into a bounded queue and returns at
+/// once; a thread publishes the messages of softgrip-record's step table ([`visit_step`]:
+/// `/clock`, `/tf`, `/softgrip/contacts`, one `/softgrip/<tip>/wrench` per fingertip and
+/// `/softgrip/markers`), exactly those [`softgrip_record::Recorder::write_step`] writes. A full queue drops its oldest step ([`dropped`](Self::dropped) counts them).
 /// [`close`](Self::close) sends what is queued, within a timeout, and stops the thread.
 ///
 /// ```no_run
@@ -131,15 +127,16 @@ impl Ros2Publisher {
         if options.queue_capacity == 0 {
             return Err(Error::QueueCapacity);
         }
-        let (context, mut node, domain_id) = create_node(&options.node)?;
-        let mut worker = Worker {
-            clock: publisher(&context, &mut node, topics::CLOCK, qos::clock())?,
-            tf: publisher(&context, &mut node, topics::TF, qos::tf())?,
-            contacts: publisher(&context, &mut node, topics::CONTACTS, qos::data())?,
-            markers: publisher(&context, &mut node, topics::MARKERS, qos::data())?,
-            wrenches: HashMap::new(),
-            context,
+        let (context, node, domain_id) = create_node(&options.node)?;
+        let mut publishers = Publishers {
+            by_topic: HashMap::new(),
             node,
+            context,
+        };
+        // The topics of a step without fingertips (all but the wrenches) exist from the start.
+        visit_step(&mut StepRecord::default(), &mut Declare(&mut publishers))?;
+        let mut worker = Worker {
+            publishers,
             shared: Arc::new(Shared {
                 queue: DropOldestQueue::new(options.queue_capacity),
                 submitted: AtomicU64::new(0),
@@ -275,7 +272,7 @@ impl Drop for Ros2Publisher {
     }
 }
 
-fn publisher<M: RosMessage + Serialize>(
+fn publisher<M: RosMessage>(
     context: &Context,
     node: &mut Node,
     topic: &str,
@@ -290,19 +287,70 @@ fn publisher<M: RosMessage + Serialize>(
         })
 }
 
-/// The publisher thread's state: it owns the participant, so the participant is dropped
-/// (and leaves the DDS network) when the thread ends.
-struct Worker {
-    clock: Publisher<Clock>,
-    tf: Publisher<TFMessage>,
-    contacts: Publisher<SoftContactArray>,
-    markers: Publisher<MarkerArray>,
-    /// By fingertip name: the topic and its publisher (created on first use, as the
-    /// recorder's channels are).
-    wrenches: HashMap<String, (String, Publisher<WrenchStamped>)>,
+/// The QoS of a delivery class of the step table.
+fn qos_of(delivery: Delivery) -> QosProfile {
+    match delivery {
+        Delivery::Clock => qos::clock(),
+        Delivery::Tf => qos::tf(),
+        Delivery::Data => qos::data(),
+    }
+}
+
+/// A publisher of each topic of the step table (by topic, then fingertip; `""` for the topics
+/// that are not per fingertip), created on first use as the recorder's channels are.
+struct Publishers {
+    /// Each a `Publisher<M>` of its topic's type.
+    by_topic: HashMap<StepTopic, HashMap<String, Box<dyn Any + Send>>>,
     // Field order is drop order: the publishers go before the node and the context.
     node: Node,
     context: Context,
+}
+
+impl Publishers {
+    fn get<M: RosMessage>(&mut self, topic: StepTopic, fingertip: &str) -> Result<&Publisher<M>> {
+        let by_tip = self.by_topic.entry(topic).or_default();
+        if !by_tip.contains_key(fingertip) {
+            let name = topic.name(fingertip);
+            let p = publisher::<M>(
+                &self.context,
+                &mut self.node,
+                &name,
+                qos_of(topic.delivery()),
+            )?;
+            by_tip.insert(fingertip.to_owned(), Box::new(p));
+        }
+        by_tip
+            .get(fingertip)
+            .and_then(|p| p.downcast_ref::<Publisher<M>>())
+            .ok_or_else(|| Error::Endpoint {
+                what: "publisher",
+                topic: topic.name(fingertip).into_owned(),
+                reason: format!("the topic has another type than {}", M::TYPE_NAME),
+            })
+    }
+}
+
+/// Creates the publishers of the topics it visits, publishing nothing.
+struct Declare<'a>(&'a mut Publishers);
+
+impl StepVisitor for Declare<'_> {
+    type Error = Error;
+
+    fn message<M: RosMessage>(
+        &mut self,
+        topic: StepTopic,
+        fingertip: &str,
+        _time_ns: u64,
+        _msg: &M,
+    ) -> Result<()> {
+        self.0.get::<M>(topic, fingertip).map(|_| ())
+    }
+}
+
+/// The publisher thread's state: it owns the participant, so the participant is dropped
+/// (and leaves the DDS network) when the thread ends.
+struct Worker {
+    publishers: Publishers,
     shared: Arc<Shared>,
 }
 
@@ -319,7 +367,11 @@ impl Worker {
                 return;
             }
             match self.shared.queue.pop_timeout(Duration::from_millis(100)) {
-                Popped::Item(step) => self.publish(step),
+                Popped::Item(mut step) => {
+                    // Publishing never fails as a whole: each refused message is counted.
+                    let Ok(()) = visit_step(&mut step, self);
+                    self.shared.published.fetch_add(1, Ordering::Relaxed);
+                }
                 Popped::TimedOut => {}
                 Popped::Closed => {
                     self.linger();
@@ -341,44 +393,28 @@ impl Worker {
         let until = self.shared.flush_deadline().map_or(until, |d| d.min(until));
         std::thread::sleep(until.saturating_duration_since(Instant::now()));
     }
+}
 
-    fn send<M: Serialize>(shared: &Shared, publisher: &Publisher<M>, topic: &str, msg: M) {
-        if let Err(e) = publisher.publish(msg) {
-            shared.fail(format!("{topic}: {e}"));
-        }
-    }
+impl StepVisitor for Worker {
+    type Error = std::convert::Infallible;
 
-    /// The messages of `Recorder::write_step`, in its order.
-    fn publish(&mut self, mut step: StepRecord) {
-        let shared = &*self.shared;
-        let header = step.header();
-        Self::send(shared, &self.clock, topics::CLOCK, step.clock());
-        Self::send(shared, &self.tf, topics::TF, step.tf());
-        // The markers are built from the step before its contacts move into the array.
-        let markers = visuals::markers(&step);
-        let array = step.take_contact_array();
-        Self::send(shared, &self.contacts, topics::CONTACTS, array);
-        for tip in &step.fingertips {
-            let (topic, publisher) = match self.wrenches.get(&tip.name) {
-                Some(p) => p,
-                None => {
-                    let topic = topics::wrench(&tip.name);
-                    match publisher(&self.context, &mut self.node, &topic, qos::data()) {
-                        Ok(p) => self.wrenches.entry(tip.name.clone()).or_insert((topic, p)),
-                        Err(e) => {
-                            shared.fail(e.to_string());
-                            continue;
-                        }
-                    }
+    /// Publishes one message of the step; a topic that cannot be created or a message DDS
+    /// refuses is counted in `publish_failures`, and the step goes on.
+    fn message<M: RosMessage>(
+        &mut self,
+        topic: StepTopic,
+        fingertip: &str,
+        _time_ns: u64,
+        msg: &M,
+    ) -> Result<(), Self::Error> {
+        match self.publishers.get::<M>(topic, fingertip) {
+            Ok(publisher) => {
+                if let Err(e) = publisher.publish(msg.clone()) {
+                    self.shared.fail(format!("{}: {e}", topic.name(fingertip)));
                 }
-            };
-            let msg = WrenchStamped {
-                header: header.clone(),
-                wrench: tip.wrench,
-            };
-            Self::send(shared, publisher, topic, msg);
+            }
+            Err(e) => self.shared.fail(e.to_string()),
         }
-        Self::send(shared, &self.markers, topics::MARKERS, markers);
-        shared.published.fetch_add(1, Ordering::Relaxed);
+        Ok(())
     }
 }

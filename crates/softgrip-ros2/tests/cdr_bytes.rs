@@ -1,4 +1,5 @@
-//! softgrip-record's hand-written CDR and the serde CDR that ros2-client publishes with
+//! softgrip-record's CDR (serde through `cdr-encoding`, with its own encapsulation header and
+//! framing) and the serde CDR that ros2-client publishes with
 //! (RustDDS's `CDRSerializerAdapter`, the serialiser of every `ros2_client::Publisher`) give
 //! identical bytes for every message softgrip publishes, and each decodes the other's bytes.
 //! Strings of every length mod 8 move the later fields through every alignment.
@@ -17,7 +18,7 @@ use serde::Serialize;
 use serde::de::DeserializeOwned;
 use softgrip_record::msgs::geometry_msgs::{Point, WrenchStamped};
 use softgrip_record::msgs::rosgraph_msgs::Clock;
-use softgrip_record::msgs::softgrip_msgs::SoftContactArray;
+use softgrip_record::msgs::softgrip_msgs::SoftContactArrayMsg;
 use softgrip_record::msgs::std_msgs::ColorRGBA;
 use softgrip_record::msgs::visualization_msgs::{MarkerArray, UVCoordinate};
 use softgrip_record::{RosMessage, StepRecord, visuals};
@@ -71,13 +72,13 @@ fn step(k: u64, pad: usize) -> StepRecord {
     s
 }
 
-fn contacts(s: &StepRecord) -> SoftContactArray {
+fn contacts(s: &StepRecord) -> SoftContactArrayMsg {
     let header = s.header();
     let mut contacts = s.contacts.clone();
     for c in &mut contacts {
         c.header = header.clone();
     }
-    SoftContactArray { header, contacts }
+    SoftContactArrayMsg { header, contacts }
 }
 
 /// The step's markers, plus every optional field of a marker filled (points, colours, texture
@@ -123,11 +124,11 @@ fn serde_cdr_and_hand_written_cdr_are_identical() {
         }
     }
     // Empty messages too.
-    check(&SoftContactArray::default());
+    check(&SoftContactArrayMsg::default());
     check(&MarkerArray::default());
     check(&softgrip_record::msgs::tf2_msgs::TFMessage::default());
     check(&Clock::default());
     eprintln!(
-        "bytes compared (SoftContactArray, WrenchStamped, TFMessage, MarkerArray, Clock): {sizes:?}"
+        "bytes compared (SoftContactArrayMsg, WrenchStamped, TFMessage, MarkerArray, Clock): {sizes:?}"
     );
 }

@@ -1,6 +1,6 @@
 //! THE DDS ROUND TRIP: a DDS participant softgrip did not write (Eclipse Cyclone DDS through
 //! PyPI `cyclonedds`, with its own IDL definitions of the ROS 2 types) receives what
-//! `softgrip-ros2-probe` publishes with `Ros2Publisher` and decodes SoftContactArray and
+//! `softgrip-ros2-probe` publishes with `Ros2Publisher` and decodes SoftContactArrayMsg and
 //! WrenchStamped; every value equals the scripted step's (floats to 1e-12 relative, strings,
 //! integers and flags exactly). It then publishes a WrenchStamped on /softgrip/command, which
 //! the probe's `Ros2Subscriber` must receive with the same values.
@@ -17,7 +17,7 @@ mod script;
 
 use serde_json::Value;
 use softgrip_record::msgs::geometry_msgs::{Vector3, Wrench};
-use softgrip_record::msgs::softgrip_msgs::SoftContact;
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::{StepRecord, topics};
 
 const DOMAIN: &str = "17";
@@ -81,7 +81,7 @@ fn assert_wrench(got: &Value, want: &Wrench, what: &str) {
     );
 }
 
-fn assert_contact(got: &Value, want: &SoftContact, step: &StepRecord, what: &str) {
+fn assert_contact(got: &Value, want: &SoftContactMsg, step: &StepRecord, what: &str) {
     assert_header(&got["header"], step.time_ns, &step.world_frame, what);
     assert_eq!(got["fingertip"], want.fingertip.as_str(), "{what}");
     assert_eq!(got["other"], want.other.as_str(), "{what}");

@@ -12,7 +12,7 @@ mod script;
 
 use std::time::{Duration, Instant};
 
-use softgrip_record::msgs::softgrip_msgs::SoftContactArray;
+use softgrip_record::msgs::softgrip_msgs::SoftContactArrayMsg;
 use softgrip_ros2::{NodeOptions, Ros2Publisher, Ros2PublisherOptions, Ros2Subscriber, qos};
 
 fn options(domain: u16, queue_capacity: usize) -> Ros2PublisherOptions {
@@ -70,7 +70,7 @@ fn full_queue_drops_oldest_in_private_netns() {
 fn full_queue_drops_oldest() {
     common::assert_isolated();
     let publisher = Ros2Publisher::new(&options(9, 2)).unwrap();
-    let sub = Ros2Subscriber::<SoftContactArray>::new(
+    let sub = Ros2Subscriber::<SoftContactArrayMsg>::new(
         &NodeOptions {
             domain_id: Some(9),
             name: "softgrip_test".into(),

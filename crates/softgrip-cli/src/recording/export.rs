@@ -1,15 +1,20 @@
 //! `softgrip export FILE.mcap --csv DIR`: one CSV file per topic family, with units in the
-//! headers: `contacts.csv` (every `SoftContact` field), `wrenches.csv`, `poses.csv`,
-//! `clock.csv`. (`/softgrip/markers` is for 3D views and is not exported.)
+//! headers: `contacts.csv` (every `SoftContactMsg` field), `wrenches.csv`, `poses.csv`,
+//! `clock.csv`. (`/softgrip/markers` is for 3D views and is not exported.) Each file's row is a
+//! serde struct written by the `csv` crate (its field names are the header).
 
 use std::fs::File;
 use std::io::{BufWriter, Write};
+use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
+use serde::Serialize;
+use softgrip_ecs::softgrip_record::msgs::geometry_msgs::TransformStamped;
+use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_ecs::softgrip_record::{Message, Recording, topics};
 
-use super::{csv_field, fingertips, open, seconds};
+use super::{fingertips, open, seconds};
 
 /// Arguments of `softgrip export`.
 #[derive(Debug, Clone, clap::Args)]
@@ -21,16 +26,191 @@ pub struct ExportArgs {
     pub csv: PathBuf,
 }
 
-/// Header of `contacts.csv`.
-pub const CONTACTS_HEADER: &str = "time_s,fingertip,other,point_x_m,point_y_m,point_z_m,normal_x,normal_y,normal_z,compression_m,ratio_x,normal_force_N,friction_force_x_N,friction_force_y_N,friction_force_z_N,torsional_moment_Nm,contact_radius_m,mean_pressure_Pa,peak_pressure_Pa,stiffness_N_per_m,level,level_name,validity_exceeded,sliding,peak_normal_force_N,max_compression_m,contact_duration_s";
+/// A row of `contacts.csv`: every field of a `SoftContact`, at its log time.
+#[derive(Serialize, Default)]
+struct ContactRow<'a> {
+    time_s: f64,
+    fingertip: &'a str,
+    other: &'a str,
+    point_x_m: f64,
+    point_y_m: f64,
+    point_z_m: f64,
+    normal_x: f64,
+    normal_y: f64,
+    normal_z: f64,
+    compression_m: f64,
+    ratio_x: f64,
+    #[serde(rename = "normal_force_N")]
+    normal_force: f64,
+    #[serde(rename = "friction_force_x_N")]
+    friction_force_x: f64,
+    #[serde(rename = "friction_force_y_N")]
+    friction_force_y: f64,
+    #[serde(rename = "friction_force_z_N")]
+    friction_force_z: f64,
+    #[serde(rename = "torsional_moment_Nm")]
+    torsional_moment: f64,
+    contact_radius_m: f64,
+    #[serde(rename = "mean_pressure_Pa")]
+    mean_pressure: f64,
+    #[serde(rename = "peak_pressure_Pa")]
+    peak_pressure: f64,
+    #[serde(rename = "stiffness_N_per_m")]
+    stiffness: f64,
+    level: u8,
+    level_name: &'a str,
+    /// 0 or 1.
+    validity_exceeded: u8,
+    /// 0 or 1.
+    sliding: u8,
+    #[serde(rename = "peak_normal_force_N")]
+    peak_normal_force: f64,
+    max_compression_m: f64,
+    contact_duration_s: f64,
+}
 
-fn create(dir: &Path, name: &str, header: &str) -> Result<BufWriter<File>> {
-    let path = dir.join(name);
-    let mut w = BufWriter::new(
-        File::create(&path).with_context(|| format!("creating {}", path.display()))?,
-    );
-    writeln!(w, "{header}")?;
-    Ok(w)
+impl<'a> ContactRow<'a> {
+    fn new(time_s: f64, c: &'a SoftContactMsg) -> Self {
+        Self {
+            time_s,
+            fingertip: &c.fingertip,
+            other: &c.other,
+            point_x_m: c.point.x,
+            point_y_m: c.point.y,
+            point_z_m: c.point.z,
+            normal_x: c.normal.x,
+            normal_y: c.normal.y,
+            normal_z: c.normal.z,
+            compression_m: c.compression,
+            ratio_x: c.ratio_x,
+            normal_force: c.normal_force,
+            friction_force_x: c.friction_force.x,
+            friction_force_y: c.friction_force.y,
+            friction_force_z: c.friction_force.z,
+            torsional_moment: c.torsional_moment,
+            contact_radius_m: c.contact_radius,
+            mean_pressure: c.mean_pressure,
+            peak_pressure: c.peak_pressure,
+            stiffness: c.stiffness,
+            level: c.level,
+            level_name: &c.level_name,
+            validity_exceeded: u8::from(c.validity_exceeded),
+            sliding: u8::from(c.sliding),
+            peak_normal_force: c.peak_normal_force,
+            max_compression_m: c.max_compression,
+            contact_duration_s: c.contact_duration,
+        }
+    }
+}
+
+/// A row of `wrenches.csv`.
+#[derive(Serialize, Default)]
+#[allow(non_snake_case)] // the unit in the column name: N, N m
+struct WrenchRow<'a> {
+    time_s: f64,
+    fingertip: &'a str,
+    topic: &'a str,
+    force_x_N: f64,
+    force_y_N: f64,
+    force_z_N: f64,
+    torque_x_Nm: f64,
+    torque_y_Nm: f64,
+    torque_z_Nm: f64,
+}
+
+/// A row of `poses.csv`.
+#[derive(Serialize, Default)]
+struct PoseRow<'a> {
+    time_s: f64,
+    parent_frame: &'a str,
+    frame: &'a str,
+    x_m: f64,
+    y_m: f64,
+    z_m: f64,
+    qx: f64,
+    qy: f64,
+    qz: f64,
+    qw: f64,
+}
+
+impl<'a> PoseRow<'a> {
+    fn new(time_s: f64, p: &'a TransformStamped) -> Self {
+        let (v, q) = (&p.transform.translation, &p.transform.rotation);
+        Self {
+            time_s,
+            parent_frame: &p.header.frame_id,
+            frame: &p.child_frame_id,
+            x_m: v.x,
+            y_m: v.y,
+            z_m: v.z,
+            qx: q.x,
+            qy: q.y,
+            qz: q.z,
+            qw: q.w,
+        }
+    }
+}
+
+/// A row of `clock.csv`.
+#[derive(Serialize, Default)]
+struct ClockRow {
+    log_time_s: f64,
+    clock_s: f64,
+}
+
+/// One CSV file of rows `R`, and its row count.
+struct Table<R> {
+    name: &'static str,
+    writer: csv::Writer<BufWriter<File>>,
+    rows: usize,
+    _row: PhantomData<fn(R)>,
+}
+
+/// The CSV writer of softgrip's exports: `\n` line ends, fields quoted only when needed.
+fn builder() -> csv::WriterBuilder {
+    let mut b = csv::WriterBuilder::new();
+    b.terminator(csv::Terminator::Any(b'\n'));
+    b
+}
+
+impl<R: Serialize + Default> Table<R> {
+    /// Creates `dir/name` with its header line (the field names of `R`), so that a file with
+    /// no rows still says what its columns are.
+    fn create(dir: &Path, name: &'static str) -> Result<Self> {
+        let path = dir.join(name);
+        let file = File::create(&path).with_context(|| format!("creating {}", path.display()))?;
+        let mut file = BufWriter::new(file);
+        let mut header = builder().from_writer(Vec::new());
+        header.serialize(R::default())?;
+        let header = header.into_inner().context("CSV header")?;
+        let end = header
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(header.len(), |i| i + 1);
+        file.write_all(&header[..end])
+            .with_context(|| format!("writing {}", path.display()))?;
+        Ok(Self {
+            name,
+            writer: builder().has_headers(false).from_writer(file),
+            rows: 0,
+            _row: PhantomData,
+        })
+    }
+
+    fn row(&mut self, row: R) -> Result<()> {
+        self.writer
+            .serialize(row)
+            .with_context(|| format!("writing {}", self.name))?;
+        self.rows += 1;
+        Ok(())
+    }
+
+    fn finish(mut self) -> Result<(&'static str, usize)> {
+        self.writer
+            .flush()
+            .with_context(|| format!("writing {}", self.name))?;
+        Ok((self.name, self.rows))
+    }
 }
 
 /// Runs the command; prints the files written and their rows.
@@ -51,114 +231,55 @@ pub fn export(args: &ExportArgs) -> Result<()> {
 }
 
 fn write_all(rec: &Recording, dir: &Path) -> Result<Vec<(&'static str, usize)>> {
-    let mut contacts = create(dir, "contacts.csv", CONTACTS_HEADER)?;
-    let mut wrenches = create(
-        dir,
-        "wrenches.csv",
-        "time_s,fingertip,topic,force_x_N,force_y_N,force_z_N,torque_x_Nm,torque_y_Nm,torque_z_Nm",
-    )?;
-    let mut poses = create(
-        dir,
-        "poses.csv",
-        "time_s,parent_frame,frame,x_m,y_m,z_m,qx,qy,qz,qw",
-    )?;
-    let mut clock = create(dir, "clock.csv", "log_time_s,clock_s")?;
+    let mut contacts = Table::<ContactRow>::create(dir, "contacts.csv")?;
+    let mut wrenches = Table::<WrenchRow>::create(dir, "wrenches.csv")?;
+    let mut poses = Table::<PoseRow>::create(dir, "poses.csv")?;
+    let mut clock = Table::<ClockRow>::create(dir, "clock.csv")?;
     let names = fingertips(rec);
     let tip_of_topic = |topic: &str| {
         names
             .iter()
             .find(|n| topics::wrench(n) == topic)
-            .cloned()
-            .unwrap_or_default()
+            .map_or("", String::as_str)
     };
-    let mut n = [0usize; 4];
     for m in &rec.messages {
         let t = seconds(m.log_time_ns);
         match &m.message {
             Message::Contacts(a) => {
                 for c in &a.contacts {
-                    writeln!(
-                        contacts,
-                        "{t},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-                        csv_field(&c.fingertip),
-                        csv_field(&c.other),
-                        c.point.x,
-                        c.point.y,
-                        c.point.z,
-                        c.normal.x,
-                        c.normal.y,
-                        c.normal.z,
-                        c.compression,
-                        c.ratio_x,
-                        c.normal_force,
-                        c.friction_force.x,
-                        c.friction_force.y,
-                        c.friction_force.z,
-                        c.torsional_moment,
-                        c.contact_radius,
-                        c.mean_pressure,
-                        c.peak_pressure,
-                        c.stiffness,
-                        c.level,
-                        csv_field(&c.level_name),
-                        u8::from(c.validity_exceeded),
-                        u8::from(c.sliding),
-                        c.peak_normal_force,
-                        c.max_compression,
-                        c.contact_duration
-                    )?;
-                    n[0] += 1;
+                    contacts.row(ContactRow::new(t, c))?;
                 }
             }
             Message::Wrench(w) => {
                 let (f, q) = (&w.wrench.force, &w.wrench.torque);
-                writeln!(
-                    wrenches,
-                    "{t},{},{},{},{},{},{},{},{}",
-                    csv_field(&tip_of_topic(&m.topic)),
-                    csv_field(&m.topic),
-                    f.x,
-                    f.y,
-                    f.z,
-                    q.x,
-                    q.y,
-                    q.z
-                )?;
-                n[1] += 1;
+                wrenches.row(WrenchRow {
+                    time_s: t,
+                    fingertip: tip_of_topic(&m.topic),
+                    topic: &m.topic,
+                    force_x_N: f.x,
+                    force_y_N: f.y,
+                    force_z_N: f.z,
+                    torque_x_Nm: q.x,
+                    torque_y_Nm: q.y,
+                    torque_z_Nm: q.z,
+                })?;
             }
             Message::Tf(tf) => {
                 for p in &tf.transforms {
-                    let (v, q) = (&p.transform.translation, &p.transform.rotation);
-                    writeln!(
-                        poses,
-                        "{t},{},{},{},{},{},{},{},{},{}",
-                        csv_field(&p.header.frame_id),
-                        csv_field(&p.child_frame_id),
-                        v.x,
-                        v.y,
-                        v.z,
-                        q.x,
-                        q.y,
-                        q.z,
-                        q.w
-                    )?;
-                    n[2] += 1;
+                    poses.row(PoseRow::new(t, p))?;
                 }
             }
-            Message::Clock(c) => {
-                writeln!(clock, "{t},{}", seconds(c.clock.as_nanos()))?;
-                n[3] += 1;
-            }
+            Message::Clock(c) => clock.row(ClockRow {
+                log_time_s: t,
+                clock_s: seconds(c.clock.as_nanos()),
+            })?,
             _ => {}
         }
     }
-    for w in [&mut contacts, &mut wrenches, &mut poses, &mut clock] {
-        w.flush()?;
-    }
     Ok(vec![
-        ("contacts.csv", n[0]),
-        ("wrenches.csv", n[1]),
-        ("poses.csv", n[2]),
-        ("clock.csv", n[3]),
+        contacts.finish()?,
+        wrenches.finish()?,
+        poses.finish()?,
+        clock.finish()?,
     ])
 }

@@ -6,9 +6,9 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::Result;
-use softgrip_ecs::softgrip_record::Recording;
+use softgrip_ecs::softgrip_record::{Recording, RecordingInfo, TipRunSummary};
 
-use super::{contact_radius, contacts, fingertips, laws, open, seconds};
+use super::{contact_radius, contacts, fingertips, info, laws, open, seconds};
 
 /// Arguments of `softgrip inspect`.
 #[derive(Debug, Clone, clap::Args)]
@@ -52,12 +52,42 @@ fn times(ts: &[f64]) -> String {
 /// The report, as printed.
 fn report(name: &str, rec: &Recording) -> String {
     let mut out = String::new();
-    let version = rec.softgrip_metadata("softgrip_version").unwrap_or("?");
-    let origin = rec.softgrip_metadata("origin").unwrap_or("?");
-    let every = rec.softgrip_metadata("every_n_steps").unwrap_or("?");
+    let info = info(rec);
+    write_header(&mut out, name, rec, &info);
+    let run_summary = rec.run_summary().ok().flatten();
+    let mut found = findings(rec);
+    for tip in fingertips(rec) {
+        let f = found.remove(&tip).unwrap_or_default();
+        let counted = run_summary.as_ref().and_then(|s| s.tip(&tip));
+        write_tip(&mut out, &tip, &f, counted);
+    }
+    if !info.law.is_empty() {
+        let _ = writeln!(out, "law:");
+        for law in &info.law {
+            let _ = writeln!(out, "  {law}");
+        }
+    }
+    out
+}
+
+/// The first lines: what the file is, whether it was recovered, its messages and topics.
+fn write_header(out: &mut String, name: &str, rec: &Recording, info: &RecordingInfo) {
+    let or_unknown = |s: &str| {
+        if s.is_empty() {
+            "?".to_owned()
+        } else {
+            s.to_owned()
+        }
+    };
+    let every = match info.every_n_steps {
+        0 => "?".to_owned(),
+        n => n.to_string(),
+    };
     let _ = writeln!(
         out,
-        "{name}: softgrip {version} recording of {origin} (every {every} step(s))"
+        "{name}: softgrip {} recording of {} (every {every} step(s))",
+        or_unknown(&info.softgrip_version),
+        or_unknown(&info.origin)
     );
     if let Some(r) = &rec.recovery {
         let _ = writeln!(
@@ -85,23 +115,22 @@ fn report(name: &str, rec: &Recording) -> String {
             c.topic, c.schema_name, c.message_count
         );
     }
+}
+
+/// Per fingertip: peaks, and the slip and excursion events of the recorded steps.
+fn findings(rec: &Recording) -> HashMap<String, TipFindings> {
     let laws = laws(rec);
-    let law_of = |tip: &str| {
-        laws.iter()
-            .find(|l| l.name == tip)
-            .and_then(|l| l.law().ok())
-    };
+    let law_cache: HashMap<String, _> = fingertips(rec)
+        .into_iter()
+        .map(|t| {
+            let l = laws.iter().find(|l| l.name == t).and_then(|l| l.law().ok());
+            (t, l)
+        })
+        .collect();
     let mut found: HashMap<String, TipFindings> = HashMap::new();
     // Slip and excursion events: a contact (fingertip, other) that starts sliding (or past the
     // validity range) in a recorded step where it did not in the previous recorded step.
     let mut state: HashMap<(String, String), (bool, bool, f64)> = HashMap::new();
-    let law_cache: HashMap<String, _> = fingertips(rec)
-        .into_iter()
-        .map(|t| {
-            let l = law_of(&t);
-            (t, l)
-        })
-        .collect();
     let mut last_t = f64::NAN;
     for (t, c) in contacts(rec) {
         if t != last_t {
@@ -130,39 +159,34 @@ fn report(name: &str, rec: &Recording) -> String {
         }
         state.insert(key, (c.sliding, c.validity_exceeded, t));
     }
-    for tip in fingertips(rec) {
-        let f = found.remove(&tip).unwrap_or_default();
-        let _ = writeln!(
-            out,
-            "fingertip {tip}: peak force {:.6} N (t = {:.4} s), peak x {:.4} (t = {:.4} s), contact radius at peak x {:.4} mm",
-            f.peak_force,
-            f.peak_force_t,
-            f.peak_x,
-            f.peak_x_t,
-            f.peak_radius * 1e3
-        );
-        // The run's own counts cover every step; the recording may hold every n-th only, and
-        // a slip or excursion shorter than n steps falls between recorded steps.
-        let events = |key: &str, seen: &[f64]| match rec.run_summary(&format!("{tip}.{key}")) {
-            Some(all) => format!(
-                "{all} (every step; {} in the recorded steps{})",
-                seen.len(),
-                times(seen)
-            ),
-            None => format!("{} (in the recorded steps){}", seen.len(), times(seen)),
-        };
-        let _ = writeln!(
-            out,
-            "  slip events: {}; validity excursions: {}",
-            events("slips", &f.slips),
-            events("validity_excursions", &f.excursions)
-        );
-    }
-    if let Some(l) = rec.softgrip_metadata("law") {
-        let _ = writeln!(out, "law:");
-        for line in l.lines() {
-            let _ = writeln!(out, "  {line}");
-        }
-    }
-    out
+    found
+}
+
+/// A fingertip's two lines; `counted` is the run's own summary of it, if the file has one.
+fn write_tip(out: &mut String, tip: &str, f: &TipFindings, counted: Option<&TipRunSummary>) {
+    let _ = writeln!(
+        out,
+        "fingertip {tip}: peak force {:.6} N (t = {:.4} s), peak x {:.4} (t = {:.4} s), contact radius at peak x {:.4} mm",
+        f.peak_force,
+        f.peak_force_t,
+        f.peak_x,
+        f.peak_x_t,
+        f.peak_radius * 1e3
+    );
+    // The run's own counts cover every step; the recording may hold every n-th only, and
+    // a slip or excursion shorter than n steps falls between recorded steps.
+    let events = |all: Option<u32>, seen: &[f64]| match all {
+        Some(all) => format!(
+            "{all} (every step; {} in the recorded steps{})",
+            seen.len(),
+            times(seen)
+        ),
+        None => format!("{} (in the recorded steps){}", seen.len(), times(seen)),
+    };
+    let _ = writeln!(
+        out,
+        "  slip events: {}; validity excursions: {}",
+        events(counted.map(|c| c.slips), &f.slips),
+        events(counted.map(|c| c.validity_excursions), &f.excursions)
+    );
 }

@@ -12,9 +12,8 @@ pub use plot::{PlotArgs, plot};
 use std::path::Path;
 
 use anyhow::{Result, anyhow};
-use softgrip_ecs::FingertipLaw;
-use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContact;
-use softgrip_ecs::softgrip_record::{Message, Recording, topics};
+use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+use softgrip_ecs::softgrip_record::{FingertipLaw, Message, Recording, RecordingInfo, topics};
 
 /// Opens a recording; any failure (missing, not MCAP, truncated before the magic, corrupt) is
 /// one line naming the file.
@@ -36,7 +35,7 @@ pub fn seconds(ns: u64) -> f64 {
 }
 
 /// Every recorded contact with its log time [s], in file order.
-pub fn contacts(rec: &Recording) -> impl Iterator<Item = (f64, &SoftContact)> {
+pub fn contacts(rec: &Recording) -> impl Iterator<Item = (f64, &SoftContactMsg)> {
     rec.on_topic(topics::CONTACTS).flat_map(|m| {
         let t = seconds(m.log_time_ns);
         match &m.message {
@@ -46,11 +45,20 @@ pub fn contacts(rec: &Recording) -> impl Iterator<Item = (f64, &SoftContact)> {
     })
 }
 
+/// What the recording is of (its typed `softgrip` metadata record; the defaults when absent
+/// or unreadable, with a warning for the latter).
+pub fn info(rec: &Recording) -> RecordingInfo {
+    rec.info()
+        .unwrap_or_else(|e| {
+            eprintln!("warning: {e}");
+            None
+        })
+        .unwrap_or_default()
+}
+
 /// The per-fingertip law parameters of the metadata (empty when absent or unreadable).
 pub fn laws(rec: &Recording) -> Vec<FingertipLaw> {
-    rec.softgrip_metadata("law")
-        .and_then(|t| FingertipLaw::parse_all(t).ok())
-        .unwrap_or_default()
+    rec.info().ok().flatten().map(|i| i.law).unwrap_or_default()
 }
 
 /// Fingertip names: those of the metadata, then any other seen in the contacts.
@@ -66,18 +74,9 @@ pub fn fingertips(rec: &Recording) -> Vec<String> {
 
 /// The contact radius of a recorded contact: the recorded one when the scene recorded
 /// pressure, otherwise the law's at the recorded compression (when the metadata has the law).
-pub fn contact_radius(c: &SoftContact, law: Option<&softgrip_law::ContactLaw>) -> f64 {
+pub fn contact_radius(c: &SoftContactMsg, law: Option<&softgrip_law::ContactLaw>) -> f64 {
     if c.contact_radius > 0.0 {
         return c.contact_radius;
     }
     law.map_or(0.0, |l| l.patch(c.compression).radius)
-}
-
-/// Quotes a CSV field if needed.
-pub fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
 }

@@ -7,7 +7,9 @@ use crate::components::{BodyPose, Fingertip, FingertipWrench, RigidBody};
 use crate::resources::{
     CurrentFrame, Physics, Publisher, RecordSelection, Recorder, SceneInfoResource, SimClock,
 };
-use crate::sink::{BodySample, ContactSample, WrenchSample};
+use softgrip_record::{BodySample, ContactSample, WrenchSample};
+
+use crate::to_record::contact_reading;
 
 /// Fills [`CurrentFrame`] with what [`RecordSelection`] asks for, names resolved. Scheduled
 /// only on steps that a sink takes ([`StepSink::wants`](crate::StepSink::wants)): with only
@@ -68,8 +70,7 @@ pub fn assemble_frame(
             f.contacts.push(ContactSample {
                 fingertip: name_of(tip),
                 other: name_of(other),
-                contact: c.clone(),
-                patch: sel.pressure.then(|| c.patch()),
+                contact: contact_reading(c, sel.pressure.then(|| c.patch())),
             });
         }
     }

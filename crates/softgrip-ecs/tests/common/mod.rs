@@ -31,7 +31,7 @@ pub fn contact_bits(frames: &[StepFrame]) -> Vec<Vec<u64>> {
         .map(|f| {
             f.contacts
                 .iter()
-                .flat_map(|c| readout_bits(&c.contact))
+                .flat_map(|c| reading_bits(&c.contact))
                 .collect()
         })
         .collect()
@@ -39,6 +39,11 @@ pub fn contact_bits(frames: &[StepFrame]) -> Vec<Vec<u64>> {
 
 /// The bits of one plugin readout, in the order the equivalence tests compare them.
 pub fn readout_bits(k: &softgrip_ecs::softgrip_rapier::SoftContact) -> Vec<u64> {
+    reading_bits(&softgrip_ecs::contact_reading(k, None))
+}
+
+/// The bits of one contact of a sink's frame, in the order the equivalence tests compare them.
+pub fn reading_bits(k: &softgrip_ecs::ContactReading) -> Vec<u64> {
     let mut v = vec![
         k.normal_force,
         k.delta,

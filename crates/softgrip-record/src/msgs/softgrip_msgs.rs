@@ -1,5 +1,5 @@
-//! `softgrip_msgs` (the interface package in `ros2/softgrip_msgs/`): [`SoftContact`] and
-//! [`SoftContactArray`].
+//! `softgrip_msgs` (the interface package in `ros2/softgrip_msgs/`): [`SoftContactMsg`] and
+//! [`SoftContactArrayMsg`].
 
 use softgrip_law::{LevelKind, Regime};
 
@@ -11,7 +11,7 @@ ros_message! {
     /// One soft fingertip contact over a step. Fields, units and conventions are those of
     /// `ros2/softgrip_msgs/msg/SoftContact.msg`, which is embedded verbatim as the schema.
     #[derive(Debug, Clone, PartialEq, Default)]
-    pub struct SoftContact {
+    pub struct SoftContactMsg {
         name = "softgrip_msgs/msg/SoftContact", file = "../../ros2/softgrip_msgs/msg/SoftContact.msg",
         deps = [Header, Point, Vector3];
         /// Stamp: simulation time at the end of the step; frame: the world frame.
@@ -62,13 +62,13 @@ ros_message! {
 ros_message! {
     /// Every soft contact of one step (`/softgrip/contacts`).
     #[derive(Debug, Clone, PartialEq, Default)]
-    pub struct SoftContactArray {
+    pub struct SoftContactArrayMsg {
         name = "softgrip_msgs/msg/SoftContactArray", file = "../../ros2/softgrip_msgs/msg/SoftContactArray.msg",
-        deps = [Header, SoftContact];
+        deps = [Header, SoftContactMsg];
         /// Stamp: simulation time at the end of the step; frame: the world frame.
         pub header: Header,
         /// The contacts (may be empty).
-        pub contacts: Vec<SoftContact>,
+        pub contacts: Vec<SoftContactMsg>,
     }
 }
 
@@ -96,7 +96,7 @@ pub fn level_from_code(code: u8) -> Option<LevelKind> {
     LEVEL_KINDS.get(usize::from(code)).copied()
 }
 
-impl SoftContact {
+impl SoftContactMsg {
     /// Sets `level` and `level_name` from the law level that computed the force.
     pub fn set_level(&mut self, level: LevelKind) {
         self.level = level.code();

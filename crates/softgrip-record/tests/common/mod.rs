@@ -3,7 +3,7 @@
 
 use softgrip_law::{LevelKind, Regime};
 use softgrip_record::msgs::geometry_msgs::{Point, Vector3};
-use softgrip_record::msgs::softgrip_msgs::SoftContact;
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::{BodyPose, FingertipState, StepRecord, contact_wrench};
 
 /// Step `k` of a squeeze at `dt_ns`: two fingertips press a box; contacts come and go.
@@ -18,7 +18,7 @@ pub fn step(k: u64, dt_ns: u64) -> StepRecord {
         let s = if i == 0 { 1.0 } else { -1.0 };
         let center = [s * (0.03 + r - delta), 0.001 * t, 0.05];
         if k % 7 != 3 || i == 0 {
-            let mut c = SoftContact {
+            let mut c = SoftContactMsg {
                 fingertip: name.to_string(),
                 other: "box".into(),
                 point: Point::from_array([s * 0.03, 0.001 * t, 0.05 + 1e-5 * k as f64]),

@@ -4,7 +4,7 @@
 
 use softgrip_law::{LevelKind, Regime};
 use softgrip_record::msgs::geometry_msgs::{Point, Vector3};
-use softgrip_record::msgs::softgrip_msgs::SoftContact;
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::{BodyPose, FingertipState, StepRecord, contact_wrench};
 
 /// Steps in the script (published in a loop, each keeping its stamp).
@@ -34,7 +34,7 @@ pub fn step(k: u64) -> StepRecord {
             1e-3 * kf / 7.0,
             0.05 + kf * 1e-6,
         ];
-        let mut c = SoftContact {
+        let mut c = SoftContactMsg {
             fingertip: (*name).to_owned(),
             other: OTHER.to_owned(),
             point: Point::from_array([s * 0.03, center[1], center[2] - 1e-5 / 3.0]),

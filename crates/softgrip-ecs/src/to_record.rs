@@ -1,0 +1,152 @@
+//! The ECS side of recording: the plugin's readout and the scene converted into
+//! softgrip-record's plain sink types ([`SceneInfo`], [`ContactReading`], [`FingertipLaw`],
+//! [`RunSummary`]), and [`McapSink`], softgrip-record's MCAP sink created from a scene.
+
+use std::path::Path;
+use std::sync::{Arc, Mutex};
+
+use softgrip_law::ContactPatch;
+use softgrip_rapier::{SoftContact, SoftFingertip};
+use softgrip_record::{
+    ContactReading, FingertipInfo, FingertipLaw, McapReport, McapSinkError, RecorderOptions,
+    RecordingStats, RunSummary, SceneInfo, SinkError, StepFrame, StepSink, TipRunSummary,
+};
+
+use crate::scene::Scene;
+use crate::summary::Summary;
+
+/// The law parameters of a fingertip (named `name`: the scene's name for it).
+pub fn fingertip_law(tip: &SoftFingertip, name: &str) -> FingertipLaw {
+    let m = tip.material();
+    FingertipLaw {
+        name: name.to_owned(),
+        level: tip.level(),
+        youngs_modulus: m.youngs_modulus(),
+        poisson_ratio: m.poisson_ratio(),
+        radius: tip.radius(),
+        friction: tip.friction(),
+        restitution: tip.restitution(),
+    }
+}
+
+/// What the sinks learn of a scene before its first step.
+pub fn scene_info(scene: &Scene) -> SceneInfo {
+    let f = scene.file();
+    SceneInfo {
+        origin: scene.origin().to_owned(),
+        dt: f.dt,
+        steps: scene.steps(),
+        bodies: f.bodies.iter().map(|b| b.name.clone()).collect(),
+        fingertips: scene
+            .fingertips()
+            .iter()
+            .zip(&f.fingertips)
+            .map(|(tip, spec)| FingertipInfo {
+                name: spec.name.clone(),
+                body: spec.body.clone(),
+                offset: spec.offset,
+                radius: spec.radius,
+                law: fingertip_law(tip, &spec.name),
+            })
+            .collect(),
+    }
+}
+
+/// The numbers of a plugin readout, with its patch when pressure is recorded.
+pub fn contact_reading(c: &SoftContact, patch: Option<ContactPatch>) -> ContactReading {
+    ContactReading {
+        point: c.point,
+        normal: c.normal,
+        delta: c.delta,
+        x: c.x,
+        normal_force: c.normal_force,
+        friction_force: c.friction_force,
+        torsional_moment: c.torsional_moment,
+        stiffness: c.stiffness,
+        level: c.level,
+        regime: c.regime,
+        validity_exceeded: c.validity_exceeded,
+        sliding: c.sliding,
+        peak_normal_force: c.peak_normal_force,
+        max_delta: c.max_delta,
+        contact_duration: c.contact_duration,
+        patch,
+    }
+}
+
+/// The run's summary for the sinks: `steps` run, and per fingertip its slips, validity
+/// excursions, peak force [N] and peak x.
+pub fn run_summary(summary: &Summary, steps: u64) -> RunSummary {
+    RunSummary {
+        steps,
+        fingertips: summary
+            .tips
+            .iter()
+            .map(|(_, t)| TipRunSummary {
+                name: t.name.clone(),
+                slips: t.slips,
+                validity_excursions: t.validity_excursions,
+                peak_force: t.peak_force,
+                peak_x: t.peak_x,
+            })
+            .collect(),
+    }
+}
+
+/// softgrip-record's [`McapSink`](softgrip_record::McapSink), created from a scene (its
+/// [`scene_info`] and the scene file's text); everything else is the inner sink's.
+#[derive(Debug)]
+pub struct McapSink(pub softgrip_record::McapSink);
+
+impl McapSink {
+    /// Creates `path` for `scene`, recording every `scene.file().record.every_n_steps`-th step.
+    pub fn create(
+        path: impl AsRef<Path>,
+        scene: &Scene,
+        scene_text: &str,
+    ) -> Result<Self, softgrip_record::Error> {
+        let n = scene.file().record.every_n_steps;
+        Self::with_options(path, scene, scene_text, n, &RecorderOptions::default())
+    }
+
+    /// See [`softgrip_record::McapSink::with_options`].
+    pub fn with_options(
+        path: impl AsRef<Path>,
+        scene: &Scene,
+        scene_text: &str,
+        every_n_steps: u64,
+        options: &RecorderOptions,
+    ) -> Result<Self, softgrip_record::Error> {
+        let info = scene_info(scene);
+        softgrip_record::McapSink::with_options(path, &info, scene_text, every_n_steps, options)
+            .map(Self)
+    }
+
+    /// See [`softgrip_record::McapSink::report_handle`].
+    pub fn report_handle(&self) -> Arc<Mutex<McapReport>> {
+        self.0.report_handle()
+    }
+
+    /// See [`softgrip_record::McapSink::close`].
+    pub fn close(&mut self) -> Result<RecordingStats, McapSinkError> {
+        self.0.close()
+    }
+}
+
+impl StepSink for McapSink {
+    fn start(&mut self, info: &SceneInfo) -> Result<(), SinkError> {
+        self.0.start(info)
+    }
+    fn wants(&self, step: u64) -> bool {
+        self.0.wants(step)
+    }
+    fn write(&mut self, frame: &StepFrame) -> Result<(), SinkError> {
+        self.0.write(frame)
+    }
+    fn run_summary(&mut self, summary: &RunSummary) {
+        self.0.run_summary(summary);
+    }
+    fn finish(&mut self) -> Result<(), SinkError> {
+        self.0.finish()
+    }
+}
