@@ -1,4 +1,4 @@
-//! [`SoftContact`]: one entity per live soft contact, updated every step.
+//! [`FingertipContact`]: one entity per live soft contact, updated every step.
 
 use bevy_ecs::prelude::{Component, Entity};
 use softgrip_law::ContactPatch;
@@ -6,7 +6,7 @@ use softgrip_law::ContactPatch;
 /// A soft contact's readout: the plugin's [`softgrip_rapier::SoftContact`] with the ECS
 /// entities of both sides. Spawned when the contact starts, despawned when it ends.
 #[derive(Component, Debug, Clone)]
-pub struct SoftContact {
+pub struct FingertipContact {
     /// The fingertip entity.
     pub fingertip: Entity,
     /// The other side's entity (a `Collider` or a `Fingertip`).

@@ -1,9 +1,11 @@
 //! Sync: rotates the softgrip message buffers, creates the rapier body, collider or fingertip
 //! of every new component.
 //!
-//! New entities are inserted in spawn order (entity index) (bodies, then colliders, then fingertips), so a
-//! world built from components gets the same rapier handles as one built directly in scene
-//! order. Removal is not mirrored: despawning a synchronised entity leaves it in rapier.
+//! A scene's entities are in rapier from the start (`spawn_scene` builds the scene with
+//! `softgrip-scene`'s builder and tags them). The components you spawn yourself are inserted
+//! here, in spawn order (entity index) within each kind (bodies, then colliders, then
+//! fingertips), through the same rapier builders. Removal is not mirrored: despawning a
+//! synchronised entity leaves it in rapier.
 
 use bevy_ecs::prelude::{
     DetectChangesMut, Entity, FromWorld, Local, Message, Messages, Or, QueryState, With, Without,
@@ -108,8 +110,7 @@ pub(crate) fn create_in_rapier(world: &mut World, new: &mut Unsynchronised) {
         let physics = &mut *physics;
         for (e, b) in bodies {
             let h = physics.world.bodies.insert(b);
-            physics.body_entity.insert(h.into_raw_parts(), e);
-            physics.entity_body.insert(e, h);
+            physics.link_body(h, e);
             tagged_bodies.push((e, RapierBody(h)));
         }
         for (e, c, parent) in colliders {
@@ -119,7 +120,7 @@ pub(crate) fn create_in_rapier(world: &mut World, new: &mut Unsynchronised) {
                 Some(None) => continue, // its body is not synchronised yet
                 None => w.colliders.insert(c),
             };
-            physics.collider_entity.insert(h.into_raw_parts(), e);
+            physics.link_collider(h, e);
             tagged_colliders.push((e, RapierCollider(h)));
         }
         for (e, c, tip, parent) in tips {
@@ -130,7 +131,7 @@ pub(crate) fn create_in_rapier(world: &mut World, new: &mut Unsynchronised) {
             let h = w.colliders.insert_with_parent(c, b, &mut w.bodies);
             w.register(h, tip)
                 .expect("invariant: the fingertip's own ball collider was just inserted");
-            physics.collider_entity.insert(h.into_raw_parts(), e);
+            physics.link_collider(h, e);
             tagged_colliders.push((e, RapierCollider(h)));
         }
     }
