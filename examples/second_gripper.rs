@@ -1,6 +1,6 @@
 //! A user's own bevy_ecs app: the default scene, plus a second gripper (two kinematic jaws
 //! with soft fingertips around a second box) driven by a custom system that reads the
-//! `SoftContact` components: a proportional grip-force controller holding 4 N per fingertip.
+//! `FingertipContact` components: a proportional grip-force controller holding 4 N per fingertip.
 //!
 //! `cargo run -p softgrip-ecs --example second_gripper`
 
@@ -8,8 +8,8 @@ use softgrip_ecs::bevy_ecs::prelude::*;
 use softgrip_ecs::softgrip_rapier::rapier3d::prelude::SharedShape;
 use softgrip_ecs::softgrip_rapier::{Preset, SoftFingertip};
 use softgrip_ecs::{
-    AttachedTo, BodyKind, BodyPose, Collider, Fingertip, KinematicTarget, RigidBody, Scene,
-    SoftContact, SoftgripSet, build_schedule, spawn_scene,
+    AttachedTo, BodyKind, BodyPose, Collider, Fingertip, FingertipContact, KinematicTarget,
+    RigidBody, Scene, SoftgripSystems, build_schedule, spawn_scene,
 };
 
 /// A jaw of the second gripper: closes along `dir` until its fingertip pushes with `target` N.
@@ -20,9 +20,9 @@ struct ForceJaw {
     target: f64,
 }
 
-/// The custom controller: reads every SoftContact, moves each jaw by a gain times the force error.
+/// The custom controller: reads every FingertipContact, moves each jaw by a gain times the force error.
 fn grip_force_controller(
-    contacts: Query<&SoftContact>,
+    contacts: Query<&FingertipContact>,
     tips: Query<&AttachedTo, With<Fingertip>>,
     mut jaws: Query<(Entity, &mut ForceJaw, &mut KinematicTarget)>,
 ) {
@@ -69,12 +69,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
 
     let mut schedule = build_schedule(&world);
-    schedule.add_systems(grip_force_controller.in_set(SoftgripSet::Control));
+    schedule.add_systems(grip_force_controller.in_set(SoftgripSystems::Control));
     for _ in 0..600 {
         schedule.run(&mut world);
     }
 
-    for c in world.query::<&SoftContact>().iter(&world) {
+    for c in world.query::<&FingertipContact>().iter(&world) {
         let name = world.get::<Name>(c.fingertip).map_or("?", |n| n.as_str());
         let (f, x) = (c.contact.normal_force, c.contact.x);
         println!("{name}: {f:.3} N at x = {x:.3}");

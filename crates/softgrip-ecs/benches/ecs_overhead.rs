@@ -4,14 +4,13 @@
 //!
 //! What is timed, so that both sides do the same work:
 //!
-//! - Only the 300 steps. Building the world is setup on both sides: `PlainRun::new` builds
-//!   its rapier world, and `Simulation::initialize` builds the schedule and creates the same
-//!   rapier bodies, colliders and fingertips (before, the ECS did the latter in its first
-//!   timed step, which charged world construction to the ECS).
+//! - Only the 300 steps. Building the world is setup on both sides: `PlainRun::new` and
+//!   `Simulation::new` build the same rapier world with `softgrip-scene`'s builder, and
+//!   `Simulation::initialize` builds the schedule.
 //! - Same scene, same physics (the tests check the contact values are bit-identical), same
 //!   controller (trajectories and the gripper fed by the last step's compressions).
 //! - `plain_plugin` computes nothing else. The ECS also reads back every step what its
-//!   components and messages offer: every body's `BodyPose`, one `SoftContact` entity per
+//!   components and messages offer: every body's `BodyPose`, one `FingertipContact` entity per
 //!   contact, each fingertip's `FingertipWrench`, the transition messages (contact started or
 //!   ended, slip started, validity excursion), with their buffers rotated. So `ecs` over
 //!   `plain_plugin` is the strict figure: the ECS's machinery plus that readout.
@@ -49,16 +48,16 @@ struct PlainReadout {
 impl PlainReadout {
     fn read(&mut self, run: &PlainRun, step: u64) {
         let w = &run.world;
-        let time = step as f64 * w.params.dt as f64;
+        let time = step as f64 * w.physics.integration_parameters.dt as f64;
         self.poses.clear();
-        for h in &run.bodies {
-            if let Some(rb) = w.bodies.get(*h) {
+        for (_, h) in &run.handles.bodies {
+            if let Some(rb) = w.physics.bodies.get(*h) {
                 let (t, q) = (rb.translation(), rb.rotation());
                 self.poses.push(([t.x, t.y, t.z], [q.x, q.y, q.z, q.w]));
             }
         }
         self.wrenches.clear();
-        self.wrenches.resize(run.fingertips.len(), [0.0; 6]);
+        self.wrenches.resize(run.handles.fingertips.len(), [0.0; 6]);
         self.events.clear();
         let mut seen = 0;
         for c in w.soft.contacts() {
@@ -85,9 +84,14 @@ impl PlainReadout {
             if extended && !was_extended {
                 self.events.push((3, key, time));
             }
-            if let Some(k) = run.fingertips.iter().position(|h| *h == c.fingertip) {
+            if let Some(k) = run
+                .handles
+                .fingertips
+                .iter()
+                .position(|(_, h)| *h == c.fingertip)
+            {
                 let center = w
-                    .colliders
+                    .physics.colliders
                     .get(c.fingertip)
                     .map(|co| co.translation())
                     .map(|t| [t.x as f64, t.y as f64, t.z as f64])

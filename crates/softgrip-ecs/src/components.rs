@@ -1,25 +1,15 @@
 //! Components mirrored into rapier: bodies, colliders, fingertips, and what is read back.
+//!
+//! The rapier builders come from `softgrip-scene` (`body_builder`, `collider_builder`,
+//! `fingertip_builder`), the same functions its scene builder uses: a body spawned as
+//! components is the same rapier body as one from a scene file.
 
 use bevy_ecs::prelude::{Component, Entity};
 use softgrip_rapier::SoftFingertip;
 use softgrip_rapier::rapier3d::prelude::{
-    ColliderBuilder, ColliderHandle, RigidBodyBuilder, RigidBodyHandle, SharedShape, Vector,
+    ColliderBuilder, ColliderHandle, RigidBodyBuilder, RigidBodyHandle, SharedShape,
 };
-
-pub(crate) fn v32(v: [f64; 3]) -> Vector {
-    Vector::new(v[0] as f32, v[1] as f32, v[2] as f32)
-}
-
-/// How a body moves.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum BodyKind {
-    /// Never moves.
-    Fixed,
-    /// Moved by forces.
-    Dynamic,
-    /// Position-based kinematic: moved by [`KinematicTarget`].
-    Kinematic,
-}
+use softgrip_scene::{BodyKind, Trajectory, body_builder, collider_builder, fingertip_builder};
 
 /// A rigid body to create in rapier (read once, when it is first synchronised).
 #[derive(Component, Debug, Clone, PartialEq)]
@@ -46,14 +36,7 @@ impl RigidBody {
     /// rapier's builder for this body (sleeping disabled: a held object must not fall asleep
     /// between the jaws).
     pub fn builder(&self) -> RigidBodyBuilder {
-        let b = match self.kind {
-            BodyKind::Fixed => RigidBodyBuilder::fixed(),
-            BodyKind::Dynamic => RigidBodyBuilder::dynamic(),
-            BodyKind::Kinematic => RigidBodyBuilder::kinematic_position_based(),
-        };
-        b.translation(v32(self.position))
-            .rotation(v32(self.rotation))
-            .can_sleep(false)
+        body_builder(self.kind, self.position, self.rotation)
     }
 }
 
@@ -92,11 +75,13 @@ impl Collider {
 
     /// rapier's builder for this collider.
     pub fn builder(&self) -> ColliderBuilder {
-        ColliderBuilder::new(self.shape.clone())
-            .translation(v32(self.offset))
-            .density(self.density as f32)
-            .friction(self.friction as f32)
-            .restitution(self.restitution as f32)
+        collider_builder(
+            self.shape.clone(),
+            self.offset,
+            self.density,
+            self.friction,
+            self.restitution,
+        )
     }
 }
 
@@ -126,9 +111,7 @@ impl Fingertip {
 
     /// rapier's builder for the fingertip's ball collider.
     pub fn builder(&self) -> ColliderBuilder {
-        ColliderBuilder::ball(self.tip.radius() as f32)
-            .translation(v32(self.offset))
-            .density(self.density as f32)
+        fingertip_builder(&self.tip, self.offset, self.density)
     }
 }
 
@@ -161,7 +144,7 @@ pub struct KinematicTarget(pub Option<[f64; 3]>);
 /// A scripted path of a kinematic body (followed by the `run_controllers` system).
 #[derive(Component, Debug, Clone, PartialEq)]
 #[require(KinematicTarget)]
-pub struct KinematicPath(pub crate::scene::Trajectory);
+pub struct KinematicPath(pub Trajectory);
 
 /// The total contact wrench on a fingertip over the last step (step averages), world frame.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]

@@ -4,9 +4,7 @@ mod components;
 mod contact;
 mod gripper;
 mod messages;
-mod plain;
 mod resources;
-pub mod scene;
 mod schedule;
 mod simulation;
 mod spawn;
@@ -14,20 +12,22 @@ mod summary;
 pub mod systems;
 pub mod to_record;
 
+/// The scene format, its builder and the plain runner: `softgrip-scene`, re-exported (also as
+/// `softgrip_ecs::scene::...`, its path before it became a crate of its own).
+pub use softgrip_scene as scene;
+
 pub use components::{
-    AttachedTo, BodyKind, BodyPose, Collider, Fingertip, FingertipWrench, KinematicPath,
-    KinematicTarget, RapierBody, RapierCollider, RigidBody,
+    AttachedTo, BodyPose, Collider, Fingertip, FingertipWrench, KinematicPath, KinematicTarget,
+    RapierBody, RapierCollider, RigidBody,
 };
-pub use contact::SoftContact;
-pub use gripper::{Gripper, GripperEvent, GripperProgram, GripperState, JawState, Phase, Squeeze};
+pub use contact::FingertipContact;
+pub use gripper::Gripper;
 pub use messages::{ContactEnded, ContactStarted, GripReached, SlipStarted, ValidityExcursion};
-pub use plain::PlainRun;
 pub use resources::{
     CurrentFrame, PatchRequest, Physics, Publisher, RecordSelection, Recorder, SceneInfoResource,
     SimClock, SinkSlot,
 };
-pub use scene::{Scene, SceneError};
-pub use schedule::{SoftgripSet, SoftgripStep, build_schedule};
+pub use schedule::{SoftgripStep, SoftgripSystems, build_schedule};
 pub use simulation::{RunReport, Simulation};
 /// The sink interface and its plain data, from softgrip-record (re-exported for now).
 pub use softgrip_record::{
@@ -35,7 +35,11 @@ pub use softgrip_record::{
     McapSinkError, RunSummary, SceneInfo, SinkError, StepConverter, StepFrame, StepSink,
     WORLD_FRAME, WrenchSample,
 };
-pub use spawn::{SceneEntities, init_world, soft_world_for, spawn_scene};
+pub use softgrip_scene::{
+    BodyKind, GripperEvent, GripperProgram, GripperState, JawState, Phase, PlainRun, Scene,
+    SceneError, Squeeze,
+};
+pub use spawn::{SceneEntities, init_world, spawn_scene};
 pub use summary::{Summary, TipSummary, accumulate_summary};
 pub use to_record::{McapSink, contact_reading, fingertip_law, run_summary, scene_info};
 

@@ -5,7 +5,7 @@ use bevy_ecs::prelude::{Entity, Message};
 /// A soft contact appeared (the pair is in the plugin's readout and was not in the last one).
 #[derive(Message, Debug, Clone, Copy, PartialEq)]
 pub struct ContactStarted {
-    /// The contact's entity (carrying [`SoftContact`](crate::SoftContact)).
+    /// The contact's entity (carrying [`FingertipContact`](crate::FingertipContact)).
     pub contact: Entity,
     /// The fingertip entity.
     pub fingertip: Entity,

@@ -6,8 +6,8 @@ use bevy_ecs::prelude::{Entity, Resource};
 use softgrip_rapier::SoftWorld;
 use softgrip_rapier::rapier3d::prelude::{ColliderHandle, RigidBodyHandle};
 
-use crate::scene::RecordSpec;
 use softgrip_record::{RunSummary, SceneInfo, SinkError, StepFrame, StepSink};
+use softgrip_scene::RecordSpec;
 
 /// What the readout remembers of a live contact.
 #[derive(Debug, Clone, Copy)]
@@ -54,7 +54,8 @@ pub struct Physics {
 }
 
 impl Physics {
-    /// Wraps a world (normally empty: the sync system fills it from the components).
+    /// Wraps a world (normally empty: `spawn_scene` builds a scene into it, the sync system
+    /// adds the components you spawn yourself).
     pub fn new(world: SoftWorld) -> Self {
         Self {
             world,
@@ -63,6 +64,18 @@ impl Physics {
             entity_body: HashMap::new(),
             contacts: BTreeMap::new(),
         }
+    }
+
+    /// Records that `entity` is the rapier body `handle` (the sync system, or the spawn of a
+    /// scene built by `softgrip-scene`).
+    pub(crate) fn link_body(&mut self, handle: RigidBodyHandle, entity: Entity) {
+        self.body_entity.insert(handle.into_raw_parts(), entity);
+        self.entity_body.insert(entity, handle);
+    }
+
+    /// Records that `entity` is the rapier collider `handle` (a `Collider` or a `Fingertip`).
+    pub(crate) fn link_collider(&mut self, handle: ColliderHandle, entity: Entity) {
+        self.collider_entity.insert(handle.into_raw_parts(), entity);
     }
 
     /// The entity of a rapier body.
@@ -91,7 +104,7 @@ pub struct SimClock {
 }
 
 /// Its presence makes the readout compute every contact's radius and pressure
-/// (`SoftContact::patch`). Without it no pressure is computed.
+/// (`FingertipContact::patch`). Without it no pressure is computed.
 #[derive(Resource, Debug, Clone, Copy, Default)]
 pub struct PatchRequest;
 

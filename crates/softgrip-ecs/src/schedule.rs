@@ -1,4 +1,4 @@
-//! [`SoftgripSet`] and [`build_schedule`]: the systems in their documented order.
+//! [`SoftgripSystems`] and [`build_schedule`]: the systems in their documented order.
 
 use bevy_ecs::message::{MessageRegistry, message_update_system};
 use bevy_ecs::prelude::{IntoScheduleConfigs, Res, Schedule, SystemSet, World};
@@ -16,14 +16,14 @@ pub struct SoftgripStep;
 
 /// The sets of one step, run in this order (chained).
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum SoftgripSet {
+pub enum SoftgripSystems {
     /// Message buffers are rotated; new bodies, colliders and fingertips are created in rapier.
     Sync,
     /// Controllers write kinematic targets (trajectories, grippers, your own controllers).
     Control,
     /// The plugin's `SoftWorld::step` (kinematic targets applied first).
     Physics,
-    /// Poses, `SoftContact` entities, fingertip wrenches, transition messages, the summary.
+    /// Poses, `FingertipContact` entities, fingertip wrenches, transition messages, the summary.
     Readout,
     /// The frame is assembled and written to the [`Recorder`].
     Record,
@@ -37,7 +37,7 @@ pub enum SoftgripSet {
 /// messages of your own are registered in bevy's `MessageRegistry` (the softgrip messages are
 /// rotated by [`sync_to_rapier`]); so insert or register those first.
 pub fn build_schedule(world: &World) -> Schedule {
-    use SoftgripSet::*;
+    use SoftgripSystems::*;
     let mut s = Schedule::new(SoftgripStep);
     s.configure_sets((Sync, Control, Physics, Readout, Record, Publish).chain());
     s.add_systems(sync_to_rapier.in_set(Sync));

@@ -5,13 +5,13 @@ use std::time::{Duration, Instant};
 
 use bevy_ecs::prelude::{FromWorld, Schedule, World};
 
-use crate::resources::{Publisher, Recorder, SimClock};
-use crate::scene::Scene;
+use crate::resources::{Physics, Publisher, Recorder, SimClock};
 use crate::schedule::build_schedule;
 use crate::spawn::{SceneEntities, spawn_scene};
 use crate::summary::Summary;
 use crate::systems::{Unsynchronised, create_in_rapier};
 use softgrip_record::{SinkError, StepSink};
+use softgrip_scene::Scene;
 
 /// What a run took.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -112,7 +112,7 @@ impl Simulation {
     /// Runs the scene's duration; `progress(step, total)` is called after every step.
     pub fn run(&mut self, mut progress: impl FnMut(u64, u64)) -> RunReport {
         let start = Instant::now();
-        let dt = self.world.resource::<crate::Physics>().world.params.dt as f64;
+        let dt = self.world.resource::<Physics>().world.physics.integration_parameters.dt as f64;
         for k in 0..self.steps {
             self.step();
             progress(k + 1, self.steps);

@@ -5,9 +5,10 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 use bevy_ecs::prelude::{Entity, MessageReader, Name, Query, Res, ResMut, Resource, With};
+use softgrip_scene::Phase;
 
 use crate::components::Fingertip;
-use crate::gripper::{Gripper, Phase};
+use crate::gripper::Gripper;
 use crate::messages::{SlipStarted, ValidityExcursion};
 use crate::resources::Physics;
 

@@ -6,7 +6,7 @@ use std::path::Path;
 use std::sync::{Arc, Mutex};
 
 use softgrip_law::ContactPatch;
-use softgrip_rapier::{SoftContact, SoftFingertip};
+use softgrip_rapier::{TipContact, SoftFingertip};
 use softgrip_record::{
     ContactReading, FingertipInfo, FingertipLaw, McapReport, McapSinkError, RecorderOptions,
     RecordingStats, RunSummary, SceneInfo, SinkError, StepFrame, StepSink, TipRunSummary,
@@ -53,7 +53,7 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
 }
 
 /// The numbers of a plugin readout, with its patch when pressure is recorded.
-pub fn contact_reading(c: &SoftContact, patch: Option<ContactPatch>) -> ContactReading {
+pub fn contact_reading(c: &TipContact, patch: Option<ContactPatch>) -> ContactReading {
     ContactReading {
         point: c.point,
         normal: c.normal,

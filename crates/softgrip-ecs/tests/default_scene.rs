@@ -65,13 +65,13 @@ fn log_reached(
 #[test]
 fn force_controlled_squeeze_reaches_the_grip_force_once() {
     use bevy_ecs::prelude::IntoScheduleConfigs;
-    use softgrip_ecs::SoftgripSet;
+    use softgrip_ecs::SoftgripSystems;
     let text = softgrip_ecs::scene::DEFAULT_SCENE.replace("depth = 0.002", "force = 5.0");
     let scene = Scene::parse(&text, "force.toml", std::path::Path::new(".")).unwrap();
     let mut sim = Simulation::new(&scene).with_summary();
     sim.world.init_resource::<Reached>();
     sim.schedule_mut()
-        .add_systems(log_reached.in_set(SoftgripSet::Record));
+        .add_systems(log_reached.in_set(SoftgripSystems::Record));
     sim.run(|_, _| {});
     let reached = &sim.world.resource::<Reached>().0;
     let depth = scene.fingertips()[0]

@@ -32,56 +32,56 @@ fn bits(world: &SoftWorld) -> Vec<u64> {
 fn by_hand(scene: &Scene) -> Vec<Vec<u64>> {
     let f = scene.file();
     let mut w = SoftWorld::new();
-    w.gravity = Vector::new(0.0, -9.81, 0.0);
-    w.params.dt = f.dt as f32;
+    w.physics.gravity = Vector::new(0.0, -9.81, 0.0);
+    w.physics.integration_parameters.dt = f.dt as f32;
     w.soft.set_accuracy(SoftAccuracy::try_new(0.05).unwrap());
     let body = |b: RigidBodyBuilder, x: f32| {
         b.translation(Vector::new(x, 0.02, 0.0))
             .rotation(Vector::ZERO)
             .can_sleep(false)
     };
-    let table = w.bodies.insert(
+    let table = w.physics.bodies.insert(
         RigidBodyBuilder::fixed()
             .translation(Vector::ZERO)
             .rotation(Vector::ZERO)
             .can_sleep(false),
     );
-    let boxed = w.bodies.insert(body(RigidBodyBuilder::dynamic(), 0.0));
+    let boxed = w.physics.bodies.insert(body(RigidBodyBuilder::dynamic(), 0.0));
     let left = w
-        .bodies
+        .physics.bodies
         .insert(body(RigidBodyBuilder::kinematic_position_based(), -0.034));
     let right = w
-        .bodies
+        .physics.bodies
         .insert(body(RigidBodyBuilder::kinematic_position_based(), 0.034));
     let plane = ColliderBuilder::new(SharedShape::halfspace(Vector::Y))
         .density(1000.0)
         .friction(0.5)
         .restitution(0.0);
-    w.colliders
-        .insert_with_parent(plane.translation(Vector::ZERO), table, &mut w.bodies);
+    w.physics.colliders
+        .insert_with_parent(plane.translation(Vector::ZERO), table, &mut w.physics.bodies);
     let cube = ColliderBuilder::cuboid(0.02, 0.02, 0.02)
         .translation(Vector::ZERO)
         .density(31250.0)
         .friction(0.5)
         .restitution(0.0);
-    w.colliders.insert_with_parent(cube, boxed, &mut w.bodies);
+    w.physics.colliders.insert_with_parent(cube, boxed, &mut w.physics.bodies);
     for (jaw, tip) in [left, right].into_iter().zip(scene.fingertips()) {
         let ball = ColliderBuilder::ball(0.01)
             .translation(Vector::ZERO)
             .density(1070.0);
-        let h = w.colliders.insert_with_parent(ball, jaw, &mut w.bodies);
+        let h = w.physics.colliders.insert_with_parent(ball, jaw, &mut w.physics.bodies);
         w.register(h, tip.clone()).unwrap();
     }
     let paths = [
         (left, Trajectory::of(&f.bodies[2])),
         (right, Trajectory::of(&f.bodies[3])),
     ];
-    let dt = w.params.dt as f64;
+    let dt = w.physics.integration_parameters.dt as f64;
     (0..1000u64)
         .map(|k| {
             for (h, path) in &paths {
                 let p = path.position_at((k + 1) as f64 * dt).unwrap();
-                w.bodies[*h].set_next_kinematic_translation(Vector::new(
+                w.physics.bodies[*h].set_next_kinematic_translation(Vector::new(
                     p[0] as f32,
                     p[1] as f32,
                     p[2] as f32,

@@ -13,8 +13,8 @@ use softgrip_law::Regime;
 
 use bevy_ecs::prelude::{IntoScheduleConfigs, Message, Messages, World};
 use softgrip_ecs::{
-    ContactEnded, ContactStarted, Scene, Simulation, SlipStarted, SoftgripSet, ValidityExcursion,
-    bevy_ecs,
+    ContactEnded, ContactStarted, Scene, Simulation, SlipStarted, SoftgripSystems,
+    ValidityExcursion, bevy_ecs,
 };
 
 /// Every message of type `M` ever written, with its time.
@@ -50,7 +50,7 @@ fn each_transition_writes_one_message() {
     let dt = scene.file().dt as f32 as f64;
     // A custom exclusive system after the readout collects the messages of the step.
     sim.schedule_mut()
-        .add_systems(log_messages.in_set(SoftgripSet::Record));
+        .add_systems(log_messages.in_set(SoftgripSystems::Record));
     sim.run(|_, _| {});
     let log = &sim.world.resource::<Log>().0;
     let count = |n: &str| log.iter().filter(|(k, _)| *k == n).count();

@@ -26,7 +26,7 @@ pub struct ExportArgs {
     pub csv: PathBuf,
 }
 
-/// A row of `contacts.csv`: every field of a `SoftContact`, at its log time.
+/// A row of `contacts.csv`: every field of a `SoftContactMsg`, at its log time.
 #[derive(Serialize, Default)]
 struct ContactRow<'a> {
     time_s: f64,

@@ -2,29 +2,13 @@
 //! step.
 
 use bevy_ecs::prelude::{Entity, MessageWriter, Query, Res};
+use softgrip_scene::{GripperEvent, jaw_compressions};
 
 use crate::components::{KinematicPath, KinematicTarget};
-use crate::contact::SoftContact;
-use crate::gripper::{Gripper, GripperEvent};
+use crate::contact::FingertipContact;
+use crate::gripper::Gripper;
 use crate::messages::GripReached;
 use crate::resources::{Physics, SimClock};
-
-/// Largest compression of each jaw's fingertips in the last step's readout.
-fn jaw_compressions<'a>(
-    tips: &[Vec<Entity>; 2],
-    contacts: impl Iterator<Item = &'a SoftContact>,
-) -> [Option<f64>; 2] {
-    let mut delta = [None, None];
-    for c in contacts {
-        for k in 0..2 {
-            if tips[k].contains(&c.fingertip) {
-                let d: f64 = c.contact.delta;
-                delta[k] = Some(delta[k].map_or(d, |m: f64| m.max(d)));
-            }
-        }
-    }
-    delta
-}
 
 /// The built-in controllers, one system: moves every kinematic body with a [`KinematicPath`]
 /// to its position at the end of the coming step, then advances every [`Gripper`]'s program
@@ -34,10 +18,10 @@ pub fn run_controllers(
     clock: Res<SimClock>,
     mut targets: Query<(Option<&KinematicPath>, &mut KinematicTarget)>,
     mut grippers: Query<(Entity, &mut Gripper)>,
-    contacts: Query<&SoftContact>,
+    contacts: Query<&FingertipContact>,
     mut reached: MessageWriter<GripReached>,
 ) {
-    let dt = physics.world.params.dt as f64;
+    let dt = physics.world.physics.integration_parameters.dt as f64;
     let t = (clock.step + 1) as f64 * dt;
     for (path, mut target) in &mut targets {
         if let Some(path) = path {
@@ -46,7 +30,10 @@ pub fn run_controllers(
     }
     for (entity, mut g) in &mut grippers {
         let g = &mut *g;
-        let delta = jaw_compressions(&g.tips, contacts.iter());
+        let delta = jaw_compressions(
+            &g.tips,
+            contacts.iter().map(|c| (c.fingertip, c.contact.delta)),
+        );
         if let Some(GripperEvent::GripReached) = g.state.advance(&g.program, dt, delta) {
             reached.write(GripReached {
                 gripper: entity,

@@ -1,4 +1,4 @@
-//! The systems, one file per set (see [`SoftgripSet`](crate::SoftgripSet) for the order).
+//! The systems, one file per set (see [`SoftgripSystems`](crate::SoftgripSystems) for the order).
 
 mod control;
 mod physics;

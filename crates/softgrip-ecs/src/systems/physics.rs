@@ -1,8 +1,9 @@
 //! Physics: applies the kinematic targets and calls the plugin's `SoftWorld::step`.
 
 use bevy_ecs::prelude::{Query, ResMut};
+use softgrip_scene::vector;
 
-use crate::components::{KinematicTarget, RapierBody, v32};
+use crate::components::{KinematicTarget, RapierBody};
 use crate::resources::{Physics, SimClock};
 
 /// One step of the rapier world with its soft contacts.
@@ -13,11 +14,11 @@ pub fn physics_step(
 ) {
     let world = &mut physics.world;
     for (body, target) in &targets {
-        if let (Some(p), Some(rb)) = (target.0, world.bodies.get_mut(body.0)) {
-            rb.set_next_kinematic_translation(v32(p));
+        if let (Some(p), Some(rb)) = (target.0, world.physics.bodies.get_mut(body.0)) {
+            rb.set_next_kinematic_translation(vector(p));
         }
     }
     world.step();
     clock.step += 1;
-    clock.time = clock.step as f64 * world.params.dt as f64;
+    clock.time = clock.step as f64 * world.physics.integration_parameters.dt as f64;
 }

@@ -1,9 +1,11 @@
 //! Sync: rotates the softgrip message buffers, creates the rapier body, collider or fingertip
 //! of every new component.
 //!
-//! New entities are inserted in spawn order (entity index) (bodies, then colliders, then fingertips), so a
-//! world built from components gets the same rapier handles as one built directly in scene
-//! order. Removal is not mirrored: despawning a synchronised entity leaves it in rapier.
+//! A scene's entities are in rapier from the start (`spawn_scene` builds the scene with
+//! `softgrip-scene`'s builder and tags them). The components you spawn yourself are inserted
+//! here, in spawn order (entity index) within each kind (bodies, then colliders, then
+//! fingertips), through the same rapier builders. Removal is not mirrored: despawning a
+//! synchronised entity leaves it in rapier.
 
 use bevy_ecs::prelude::{
     DetectChangesMut, Entity, FromWorld, Local, Message, Messages, Or, QueryState, With, Without,
@@ -107,19 +109,18 @@ pub(crate) fn create_in_rapier(world: &mut World, new: &mut Unsynchronised) {
         let mut physics = world.resource_mut::<Physics>();
         let physics = &mut *physics;
         for (e, b) in bodies {
-            let h = physics.world.bodies.insert(b);
-            physics.body_entity.insert(h.into_raw_parts(), e);
-            physics.entity_body.insert(e, h);
+            let h = physics.world.physics.bodies.insert(b);
+            physics.link_body(h, e);
             tagged_bodies.push((e, RapierBody(h)));
         }
         for (e, c, parent) in colliders {
             let w = &mut physics.world;
             let h = match parent.map(|p| physics.entity_body.get(&p)) {
-                Some(Some(b)) => w.colliders.insert_with_parent(c, *b, &mut w.bodies),
+                Some(Some(b)) => w.physics.colliders.insert_with_parent(c, *b, &mut w.physics.bodies),
                 Some(None) => continue, // its body is not synchronised yet
-                None => w.colliders.insert(c),
+                None => w.physics.colliders.insert(c),
             };
-            physics.collider_entity.insert(h.into_raw_parts(), e);
+            physics.link_collider(h, e);
             tagged_colliders.push((e, RapierCollider(h)));
         }
         for (e, c, tip, parent) in tips {
@@ -127,10 +128,10 @@ pub(crate) fn create_in_rapier(world: &mut World, new: &mut Unsynchronised) {
                 continue;
             };
             let w = &mut physics.world;
-            let h = w.colliders.insert_with_parent(c, b, &mut w.bodies);
+            let h = w.physics.colliders.insert_with_parent(c, b, &mut w.physics.bodies);
             w.register(h, tip)
                 .expect("invariant: the fingertip's own ball collider was just inserted");
-            physics.collider_entity.insert(h.into_raw_parts(), e);
+            physics.link_collider(h, e);
             tagged_colliders.push((e, RapierCollider(h)));
         }
     }

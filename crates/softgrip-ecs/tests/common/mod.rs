@@ -38,7 +38,7 @@ pub fn contact_bits(frames: &[StepFrame]) -> Vec<Vec<u64>> {
 }
 
 /// The bits of one plugin readout, in the order the equivalence tests compare them.
-pub fn readout_bits(k: &softgrip_ecs::softgrip_rapier::SoftContact) -> Vec<u64> {
+pub fn readout_bits(k: &softgrip_ecs::softgrip_rapier::TipContact) -> Vec<u64> {
     reading_bits(&softgrip_ecs::contact_reading(k, None))
 }
 

@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use super::error::SceneError;
+use crate::error::SceneError;
 
 /// A triangle mesh: vertices [m] and counter-clockwise triangles (indices into `vertices`).
 #[derive(Debug, Clone, PartialEq, Default)]

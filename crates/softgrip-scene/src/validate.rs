@@ -4,15 +4,17 @@
 use std::collections::HashSet;
 use std::path::Path;
 
-use softgrip_law::{Level, Material};
-use softgrip_rapier::{Preset, SoftAccuracy, SoftFingertip};
+use softgrip_rapier::SoftAccuracy;
+use softgrip_rapier::rapier3d::prelude::SharedShape;
 
-use super::error::SceneError;
-use super::format::{BodyKindSpec, SceneFile, ShapeKind, ShapeSpec};
-use super::mesh::{Mesh, load_mesh};
+use crate::error::SceneError;
+use crate::format::{BodyKind, SceneFile, ShapeKind, ShapeSpec};
+use crate::mesh::{Mesh, load_mesh};
+use crate::shape::shape;
 
 /// Builds typed errors for one file.
 pub(crate) struct Checker<'a> {
+    /// The file, named in every error.
     pub origin: &'a str,
 }
 
@@ -106,7 +108,7 @@ pub(crate) fn check_bodies(
         }
         c.finite3(f("position"), b.position)?;
         c.finite3(f("rotation"), b.rotation)?;
-        if !b.trajectory.is_empty() && b.kind != BodyKindSpec::Kinematic {
+        if !b.trajectory.is_empty() && b.kind != BodyKind::Kinematic {
             return Err(c.invalid(f("trajectory"), b.kind, "given only for a `kinematic` body"));
         }
         let mut last = -1.0;
@@ -134,7 +136,7 @@ pub(crate) fn check_bodies(
 fn check_shape(
     c: &Checker,
     s: &ShapeSpec,
-    kind: BodyKindSpec,
+    kind: BodyKind,
     base: &Path,
     g: &dyn Fn(&str) -> String,
 ) -> Result<Option<Mesh>, SceneError> {
@@ -175,7 +177,7 @@ fn check_shape(
         ShapeKind::Plane => {
             need("normal", s.normal.is_some())?;
             c.direction(g("normal"), s.normal.unwrap_or_default())?;
-            if kind != BodyKindSpec::Fixed {
+            if kind != BodyKind::Fixed {
                 return Err(c.invalid(g("type"), "plane", "used on a `fixed` body only"));
             }
         }
@@ -209,66 +211,26 @@ fn check_shape(
     Ok(None)
 }
 
-/// Builds every fingertip (the plugin validates radius, restitution, friction and material).
-pub(crate) fn check_fingertips(
+/// The geometry of every shape, per body in file order (meshes as loaded by [`check_bodies`]).
+pub(crate) fn shapes(
     c: &Checker,
     file: &SceneFile,
-) -> Result<Vec<SoftFingertip>, SceneError> {
-    let mut names = HashSet::new();
-    let mut tips = Vec::new();
-    for (i, t) in file.fingertips.iter().enumerate() {
-        let f = |s: &str| format!("fingertip[{i}].{s}");
-        if t.name.is_empty() || !names.insert(t.name.as_str()) {
-            return Err(c.name(f("name"), format!("`{}` is empty or used twice", t.name)));
-        }
-        if !file.bodies.iter().any(|b| b.name == t.body) {
-            return Err(c.name(f("body"), format!("no body is named `{}`", t.body)));
-        }
-        c.finite3(f("offset"), t.offset)?;
-        c.positive(f("density"), t.density, "kg/m^3")?;
-        let material = match (&t.preset, &t.material) {
-            (Some(p), None) => Preset::ALL
-                .iter()
-                .find(|q| q.name() == p)
-                .map(|q| q.material())
-                .ok_or_else(|| {
-                    let all: Vec<_> = Preset::ALL.iter().map(|q| q.name()).collect();
-                    c.invalid(f("preset"), p, &format!("one of {}", all.join(", ")))
-                })?,
-            (None, Some(m)) => {
-                Material::try_new(m.youngs_modulus, m.poisson_ratio).map_err(|e| {
-                    c.invalid(
-                        f("material"),
-                        (m.youngs_modulus, m.poisson_ratio),
-                        &e.to_string(),
-                    )
-                })?
-            }
-            _ => return Err(c.name(f("preset"), "give exactly one of `preset` and `material`")),
-        };
-        let mut level: Level = t
-            .level
-            .parse()
-            .map_err(|e: String| c.invalid(f("level"), &t.level, &e))?;
-        if let Some(tol) = t.tolerance {
-            match level {
-                Level::Auto { .. } => level = Level::Auto { tolerance: tol },
-                _ => return Err(c.name(f("tolerance"), "applies only to `level = \"auto\"`")),
-            }
-        }
-        let tip = SoftFingertip::builder(t.radius)
-            .name(t.name.clone())
-            .material(material)
-            .level(level)
-            .restitution(t.restitution)
-            .friction(t.friction)
-            .build()
-            .map_err(|e| SceneError::Fingertip {
-                origin: c.origin.to_string(),
-                field: format!("fingertip[{i}]"),
-                source: e,
+    meshes: Vec<Vec<Option<Mesh>>>,
+) -> Result<Vec<Vec<SharedShape>>, SceneError> {
+    let mut shapes = Vec::new();
+    for (i, (body, body_meshes)) in file.bodies.iter().zip(meshes).enumerate() {
+        let mut list = Vec::new();
+        for (j, (spec, mesh)) in body.shapes.iter().zip(body_meshes).enumerate() {
+            let geometry = shape(spec, mesh).ok_or_else(|| {
+                c.invalid(
+                    format!("body[{i}].shape[{j}].file"),
+                    spec.file.clone().unwrap_or_default(),
+                    "a mesh with a non-degenerate hull and valid triangles",
+                )
             })?;
-        tips.push(tip);
+            list.push(geometry);
+        }
+        shapes.push(list);
     }
-    Ok(tips)
+    Ok(shapes)
 }

@@ -2,9 +2,11 @@
 //!
 //! Every table rejects unknown fields (`deny_unknown_fields`), so a typo is an error with its
 //! line, not a silently ignored setting. Ranges are checked afterwards by
-//! [`Scene::parse`](super::Scene::parse), which names the offending field.
+//! [`Scene::parse`](crate::Scene::parse), which names the offending field.
 
 use serde::Deserialize;
+
+use crate::level::LevelSpec;
 
 /// A whole experiment: simulation settings, bodies, fingertips, an optional gripper and what
 /// to record.
@@ -93,15 +95,16 @@ impl Default for RecordSpec {
     }
 }
 
-/// How a body moves.
+/// How a body moves (the scene file's `kind`; the ECS's `RigidBody` component uses it too).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "snake_case")]
-pub enum BodyKindSpec {
+pub enum BodyKind {
     /// Never moves.
     Fixed,
     /// Moved by forces.
     Dynamic,
-    /// Moved along a scripted trajectory or by a gripper controller.
+    /// Position-based kinematic: moved along a scripted trajectory, by a gripper controller
+    /// or by your own controller.
     Kinematic,
 }
 
@@ -112,7 +115,7 @@ pub struct BodySpec {
     /// Unique name (used by fingertips, the gripper and the recording).
     pub name: String,
     /// `fixed`, `dynamic` or `kinematic`.
-    pub kind: BodyKindSpec,
+    pub kind: BodyKind,
     /// Initial position [m] (default origin).
     #[serde(default)]
     pub position: [f64; 3],
@@ -233,10 +236,11 @@ pub struct FingertipSpec {
     /// The material's constants; exclusive with `preset`.
     #[serde(default)]
     pub material: Option<MaterialSpec>,
-    /// Level of the law (`linear`, `hertz`, `fit`, `incompressible`, `neo-hookean`,
-    /// `neo-hookean-exact`, `tatara`, `calibrated`, `auto`; default `auto`).
-    #[serde(default = "default_level")]
-    pub level: String,
+    /// Level of the law: a built-in level by name (`linear`, `hertz`, `fit`,
+    /// `incompressible`, `neo-hookean`, `neo-hookean-exact`, `tatara`, `calibrated`, `auto`;
+    /// default `auto`), or `{ tabulated = "tip.csv" }`: a measured squeeze curve.
+    #[serde(default)]
+    pub level: LevelSpec,
     /// Force tolerance of `auto` against the full theory, in (0, 0.5] (default 0.01).
     #[serde(default)]
     pub tolerance: Option<f64>,
@@ -251,9 +255,6 @@ pub struct FingertipSpec {
     pub density: f64,
 }
 
-fn default_level() -> String {
-    String::from("auto")
-}
 fn default_tip_restitution() -> f64 {
     softgrip_rapier::DEFAULT_RESTITUTION
 }

@@ -58,6 +58,31 @@ pub enum SceneError {
         /// The plugin's error.
         source: softgrip_rapier::Error,
     },
+    /// A fingertip's measured curve (CSV) could not be read or parsed: a wrong header, a
+    /// row without two numbers, a value that is not a finite number.
+    #[error("{}:{line}: {}", path.display(), with_field(field, message))]
+    Curve {
+        /// The curve file.
+        path: PathBuf,
+        /// Line of the error, from 1 (0 for I/O errors).
+        line: usize,
+        /// The column at fault (`delta_m`, `force_n`, `header`), empty for a whole row.
+        field: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// The law rejected a fingertip's measured curve (e.g. not monotone, too few points).
+    #[error("{origin}: `{field}` ({}): {source}", path.display())]
+    Law {
+        /// The scene file.
+        origin: String,
+        /// Path of the field, e.g. `fingertip[0].level`.
+        field: String,
+        /// The curve file.
+        path: PathBuf,
+        /// The law's error.
+        source: softgrip_law::Error,
+    },
     /// A mesh file could not be read or parsed.
     #[error("{}:{line}: {message}", path.display())]
     Mesh {
@@ -71,13 +96,24 @@ pub enum SceneError {
 }
 
 impl SceneError {
-    /// The field path this error is about, if it is about one.
+    /// The scene field path this error is about, if it is about one (a curve file's column
+    /// is in [`SceneError::Curve`]'s `field`).
     pub fn field(&self) -> Option<&str> {
         match self {
             SceneError::Invalid { field, .. }
             | SceneError::Name { field, .. }
-            | SceneError::Fingertip { field, .. } => Some(field),
+            | SceneError::Fingertip { field, .. }
+            | SceneError::Law { field, .. } => Some(field),
             _ => None,
         }
+    }
+}
+
+/// `` `field`: message ``, or the message alone without a field.
+fn with_field(field: &str, message: &str) -> String {
+    if field.is_empty() {
+        message.to_string()
+    } else {
+        format!("`{field}`: {message}")
     }
 }

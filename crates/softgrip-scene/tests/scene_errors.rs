@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use softgrip_ecs::{Scene, SceneError, Simulation};
+use softgrip_scene::{PlainRun, Scene, SceneError};
 
 const BASE: &str = "duration = 1.0\n[[body]]\nname = \"table\"\nkind = \"fixed\"\n";
 
@@ -84,7 +84,7 @@ fn invalid_values_are_typed_errors_naming_the_field() {
 
 #[test]
 fn mesh_shapes_load_from_obj_and_stl() {
-    let dir = std::env::temp_dir().join(format!("softgrip-ecs-mesh-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("softgrip-scene-mesh-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     // A tetrahedron as OBJ (convex hull) and a two-triangle floor as ASCII STL.
     std::fs::write(
@@ -103,8 +103,8 @@ fn mesh_shapes_load_from_obj_and_stl() {
     let scene = Scene::parse(text, "mesh.toml", &dir).unwrap();
     assert_eq!(scene.shapes(0)[0].as_trimesh().unwrap().indices().len(), 2);
     assert!(scene.shapes(1)[0].as_convex_polyhedron().is_some());
-    let mut sim = Simulation::new(&scene);
-    sim.run(|_, _| {});
+    let mut run = PlainRun::new(&scene);
+    run.run(scene.steps(), |_| {});
     let missing =
         Scene::parse(&text.replace("tet.obj", "none.obj"), "mesh.toml", &dir).unwrap_err();
     assert!(matches!(missing, SceneError::Mesh { .. }), "{missing}");

@@ -1,0 +1,321 @@
+//! The parallel-jaw gripper controller: approach -> squeeze -> settle -> lift -> hold ->
+//! release, as plain logic ([`GripperState::advance`], [`jaw_compressions`]) that the ECS
+//! system and the plain runner both call, so both command the jaws identically.
+
+use softgrip_rapier::SoftFingertip;
+
+use crate::error::SceneError;
+use crate::format::{BodyKind, GripperSpec, MoveSpec, SceneFile};
+use crate::validate::Checker;
+
+/// The commanded grip.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Squeeze {
+    /// Compression of each fingertip past first touch [m].
+    Depth(f64),
+    /// Grip force per fingertip [N], reached through the law's inverse.
+    Force(f64),
+}
+
+/// A checked gripper program (from a scene's `[gripper]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct GripperProgram {
+    /// Name.
+    pub name: String,
+    /// Body index of each jaw in the scene.
+    pub jaws: [usize; 2],
+    /// Closing direction of jaw 0 (unit); jaw 1 closes along `-axis`.
+    pub axis: [f64; 3],
+    /// Lift direction (unit).
+    pub up: [f64; 3],
+    /// Closing speed before touch [m/s].
+    pub approach_speed: f64,
+    /// The commanded grip.
+    pub squeeze: Squeeze,
+    /// Closing speed while squeezing [m/s].
+    pub squeeze_speed: f64,
+    /// Wait at the commanded depth [s].
+    pub settle: f64,
+    /// Lift move.
+    pub lift: MoveSpec,
+    /// Hold time [s].
+    pub hold: f64,
+    /// Opening move of each jaw.
+    pub release: MoveSpec,
+    /// Target compression of each jaw's fingertip [m] (the depth, or the law's
+    /// `compression_for_force(force)` of the jaw's first fingertip).
+    pub depth: [f64; 2],
+    /// The fingertips (indices into the scene's fingertips, in file order) carried by each
+    /// jaw, at least one each.
+    pub tips: [Vec<usize>; 2],
+}
+
+impl GripperProgram {
+    pub(crate) fn from_spec(
+        c: &Checker,
+        file: &SceneFile,
+        tips: &[SoftFingertip],
+        g: &GripperSpec,
+    ) -> Result<Self, SceneError> {
+        let squeeze = squeeze(c, g)?;
+        let [jaw0, jaw1] = [0, 1].map(|k| jaw(c, file, tips, squeeze, k, &g.jaws[k]));
+        let (jaw0, jaw1) = (jaw0?, jaw1?);
+        if jaw0.body == jaw1.body {
+            return Err(c.name("gripper.jaws", "the two jaws must be different bodies"));
+        }
+        let axis = c.direction("gripper.axis", g.axis)?;
+        let up = match g.up {
+            Some(u) => c.direction("gripper.up", u)?,
+            None => c.direction("gripper.up", file.gravity.map(|x| -x))?,
+        };
+        c.positive("gripper.approach_speed", g.approach_speed, "m/s")?;
+        c.positive("gripper.squeeze.speed", g.squeeze.speed, "m/s")?;
+        c.non_negative("gripper.squeeze.settle", g.squeeze.settle, "s")?;
+        c.non_negative("gripper.lift.distance", g.lift.distance, "m")?;
+        c.positive("gripper.lift.speed", g.lift.speed, "m/s")?;
+        c.non_negative("gripper.hold", g.hold, "s")?;
+        c.non_negative("gripper.release.distance", g.release.distance, "m")?;
+        c.positive("gripper.release.speed", g.release.speed, "m/s")?;
+        Ok(Self {
+            name: g.name.clone(),
+            jaws: [jaw0.body, jaw1.body],
+            axis,
+            up,
+            approach_speed: g.approach_speed,
+            squeeze,
+            squeeze_speed: g.squeeze.speed,
+            settle: g.squeeze.settle,
+            lift: g.lift,
+            hold: g.hold,
+            release: g.release,
+            depth: [jaw0.depth, jaw1.depth],
+            tips: [jaw0.tips, jaw1.tips],
+        })
+    }
+}
+
+/// The commanded grip: exactly one of `depth` and `force`.
+fn squeeze(c: &Checker, g: &GripperSpec) -> Result<Squeeze, SceneError> {
+    match (g.squeeze.depth, g.squeeze.force) {
+        (Some(d), None) => {
+            c.positive("gripper.squeeze.depth", d, "m")?;
+            Ok(Squeeze::Depth(d))
+        }
+        (None, Some(f)) => {
+            c.positive("gripper.squeeze.force", f, "N")?;
+            Ok(Squeeze::Force(f))
+        }
+        _ => Err(c.name("gripper.squeeze", "give exactly one of `depth` and `force`")),
+    }
+}
+
+/// One checked jaw of the program.
+struct Jaw {
+    /// Body index.
+    body: usize,
+    /// Target compression of its fingertip [m].
+    depth: f64,
+    /// Its fingertips' indices.
+    tips: Vec<usize>,
+}
+
+/// Jaw `k`, the body named `name`: kinematic, without a trajectory, carrying a fingertip
+/// (whose law gives the depth of a force-controlled squeeze).
+fn jaw(
+    c: &Checker,
+    file: &SceneFile,
+    tips: &[SoftFingertip],
+    squeeze: Squeeze,
+    k: usize,
+    name: &str,
+) -> Result<Jaw, SceneError> {
+    let field = format!("gripper.jaws[{k}]");
+    let body = (file.bodies.iter())
+        .position(|b| b.name == name)
+        .ok_or_else(|| c.name(&field, format!("no body is named `{name}`")))?;
+    let b = &file.bodies[body];
+    if b.kind != BodyKind::Kinematic || !b.trajectory.is_empty() {
+        return Err(c.name(
+            &field,
+            format!("`{name}` must be kinematic, without a trajectory"),
+        ));
+    }
+    let jaw_tips: Vec<usize> = (file.fingertips.iter().enumerate())
+        .filter(|(_, t)| t.body == name)
+        .map(|(j, _)| j)
+        .collect();
+    let &tip = jaw_tips
+        .first()
+        .ok_or_else(|| c.name(&field, format!("`{name}` carries no fingertip")))?;
+    let depth = match squeeze {
+        Squeeze::Depth(d) => d,
+        Squeeze::Force(f) => tips[tip].law().compression_for_force(f).map_err(|e| {
+            c.invalid(
+                "gripper.squeeze.force",
+                f,
+                &format!("reachable by `{}`: {e}", tips[tip].name()),
+            )
+        })?,
+    };
+    Ok(Jaw {
+        body,
+        depth,
+        tips: jaw_tips,
+    })
+}
+
+/// The controller's phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Phase {
+    /// Closing until each fingertip touches; then squeezing to the commanded depth.
+    Squeeze,
+    /// At the commanded depth, waiting `settle`.
+    Settle,
+    /// Moving along `up`.
+    Lift,
+    /// Holding still.
+    Hold,
+    /// Opening the jaws.
+    Release,
+    /// Finished.
+    Done,
+}
+
+/// One jaw's commanded motion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JawState {
+    /// Commanded position [m] at the end of the coming step.
+    pub position: [f64; 3],
+    /// Position where the fingertip's compression is zero (found at first touch) [m].
+    pub touch: Option<[f64; 3]>,
+    /// The commanded depth was reached.
+    pub reached: bool,
+}
+
+/// What the controller did in one step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GripperEvent {
+    /// Both jaws reached the commanded depth.
+    GripReached,
+}
+
+/// The controller's state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GripperState {
+    /// Current phase.
+    pub phase: Phase,
+    /// The jaws.
+    pub jaws: [JawState; 2],
+    /// Time spent in the current phase (settle, hold) [s] or distance moved (lift, release) [m].
+    pub progress: f64,
+}
+
+/// Largest compression [m] of each jaw's fingertips among `contacts`, given as (fingertip
+/// key, compression `delta` [m]) in readout order; `tips[k]` are jaw k's fingertip keys (rapier
+/// handles in the plain runner, entities in the ECS). `None` for a jaw without contact.
+pub fn jaw_compressions<K: PartialEq>(
+    tips: &[Vec<K>; 2],
+    contacts: impl IntoIterator<Item = (K, f64)>,
+) -> [Option<f64>; 2] {
+    let mut delta = [None, None];
+    for (tip, d) in contacts {
+        for k in 0..2 {
+            if tips[k].contains(&tip) {
+                delta[k] = Some(delta[k].map_or(d, |m: f64| m.max(d)));
+            }
+        }
+    }
+    delta
+}
+
+fn axpy(a: f64, x: [f64; 3], y: [f64; 3]) -> [f64; 3] {
+    [y[0] + a * x[0], y[1] + a * x[1], y[2] + a * x[2]]
+}
+
+impl GripperState {
+    /// The state at the start: jaws at their initial positions.
+    pub fn new(jaw_positions: [[f64; 3]; 2]) -> Self {
+        Self {
+            phase: Phase::Squeeze,
+            jaws: jaw_positions.map(|position| JawState {
+                position,
+                touch: None,
+                reached: false,
+            }),
+            progress: 0.0,
+        }
+    }
+
+    /// Advances the command by one step `dt`, given each jaw's largest fingertip compression
+    /// after the last step (`None` without contact). Updates the jaws' commanded positions.
+    pub fn advance(
+        &mut self,
+        p: &GripperProgram,
+        dt: f64,
+        delta: [Option<f64>; 2],
+    ) -> Option<GripperEvent> {
+        let dirs = [p.axis, p.axis.map(|x| -x)];
+        match self.phase {
+            Phase::Squeeze => {
+                for (k, jaw) in self.jaws.iter_mut().enumerate() {
+                    let dir = dirs[k];
+                    if jaw.touch.is_none() {
+                        match delta[k] {
+                            // Back off by the compression already there: the touch point.
+                            Some(d) if d > 0.0 => jaw.touch = Some(axpy(-d, dir, jaw.position)),
+                            _ => jaw.position = axpy(p.approach_speed * dt, dir, jaw.position),
+                        }
+                    }
+                    if let Some(touch) = jaw.touch {
+                        let target = axpy(p.depth[k], dir, touch);
+                        let left: f64 =
+                            (0..3).map(|i| (target[i] - jaw.position[i]) * dir[i]).sum();
+                        if left <= p.squeeze_speed * dt {
+                            jaw.position = target;
+                            jaw.reached = true;
+                        } else {
+                            jaw.position = axpy(p.squeeze_speed * dt, dir, jaw.position);
+                        }
+                    }
+                }
+                if self.jaws.iter().all(|j| j.reached) {
+                    self.phase = Phase::Settle;
+                    self.progress = 0.0;
+                    return Some(GripperEvent::GripReached);
+                }
+            }
+            Phase::Settle | Phase::Hold => {
+                self.progress += dt;
+                let wait = if self.phase == Phase::Settle {
+                    p.settle
+                } else {
+                    p.hold
+                };
+                if self.progress >= wait - 1e-9 * dt {
+                    self.phase = if self.phase == Phase::Settle {
+                        Phase::Lift
+                    } else {
+                        Phase::Release
+                    };
+                    self.progress = 0.0;
+                }
+            }
+            Phase::Lift | Phase::Release => {
+                let lift = self.phase == Phase::Lift;
+                let mv = if lift { p.lift } else { p.release };
+                let s = (mv.speed * dt).min(mv.distance - self.progress).max(0.0);
+                for (k, jaw) in self.jaws.iter_mut().enumerate() {
+                    let dir = if lift { p.up } else { dirs[k].map(|x| -x) };
+                    jaw.position = axpy(s, dir, jaw.position);
+                }
+                self.progress += s;
+                if self.progress >= mv.distance {
+                    self.phase = if lift { Phase::Hold } else { Phase::Done };
+                    self.progress = 0.0;
+                }
+            }
+            Phase::Done => {}
+        }
+        None
+    }
+}

@@ -1,0 +1,38 @@
+#![doc = include_str!("../README.md")]
+
+mod build;
+mod curve;
+mod digest;
+mod error;
+mod fingertips;
+mod format;
+mod gripper;
+mod level;
+mod mesh;
+mod plain;
+mod scene;
+mod shape;
+mod trajectory;
+mod validate;
+mod vector;
+
+pub use build::{BuiltScene, SceneHandles, body_builder, collider_builder, fingertip_builder};
+pub use curve::{CURVE_HEADER, MeasuredCurve, parse_curve, read_curve};
+pub use digest::ContactDigest;
+pub use error::SceneError;
+pub use format::{
+    BodyKind, BodySpec, DEFAULT_EVERY_N_STEPS, FingertipSpec, GripperSpec, MaterialSpec, MoveSpec,
+    RecordSpec, SceneFile, ShapeKind, ShapeSpec, SqueezeSpec, WaypointSpec,
+};
+pub use gripper::{
+    GripperEvent, GripperProgram, GripperState, JawState, Phase, Squeeze, jaw_compressions,
+};
+pub use level::LevelSpec;
+pub use mesh::{Mesh, load_mesh, parse_obj, parse_stl};
+pub use plain::PlainRun;
+pub use scene::{DEFAULT_SCENE, Scene};
+pub use trajectory::Trajectory;
+pub use vector::vector;
+
+/// Re-exports of the crates the API uses.
+pub use softgrip_rapier;
