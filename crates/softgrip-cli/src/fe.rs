@@ -3,7 +3,7 @@
 //! loaded through `softgrip-fe` (which embeds the files and parses them) and normalised like
 //! the law.
 //!
-//! Units of the files: `force_N` [N], radii [mm]. With R = 1 mm the normalised force is
+//! Units of the files: `force_N` \[N\], radii \[mm\]. With R = 1 mm the normalised force is
 //! `f = F / (E* R^2) = force_N / E*[MPa]`, `E* = 2 mu (1 + nu) / (1 - nu^2)`, and the radius in
 //! mm is `a / R`.
 

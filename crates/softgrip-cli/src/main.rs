@@ -8,7 +8,6 @@ mod fe;
 mod level_arg;
 mod plot;
 mod recording;
-mod ros2_sink;
 mod run;
 mod timing;
 mod xrange;

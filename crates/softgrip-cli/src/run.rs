@@ -12,8 +12,6 @@ use softgrip_ecs::{McapReport, McapSink, Physics, Simulation, Summary};
 use softgrip_ros2::PublisherStats;
 use softgrip_scene::{ContactDigest, DEFAULT_SCENE, Scene};
 
-use crate::ros2_sink::Ros2Sink;
-
 /// Arguments of `softgrip run`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct RunArgs {
@@ -155,7 +153,9 @@ fn attach_sinks(
         sim = sim.with_recorder(sink);
     }
     if args.ros2 {
-        let sink = Ros2Sink::new(scene).context("starting the ROS 2 publisher (--ros2)")?;
+        let sink =
+            softgrip_ros2::Ros2Sink::new(&softgrip_ecs::scene_info(scene), &Default::default())
+                .context("starting the ROS 2 publisher (--ros2)")?;
         println!(
             "ros2: publishing on domain {} (node /softgrip)",
             sink.domain_id().unwrap_or_default()
@@ -185,7 +185,7 @@ struct Done {
     steps: u64,
     /// Steps of the scene's duration.
     total: u64,
-    /// Time step [s].
+    /// Time step \[s\].
     dt: f64,
     /// Wall-clock time of the loop.
     wall: Duration,

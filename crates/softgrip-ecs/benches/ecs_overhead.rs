@@ -91,7 +91,8 @@ impl PlainReadout {
                 .position(|(_, h)| *h == c.fingertip)
             {
                 let center = w
-                    .physics.colliders
+                    .physics
+                    .colliders
                     .get(c.fingertip)
                     .map(|co| co.translation())
                     .map(|t| [t.x as f64, t.y as f64, t.z as f64])

@@ -17,14 +17,14 @@ use softgrip_scene::{BodyKind, Trajectory, body_builder, collider_builder, finge
 pub struct RigidBody {
     /// How it moves.
     pub kind: BodyKind,
-    /// Initial position [m].
+    /// Initial position \[m\].
     pub position: [f64; 3],
-    /// Initial orientation as a rotation vector (axis * angle) [rad].
+    /// Initial orientation as a rotation vector (axis * angle) \[rad\].
     pub rotation: [f64; 3],
 }
 
 impl RigidBody {
-    /// A body of `kind` at `position` [m], not rotated.
+    /// A body of `kind` at `position` \[m\], not rotated.
     pub fn at(kind: BodyKind, position: [f64; 3]) -> Self {
         Self {
             kind,
@@ -45,7 +45,7 @@ impl RigidBody {
 pub struct Collider {
     /// The geometry.
     pub shape: SharedShape,
-    /// Offset from the body origin [m].
+    /// Offset from the body origin \[m\].
     pub offset: [f64; 3],
     /// Density [kg/m^3], > 0.
     pub density: f64,
@@ -92,7 +92,7 @@ impl Collider {
 pub struct Fingertip {
     /// The validated fingertip (radius, material, level, restitution, friction).
     pub tip: SoftFingertip,
-    /// Centre of the sphere relative to the body origin [m].
+    /// Centre of the sphere relative to the body origin \[m\].
     pub offset: [f64; 3],
     /// Density of the ball [kg/m^3], > 0.
     pub density: f64,
@@ -130,13 +130,13 @@ pub struct RapierCollider(pub ColliderHandle);
 /// A body's pose after the last step (read back from rapier).
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
 pub struct BodyPose {
-    /// Position [m].
+    /// Position \[m\].
     pub translation: [f64; 3],
     /// Orientation quaternion `[x, y, z, w]`.
     pub rotation: [f64; 4],
 }
 
-/// Where a kinematic body should be at the end of the coming step [m] (written by the
+/// Where a kinematic body should be at the end of the coming step \[m\] (written by the
 /// controllers, applied by the physics step; `None` = stay).
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
 pub struct KinematicTarget(pub Option<[f64; 3]>);
@@ -149,7 +149,7 @@ pub struct KinematicPath(pub Trajectory);
 /// The total contact wrench on a fingertip over the last step (step averages), world frame.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
 pub struct FingertipWrench {
-    /// Force [N].
+    /// Force \[N\].
     pub force: [f64; 3],
     /// Torque about the fingertip's centre [N m].
     pub torque: [f64; 3],

@@ -11,7 +11,7 @@ pub struct ContactStarted {
     pub fingertip: Entity,
     /// The other collider's entity (a `Collider` or a `Fingertip`).
     pub other: Entity,
-    /// Simulated time at the end of the step [s].
+    /// Simulated time at the end of the step \[s\].
     pub time: f64,
 }
 
@@ -22,7 +22,7 @@ pub struct ContactEnded {
     pub fingertip: Entity,
     /// The other collider's entity.
     pub other: Entity,
-    /// Simulated time at the end of the step [s].
+    /// Simulated time at the end of the step \[s\].
     pub time: f64,
 }
 
@@ -35,7 +35,7 @@ pub struct SlipStarted {
     pub fingertip: Entity,
     /// The other collider's entity.
     pub other: Entity,
-    /// Simulated time at the end of the step [s].
+    /// Simulated time at the end of the step \[s\].
     pub time: f64,
 }
 
@@ -50,7 +50,7 @@ pub struct ValidityExcursion {
     pub x: f64,
     /// The law's validity limit [-].
     pub x_max: f64,
-    /// Simulated time at the end of the step [s].
+    /// Simulated time at the end of the step \[s\].
     pub time: f64,
 }
 
@@ -59,8 +59,8 @@ pub struct ValidityExcursion {
 pub struct GripReached {
     /// The gripper entity.
     pub gripper: Entity,
-    /// Commanded compression of each jaw's fingertip [m].
+    /// Commanded compression of each jaw's fingertip \[m\].
     pub depth: [f64; 2],
-    /// Simulated time at the end of the step that reaches it [s].
+    /// Simulated time at the end of the step that reaches it \[s\].
     pub time: f64,
 }

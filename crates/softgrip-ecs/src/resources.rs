@@ -99,7 +99,7 @@ impl Physics {
 pub struct SimClock {
     /// Steps taken.
     pub step: u64,
-    /// Time at the end of the last step [s] (`step * dt`).
+    /// Time at the end of the last step \[s\] (`step * dt`).
     pub time: f64,
 }
 

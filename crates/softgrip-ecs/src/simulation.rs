@@ -18,7 +18,7 @@ use softgrip_scene::Scene;
 pub struct RunReport {
     /// Steps taken.
     pub steps: u64,
-    /// Simulated time [s].
+    /// Simulated time \[s\].
     pub sim_time: f64,
     /// Wall-clock time of the steps.
     pub wall: Duration,
@@ -112,7 +112,13 @@ impl Simulation {
     /// Runs the scene's duration; `progress(step, total)` is called after every step.
     pub fn run(&mut self, mut progress: impl FnMut(u64, u64)) -> RunReport {
         let start = Instant::now();
-        let dt = self.world.resource::<Physics>().world.physics.integration_parameters.dt as f64;
+        let dt = self
+            .world
+            .resource::<Physics>()
+            .world
+            .physics
+            .integration_parameters
+            .dt as f64;
         for k in 0..self.steps {
             self.step();
             progress(k + 1, self.steps);

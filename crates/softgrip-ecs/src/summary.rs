@@ -17,21 +17,21 @@ use crate::resources::Physics;
 pub struct TipSummary {
     /// Fingertip name.
     pub name: String,
-    /// Largest normal force of any contact of the fingertip (substep peak) [N].
+    /// Largest normal force of any contact of the fingertip (substep peak) \[N\].
     pub peak_force: f64,
     /// Largest compression ratio x = delta / R [-].
     pub peak_x: f64,
-    /// Contact radius at the largest compression [m].
+    /// Contact radius at the largest compression \[m\].
     pub peak_radius: f64,
     /// Slip events (`SlipStarted`).
     pub slips: u32,
     /// Validity excursions (`ValidityExcursion`).
     pub validity_excursions: u32,
-    /// Commanded compression of the gripper's squeeze [m] (fingertips on a gripper jaw).
+    /// Commanded compression of the gripper's squeeze \[m\] (fingertips on a gripper jaw).
     pub commanded_depth: Option<f64>,
-    /// Normal force at the end of the squeeze's settle phase [N].
+    /// Normal force at the end of the squeeze's settle phase \[N\].
     pub squeeze_force: Option<f64>,
-    /// Compression at the end of the squeeze's settle phase [m].
+    /// Compression at the end of the squeeze's settle phase \[m\].
     pub squeeze_delta: Option<f64>,
 }
 
@@ -50,7 +50,7 @@ impl Summary {
 
     /// The summary as `key = value` pairs (for a recording's metadata): `steps` (steps run),
     /// and per fingertip `<name>.slips`, `<name>.validity_excursions`, `<name>.peak_force`
-    /// [N] and `<name>.peak_x`.
+    /// \[N\] and `<name>.peak_x`.
     pub fn to_metadata(&self, steps: u64) -> BTreeMap<String, String> {
         let mut m = BTreeMap::new();
         m.insert("steps".to_string(), steps.to_string());

@@ -6,7 +6,7 @@ use std::path::Path;
 use std::sync::{Arc, Mutex};
 
 use softgrip_law::ContactPatch;
-use softgrip_rapier::{TipContact, SoftFingertip};
+use softgrip_rapier::{SoftFingertip, TipContact};
 use softgrip_record::{
     ContactReading, FingertipInfo, FingertipLaw, McapReport, McapSinkError, RecorderOptions,
     RecordingStats, RunSummary, SceneInfo, SinkError, StepFrame, StepSink, TipRunSummary,
@@ -75,7 +75,7 @@ pub fn contact_reading(c: &TipContact, patch: Option<ContactPatch>) -> ContactRe
 }
 
 /// The run's summary for the sinks: `steps` run, and per fingertip its slips, validity
-/// excursions, peak force [N] and peak x.
+/// excursions, peak force \[N\] and peak x.
 pub fn run_summary(summary: &Summary, steps: u64) -> RunSummary {
     RunSummary {
         steps,

@@ -46,30 +46,43 @@ fn by_hand(scene: &Scene) -> Vec<Vec<u64>> {
             .rotation(Vector::ZERO)
             .can_sleep(false),
     );
-    let boxed = w.physics.bodies.insert(body(RigidBodyBuilder::dynamic(), 0.0));
+    let boxed = w
+        .physics
+        .bodies
+        .insert(body(RigidBodyBuilder::dynamic(), 0.0));
     let left = w
-        .physics.bodies
+        .physics
+        .bodies
         .insert(body(RigidBodyBuilder::kinematic_position_based(), -0.034));
     let right = w
-        .physics.bodies
+        .physics
+        .bodies
         .insert(body(RigidBodyBuilder::kinematic_position_based(), 0.034));
     let plane = ColliderBuilder::new(SharedShape::halfspace(Vector::Y))
         .density(1000.0)
         .friction(0.5)
         .restitution(0.0);
-    w.physics.colliders
-        .insert_with_parent(plane.translation(Vector::ZERO), table, &mut w.physics.bodies);
+    w.physics.colliders.insert_with_parent(
+        plane.translation(Vector::ZERO),
+        table,
+        &mut w.physics.bodies,
+    );
     let cube = ColliderBuilder::cuboid(0.02, 0.02, 0.02)
         .translation(Vector::ZERO)
         .density(31250.0)
         .friction(0.5)
         .restitution(0.0);
-    w.physics.colliders.insert_with_parent(cube, boxed, &mut w.physics.bodies);
+    w.physics
+        .colliders
+        .insert_with_parent(cube, boxed, &mut w.physics.bodies);
     for (jaw, tip) in [left, right].into_iter().zip(scene.fingertips()) {
         let ball = ColliderBuilder::ball(0.01)
             .translation(Vector::ZERO)
             .density(1070.0);
-        let h = w.physics.colliders.insert_with_parent(ball, jaw, &mut w.physics.bodies);
+        let h = w
+            .physics
+            .colliders
+            .insert_with_parent(ball, jaw, &mut w.physics.bodies);
         w.register(h, tip.clone()).unwrap();
     }
     let paths = [

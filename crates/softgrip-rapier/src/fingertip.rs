@@ -48,6 +48,7 @@ impl SoftFingertip {
             radius,
             material: None,
             level: Level::auto(),
+            law: None,
             restitution: DEFAULT_RESTITUTION,
             restitution_speed: DEFAULT_RESTITUTION_SPEED,
             friction: DEFAULT_FRICTION,
@@ -180,6 +181,7 @@ pub struct SoftFingertipBuilder {
     radius: f64,
     material: Option<Material>,
     level: Level,
+    law: Option<ContactLaw>,
     restitution: f64,
     restitution_speed: f64,
     friction: f64,
@@ -202,6 +204,16 @@ impl SoftFingertipBuilder {
     /// The level of the law; default `Level::auto()`.
     pub fn level(mut self, level: Level) -> Self {
         self.level = level;
+        self
+    }
+
+    /// A contact law built by the caller, e.g. `ContactLaw::tabulated` from a measured squeeze
+    /// curve or `ContactLaw::custom` with a user's own `NormalisedLaw`. It replaces
+    /// [`level`](Self::level); the law's radius must equal the fingertip's (to 1e-9 relative)
+    /// and a [`material`](Self::material) is still required (it gives the damping and the
+    /// patch). The fingertip reports `law.level()` (`Level::Tabulated` or `Level::Custom`).
+    pub fn law(mut self, law: ContactLaw) -> Self {
+        self.law = Some(law);
         self
     }
 
@@ -280,12 +292,27 @@ impl SoftFingertipBuilder {
             });
         }
         let material = self.material.ok_or(Error::MissingMaterial)?;
-        let law = ContactLaw::try_new(ContactParams::try_new(material, self.radius)?, self.level)?;
+        let law = match self.law {
+            Some(law) => {
+                let r = law.params().radius();
+                if (r - self.radius).abs() > 1e-9 * self.radius {
+                    return Err(Error::InvalidParameter {
+                        field: "law.radius",
+                        value: r,
+                        range: "equal to the fingertip's radius (1e-9 relative) m",
+                    });
+                }
+                law
+            }
+            None => {
+                ContactLaw::try_new(ContactParams::try_new(material, self.radius)?, self.level)?
+            }
+        };
         Ok(SoftFingertip {
             name: self.name,
             radius: self.radius,
             material,
-            level: self.level,
+            level: law.level(),
             restitution: self.restitution,
             restitution_speed: self.restitution_speed,
             friction: self.friction,

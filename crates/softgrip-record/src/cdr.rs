@@ -25,7 +25,7 @@ pub enum CdrError {
     /// The buffer is shorter than the 4-byte encapsulation header.
     #[error("CDR buffer of {len} bytes is shorter than the 4-byte encapsulation header")]
     MissingHeader {
-        /// Length of the buffer [bytes].
+        /// Length of the buffer \[bytes\].
         len: usize,
     },
     /// The encapsulation is not CDR little-endian (`00 01`).
@@ -49,7 +49,7 @@ pub enum CdrError {
     /// Bytes left after the message.
     #[error("{extra} bytes left after the message")]
     TrailingBytes {
-        /// Bytes left [bytes].
+        /// Bytes left \[bytes\].
         extra: usize,
     },
     /// Anything else `cdr-encoding` refused.

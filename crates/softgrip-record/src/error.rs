@@ -22,7 +22,7 @@ pub enum Error {
     /// The file is shorter than the MCAP magic: nothing to read.
     #[error("not an MCAP file: only {len} bytes (truncated before the magic)")]
     Truncated {
-        /// File length [bytes].
+        /// File length \[bytes\].
         len: usize,
     },
     /// The file does not start with the MCAP magic.
@@ -42,7 +42,7 @@ pub enum Error {
     Decode {
         /// The message's topic.
         topic: String,
-        /// Its log time [ns].
+        /// Its log time \[ns\].
         log_time_ns: u64,
         /// Why.
         source: CdrError,

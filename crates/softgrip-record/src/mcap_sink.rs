@@ -73,9 +73,9 @@ pub struct McapReport {
     /// Steps written to the file (by the writer thread).
     pub frames_written: u64,
     /// Wall-clock time the simulation spent in `write` (converting the frame and queueing
-    /// it) [s].
+    /// it) \[s\].
     pub write_time: Duration,
-    /// Wall-clock time the writer thread spent encoding and writing steps (MCAP, chunks) [s].
+    /// Wall-clock time the writer thread spent encoding and writing steps (MCAP, chunks) \[s\].
     pub writer_time: Duration,
     /// The counts of the finished file (after `finish`).
     pub stats: Option<RecordingStats>,

@@ -26,7 +26,7 @@ pub const RUN_SUMMARY_NAME: &str = RunSummary::NAME;
 /// How the file is written.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct RecorderOptions {
-    /// Uncompressed size at which a chunk is closed [bytes]. A killed process loses at most
+    /// Uncompressed size at which a chunk is closed \[bytes\]. A killed process loses at most
     /// the open chunk. Default 512 KiB (about 0.4 s of a two-finger squeeze at 1 kHz).
     pub chunk_size: u64,
     /// Compress chunks with zstd. Default true.
@@ -58,7 +58,7 @@ pub struct RecordingStats {
     pub chunks: u32,
     /// Channels (topics).
     pub channels: u32,
-    /// First and last log time [ns].
+    /// First and last log time \[ns\].
     pub time_range_ns: (u64, u64),
 }
 
@@ -212,7 +212,7 @@ impl Recorder {
             .map_err(Error::Write)
     }
 
-    /// Writes `msg` on `topic` at simulation time `time_ns` [ns] (log time = publish time).
+    /// Writes `msg` on `topic` at simulation time `time_ns` \[ns\] (log time = publish time).
     /// The topic's schema and channel are registered on first use. A topic keeps the type it
     /// was first written with.
     pub fn write<M: RosMessage>(&mut self, topic: &str, time_ns: u64, msg: &M) -> Result<()> {

@@ -29,9 +29,9 @@ pub struct ChannelInfo {
 pub struct RecordedMessage {
     /// Topic name.
     pub topic: String,
-    /// Log time = simulation time [ns].
+    /// Log time = simulation time \[ns\].
     pub log_time_ns: u64,
-    /// Publish time [ns] (softgrip writes the log time).
+    /// Publish time \[ns\] (softgrip writes the log time).
     pub publish_time_ns: u64,
     /// Sequence number in the file.
     pub sequence: u32,
@@ -46,7 +46,7 @@ pub struct Recovery {
     pub chunks: u32,
     /// Bytes of the file up to the end of the last record kept.
     pub bytes_kept: u64,
-    /// File length [bytes].
+    /// File length \[bytes\].
     pub file_len: u64,
     /// Why reading stopped there (the damaged or incomplete record).
     pub stopped_because: String,

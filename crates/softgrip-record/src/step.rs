@@ -13,7 +13,7 @@ use crate::msgs::tf2_msgs::TFMessage;
 pub struct BodyPose {
     /// Name of the body (its tf frame).
     pub name: String,
-    /// Position of the body frame's origin, world [m].
+    /// Position of the body frame's origin, world \[m\].
     pub position: [f64; 3],
     /// Orientation, unit quaternion `[x, y, z, w]`.
     pub orientation: [f64; 4],
@@ -24,11 +24,11 @@ pub struct BodyPose {
 pub struct FingertipState {
     /// Name of the fingertip (its tf frame and `/softgrip/<name>/wrench`).
     pub name: String,
-    /// Centre of the fingertip sphere, world [m].
+    /// Centre of the fingertip sphere, world \[m\].
     pub position: [f64; 3],
     /// Orientation, unit quaternion `[x, y, z, w]`.
     pub orientation: [f64; 4],
-    /// Radius R [m], > 0.
+    /// Radius R \[m\], > 0.
     pub radius: f64,
     /// Net contact wrench on the fingertip, world axes, torque about the centre
     /// ([`contact_wrench`] computes it from the contacts).
@@ -38,7 +38,7 @@ pub struct FingertipState {
 /// One step's worth of recordable state.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct StepRecord {
-    /// Simulation time at the end of the step [ns].
+    /// Simulation time at the end of the step \[ns\].
     pub time_ns: u64,
     /// Name of the world frame (the `/tf` root), e.g. `world`.
     pub world_frame: String,
@@ -102,8 +102,8 @@ impl StepRecord {
     }
 }
 
-/// Net wrench of `contacts` on a fingertip centred at `center` [m]: force
-/// `Σ (F_n n + f_t)` [N] and torque `Σ (p − c) × (F_n n + f_t) + τ n` [N m], world axes.
+/// Net wrench of `contacts` on a fingertip centred at `center` \[m\]: force
+/// `Σ (F_n n + f_t)` \[N\] and torque `Σ (p − c) × (F_n n + f_t) + τ n` [N m], world axes.
 ///
 /// ```
 /// use softgrip_record::contact_wrench;

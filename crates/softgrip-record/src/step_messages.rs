@@ -81,7 +81,7 @@ pub trait StepVisitor {
     type Error;
 
     /// Takes `msg` on `topic` (of `fingertip` for a per-fingertip topic, else `""`), at the
-    /// step's time `time_ns` [ns].
+    /// step's time `time_ns` \[ns\].
     fn message<M: RosMessage>(
         &mut self,
         topic: StepTopic,

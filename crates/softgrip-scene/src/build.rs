@@ -14,8 +14,8 @@ use crate::format::BodyKind;
 use crate::scene::Scene;
 use crate::vector::vector;
 
-/// rapier's builder of a body of `kind` at `position` [m], rotated by the rotation vector
-/// `rotation` (axis * angle) [rad]; sleeping disabled (a held object must not fall asleep
+/// rapier's builder of a body of `kind` at `position` \[m\], rotated by the rotation vector
+/// `rotation` (axis * angle) \[rad\]; sleeping disabled (a held object must not fall asleep
 /// between the jaws).
 pub fn body_builder(kind: BodyKind, position: [f64; 3], rotation: [f64; 3]) -> RigidBodyBuilder {
     let b = match kind {
@@ -28,7 +28,7 @@ pub fn body_builder(kind: BodyKind, position: [f64; 3], rotation: [f64; 3]) -> R
         .can_sleep(false)
 }
 
-/// rapier's builder of a rigid collision shape at `offset` [m] from its body's origin, with
+/// rapier's builder of a rigid collision shape at `offset` \[m\] from its body's origin, with
 /// `density` [kg/m³] (> 0), rapier's `friction` (>= 0) and `restitution` (in [0, 1]).
 pub fn collider_builder(
     shape: SharedShape,
@@ -45,7 +45,7 @@ pub fn collider_builder(
 }
 
 /// rapier's builder of a fingertip's ball collider: radius R of `tip`, centred at `offset`
-/// [m] from its body's origin, `density` [kg/m³] (> 0). Register the inserted collider with
+/// \[m\] from its body's origin, `density` [kg/m³] (> 0). Register the inserted collider with
 /// `SoftWorld::register`.
 pub fn fingertip_builder(tip: &SoftFingertip, offset: [f64; 3], density: f64) -> ColliderBuilder {
     ColliderBuilder::ball(tip.radius() as f32)
@@ -98,7 +98,7 @@ pub struct BuiltScene {
 }
 
 impl Scene {
-    /// An empty plugin world with the scene's settings: gravity [m/s²], `dt` [s], accuracy.
+    /// An empty plugin world with the scene's settings: gravity [m/s²], `dt` \[s\], accuracy.
     pub fn empty_world(&self) -> SoftWorld {
         let f = self.file();
         let mut w = SoftWorld::new();
@@ -126,7 +126,8 @@ impl Scene {
         let mut out = SceneHandles::default();
         for b in &f.bodies {
             let h = world
-                .physics.bodies
+                .physics
+                .bodies
                 .insert(body_builder(b.kind, b.position, b.rotation));
             out.bodies.push((b.name.clone(), h));
         }
@@ -139,9 +140,11 @@ impl Scene {
                     s.friction,
                     s.restitution,
                 );
-                let h = world
-                    .physics.colliders
-                    .insert_with_parent(c, out.bodies[i].1, &mut world.physics.bodies);
+                let h = world.physics.colliders.insert_with_parent(
+                    c,
+                    out.bodies[i].1,
+                    &mut world.physics.bodies,
+                );
                 out.shapes.push((b.name.clone(), h));
             }
         }
@@ -151,7 +154,8 @@ impl Scene {
                 .expect("invariant: checked by Scene::parse");
             let c = fingertip_builder(tip, t.offset, t.density);
             let h = world
-                .physics.colliders
+                .physics
+                .colliders
                 .insert_with_parent(c, body, &mut world.physics.bodies);
             world
                 .register(h, tip.clone())

@@ -17,9 +17,9 @@ pub const CURVE_HEADER: [&str; 2] = ["delta_m", "force_n"];
 pub struct MeasuredCurve {
     /// The file it was read from.
     pub path: PathBuf,
-    /// Compression δ of each row [m] (column `delta_m`), finite.
+    /// Compression δ of each row \[m\] (column `delta_m`), finite.
     pub delta_m: Vec<f64>,
-    /// Normal force F of each row [N] (column `force_n`), finite.
+    /// Normal force F of each row \[N\] (column `force_n`), finite.
     pub force_n: Vec<f64>,
 }
 

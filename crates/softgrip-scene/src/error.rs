@@ -81,7 +81,7 @@ pub enum SceneError {
         /// The curve file.
         path: PathBuf,
         /// The law's error.
-        source: softgrip_law::Error,
+        source: Box<softgrip_law::Error>,
     },
     /// A mesh file could not be read or parsed.
     #[error("{}:{line}: {message}", path.display())]

@@ -4,7 +4,7 @@
 use std::collections::HashSet;
 use std::path::Path;
 
-use softgrip_law::{Level, Material};
+use softgrip_law::{ContactLaw, ContactParams, Level, Material, TabulatedCurve};
 use softgrip_rapier::{Preset, SoftFingertip, SoftFingertipBuilder};
 
 use crate::curve::{MeasuredCurve, read_curve};
@@ -118,26 +118,8 @@ fn law(
     }
 }
 
-/// The fingertip's law from its measured curve.
-///
-/// LEAD, AT MERGE (softgrip-law's `TabulatedCurve`/`ContactLaw::tabulated` and
-/// softgrip-rapier's `SoftFingertipBuilder::law` are not in this branch): replace the body by
-///
-/// ```ignore
-/// let path = curve.path.clone();
-/// let law_error = |source| SceneError::Law {
-///     origin: c.origin.to_string(),
-///     field: field.to_string(),
-///     path: path.clone(),
-///     source,
-/// };
-/// let params = ContactParams::try_new(material, radius).map_err(law_error)?;
-/// let table = TabulatedCurve::try_new(curve.delta_m, curve.force_n).map_err(law_error)?;
-/// let law = ContactLaw::tabulated(params, table).map_err(law_error)?;
-/// Ok(builder.law(law))
-/// ```
-///
-/// and un-ignore the test `tabulated_level_builds_a_fingertip` in tests/tabulated.rs.
+/// The fingertip's law from its measured curve: `softgrip_law::TabulatedCurve` (monotone C1
+/// interpolation of the samples, checked) bound with the fingertip's material and radius.
 fn tabulated_law(
     c: &Checker,
     field: &str,
@@ -146,6 +128,15 @@ fn tabulated_law(
     radius: f64,
     curve: MeasuredCurve,
 ) -> Result<SoftFingertipBuilder, SceneError> {
-    let _ = (builder, material, radius, curve);
-    Err(c.name(field, "tabulated levels need softgrip-law's TabulatedCurve"))
+    let path = curve.path.clone();
+    let law_error = |source: softgrip_law::Error| SceneError::Law {
+        origin: c.origin.to_string(),
+        field: field.to_string(),
+        path: path.clone(),
+        source: Box::new(source),
+    };
+    let params = ContactParams::try_new(material, radius).map_err(law_error)?;
+    let table = TabulatedCurve::try_new(curve.delta_m, curve.force_n).map_err(law_error)?;
+    let law = ContactLaw::tabulated(params, table).map_err(law_error)?;
+    Ok(builder.law(law))
 }

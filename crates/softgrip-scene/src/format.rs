@@ -13,15 +13,15 @@ use crate::level::LevelSpec;
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneFile {
-    /// Simulated time [s], finite and > 0.
+    /// Simulated time \[s\], finite and > 0.
     pub duration: f64,
-    /// Time step [s], finite and > 0 (default 1/60).
+    /// Time step \[s\], finite and > 0 (default 1/60).
     #[serde(default = "default_dt")]
     pub dt: f64,
     /// Gravity [m/s^2] (default `[0, -9.81, 0]`).
     #[serde(default = "default_gravity")]
     pub gravity: [f64; 3],
-    /// The plugin's accuracy: contact phase per substep [rad], in (0, 2] (default 0.05).
+    /// The plugin's accuracy: contact phase per substep \[rad\], in (0, 2] (default 0.05).
     #[serde(default = "default_accuracy")]
     pub accuracy: f64,
     /// What the recorder receives.
@@ -116,10 +116,10 @@ pub struct BodySpec {
     pub name: String,
     /// `fixed`, `dynamic` or `kinematic`.
     pub kind: BodyKind,
-    /// Initial position [m] (default origin).
+    /// Initial position \[m\] (default origin).
     #[serde(default)]
     pub position: [f64; 3],
-    /// Initial orientation as a rotation vector (axis * angle) [rad] (default none).
+    /// Initial orientation as a rotation vector (axis * angle) \[rad\] (default none).
     #[serde(default)]
     pub rotation: [f64; 3],
     /// Scripted path of a kinematic body: waypoints with increasing `t`, linear in between;
@@ -135,9 +135,9 @@ pub struct BodySpec {
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct WaypointSpec {
-    /// Time [s], >= 0, strictly increasing along the trajectory.
+    /// Time \[s\], >= 0, strictly increasing along the trajectory.
     pub t: f64,
-    /// Body position at `t` [m].
+    /// Body position at `t` \[m\].
     pub position: [f64; 3],
 }
 
@@ -151,13 +151,13 @@ pub struct ShapeSpec {
     /// `plane`: outward normal (normalised on load), non-zero.
     #[serde(default)]
     pub normal: Option<[f64; 3]>,
-    /// `cuboid`: half extents [m], each finite and > 0.
+    /// `cuboid`: half extents \[m\], each finite and > 0.
     #[serde(default)]
     pub half_extents: Option<[f64; 3]>,
-    /// `ball`, `cylinder`: radius [m], finite and > 0.
+    /// `ball`, `cylinder`: radius \[m\], finite and > 0.
     #[serde(default)]
     pub radius: Option<f64>,
-    /// `cylinder` (along the body's y axis): half height [m], finite and > 0.
+    /// `cylinder` (along the body's y axis): half height \[m\], finite and > 0.
     #[serde(default)]
     pub half_height: Option<f64>,
     /// `convex_mesh`, `triangle_mesh`: OBJ or STL file, relative to the scene file.
@@ -166,7 +166,7 @@ pub struct ShapeSpec {
     /// `convex_mesh`, `triangle_mesh`: scale of the vertices, finite and > 0 (default 1).
     #[serde(default)]
     pub scale: Option<f64>,
-    /// Offset from the body origin [m] (default none).
+    /// Offset from the body origin \[m\] (default none).
     #[serde(default)]
     pub offset: [f64; 3],
     /// Density [kg/m^3], finite and > 0 (default 1000).
@@ -210,7 +210,7 @@ pub enum ShapeKind {
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialSpec {
-    /// Young's modulus E [Pa], finite and > 0.
+    /// Young's modulus E \[Pa\], finite and > 0.
     pub youngs_modulus: f64,
     /// Poisson's ratio nu [-], in (-1, 0.5].
     pub poisson_ratio: f64,
@@ -224,10 +224,10 @@ pub struct FingertipSpec {
     pub name: String,
     /// Name of the body that carries it.
     pub body: String,
-    /// Centre of the sphere relative to the body origin [m] (default none).
+    /// Centre of the sphere relative to the body origin \[m\] (default none).
     #[serde(default)]
     pub offset: [f64; 3],
-    /// Radius R [m], finite and > 0.
+    /// Radius R \[m\], finite and > 0.
     pub radius: f64,
     /// A literature material by name (`ecoflex-00-30`, `dragon-skin-10`, `dragon-skin-20`,
     /// `dragon-skin-30`, `sylgard-184`, `live-cell`, `fixed-cell`); exclusive with `material`.
@@ -285,7 +285,7 @@ pub struct GripperSpec {
     pub squeeze: SqueezeSpec,
     /// Lift after the grip is reached.
     pub lift: MoveSpec,
-    /// Hold time at the top [s], finite and >= 0.
+    /// Hold time at the top \[s\], finite and >= 0.
     pub hold: f64,
     /// Opening of each jaw after the hold.
     pub release: MoveSpec,
@@ -300,17 +300,17 @@ fn default_gripper_name() -> String {
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SqueezeSpec {
-    /// Compression of each fingertip past first touch [m], finite and > 0; exclusive with
+    /// Compression of each fingertip past first touch \[m\], finite and > 0; exclusive with
     /// `force`.
     #[serde(default)]
     pub depth: Option<f64>,
-    /// Grip force per fingertip [N], finite and > 0; the depth is the law's
+    /// Grip force per fingertip \[N\], finite and > 0; the depth is the law's
     /// `compression_for_force(force)`. Exclusive with `depth`.
     #[serde(default)]
     pub force: Option<f64>,
     /// Closing speed while squeezing [m/s], finite and > 0.
     pub speed: f64,
-    /// Time to wait at the commanded depth before lifting [s], finite and >= 0 (default 0.2).
+    /// Time to wait at the commanded depth before lifting \[s\], finite and >= 0 (default 0.2).
     #[serde(default = "default_settle")]
     pub settle: f64,
 }
@@ -323,7 +323,7 @@ fn default_settle() -> f64 {
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MoveSpec {
-    /// Length of the move [m], finite and >= 0.
+    /// Length of the move \[m\], finite and >= 0.
     pub distance: f64,
     /// Speed [m/s], finite and > 0.
     pub speed: f64,

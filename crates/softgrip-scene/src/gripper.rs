@@ -11,9 +11,9 @@ use crate::validate::Checker;
 /// The commanded grip.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Squeeze {
-    /// Compression of each fingertip past first touch [m].
+    /// Compression of each fingertip past first touch \[m\].
     Depth(f64),
-    /// Grip force per fingertip [N], reached through the law's inverse.
+    /// Grip force per fingertip \[N\], reached through the law's inverse.
     Force(f64),
 }
 
@@ -34,15 +34,15 @@ pub struct GripperProgram {
     pub squeeze: Squeeze,
     /// Closing speed while squeezing [m/s].
     pub squeeze_speed: f64,
-    /// Wait at the commanded depth [s].
+    /// Wait at the commanded depth \[s\].
     pub settle: f64,
     /// Lift move.
     pub lift: MoveSpec,
-    /// Hold time [s].
+    /// Hold time \[s\].
     pub hold: f64,
     /// Opening move of each jaw.
     pub release: MoveSpec,
-    /// Target compression of each jaw's fingertip [m] (the depth, or the law's
+    /// Target compression of each jaw's fingertip \[m\] (the depth, or the law's
     /// `compression_for_force(force)` of the jaw's first fingertip).
     pub depth: [f64; 2],
     /// The fingertips (indices into the scene's fingertips, in file order) carried by each
@@ -184,9 +184,9 @@ pub enum Phase {
 /// One jaw's commanded motion.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct JawState {
-    /// Commanded position [m] at the end of the coming step.
+    /// Commanded position \[m\] at the end of the coming step.
     pub position: [f64; 3],
-    /// Position where the fingertip's compression is zero (found at first touch) [m].
+    /// Position where the fingertip's compression is zero (found at first touch) \[m\].
     pub touch: Option<[f64; 3]>,
     /// The commanded depth was reached.
     pub reached: bool,
@@ -206,12 +206,12 @@ pub struct GripperState {
     pub phase: Phase,
     /// The jaws.
     pub jaws: [JawState; 2],
-    /// Time spent in the current phase (settle, hold) [s] or distance moved (lift, release) [m].
+    /// Time spent in the current phase (settle, hold) \[s\] or distance moved (lift, release) \[m\].
     pub progress: f64,
 }
 
-/// Largest compression [m] of each jaw's fingertips among `contacts`, given as (fingertip
-/// key, compression `delta` [m]) in readout order; `tips[k]` are jaw k's fingertip keys (rapier
+/// Largest compression \[m\] of each jaw's fingertips among `contacts`, given as (fingertip
+/// key, compression `delta` \[m\]) in readout order; `tips[k]` are jaw k's fingertip keys (rapier
 /// handles in the plain runner, entities in the ECS). `None` for a jaw without contact.
 pub fn jaw_compressions<K: PartialEq>(
     tips: &[Vec<K>; 2],

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use crate::error::SceneError;
 
-/// A triangle mesh: vertices [m] and counter-clockwise triangles (indices into `vertices`).
+/// A triangle mesh: vertices \[m\] and counter-clockwise triangles (indices into `vertices`).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Mesh {
     /// Vertex positions.

@@ -71,7 +71,9 @@ impl PlainRun {
         let dt = self.world.physics.integration_parameters.dt as f64;
         let t = (self.step + 1) as f64 * dt;
         for (h, path) in &self.paths {
-            if let (Some(p), Some(rb)) = (path.position_at(t), self.world.physics.bodies.get_mut(*h)) {
+            if let (Some(p), Some(rb)) =
+                (path.position_at(t), self.world.physics.bodies.get_mut(*h))
+            {
                 rb.set_next_kinematic_translation(vector(p));
             }
         }

@@ -18,7 +18,7 @@ impl Trajectory {
         }
     }
 
-    /// Position at time `t` [s]; `None` for an empty trajectory.
+    /// Position at time `t` \[s\]; `None` for an empty trajectory.
     pub fn position_at(&self, t: f64) -> Option<[f64; 3]> {
         let (first, last) = (self.waypoints.first()?, self.waypoints.last()?);
         if t <= first.0 {

@@ -20,7 +20,11 @@ fn default_scene_handles_are_named_in_file_order() {
     for (tip, jaw) in [("left_tip", "left_jaw"), ("right_tip", "right_jaw")] {
         let c = h.fingertip(tip).unwrap();
         assert!(w.soft.is_soft(c), "{tip} is registered with the plugin");
-        assert_eq!(w.physics.colliders[c].parent(), h.body(jaw), "{tip} sits on {jaw}");
+        assert_eq!(
+            w.physics.colliders[c].parent(),
+            h.body(jaw),
+            "{tip} sits on {jaw}"
+        );
     }
     assert_eq!(h.body("nope"), None);
     assert_eq!(w.physics.gravity, Vector::new(0.0, -9.81, 0.0));

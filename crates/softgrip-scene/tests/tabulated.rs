@@ -128,7 +128,6 @@ fn tabulated_curve_is_found_relative_to_the_scene_file() {
 }
 
 #[test]
-#[ignore = "needs softgrip-law's TabulatedCurve (lead: un-ignore when merging, see fingertips.rs `tabulated_law`)"]
 fn tabulated_level_builds_a_fingertip() {
     let dir = temp_dir("tabulated");
     std::fs::write(dir.join("tip.csv"), CURVE).unwrap();

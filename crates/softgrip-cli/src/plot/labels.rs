@@ -4,13 +4,13 @@
 /// A box in pixels: left, top, width, height.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct PixelBox {
-    /// Left edge [px].
+    /// Left edge \[px\].
     pub x: i32,
-    /// Top edge [px].
+    /// Top edge \[px\].
     pub y: i32,
-    /// Width [px].
+    /// Width \[px\].
     pub w: i32,
-    /// Height [px].
+    /// Height \[px\].
     pub h: i32,
 }
 
@@ -27,7 +27,7 @@ impl PixelBox {
     }
 }
 
-/// Half the size of the square kept free around each marker [px].
+/// Half the size of the square kept free around each marker \[px\].
 const MARKER_HALF: i32 = 8;
 
 /// Top-left corners for labels of sizes `sizes` (width, height) at `points`, inside `area`.

@@ -17,7 +17,7 @@ pub struct SpeedPoint {
     pub label: String,
     /// Poisson ratio nu [-]: one colour and marker per value.
     pub nu: f64,
-    /// Time per evaluation of force and stiffness [ns], > 0.
+    /// Time per evaluation of force and stiffness \[ns\], > 0.
     pub ns_per_eval: f64,
     /// Largest relative force error against FE [%], > 0.
     pub force_error_pct: f64,

@@ -7,13 +7,13 @@ use plotters::style::{FontStyle, RGBColor};
 
 /// Family name under which the shipped font is registered.
 pub const FONT: &str = "sans-serif";
-/// Text sizes [px].
+/// Text sizes \[px\].
 pub const TITLE_SIZE: u32 = 30;
-/// Panel captions [px].
+/// Panel captions \[px\].
 pub const CAPTION_SIZE: u32 = 24;
-/// Axis descriptions [px].
+/// Axis descriptions \[px\].
 pub const LABEL_SIZE: u32 = 20;
-/// Tick labels and legends [px].
+/// Tick labels and legends \[px\].
 pub const TICK_SIZE: u32 = 16;
 
 static DEJAVU_SANS: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");

@@ -29,12 +29,12 @@ pub fn open(path: &Path) -> Result<Recording> {
     })
 }
 
-/// Log time [ns] as seconds.
+/// Log time \[ns\] as seconds.
 pub fn seconds(ns: u64) -> f64 {
     ns as f64 * 1e-9
 }
 
-/// Every recorded contact with its log time [s], in file order.
+/// Every recorded contact with its log time \[s\], in file order.
 pub fn contacts(rec: &Recording) -> impl Iterator<Item = (f64, &SoftContactMsg)> {
     rec.on_topic(topics::CONTACTS).flat_map(|m| {
         let t = seconds(m.log_time_ns);

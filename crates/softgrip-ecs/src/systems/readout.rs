@@ -98,7 +98,12 @@ pub fn readout(
             (was_sliding, was_extended),
             now,
         );
-        add_wrench(&physics.world.physics.colliders, &mut wrenches, c, sides.tip);
+        add_wrench(
+            &physics.world.physics.colliders,
+            &mut wrenches,
+            c,
+            sides.tip,
+        );
     }
     // Every tracked contact is live again: none ended (the common case, no pass over them).
     if live != physics.contacts.len() {

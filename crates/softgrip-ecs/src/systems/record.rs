@@ -62,7 +62,8 @@ pub fn assemble_frame(
             } else {
                 physics
                     .world
-                    .physics.colliders
+                    .physics
+                    .colliders
                     .get(c.other)
                     .and_then(|co| co.parent())
                     .and_then(|b| physics.body_entity(b))

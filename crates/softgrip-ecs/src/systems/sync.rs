@@ -116,7 +116,11 @@ pub(crate) fn create_in_rapier(world: &mut World, new: &mut Unsynchronised) {
         for (e, c, parent) in colliders {
             let w = &mut physics.world;
             let h = match parent.map(|p| physics.entity_body.get(&p)) {
-                Some(Some(b)) => w.physics.colliders.insert_with_parent(c, *b, &mut w.physics.bodies),
+                Some(Some(b)) => {
+                    w.physics
+                        .colliders
+                        .insert_with_parent(c, *b, &mut w.physics.bodies)
+                }
                 Some(None) => continue, // its body is not synchronised yet
                 None => w.physics.colliders.insert(c),
             };
@@ -128,7 +132,10 @@ pub(crate) fn create_in_rapier(world: &mut World, new: &mut Unsynchronised) {
                 continue;
             };
             let w = &mut physics.world;
-            let h = w.physics.colliders.insert_with_parent(c, b, &mut w.physics.bodies);
+            let h = w
+                .physics
+                .colliders
+                .insert_with_parent(c, b, &mut w.physics.bodies);
             w.register(h, tip)
                 .expect("invariant: the fingertip's own ball collider was just inserted");
             physics.link_collider(h, e);

@@ -32,11 +32,11 @@ pub struct FingertipLaw {
     /// The level as configured (with its setting: `k`, `tolerance` or `match_x`).
     #[serde(with = "level_json")]
     pub level: Level,
-    /// Young's modulus E [Pa], > 0.
+    /// Young's modulus E \[Pa\], > 0.
     pub youngs_modulus: f64,
     /// Poisson ratio nu [-], in (-1, 0.5].
     pub poisson_ratio: f64,
-    /// Radius R [m], > 0.
+    /// Radius R \[m\], > 0.
     pub radius: f64,
     /// Coulomb friction coefficient [-], >= 0.
     pub friction: f64,

@@ -72,7 +72,7 @@ pub struct RecordingInfo {
     pub softgrip_version: String,
     /// Where the scene came from (a path, or `default scene`).
     pub origin: String,
-    /// Time step [s] (0: not given).
+    /// Time step \[s\] (0: not given).
     #[serde(with = "json_text")]
     pub dt: f64,
     /// Every how many steps a step is recorded (>= 1; 0: not given).
@@ -114,7 +114,7 @@ pub struct TipRunSummary {
     pub slips: u32,
     /// Validity excursions (a contact went past the law's validity range).
     pub validity_excursions: u32,
-    /// Largest normal force of any contact of the fingertip [N].
+    /// Largest normal force of any contact of the fingertip \[N\].
     pub peak_force: f64,
     /// Largest compression ratio x = delta / R [-].
     pub peak_x: f64,

@@ -7,9 +7,9 @@ ros_message! {
     #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
     pub struct Time {
         name = "builtin_interfaces/msg/Time", file = "msg/builtin_interfaces/Time.msg", deps = [];
-        /// Whole seconds [s].
+        /// Whole seconds \[s\].
         pub sec: i32,
-        /// Nanoseconds [ns], in [0, 1e9).
+        /// Nanoseconds \[ns\], in [0, 1e9).
         pub nanosec: u32,
     }
 }
@@ -19,9 +19,9 @@ ros_message! {
     #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
     pub struct Duration {
         name = "builtin_interfaces/msg/Duration", file = "msg/builtin_interfaces/Duration.msg", deps = [];
-        /// Whole seconds [s].
+        /// Whole seconds \[s\].
         pub sec: i32,
-        /// Nanoseconds [ns], in [0, 1e9).
+        /// Nanoseconds \[ns\], in [0, 1e9).
         pub nanosec: u32,
     }
 }
@@ -29,7 +29,7 @@ ros_message! {
 const NS_PER_S: u64 = 1_000_000_000;
 
 impl Time {
-    /// The time `nanos` [ns] after the epoch (the start of the simulation). Saturates at
+    /// The time `nanos` \[ns\] after the epoch (the start of the simulation). Saturates at
     /// `i32::MAX` seconds (year 2038 of a wall clock; 68 years of simulation).
     ///
     /// ```

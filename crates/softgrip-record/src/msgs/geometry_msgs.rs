@@ -4,15 +4,15 @@ use super::std_msgs::Header;
 use crate::message::ros_message;
 
 ros_message! {
-    /// A position [m].
+    /// A position \[m\].
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     pub struct Point {
         name = "geometry_msgs/msg/Point", file = "msg/geometry_msgs/Point.msg", deps = [];
-        /// x [m].
+        /// x \[m\].
         pub x: f64,
-        /// y [m].
+        /// y \[m\].
         pub y: f64,
-        /// z [m].
+        /// z \[m\].
         pub z: f64,
     }
 }
@@ -52,7 +52,7 @@ ros_message! {
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     pub struct Pose {
         name = "geometry_msgs/msg/Pose", file = "msg/geometry_msgs/Pose.msg", deps = [Point, Quaternion];
-        /// Position [m].
+        /// Position \[m\].
         pub position: Point,
         /// Orientation.
         pub orientation: Quaternion,
@@ -64,7 +64,7 @@ ros_message! {
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     pub struct Transform {
         name = "geometry_msgs/msg/Transform", file = "msg/geometry_msgs/Transform.msg", deps = [Vector3, Quaternion];
-        /// Translation [m].
+        /// Translation \[m\].
         pub translation: Vector3,
         /// Rotation.
         pub rotation: Quaternion,
@@ -86,11 +86,11 @@ ros_message! {
 }
 
 ros_message! {
-    /// A force [N] and a torque [N m].
+    /// A force \[N\] and a torque [N m].
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     pub struct Wrench {
         name = "geometry_msgs/msg/Wrench", file = "msg/geometry_msgs/Wrench.msg", deps = [Vector3];
-        /// Force [N].
+        /// Force \[N\].
         pub force: Vector3,
         /// Torque [N m].
         pub torque: Vector3,
@@ -155,12 +155,12 @@ impl Quaternion {
 }
 
 impl Point {
-    /// From `[x, y, z]` [m].
+    /// From `[x, y, z]` \[m\].
     pub const fn from_array([x, y, z]: [f64; 3]) -> Self {
         Self { x, y, z }
     }
 
-    /// As `[x, y, z]` [m].
+    /// As `[x, y, z]` \[m\].
     pub const fn to_array(self) -> [f64; 3] {
         [self.x, self.y, self.z]
     }

@@ -20,25 +20,25 @@ ros_message! {
         pub fingertip: String,
         /// Name of the other body.
         pub other: String,
-        /// Contact point, world [m].
+        /// Contact point, world \[m\].
         pub point: Point,
         /// Unit normal, world, from the other body to the fingertip [-].
         pub normal: Vector3,
-        /// Compression delta [m], >= 0.
+        /// Compression delta \[m\], >= 0.
         pub compression: f64,
         /// Compression ratio x = delta / R [-].
         pub ratio_x: f64,
-        /// Normal force on the fingertip [N], >= 0 (step average).
+        /// Normal force on the fingertip \[N\], >= 0 (step average).
         pub normal_force: f64,
-        /// Friction force on the fingertip, world [N] (step average).
+        /// Friction force on the fingertip, world \[N\] (step average).
         pub friction_force: Vector3,
         /// Torsional friction moment about the normal [N m] (step average).
         pub torsional_moment: f64,
-        /// Contact radius a [m], >= 0.
+        /// Contact radius a \[m\], >= 0.
         pub contact_radius: f64,
-        /// Mean pressure F / (pi a^2) [Pa].
+        /// Mean pressure F / (pi a^2) \[Pa\].
         pub mean_pressure: f64,
-        /// Peak pressure, 3/2 of the mean [Pa].
+        /// Peak pressure, 3/2 of the mean \[Pa\].
         pub peak_pressure: f64,
         /// Stiffness K = dF/d delta [N/m], >= 0.
         pub stiffness: f64,
@@ -50,11 +50,11 @@ ros_message! {
         pub validity_exceeded: bool,
         /// Friction saturated in some substep.
         pub sliding: bool,
-        /// Largest normal force of any substep [N].
+        /// Largest normal force of any substep \[N\].
         pub peak_normal_force: f64,
-        /// Largest compression at the start of any substep [m].
+        /// Largest compression at the start of any substep \[m\].
         pub max_compression: f64,
-        /// Time in contact during the step [s].
+        /// Time in contact during the step \[s\].
         pub contact_duration: f64,
     }
 }

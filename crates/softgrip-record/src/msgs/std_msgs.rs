@@ -32,7 +32,7 @@ ros_message! {
 }
 
 impl Header {
-    /// A header at `time_ns` [ns] in frame `frame_id`.
+    /// A header at `time_ns` \[ns\] in frame `frame_id`.
     pub fn new(time_ns: u64, frame_id: &str) -> Self {
         Self {
             stamp: Time::from_nanos(time_ns),

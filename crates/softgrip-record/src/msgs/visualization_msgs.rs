@@ -47,9 +47,9 @@ ros_message! {
         pub r#type: i32,
         /// [`Marker::ADD`], [`Marker::DELETE`] or [`Marker::DELETEALL`].
         pub action: i32,
-        /// Pose of the shape in `header.frame_id` [m].
+        /// Pose of the shape in `header.frame_id` \[m\].
         pub pose: Pose,
-        /// Size along the shape's axes [m] (for a sphere or cylinder: diameters and height).
+        /// Size along the shape's axes \[m\] (for a sphere or cylinder: diameters and height).
         pub scale: Vector3,
         /// Colour.
         pub color: ColorRGBA,
@@ -57,7 +57,7 @@ ros_message! {
         pub lifetime: Duration,
         /// Re-transform into its frame every frame.
         pub frame_locked: bool,
-        /// Points of a point, line or list shape [m].
+        /// Points of a point, line or list shape \[m\].
         pub points: Vec<Point>,
         /// Per-point colours (empty or as many as `points`).
         pub colors: Vec<ColorRGBA>,

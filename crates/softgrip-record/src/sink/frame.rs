@@ -7,7 +7,7 @@ use softgrip_law::{ContactPatch, LevelKind, Regime};
 pub struct BodySample {
     /// Body name.
     pub name: String,
-    /// Position [m].
+    /// Position \[m\].
     pub translation: [f64; 3],
     /// Orientation quaternion `[x, y, z, w]`.
     pub rotation: [f64; 4],
@@ -18,7 +18,7 @@ pub struct BodySample {
 pub struct WrenchSample {
     /// Fingertip name.
     pub fingertip: String,
-    /// Force [N].
+    /// Force \[N\].
     pub force: [f64; 3],
     /// Torque about the fingertip's centre [N m].
     pub torque: [f64; 3],
@@ -27,17 +27,17 @@ pub struct WrenchSample {
 /// The numbers of one soft contact over a step, as the plugin reads them out.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactReading {
-    /// Contact point, world [m].
+    /// Contact point, world \[m\].
     pub point: [f64; 3],
     /// Unit normal, world, from the other body to the fingertip [-].
     pub normal: [f64; 3],
-    /// Compression delta [m], >= 0.
+    /// Compression delta \[m\], >= 0.
     pub delta: f64,
     /// Compression ratio x = delta / R [-].
     pub x: f64,
-    /// Normal force on the fingertip [N], >= 0 (step average).
+    /// Normal force on the fingertip \[N\], >= 0 (step average).
     pub normal_force: f64,
-    /// Friction force on the fingertip, world [N] (step average).
+    /// Friction force on the fingertip, world \[N\] (step average).
     pub friction_force: [f64; 3],
     /// Torsional friction moment about the normal [N m] (step average).
     pub torsional_moment: f64,
@@ -51,11 +51,11 @@ pub struct ContactReading {
     pub validity_exceeded: bool,
     /// Friction saturated (the contact slid) in some substep.
     pub sliding: bool,
-    /// Largest normal force of any substep [N].
+    /// Largest normal force of any substep \[N\].
     pub peak_normal_force: f64,
-    /// Largest compression at the start of any substep [m].
+    /// Largest compression at the start of any substep \[m\].
     pub max_delta: f64,
-    /// Time in contact during the step [s], in [0, dt].
+    /// Time in contact during the step \[s\], in [0, dt].
     pub contact_duration: f64,
     /// Contact radius and pressure, when the scene records pressure.
     pub patch: Option<ContactPatch>,
@@ -78,7 +78,7 @@ pub struct ContactSample {
 pub struct StepFrame {
     /// Step index, from 1 (the state after the first step).
     pub step: u64,
-    /// Simulated time at the end of the step [s].
+    /// Simulated time at the end of the step \[s\].
     pub time: f64,
     /// Body poses (`record.poses`).
     pub bodies: Vec<BodySample>,

@@ -9,9 +9,9 @@ pub struct FingertipInfo {
     pub name: String,
     /// Name of the body that carries it.
     pub body: String,
-    /// Centre of the fingertip sphere in its body's frame [m].
+    /// Centre of the fingertip sphere in its body's frame \[m\].
     pub offset: [f64; 3],
-    /// Radius R [m], > 0.
+    /// Radius R \[m\], > 0.
     pub radius: f64,
     /// The law's parameters (written in the recording's metadata).
     pub law: FingertipLaw,
@@ -22,7 +22,7 @@ pub struct FingertipInfo {
 pub struct SceneInfo {
     /// Where the scene came from (a file path, or a description).
     pub origin: String,
-    /// Time step [s], > 0.
+    /// Time step \[s\], > 0.
     pub dt: f64,
     /// Steps the run takes.
     pub steps: u64,
