@@ -70,7 +70,7 @@ def mesh(case: Case):
     1-based, counter-clockwise, plus the curve tags needed for node sets."""
     import gmsh
 
-    gmsh.initialize()
+    gmsh.initialize(interruptible=False)  # callable from a worker thread
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.model.add("tip")
@@ -233,15 +233,18 @@ def deck(case: Case, path: str) -> dict:
                     w("*EQUATION")
                     w("2")
                     w(f"{n}, 2, 1.0, {nc}, 2, -1.0")
+    # output time points of every step, relative to the step's start (CalculiX step time);
+    # all must be defined before the first *STEP
     x0 = 0.0
-    for s, (x1, dtmax) in enumerate(case.steps):
-        # time points of this step, relative to its start (CalculiX step time)
-        n0 = int(round(x0 / case.tp))
-        n1 = int(round(x1 / case.tp))
-        pts = [(n * case.tp) - x0 for n in range(n0 + 1, n1 + 1)]
+    for s, (x1, _) in enumerate(case.steps):
+        n0, n1 = int(round(x0 / case.tp)), int(round(x1 / case.tp))
+        pts = [n * case.tp - x0 for n in range(n0 + 1, n1 + 1)]
         w(f"*TIME POINTS, NAME=T{s + 1}")
         for i in range(0, len(pts), 8):
             w(", ".join(f"{p:.6f}" for p in pts[i:i + 8]) + ",")
+        x0 = x1
+    x0 = 0.0
+    for s, (x1, dtmax) in enumerate(case.steps):
         w("*STEP, NLGEOM, INC=1000000")
         w("*STATIC")
         w(f"{dtmax / 2:g}, {x1 - x0:.6g}, {case.dtmin:g}, {dtmax:g}")

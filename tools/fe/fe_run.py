@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Run one softgrip FE case: mesh + deck (fe_model), CalculiX, post-processing (fe_post).
 
-usage: fe_run.py GEOMETRY --nu NU [--t T] [--h 60] [--tend 0.75] [--dir DIR] [--timeout S]
+usage: fe_run.py GEOMETRY --nu NU [--t T] [--h 60] [--tend 0.75] [--dt-small 0.0025] [--dir DIR]
+                 [--timeout S]
   GEOMETRY free | flat | core; --h is R / element size at the contact (60 = fine, 30 = coarse).
 Writes DIR/job.inp, job.dat, job.frd, log, meta.json and prints x, force, contact radius, min J.
 ccx runs single-threaded under nice (OMP_NUM_THREADS=1, nice -n 5).
@@ -14,13 +15,15 @@ import os
 import re
 import subprocess
 import sys
+import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fe_model  # noqa: E402
 import fe_post  # noqa: E402
 
-J_CUT = 0.2  # data beyond the first point with min element J below this are dropped
+J_CUT = 0.2
+_GMSH = threading.Lock()  # gmsh keeps global state: one mesh at a time per process  # data beyond the first point with min element J below this are dropped
 
 
 def ccx_version():
@@ -43,7 +46,8 @@ def make_case(geometry, nu, t=0.0, h=60, tend=0.75, dt_small=0.0025, late_dt=0.0
 
 def run_case(case, rundir, timeout=3000):
     os.makedirs(rundir, exist_ok=True)
-    info = fe_model.deck(case, f"{rundir}/job.inp")
+    with _GMSH:
+        info = fe_model.deck(case, f"{rundir}/job.inp")
     env = dict(os.environ, OMP_NUM_THREADS="1")
     t0 = time.time()
     with open(f"{rundir}/log", "w") as log:
@@ -106,10 +110,12 @@ def main():
     ap.add_argument("--t", type=float, default=0.0, help="shell thickness / R (core)")
     ap.add_argument("--h", type=float, default=60, help="R / element size at the contact")
     ap.add_argument("--tend", type=float, default=0.75)
+    ap.add_argument("--dt-small", type=float, default=0.0025,
+                    help="max load increment to x = 0.1 (twice that to 0.2, 0.01 beyond)")
     ap.add_argument("--dir", default=None)
     ap.add_argument("--timeout", type=float, default=3000)
     a = ap.parse_args()
-    case = make_case(a.geometry, a.nu, a.t, a.h, a.tend)
+    case = make_case(a.geometry, a.nu, a.t, a.h, a.tend, a.dt_small)
     d = a.dir or f"/tmp/softgrip-fe/{case.name}"
     meta = run_case(case, d, a.timeout)
     res = analyse(d)
