@@ -39,7 +39,7 @@ def make_case(geometry, nu, t=0.0, h=60, tend=0.75, dt_small=0.0025, late_dt=0.0
     """Load steps: increments <= dt_small to x = 0.1 (the contact front crosses a face every few
     increments there; coarser increments leave a jitter of up to 0.5 % in force), <= 2 dt_small
     to 0.2, <= late_dt beyond (0.005 for nearly incompressible material)."""
-    steps = [(0.1, dt_small), (0.2, 2 * dt_small), (tend, late_dt)]
+    steps = [(0.1, dt_small), (0.2, min(2 * dt_small, late_dt)), (tend, late_dt)]
     steps = [s for s in steps if s[0] < tend] + [(tend, [d for x, d in steps if x >= tend][0])]
     return fe_model.Case(geometry=geometry, nu=nu, t=t, h=1.0 / h, steps=steps)
 
