@@ -169,7 +169,7 @@ def write_pressure(path, res, x):
     with open(path, "w") as f:
         f.write(provenance(res, f"; profile at x = {x:g}: nodal CPRESS of the curved surface "
                                 f"against the deformed radius, the 4 nodes nearest the axis dropped "
-                                f"(tied face); 2 pi int r p dr = {integ:.5g} N vs force {F:.5g} N") + "\n")
+                                f"(tied face), cut at a_lin and closed by p = 0 there; 2 pi int r p dr = {integ:.5g} N vs force {F:.5g} N") + "\n")
         f.write("r_mm,pressure_MPa\n")
         for ri, pi in zip(r, p):
             f.write(f"{ri:.6g},{pi:.6g}\n")

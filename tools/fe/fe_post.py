@@ -11,7 +11,7 @@ Per output time point (step time = x = delta / R):
   max_copen_over_delta largest penalty penetration / delta
   max_lift_mm          highest deformed curved-surface node above the pushed face's plane
                        (y - (R - delta)); > 0 means the free surface folds over the bonded edge
-Pressure profiles: nodal CPRESS of the curved-surface nodes against the deformed radius.
+Pressure profiles: nodal CPRESS of the curved-surface nodes against the deformed radius, to a_lin.
 """
 from __future__ import annotations
 
@@ -143,16 +143,16 @@ class Run:
                     copen=copen, lift=lift)
 
     def pressure(self, t):
-        """(r_deformed, CPRESS) of the curved-surface nodes in contact, from the pole outwards."""
+        """(r_deformed, CPRESS) of the curved-surface nodes inside the contact radius a_lin, from
+        the pole outwards, closed by (a_lin, 0). CalculiX's nodal CPRESS is extrapolated from the
+        face integration points and stays positive up to a face beyond the contact edge, so the
+        profile is cut at a_lin (where the penalty pressure -K z crosses zero)."""
         c = self.C.get(t)
         if c is None:
             return None
+        a = self.row(t)["a"]
         P = self.X0 + self.U[t]
         r = P[self.arc, 0]
         p = c[self.arc, 1]
-        keep = np.arange(len(r)) >= N_DROP_PRESSURE
-        last = np.where(p > 0)[0]
-        if len(last) == 0:
-            return None
-        keep &= np.arange(len(r)) <= last.max()
-        return r[keep], p[keep]
+        keep = (np.arange(len(r)) >= N_DROP_PRESSURE) & (r < a)
+        return np.append(r[keep], a), np.append(p[keep], 0.0)
