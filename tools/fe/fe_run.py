@@ -72,7 +72,10 @@ def analyse(rundir):
     last = rows[-1]["x"] if rows else 0.0
     log = open(f"{rundir}/log", errors="replace").read()
     why = []
-    if meta["rc"] == "timeout":
+    stopped = os.path.join(rundir, "STOPPED")  # a note left by whoever stopped the run by hand
+    if os.path.exists(stopped):
+        why.append(open(stopped).read().strip())
+    elif meta["rc"] == "timeout":
         why.append(f"wall-clock limit ({meta['timeout_s']} s) reached")
     elif last >= tend - 1e-9:
         why.append(f"reached the end of the load (x = {tend:g})")
