@@ -137,8 +137,8 @@ def provenance(res, extra=""):
             f"({m['mesh']['elements']} elements); frictionless linear penalty {c['kpen']:g} MPa/mm "
             f"against a rigid plane; load increments {steps}; run {m['date']}, {m['wall_s']:.0f} s; "
             f"reached x = {res['reached']:g}: {res['why']}{extra}; "
-            f"regenerate: python3 tools/fe/fe_campaign.py run --only {name} && "
-            f"python3 tools/fe/fe_campaign.py export")
+            f"regenerate: PY=$(bash tools/fe/setup.sh); $PY tools/fe/fe_campaign.py run "
+            f"--runs DIR --only {name} && $PY tools/fe/fe_campaign.py export --runs DIR")
 
 
 def load(runs, geometry, nu, t, h, role="main"):
