@@ -14,8 +14,9 @@ fail() { echo "smoke: $*"; echo "0 passed, 1 failed"; exit 1; }
 PY="$(bash tools/fe/setup.sh)" || fail "setup.sh failed"
 t1=$(date +%s)
 D="$(mktemp -d /tmp/softgrip-fe-smoke.XXXXXX)"
-"$PY" tools/fe/fe_run.py flat --nu 0.48 --h 30 --tend 0.3 --dt-small 0.005 --dir "$D" \
-  --timeout 900 > "$D/out.csv" || fail "fe_run.py failed (see $D/log)"
+TIMEFORMAT="smoke: FE run %R s wall, %U s CPU (user)"
+time { "$PY" tools/fe/fe_run.py flat --nu 0.48 --h 30 --tend 0.3 --dt-small 0.005 --dir "$D" \
+  --timeout 900 > "$D/out.csv" || fail "fe_run.py failed (see $D/log)"; }
 t2=$(date +%s)
 head -1 "$D/out.csv"
 "$PY" - "$D/out.csv" tests/data/fe/flat/force_nu0.48.csv "$TOL_PCT" <<'PYEOF' || fail "force differs from the committed result by more than ${TOL_PCT} %"
