@@ -7,7 +7,9 @@
 # why that value). Last line: "1 passed, 0 failed" or "0 passed, 1 failed".
 set -uo pipefail
 cd "$(dirname "$0")/../.."
-TOL_PCT="${SOFTGRIP_FE_SMOKE_TOL_PCT:-1.5}"
+# 1 %: the measured R/30-vs-R/40 difference at these x is 0.05-0.07 %, while a lost bond
+# (free instead of flat: -14 % at x = 0.1) or a wrong force scale (x 180) is far outside it.
+TOL_PCT="${SOFTGRIP_FE_SMOKE_TOL_PCT:-1.0}"
 t0=$(date +%s)
 fail() { echo "smoke: $*"; echo "0 passed, 1 failed"; exit 1; }
 
