@@ -2,7 +2,7 @@
 # CI smoke test of softgrip's FE pipeline: installs what is missing (setup.sh), runs ONE
 # coarse-mesh case end to end (flat, nu = 0.48, mesh R/30, load increments <= 0.005 to x = 0.1,
 # <= 0.01 beyond, to x = 0.3) and compares its force with the committed campaign result
-# tests/data/fe/flat/force_nu0.48.csv (mesh R/40, increments <= 0.0025 to x = 0.1) at
+# tests/data/fe/flat/force_nu0.48.csv (mesh R/40, the same increments) at
 # x = 0.1, 0.2, 0.3. Fails if any |F_smoke / F_committed - 1| exceeds TOL_PCT (see README for
 # why that value). Last line: "1 passed, 0 failed" or "0 passed, 1 failed".
 set -uo pipefail
