@@ -40,7 +40,7 @@ def cases():
     free runs on the reference's fine mesh (R/60: it validates the pipeline against the
     reference); flat and core on R/40: each ccx iteration costs ~0.4 s CPU per 1000 elements,
     and the machine is shared. Convergence is checked against a coarser mesh (R/30 vs R/40, and
-    R/40 vs R/60 for free): if two meshes agree within 0.5 % the finer one is at least as good."""
+    R/40 vs R/60 for free): two meshes that agree within 0.5 % bound the finer one's error if convergence is monotone."""
     c = [("free", 0.49, 0, 60, "main"), ("free", 0.3, 0, 60, "main"),
          ("flat", 0.48, 0, 40, "main"), ("flat", 0.3, 0, 40, "main"),
          ("flat", 0.48, 0, 30, "smoke"),
