@@ -83,12 +83,19 @@ fn the_wrong_row_type_is_a_typed_error_naming_the_file() {
 
 #[test]
 fn every_csv_of_the_folder_is_in_the_table() {
-    //! Adding a file to tests/data/fe/ without its row in FILES fails here.
+    //! Adding a file to tests/data/fe/ without its row in FILES fails here. The campaign
+    //! folders `free/`, `flat/`, `core/` (softgrip's own pipeline, tools/fe/) are the raw output
+    //! of the backed-fingertip campaign; they join FILES, with their geometry, when the law is
+    //! calibrated on them (issue 10). Any other subfolder is checked.
+    const CAMPAIGN: [&str; 3] = ["free", "flat", "core"];
     fn csvs(dir: &Path, base: &Path, out: &mut Vec<String>) {
         for entry in std::fs::read_dir(dir).expect("readable folder") {
             let path = entry.expect("entry").path();
             if path.is_dir() {
-                csvs(&path, base, out);
+                let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+                if !(dir == base && CAMPAIGN.contains(&name)) {
+                    csvs(&path, base, out);
+                }
             } else if path.extension().is_some_and(|e| e == "csv") {
                 let rel = path.strip_prefix(base).expect("inside");
                 out.push(rel.to_string_lossy().replace('\\', "/"));
