@@ -57,8 +57,7 @@ pub struct ContactState {
     pub level: LevelKind,
 }
 
-/// Compression ratio past which the extension is frozen (see [`ContactLaw`]).
-pub(crate) const X_FROZEN: f64 = 4.0;
+pub(crate) use crate::normalised::X_FROZEN;
 
 /// The normalised law at the end of its validity range, where the extension starts.
 #[derive(Debug, Clone, Copy)]

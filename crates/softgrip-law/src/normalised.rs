@@ -2,6 +2,10 @@
 
 use std::fmt::Debug;
 
+/// Compression ratio past which the hot path's extension is frozen (see
+/// [`ContactLaw`](crate::ContactLaw)); a law's validity range must end at or before it.
+pub(crate) const X_FROZEN: f64 = 4.0;
+
 /// A contact law in normalised form: the force `f(x) = F / (E* R²)` [-] as a function of the
 /// compression ratio `x = δ/R` [-], with its stiffness, energy and contact radius.
 ///

@@ -31,7 +31,7 @@
 
 use super::NormalisedLaw;
 use crate::error::{Error, Result};
-use crate::law::X_FROZEN;
+use crate::normalised::X_FROZEN;
 use crate::tabulated::TabulatedCurve;
 
 /// One cell: the cubic `f = c0 + c1 t + c2 t² + c3 t³` in `t = (x - x0) / h`.
