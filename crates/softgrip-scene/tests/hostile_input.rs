@@ -218,8 +218,7 @@ fn squeeze_depth_past_the_law_validity_is_an_error() {
     assert_eq!(err.field(), Some("gripper.squeeze.depth"), "{err}");
     let m = err.to_string();
     assert!(
-        m.contains("within the law's validity for `left_tip`") && m.contains("x_max")
-            || m.contains("<= x <="),
+        m.contains("within the law's validity for `left_tip`") && m.contains("(0 <= x <= "),
         "{m}"
     );
     assert!(parse(&DEFAULT_SCENE.replace("depth = 0.002", "depth = 0.005")).is_ok());
