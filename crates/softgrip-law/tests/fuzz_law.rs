@@ -179,7 +179,7 @@ fn law_case(rng: &mut Rng) -> Result<(), String> {
 #[ignore = "its last run (after the three fixes it found) did not finish within 300 s on the loaded host: unverified, see the issue 11 report"]
 fn fuzz_law_checked_api() {
     let iters = env("SOFTGRIP_FUZZ_ITERS", DEFAULT_ITERS);
-    let seed = env("SOFTGRIP_FUZZ_SEED", 0x5EED_1A3);
+    let seed = env("SOFTGRIP_FUZZ_SEED", 0x05EE_D1A3);
     let start = std::time::Instant::now();
     let hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));

@@ -185,7 +185,8 @@ pub(crate) fn check_geometry(mesh: &Mesh, convex: bool) -> Result<(), String> {
         let (e1, e2, e3) = (sub(b, a), sub(c, a), sub(c, b));
         let longest = [e1, e2, e3].iter().map(|e| dot(*e, *e)).fold(0.0, f64::max);
         let n = cross(e1, e2);
-        if !(dot(n, n).sqrt() > f32::EPSILON as f64 * longest) {
+        let twice_area = dot(n, n).sqrt();
+        if twice_area.is_nan() || twice_area <= f32::EPSILON as f64 * longest {
             return Err(format!(
                 "triangle {k} (vertices {t:?}) is degenerate (zero area): a `triangle_mesh` needs triangles with three distinct, non-collinear corners"
             ));
