@@ -117,6 +117,7 @@ impl ContactParams {
     /// ```
     pub fn try_new(material: Material, radius: f64) -> Result<Self> {
         positive("radius", radius, "finite and > 0 m")?;
+        scales(material.effective_modulus(), radius)?;
         Ok(Self {
             effective_modulus: material.effective_modulus(),
             radius,
@@ -164,7 +165,16 @@ impl ContactParams {
         }
         // 1/R = 1/R1 + 1/R2, with 1/inf = 0 for a flat body.
         let radius = 1.0 / (1.0 / radius1 + 1.0 / radius2);
+        // A subnormal radius (5e-324) has 1/R = inf: the combined R would be 0 (found by
+        // tests/fuzz_law.rs).
+        positive("radius", radius, "finite and > 0 m (1/R = 1/R1 + 1/R2)")?;
         let (c1, c2) = (material1.compliance(), material2.compliance());
+        positive(
+            "effective_modulus",
+            1.0 / (c1 + c2),
+            "finite and > 0 Pa (1/E* = sum of (1 - nu^2)/E)",
+        )?;
+        scales(1.0 / (c1 + c2), radius)?;
         Ok(Self {
             effective_modulus: 1.0 / (c1 + c2),
             radius,
@@ -193,5 +203,23 @@ impl ContactParams {
     /// Poisson ratio nu [-] used by the large-deformation levels.
     pub fn poisson_ratio(&self) -> f64 {
         self.poisson_ratio
+    }
+}
+
+/// The law's scales stay finite and non-zero: the force `E* R^2`, the energy `E* R^3` and
+/// `1/R` (found by tests/fuzz_law.rs: R = 1e308 gave an infinite force scale and `response`
+/// returned inf; R = 1e-200 a zero one and `compression_for_force(0)` returned NaN).
+fn scales(effective_modulus: f64, radius: f64) -> Result<()> {
+    let energy = effective_modulus * radius * radius * radius;
+    let force = effective_modulus * radius * radius;
+    // force > 0: a scale that underflows to 0 made `compression_for_force(0)` NaN (0/0).
+    if energy.is_finite() && force > 0.0 && (1.0 / radius).is_finite() {
+        Ok(())
+    } else {
+        Err(Error::InvalidParameter {
+            field: "radius",
+            value: radius,
+            range: "small enough that E* R^3 [J] is finite, large enough that E* R^2 [N] > 0",
+        })
     }
 }

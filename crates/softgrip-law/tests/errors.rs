@@ -154,3 +154,44 @@ fn material_fit_rejects_bad_samples() {
         ),
     );
 }
+
+/// Found by `tests/fuzz_law.rs` (seed 0x5eed1a3, case 38): `try_combine` with a subnormal
+/// radius (5e-324, 1/R = inf) gave a combined radius of 0, a law with `inv_radius = inf`, and
+/// `evaluate(0)` panicked (debug) on a NaN x. Now a typed error.
+#[test]
+fn try_combine_with_a_subnormal_radius_is_an_error() {
+    let m = softgrip_law::Material::try_new(3.0e6, 0.49).unwrap();
+    let e = softgrip_law::ContactParams::try_combine(m, 5e-324, m, 0.01).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            softgrip_law::Error::InvalidParameter {
+                field: "radius",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(softgrip_law::ContactParams::try_combine(m, 1e-100, m, 0.01).is_ok());
+    // E* R^2 underflowing to 0 N made compression_for_force(0) NaN.
+    assert!(softgrip_law::ContactParams::try_new(m, 1e-200).is_err());
+}
+
+/// Found by `tests/fuzz_law.rs` (seed 0x5eed1a3, case 125): R = 1e308 m was accepted, the
+/// force scale E* R^2 was infinite and `response` returned an infinite force.
+#[test]
+fn radius_1e308_overflowing_the_force_scale_is_an_error() {
+    let m = softgrip_law::Material::try_new(3.0e6, 0.49).unwrap();
+    let e = softgrip_law::ContactParams::try_new(m, 1e308).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            softgrip_law::Error::InvalidParameter {
+                field: "radius",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(softgrip_law::ContactParams::try_new(m, 1e30).is_ok());
+}

@@ -48,6 +48,8 @@ pub(crate) struct Model {
     pub torsion: bool,
     /// Effective radius R of the contact \[m\].
     pub radius: f64,
+    /// Two fingertips: the readout reports the contact on both (`readout::assemble`).
+    pub soft_pair: bool,
 }
 
 impl Model {
@@ -58,6 +60,7 @@ impl Model {
             friction: tip.friction(),
             torsion: tip.torsional_friction(),
             radius: tip.radius(),
+            soft_pair: false,
         }
     }
 
@@ -73,6 +76,7 @@ impl Model {
             friction: (a.friction() * b.friction()).sqrt(),
             torsion: a.torsional_friction() && b.torsional_friction(),
             radius: p.radius(),
+            soft_pair: true,
             law,
         })
     }

@@ -7,7 +7,7 @@ use rapier3d::prelude::ColliderHandle;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A fingertip parameter is outside its valid range.
-    #[error("`{field}` must be {range}, got {value}")]
+    #[error("`{field}` must be {range}, got {}", number(*value))]
     InvalidParameter {
         /// Name of the offending field.
         field: &'static str,
@@ -49,3 +49,14 @@ pub enum Error {
 
 /// `Result` with this crate's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// A value as a message shows it: plain for ordinary magnitudes, in scientific notation for
+/// huge or tiny ones (`1e39`, not 40 digits).
+fn number(v: f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && a.is_finite() && !(1e-4..1e6).contains(&a) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}

@@ -14,6 +14,21 @@ pub const DEFAULT_FRICTION: f64 = 0.8;
 /// [`SoftFingertipBuilder::restitution_speed`]).
 pub const DEFAULT_RESTITUTION_SPEED: f64 = 1.0;
 
+/// Smallest fingertip radius R \[m\] (1 nm): rapier holds the ball's radius, mass and inertia
+/// in `f32` (an inertia ~ rho R^5 underflows below this).
+pub const MIN_RADIUS: f64 = 1.0e-9;
+/// Largest fingertip radius R \[m\] (1 km): rapier's `f32` ball radius, mass and inertia stay
+/// finite (a radius of 1e39 m was an infinite `f32` radius and a panic at registration).
+pub const MAX_RADIUS: f64 = 1.0e3;
+/// Largest Young's modulus E \[Pa\] of a fingertip (10 TPa, ten times diamond): the law's force
+/// `~ E R^2` must stay within rapier's `f32` impulses.
+pub const MAX_YOUNGS_MODULUS: f64 = 1.0e13;
+/// Range of the reference impact speed v_ref [m/s]: the damping `alpha = zeta / v_ref` must
+/// stay finite.
+pub const RESTITUTION_SPEED_RANGE: (f64, f64) = (1.0e-6, 1.0e6);
+/// Largest Coulomb friction coefficient mu_f [-].
+pub const MAX_FRICTION: f64 = 1.0e3;
+
 /// A soft spherical fingertip: radius, material, law level, restitution and friction.
 ///
 /// Validated once by [`SoftFingertipBuilder::build`]; the fields are private, so an invalid
@@ -41,7 +56,8 @@ pub struct SoftFingertip {
 }
 
 impl SoftFingertip {
-    /// Starts a builder for a fingertip of radius `radius` R \[m\] (finite, > 0).
+    /// Starts a builder for a fingertip of radius `radius` R \[m\], in
+    /// [[`MIN_RADIUS`], [`MAX_RADIUS`]] (checked by [`SoftFingertipBuilder::build`]).
     pub fn builder(radius: f64) -> SoftFingertipBuilder {
         SoftFingertipBuilder {
             name: String::from("fingertip"),
@@ -233,14 +249,14 @@ impl SoftFingertipBuilder {
         self
     }
 
-    /// Reference impact speed v_ref [m/s] (finite, > 0; default 1 m/s) at which an impact on
+    /// Reference impact speed v_ref [m/s] (in [1e-6, 1e6] m/s; default 1 m/s) at which an impact on
     /// a rigid body rebounds with the [`restitution`](Self::restitution) e.
     pub fn restitution_speed(mut self, speed: f64) -> Self {
         self.restitution_speed = speed;
         self
     }
 
-    /// Coulomb friction coefficient mu_f [-], finite and >= 0; default 0.8.
+    /// Coulomb friction coefficient mu_f [-], in [0, 1e3]; default 0.8.
     pub fn friction(mut self, friction: f64) -> Self {
         self.friction = friction;
         self
@@ -263,33 +279,38 @@ impl SoftFingertipBuilder {
 
     /// Validates everything and binds the law.
     pub fn build(self) -> Result<SoftFingertip> {
-        if !(self.radius.is_finite() && self.radius > 0.0) {
-            return Err(Error::InvalidParameter {
-                field: "radius",
-                value: self.radius,
-                range: "finite and > 0 m",
-            });
+        let invalid = |field, value, range| {
+            Err(Error::InvalidParameter {
+                field,
+                value,
+                range,
+            })
+        };
+        if !(self.radius.is_finite() && (MIN_RADIUS..=MAX_RADIUS).contains(&self.radius)) {
+            return invalid("radius", self.radius, "in [1e-9, 1e3] m");
         }
         if !(self.restitution > 0.0 && self.restitution <= 1.0) {
-            return Err(Error::InvalidParameter {
-                field: "restitution",
-                value: self.restitution,
-                range: "in (0, 1]",
-            });
+            return invalid("restitution", self.restitution, "in (0, 1]");
         }
-        if !(self.restitution_speed.is_finite() && self.restitution_speed > 0.0) {
-            return Err(Error::InvalidParameter {
-                field: "restitution_speed",
-                value: self.restitution_speed,
-                range: "finite and > 0 m/s",
-            });
+        let (lo, hi) = RESTITUTION_SPEED_RANGE;
+        if !(self.restitution_speed.is_finite() && (lo..=hi).contains(&self.restitution_speed)) {
+            return invalid(
+                "restitution_speed",
+                self.restitution_speed,
+                "in [1e-6, 1e6] m/s",
+            );
         }
-        if !(self.friction.is_finite() && self.friction >= 0.0) {
-            return Err(Error::InvalidParameter {
-                field: "friction",
-                value: self.friction,
-                range: "finite and >= 0",
-            });
+        if !(self.friction.is_finite() && (0.0..=MAX_FRICTION).contains(&self.friction)) {
+            return invalid("friction", self.friction, "in [0, 1e3]");
+        }
+        if let Some(m) = self.material
+            && m.youngs_modulus() > MAX_YOUNGS_MODULUS
+        {
+            return invalid(
+                "material.youngs_modulus",
+                m.youngs_modulus(),
+                "finite, > 0 and <= 1e13 Pa",
+            );
         }
         let material = self.material.ok_or(Error::MissingMaterial)?;
         let law = match self.law {

@@ -21,8 +21,9 @@ pub use counters::SoftCounters;
 pub use detect::compression_from_signed_distance;
 pub use error::{Error, Result};
 pub use fingertip::{
-    DEFAULT_FRICTION, DEFAULT_RESTITUTION, DEFAULT_RESTITUTION_SPEED, SoftFingertip,
-    SoftFingertipBuilder, hunt_crossley_zeta,
+    DEFAULT_FRICTION, DEFAULT_RESTITUTION, DEFAULT_RESTITUTION_SPEED, MAX_FRICTION, MAX_RADIUS,
+    MAX_YOUNGS_MODULUS, MIN_RADIUS, RESTITUTION_SPEED_RANGE, SoftFingertip, SoftFingertipBuilder,
+    hunt_crossley_zeta,
 };
 pub use presets::Preset;
 pub use readout::TipContact;

@@ -18,6 +18,13 @@ use crate::solve::Row;
 /// `normal`, `delta`) is that of the last (sub)step, with `delta` predicted to the end of it
 /// (`delta - h v_n`, what rapier's position update produces), so `normal_force` and
 /// `law(delta)` agree for a quasi-static contact.
+///
+/// A contact of two fingertips is one pair with one combined law
+/// (`ContactParams::try_combine`) and is reported **twice**, once per fingertip: `fingertip`
+/// and `other` swapped, each with its own normal (from the other fingertip to it), the force
+/// and friction vectors exactly opposite, `delta` the approach of the two surfaces and
+/// `x = delta / R_eff` (R_eff the combined radius). Sum `normal_force` per fingertip, not over
+/// all contacts, to avoid counting such a pair twice.
 #[derive(Debug, Clone)]
 pub struct TipContact {
     /// The fingertip's collider.
@@ -28,9 +35,10 @@ pub struct TipContact {
     pub point: [f64; 3],
     /// Unit normal, world, from the other body to the fingertip.
     pub normal: [f64; 3],
-    /// Compression delta \[m\] (> 0 in contact).
+    /// Compression delta \[m\] (> 0 in contact; of two fingertips: the approach of their
+    /// surfaces).
     pub delta: f64,
-    /// Compression ratio x = delta / R [-].
+    /// Compression ratio x = delta / R [-] (of two fingertips: R = the combined radius).
     pub x: f64,
     /// Normal force on the fingertip \[N\], >= 0 (step average; includes the dissipative part).
     pub normal_force: f64,
@@ -247,8 +255,29 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
             contact_duration: a.duration,
             model: a.model,
         });
+        if let Some(last) = out.last()
+            && last.model.soft_pair
+        {
+            let mirror = mirrored(last);
+            out.push(mirror);
+        }
     }
     acc.clear();
     // Already sorted unless a split step found new contacts after its first substep.
     out.sort_by_key(|c| (raw(c.fingertip), raw(c.other)));
+}
+
+/// The contact `c` of two fingertips as the second fingertip sees it: the same pair, point,
+/// compression and law; normal, normal force vector and friction force negated (so the two
+/// readouts are exactly equal and opposite, Newton's third law), and the same torsional
+/// moment about the negated normal (the moment vector negated).
+fn mirrored(c: &TipContact) -> TipContact {
+    let neg = |v: [f64; 3]| v.map(|x| -x);
+    TipContact {
+        fingertip: c.other,
+        other: c.fingertip,
+        normal: neg(c.normal),
+        friction_force: neg(c.friction_force),
+        ..c.clone()
+    }
 }

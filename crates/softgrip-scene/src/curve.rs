@@ -8,6 +8,8 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 
 use crate::error::SceneError;
+use crate::limits::MAX_CURVE_BYTES;
+use crate::read::{ReadError, read_bounded};
 
 /// The header a curve file must have.
 pub const CURVE_HEADER: [&str; 2] = ["delta_m", "force_n"];
@@ -33,7 +35,14 @@ struct Row {
 /// Reads a curve file: CSV with the header `delta_m,force_n` (SI units: m, N), one row per
 /// measured point; lines starting with `#` are comments (where the data came from).
 pub fn read_curve(path: &Path) -> Result<MeasuredCurve, SceneError> {
-    let bytes = std::fs::read(path).map_err(|e| error(path, 0, "", format!("cannot read: {e}")))?;
+    let bytes = read_bounded(path, MAX_CURVE_BYTES).map_err(|e| match e {
+        ReadError::Io(e) => error(path, 0, "", format!("cannot read: {e}")),
+        ReadError::TooLarge { limit } => SceneError::TooLarge {
+            path: path.to_path_buf(),
+            what: "curve",
+            limit,
+        },
+    })?;
     parse_curve(&bytes, path)
 }
 

@@ -93,6 +93,55 @@ pub enum SceneError {
         /// What is wrong.
         message: String,
     },
+    /// A scene, mesh or curve file is larger than its read limit (`/dev/zero`, a wrong path).
+    #[error(
+        "{}: larger than the {} limit for a {what} file (limits in SCENES.md)",
+        path.display(),
+        crate::read::size(*limit)
+    )]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+        /// `scene`, `mesh` or `curve`.
+        what: &'static str,
+        /// The limit \[bytes\].
+        limit: u64,
+    },
+    /// `duration / dt` is more steps than the scene's cap (`max_steps`, default
+    /// [`DEFAULT_MAX_STEPS`](crate::DEFAULT_MAX_STEPS)).
+    #[error(
+        "{origin}: `duration` = {duration} s at `dt` = {dt} s is {steps:.4e} steps, more than the cap of {max_steps}: raise it with `max_steps = ...` at the top of the scene file, or use a larger `dt` or a shorter `duration`"
+    )]
+    TooManySteps {
+        /// The file.
+        origin: String,
+        /// Simulated time \[s\].
+        duration: f64,
+        /// Time step \[s\].
+        dt: f64,
+        /// `duration / dt`, rounded.
+        steps: f64,
+        /// The cap in force.
+        max_steps: u64,
+    },
+    /// A fingertip starts pressed into another body deeper than its law's validity range.
+    #[error(
+        "{origin}: `{fingertip}` starts {depth:.4e} m inside `{other}` (x = {x:.4}, past the law's validity x <= {x_max:.4}): move the bodies apart (SCENES.md, \"Starting in contact\")"
+    )]
+    StartPenetration {
+        /// The file.
+        origin: String,
+        /// The fingertip, e.g. `fingertip[0]` (`left_tip`).
+        fingertip: String,
+        /// The other shape, e.g. `body[1].shape[0]` (`box`) or another fingertip.
+        other: String,
+        /// Penetration depth at the start \[m\].
+        depth: f64,
+        /// Compression ratio depth / R of the pair [-].
+        x: f64,
+        /// The law's largest valid compression ratio [-].
+        x_max: f64,
+    },
 }
 
 impl SceneError {

@@ -11,6 +11,7 @@ use crate::curve::{MeasuredCurve, read_curve};
 use crate::error::SceneError;
 use crate::format::{FingertipSpec, SceneFile};
 use crate::level::LevelSpec;
+use crate::limits::{MAX_DENSITY, MIN_DENSITY};
 use crate::validate::Checker;
 
 /// Builds every fingertip (the plugin validates radius, restitution, friction and material).
@@ -29,8 +30,13 @@ pub(crate) fn check_fingertips(
         if !file.bodies.iter().any(|b| b.name == t.body) {
             return Err(c.name(f("body"), format!("no body is named `{}`", t.body)));
         }
-        c.finite3(f("offset"), t.offset)?;
-        c.positive(f("density"), t.density, "kg/m^3")?;
+        c.coords(f("offset"), t.offset)?;
+        c.range(
+            f("density"),
+            t.density,
+            (MIN_DENSITY, MAX_DENSITY),
+            "kg/m^3",
+        )?;
         let material = material(c, t, &f)?;
         let law = law(c, t, &f, base)?;
         let builder = SoftFingertip::builder(t.radius)
@@ -69,13 +75,18 @@ fn material(
                 let all: Vec<_> = Preset::ALL.iter().map(|q| q.name()).collect();
                 c.invalid(f("preset"), p, &format!("one of {}", all.join(", ")))
             }),
-        (None, Some(m)) => Material::try_new(m.youngs_modulus, m.poisson_ratio).map_err(|e| {
-            c.invalid(
-                f("material"),
-                (m.youngs_modulus, m.poisson_ratio),
-                &e.to_string(),
-            )
-        }),
+        // The law names the constant at fault: `fingertip[0].material.poisson_ratio` must be
+        // in (-1, 0.5], got -1 (was "`fingertip[0].material` must be `poisson_ratio` must be").
+        (None, Some(m)) => {
+            Material::try_new(m.youngs_modulus, m.poisson_ratio).map_err(|e| match e {
+                softgrip_law::Error::InvalidParameter {
+                    field,
+                    value,
+                    range,
+                } => c.invalid(f(&format!("material.{field}")), value, range),
+                e => c.name(f("material"), e.to_string()),
+            })
+        }
         _ => Err(c.name(f("preset"), "give exactly one of `preset` and `material`")),
     }
 }

@@ -6,6 +6,7 @@
 
 use serde::Deserialize;
 
+use crate::exact::{exact, exact_opt};
 use crate::level::LevelSpec;
 
 /// A whole experiment: simulation settings, bodies, fingertips, an optional gripper and what
@@ -13,14 +14,19 @@ use crate::level::LevelSpec;
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneFile {
-    /// Simulated time \[s\], finite and > 0.
+    /// Simulated time \[s\], finite and >= `dt`, at most `max_steps` steps.
     pub duration: f64,
-    /// Time step \[s\], finite and > 0 (default 1/60).
+    /// Time step \[s\], in [1e-9, 1] s (default 1/60).
     #[serde(default = "default_dt")]
     pub dt: f64,
     /// Gravity [m/s^2] (default `[0, -9.81, 0]`).
-    #[serde(default = "default_gravity")]
+    #[serde(default = "default_gravity", deserialize_with = "exact")]
     pub gravity: [f64; 3],
+    /// The cap on the step count `duration / dt`, >= 1 (default
+    /// [`DEFAULT_MAX_STEPS`](crate::DEFAULT_MAX_STEPS), 10 million): a run past it is an
+    /// error naming `dt` and `duration`. Raise it here for a deliberately long run.
+    #[serde(default = "default_max_steps")]
+    pub max_steps: u64,
     /// The plugin's accuracy: contact phase per substep \[rad\], in (0, 2] (default 0.05).
     #[serde(default = "default_accuracy")]
     pub accuracy: f64,
@@ -43,6 +49,9 @@ fn default_dt() -> f64 {
 }
 fn default_gravity() -> [f64; 3] {
     [0.0, -9.81, 0.0]
+}
+fn default_max_steps() -> u64 {
+    crate::limits::DEFAULT_MAX_STEPS
 }
 fn default_accuracy() -> f64 {
     0.05
@@ -117,10 +126,10 @@ pub struct BodySpec {
     /// `fixed`, `dynamic` or `kinematic`.
     pub kind: BodyKind,
     /// Initial position \[m\] (default origin).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact")]
     pub position: [f64; 3],
     /// Initial orientation as a rotation vector (axis * angle) \[rad\] (default none).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact")]
     pub rotation: [f64; 3],
     /// Scripted path of a kinematic body: waypoints with increasing `t`, linear in between;
     /// the body holds the first position before and the last after.
@@ -138,6 +147,7 @@ pub struct WaypointSpec {
     /// Time \[s\], >= 0, strictly increasing along the trajectory.
     pub t: f64,
     /// Body position at `t` \[m\].
+    #[serde(deserialize_with = "exact")]
     pub position: [f64; 3],
 }
 
@@ -149,10 +159,10 @@ pub struct ShapeSpec {
     #[serde(rename = "type")]
     pub kind: ShapeKind,
     /// `plane`: outward normal (normalised on load), non-zero.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact_opt")]
     pub normal: Option<[f64; 3]>,
     /// `cuboid`: half extents \[m\], each finite and > 0.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact_opt")]
     pub half_extents: Option<[f64; 3]>,
     /// `ball`, `cylinder`: radius \[m\], finite and > 0.
     #[serde(default)]
@@ -167,7 +177,7 @@ pub struct ShapeSpec {
     #[serde(default)]
     pub scale: Option<f64>,
     /// Offset from the body origin \[m\] (default none).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact")]
     pub offset: [f64; 3],
     /// Density [kg/m^3], finite and > 0 (default 1000).
     #[serde(default = "default_density")]
@@ -225,7 +235,7 @@ pub struct FingertipSpec {
     /// Name of the body that carries it.
     pub body: String,
     /// Centre of the sphere relative to the body origin \[m\] (default none).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact")]
     pub offset: [f64; 3],
     /// Radius R \[m\], finite and > 0.
     pub radius: f64,
@@ -273,11 +283,13 @@ pub struct GripperSpec {
     #[serde(default = "default_gripper_name")]
     pub name: String,
     /// The two jaw bodies (kinematic, each carrying at least one fingertip).
+    #[serde(deserialize_with = "exact")]
     pub jaws: [String; 2],
     /// Closing direction of the first jaw (normalised; the second closes along its opposite).
+    #[serde(deserialize_with = "exact")]
     pub axis: [f64; 3],
     /// Lift direction (normalised; default opposite to gravity).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact_opt")]
     pub up: Option<[f64; 3]>,
     /// Closing speed until the fingertips touch [m/s], finite and > 0.
     pub approach_speed: f64,

@@ -6,6 +6,7 @@ use softgrip_rapier::SoftFingertip;
 
 use crate::error::SceneError;
 use crate::format::{BodyKind, GripperSpec, MoveSpec, SceneFile};
+use crate::limits::{MAX_COORDINATE, MAX_SPEED, MAX_TIME};
 use crate::validate::Checker;
 
 /// The commanded grip.
@@ -68,14 +69,29 @@ impl GripperProgram {
             Some(u) => c.direction("gripper.up", u)?,
             None => c.direction("gripper.up", file.gravity.map(|x| -x))?,
         };
-        c.positive("gripper.approach_speed", g.approach_speed, "m/s")?;
-        c.positive("gripper.squeeze.speed", g.squeeze.speed, "m/s")?;
-        c.non_negative("gripper.squeeze.settle", g.squeeze.settle, "s")?;
-        c.non_negative("gripper.lift.distance", g.lift.distance, "m")?;
-        c.positive("gripper.lift.speed", g.lift.speed, "m/s")?;
-        c.non_negative("gripper.hold", g.hold, "s")?;
-        c.non_negative("gripper.release.distance", g.release.distance, "m")?;
-        c.positive("gripper.release.speed", g.release.speed, "m/s")?;
+        let speed = |field: &str, v: f64| {
+            c.positive(field, v, "m/s")?;
+            c.range(field, v, (0.0, MAX_SPEED), "m/s")
+        };
+        speed("gripper.approach_speed", g.approach_speed)?;
+        speed("gripper.squeeze.speed", g.squeeze.speed)?;
+        speed("gripper.lift.speed", g.lift.speed)?;
+        speed("gripper.release.speed", g.release.speed)?;
+        c.range(
+            "gripper.squeeze.settle",
+            g.squeeze.settle,
+            (0.0, MAX_TIME),
+            "s",
+        )?;
+        c.range("gripper.hold", g.hold, (0.0, MAX_TIME), "s")?;
+        let distance = (0.0, MAX_COORDINATE);
+        c.range("gripper.lift.distance", g.lift.distance, distance, "m")?;
+        c.range(
+            "gripper.release.distance",
+            g.release.distance,
+            distance,
+            "m",
+        )?;
         Ok(Self {
             name: g.name.clone(),
             jaws: [jaw0.body, jaw1.body],
@@ -148,7 +164,18 @@ fn jaw(
         .first()
         .ok_or_else(|| c.name(&field, format!("`{name}` carries no fingertip")))?;
     let depth = match squeeze {
-        Squeeze::Depth(d) => d,
+        // Like the force's reachability: a depth past the law's validity is an error (a
+        // 1.1 R squeeze gave 16 kN on a 32 g box).
+        Squeeze::Depth(d) => {
+            tips[tip].law().try_response(d).map_err(|e| {
+                c.invalid(
+                    "gripper.squeeze.depth",
+                    d,
+                    &format!("within the law's validity for `{}`: {e}", tips[tip].name()),
+                )
+            })?;
+            d
+        }
         Squeeze::Force(f) => tips[tip].law().compression_for_force(f).map_err(|e| {
             c.invalid(
                 "gripper.squeeze.force",

@@ -4,14 +4,18 @@ mod build;
 mod curve;
 mod digest;
 mod error;
+mod exact;
 mod fingertips;
 mod format;
 mod gripper;
 mod level;
+mod limits;
 mod mesh;
 mod plain;
+mod read;
 mod scene;
 mod shape;
+mod start;
 mod trajectory;
 mod validate;
 mod vector;
@@ -28,6 +32,11 @@ pub use gripper::{
     GripperEvent, GripperProgram, GripperState, JawState, Phase, Squeeze, jaw_compressions,
 };
 pub use level::LevelSpec;
+pub use limits::{
+    DEFAULT_MAX_STEPS, MAX_COORDINATE, MAX_CURVE_BYTES, MAX_DENSITY, MAX_DT, MAX_FRICTION,
+    MAX_GRAVITY, MAX_MESH_BYTES, MAX_ROTATION_ANGLE, MAX_SCENE_BYTES, MAX_SIZE, MAX_SPEED,
+    MAX_TIME, MIN_DENSITY, MIN_DT, MIN_SIZE,
+};
 pub use mesh::{Mesh, load_mesh, parse_obj, parse_stl};
 pub use plain::PlainRun;
 pub use scene::{DEFAULT_SCENE, Scene};

@@ -4,6 +4,8 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use crate::error::SceneError;
+use crate::limits::{MAX_COORDINATE, MAX_MESH_BYTES};
+use crate::read::{ReadError, read_bounded};
 
 /// A triangle mesh: vertices \[m\] and counter-clockwise triangles (indices into `vertices`).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -21,7 +23,14 @@ pub fn load_mesh(path: &Path) -> Result<Mesh, SceneError> {
         line,
         message,
     };
-    let bytes = std::fs::read(path).map_err(|e| err(0, format!("cannot read: {e}")))?;
+    let bytes = read_bounded(path, MAX_MESH_BYTES).map_err(|e| match e {
+        ReadError::Io(e) => err(0, format!("cannot read: {e}")),
+        ReadError::TooLarge { limit } => SceneError::TooLarge {
+            path: path.to_path_buf(),
+            what: "mesh",
+            limit,
+        },
+    })?;
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
@@ -148,6 +157,81 @@ pub fn parse_stl(bytes: &[u8]) -> Result<Mesh, (usize, String)> {
         }
     }
     Ok(mesh)
+}
+
+/// What rapier can hold of a (scaled) mesh, as rapier will hold it (vertices rounded to
+/// `f32`): every vertex finite and within [`MAX_COORDINATE`]; for a triangle mesh no
+/// degenerate triangle (twice its area > `f32::EPSILON` times its longest edge squared); for a
+/// convex mesh a hull that spans a volume (not all points coplanar). The error names the
+/// vertex or triangle (0-based, in file order).
+pub(crate) fn check_geometry(mesh: &Mesh, convex: bool) -> Result<(), String> {
+    for (k, v) in mesh.vertices.iter().enumerate() {
+        if !v.iter().all(|c| c.is_finite() && c.abs() <= MAX_COORDINATE) {
+            return Err(format!(
+                "vertex {k} is {v:?}: each coordinate must be finite and within ±{MAX_COORDINATE:e} m (after `scale`)"
+            ));
+        }
+    }
+    let p: Vec<[f64; 3]> = (mesh.vertices.iter())
+        .map(|v| v.map(|c| c as f32 as f64))
+        .collect();
+    if convex {
+        return spans_volume(&p)
+            .then_some(())
+            .ok_or_else(|| String::from("the convex hull is flat (all vertices coplanar or collinear): a `convex_mesh` needs a non-degenerate hull"));
+    }
+    for (k, t) in mesh.triangles.iter().enumerate() {
+        let [a, b, c] = t.map(|i| p[i as usize]);
+        let (e1, e2, e3) = (sub(b, a), sub(c, a), sub(c, b));
+        let longest = [e1, e2, e3].iter().map(|e| dot(*e, *e)).fold(0.0, f64::max);
+        let n = cross(e1, e2);
+        let twice_area = dot(n, n).sqrt();
+        if twice_area.is_nan() || twice_area <= f32::EPSILON as f64 * longest {
+            return Err(format!(
+                "triangle {k} (vertices {t:?}) is degenerate (zero area): a `triangle_mesh` needs triangles with three distinct, non-collinear corners"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The points span a volume: the tetrahedron of the farthest points (from the first, from
+/// their line, from their plane) has a volume > 1e-9 times the cube of the extent.
+fn spans_volume(p: &[[f64; 3]]) -> bool {
+    let Some(&a) = p.first() else {
+        return false;
+    };
+    let far = |score: &dyn Fn([f64; 3]) -> f64| {
+        p.iter()
+            .copied()
+            .max_by(|x, y| score(*x).total_cmp(&score(*y)))
+            .unwrap_or(a)
+    };
+    let b = far(&|x| dot(sub(x, a), sub(x, a)));
+    let ab = sub(b, a);
+    let c = far(&|x| {
+        let n = cross(ab, sub(x, a));
+        dot(n, n)
+    });
+    let n = cross(ab, sub(c, a));
+    let d = far(&|x| dot(n, sub(x, a)).abs());
+    let extent = dot(ab, ab).sqrt();
+    let volume = dot(n, sub(d, a)).abs() / 6.0;
+    volume > 1e-9 * extent * extent * extent
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 
 #[cfg(test)]

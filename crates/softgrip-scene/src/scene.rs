@@ -10,6 +10,9 @@ use crate::error::SceneError;
 use crate::fingertips;
 use crate::format::SceneFile;
 use crate::gripper::GripperProgram;
+use crate::limits::MAX_SCENE_BYTES;
+use crate::read::{ReadError, read_bounded};
+use crate::start;
 use crate::validate::{self, Checker};
 
 /// The embedded default scene (`scenes/default.toml`): a parallel-jaw gripper with two soft
@@ -51,22 +54,34 @@ impl Scene {
             Some(g) => Some(GripperProgram::from_spec(&c, &file, &fingertips, g)?),
             None => None,
         };
-        Ok(Self {
+        let scene = Self {
             origin: origin.to_string(),
             file,
             shapes,
             fingertips,
             gripper,
-        })
+        };
+        start::check_start(&c, &scene)?;
+        Ok(scene)
     }
 
     /// Reads and checks a scene file.
     pub fn from_file(path: &Path) -> Result<Self, SceneError> {
         let origin = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+        let io = |source| SceneError::Io {
             origin: origin.clone(),
             source,
+        };
+        let bytes = read_bounded(path, MAX_SCENE_BYTES).map_err(|e| match e {
+            ReadError::Io(e) => io(e),
+            ReadError::TooLarge { limit } => SceneError::TooLarge {
+                path: path.to_path_buf(),
+                what: "scene",
+                limit,
+            },
         })?;
+        let text = String::from_utf8(bytes)
+            .map_err(|e| io(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))?;
         let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Self::parse(&text, &origin, &base)
     }

@@ -10,7 +10,12 @@ use crate::vector::vector;
 pub(crate) fn shape(s: &ShapeSpec, mesh: Option<Mesh>) -> Option<SharedShape> {
     let r = s.radius.unwrap_or_default() as f32;
     Some(match s.kind {
-        ShapeKind::Plane => SharedShape::halfspace(vector(s.normal?).normalize()),
+        ShapeKind::Plane => {
+            // Normalised in f64 first: a tiny normal (1e-50) is 0 as f32.
+            let n = s.normal?;
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            SharedShape::halfspace(vector(n.map(|c| c / len)).normalize())
+        }
         ShapeKind::Cuboid => {
             let h = s.half_extents?;
             SharedShape::cuboid(h[0] as f32, h[1] as f32, h[2] as f32)

@@ -9,7 +9,11 @@ use softgrip_rapier::rapier3d::prelude::SharedShape;
 
 use crate::error::SceneError;
 use crate::format::{BodyKind, SceneFile, ShapeKind, ShapeSpec};
-use crate::mesh::{Mesh, load_mesh};
+use crate::limits::{
+    MAX_COORDINATE, MAX_DENSITY, MAX_DT, MAX_FRICTION, MAX_GRAVITY, MAX_ROTATION_ANGLE, MAX_SIZE,
+    MAX_TIME, MIN_DENSITY, MIN_DT, MIN_SIZE,
+};
+use crate::mesh::{Mesh, check_geometry, load_mesh};
 use crate::shape::shape;
 
 /// Builds typed errors for one file.
@@ -50,18 +54,34 @@ impl Checker<'_> {
         }
     }
 
-    /// `v` finite and >= 0.
-    pub fn non_negative(
+    /// `v` finite and in `[lo, hi]`.
+    pub fn range(
         &self,
         field: impl Into<String>,
         v: f64,
+        (lo, hi): (f64, f64),
         unit: &str,
     ) -> Result<(), SceneError> {
-        if v.is_finite() && v >= 0.0 {
+        if v.is_finite() && (lo..=hi).contains(&v) {
             Ok(())
         } else {
-            Err(self.invalid(field, v, &format!("finite and >= 0 {unit}")))
+            Err(self.invalid(field, v, &format!("in [{lo:e}, {hi:e}] {unit}")))
         }
+    }
+
+    /// A position \[m\]: every component finite and within [`MAX_COORDINATE`].
+    pub fn coords(&self, field: impl Into<String>, v: [f64; 3]) -> Result<(), SceneError> {
+        if v.iter().all(|c| c.is_finite() && c.abs() <= MAX_COORDINATE) {
+            Ok(())
+        } else {
+            let expected = format!("three finite numbers within ±{MAX_COORDINATE:e} m");
+            Err(self.invalid(field, v, &expected))
+        }
+    }
+
+    /// A shape's size \[m\], in [[`MIN_SIZE`], [`MAX_SIZE`]].
+    pub fn size(&self, field: impl Into<String>, v: f64) -> Result<(), SceneError> {
+        self.range(field, v, (MIN_SIZE, MAX_SIZE), "m")
     }
 
     /// Every component finite.
@@ -91,9 +111,13 @@ pub(crate) fn check_bodies(
     file: &SceneFile,
     base: &Path,
 ) -> Result<Vec<Vec<Option<Mesh>>>, SceneError> {
-    c.positive("duration", file.duration, "s")?;
-    c.positive("dt", file.dt, "s")?;
+    check_time(c, file)?;
     c.finite3("gravity", file.gravity)?;
+    let g = file.gravity.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if g > MAX_GRAVITY {
+        let expected = format!("of magnitude <= {MAX_GRAVITY:e} m/s^2");
+        return Err(c.invalid("gravity", file.gravity, &expected));
+    }
     SoftAccuracy::try_new(file.accuracy)
         .map_err(|_| c.invalid("accuracy", file.accuracy, "in (0, 2] rad"))?;
     if file.record.every_n_steps == 0 {
@@ -106,22 +130,27 @@ pub(crate) fn check_bodies(
         if b.name.is_empty() || !names.insert(b.name.as_str()) {
             return Err(c.name(f("name"), format!("`{}` is empty or used twice", b.name)));
         }
-        c.finite3(f("position"), b.position)?;
+        c.coords(f("position"), b.position)?;
         c.finite3(f("rotation"), b.rotation)?;
+        let angle = b.rotation.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if angle > MAX_ROTATION_ANGLE {
+            let expected = format!("a rotation vector of angle <= {MAX_ROTATION_ANGLE} rad");
+            return Err(c.invalid(f("rotation"), b.rotation, &expected));
+        }
         if !b.trajectory.is_empty() && b.kind != BodyKind::Kinematic {
             return Err(c.invalid(f("trajectory"), b.kind, "given only for a `kinematic` body"));
         }
         let mut last = -1.0;
         for (k, w) in b.trajectory.iter().enumerate() {
-            if !(w.t.is_finite() && w.t >= 0.0 && w.t > last) {
+            if !(w.t.is_finite() && w.t >= 0.0 && w.t > last && w.t <= MAX_TIME) {
                 return Err(c.invalid(
                     f(&format!("trajectory[{k}].t")),
                     w.t,
-                    "finite, >= 0 s and increasing",
+                    &format!("finite, in [0, {MAX_TIME:e}] s and increasing"),
                 ));
             }
             last = w.t;
-            c.finite3(f(&format!("trajectory[{k}].position")), w.position)?;
+            c.coords(f(&format!("trajectory[{k}].position")), w.position)?;
         }
         let mut body_meshes = Vec::new();
         for (j, s) in b.shapes.iter().enumerate() {
@@ -167,9 +196,14 @@ fn check_shape(
             return Err(c.name(g(name), format!("not a field of shape type {:?}", s.kind)));
         }
     }
-    c.finite3(g("offset"), s.offset)?;
-    c.positive(g("density"), s.density, "kg/m^3")?;
-    c.non_negative(g("friction"), s.friction, "")?;
+    c.coords(g("offset"), s.offset)?;
+    c.range(
+        g("density"),
+        s.density,
+        (MIN_DENSITY, MAX_DENSITY),
+        "kg/m^3",
+    )?;
+    c.range(g("friction"), s.friction, (0.0, MAX_FRICTION), "")?;
     if !(0.0..=1.0).contains(&s.restitution) {
         return Err(c.invalid(g("restitution"), s.restitution, "in [0, 1]"));
     }
@@ -184,27 +218,34 @@ fn check_shape(
         ShapeKind::Cuboid => {
             need("half_extents", s.half_extents.is_some())?;
             for (k, h) in s.half_extents.unwrap_or_default().iter().enumerate() {
-                c.positive(g(&format!("half_extents[{k}]")), *h, "m")?;
+                c.size(g(&format!("half_extents[{k}]")), *h)?;
             }
         }
         ShapeKind::Ball => {
             need("radius", s.radius.is_some())?;
-            c.positive(g("radius"), s.radius.unwrap_or_default(), "m")?;
+            c.size(g("radius"), s.radius.unwrap_or_default())?;
         }
         ShapeKind::Cylinder => {
             need("radius", s.radius.is_some())?;
             need("half_height", s.half_height.is_some())?;
-            c.positive(g("radius"), s.radius.unwrap_or_default(), "m")?;
-            c.positive(g("half_height"), s.half_height.unwrap_or_default(), "m")?;
+            c.size(g("radius"), s.radius.unwrap_or_default())?;
+            c.size(g("half_height"), s.half_height.unwrap_or_default())?;
         }
         ShapeKind::ConvexMesh | ShapeKind::TriangleMesh => {
             need("file", s.file.is_some())?;
             let scale = s.scale.unwrap_or(1.0);
-            c.positive(g("scale"), scale, "")?;
-            let mut mesh = load_mesh(&base.join(s.file.as_deref().unwrap_or_default()))?;
+            c.range(g("scale"), scale, (1e-9, 1e9), "")?;
+            let path = base.join(s.file.as_deref().unwrap_or_default());
+            let mut mesh = load_mesh(&path)?;
             for v in &mut mesh.vertices {
                 *v = v.map(|x| x * scale);
             }
+            let convex = s.kind == ShapeKind::ConvexMesh;
+            check_geometry(&mesh, convex).map_err(|message| SceneError::Mesh {
+                path,
+                line: 0,
+                message,
+            })?;
             return Ok(Some(mesh));
         }
     }
@@ -233,4 +274,28 @@ pub(crate) fn shapes(
         shapes.push(list);
     }
     Ok(shapes)
+}
+
+/// `dt` in [[`MIN_DT`], [`MAX_DT`]], `duration` >= `dt`, and `duration / dt` within the
+/// scene's step cap (`max_steps`).
+fn check_time(c: &Checker, file: &SceneFile) -> Result<(), SceneError> {
+    c.range("dt", file.dt, (MIN_DT, MAX_DT), "s")?;
+    if !(file.duration.is_finite() && file.duration >= file.dt) {
+        let expected = format!("finite and >= `dt` = {} s", file.dt);
+        return Err(c.invalid("duration", file.duration, &expected));
+    }
+    if file.max_steps == 0 {
+        return Err(c.invalid("max_steps", 0u64, ">= 1"));
+    }
+    let steps = (file.duration / file.dt).round();
+    if steps > file.max_steps as f64 {
+        return Err(SceneError::TooManySteps {
+            origin: c.origin.to_string(),
+            duration: file.duration,
+            dt: file.dt,
+            steps,
+            max_steps: file.max_steps,
+        });
+    }
+    Ok(())
 }

@@ -1,0 +1,83 @@
+//! The start of a run: a fingertip may start touching or slightly pressed into a body (the
+//! plugin pushes it out through the law), but not deeper than the law's validity range (a
+//! fingertip starting inside the box gave 44 kN at x = 1.52). That is an error naming the
+//! pair and the depth ([`SceneError::StartPenetration`]), checked on the built world.
+
+use softgrip_rapier::rapier3d::parry::query;
+use softgrip_rapier::rapier3d::prelude::ColliderHandle;
+use softgrip_rapier::softgrip_law::{ContactLaw, ContactParams};
+
+use crate::error::SceneError;
+use crate::scene::Scene;
+use crate::validate::Checker;
+
+/// Every fingertip against every other collider of the built scene at its start poses.
+pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> {
+    let built = scene.build();
+    let (world, h) = (&built.world, &built.handles);
+    let f = scene.file();
+    // A label for every collider: `body[j].shape[k]` (`name`) or `fingertip[i]` (`name`).
+    let mut labels: Vec<(ColliderHandle, String)> = Vec::new();
+    let mut shapes = h.shapes.iter();
+    for (j, b) in f.bodies.iter().enumerate() {
+        for k in 0..b.shapes.len() {
+            if let Some((_, s)) = shapes.next() {
+                labels.push((*s, format!("body[{j}].shape[{k}] (`{}`)", b.name)));
+            }
+        }
+    }
+    for (i, (name, handle)) in h.fingertips.iter().enumerate() {
+        labels.push((*handle, format!("fingertip[{i}] (`{name}`)")));
+    }
+    for (i, (_, tip_h)) in h.fingertips.iter().enumerate() {
+        let tip = &scene.fingertips()[i];
+        let tip_co = &world.physics.colliders[*tip_h];
+        for (other_h, other_label) in &labels {
+            let other_co = &world.physics.colliders[*other_h];
+            if other_h == tip_h || other_co.parent() == tip_co.parent() {
+                continue;
+            }
+            let other_tip = h.fingertips.iter().position(|(_, t)| t == other_h);
+            let law = match other_tip {
+                // Each soft pair once.
+                Some(j) if j < i => continue,
+                Some(j) => {
+                    let o = &scene.fingertips()[j];
+                    let p = ContactParams::try_combine(
+                        tip.material(),
+                        tip.radius(),
+                        o.material(),
+                        o.radius(),
+                    );
+                    match p.and_then(|p| ContactLaw::try_new(p, tip.level())) {
+                        Ok(law) => law,
+                        Err(_) => continue,
+                    }
+                }
+                None => tip.law().clone(),
+            };
+            let Ok(Some(contact)) = query::contact(
+                other_co.position(),
+                other_co.shape(),
+                tip_co.position(),
+                tip_co.shape(),
+                0.0,
+            ) else {
+                continue;
+            };
+            let depth = -(contact.dist as f64);
+            let x = depth / law.params().radius();
+            if x > law.x_max() {
+                return Err(SceneError::StartPenetration {
+                    origin: c.origin.to_string(),
+                    fingertip: format!("fingertip[{i}] (`{}`)", tip.name()),
+                    other: other_label.clone(),
+                    depth,
+                    x,
+                    x_max: law.x_max(),
+                });
+            }
+        }
+    }
+    Ok(())
+}
