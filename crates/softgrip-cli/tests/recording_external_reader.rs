@@ -81,8 +81,8 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
         "{law}"
     );
     assert!(meta["softgrip_version"].is_string());
-    // 300 steps, 6 messages each.
-    assert_eq!(rec.messages.len(), 300 * 6);
+    // 300 steps, 6 messages each, and /tf_static once.
+    assert_eq!(rec.messages.len(), 300 * 6 + 1);
 
     let mut contacts_checked = 0;
     let mut peak = std::collections::HashMap::<String, (f64, f64)>::new();
