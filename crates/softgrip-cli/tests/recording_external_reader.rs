@@ -140,7 +140,9 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
                     t["sec"].as_u64().unwrap() * 1_000_000_000 + t["nanosec"].as_u64().unwrap();
                 assert_eq!(ns, c.clock.as_nanos());
             }
-            _ => assert!([topics::TF, topics::MARKERS].contains(&m.topic.as_str())),
+            _ => assert!(
+                [topics::TF, topics::TF_STATIC, topics::MARKERS].contains(&m.topic.as_str())
+            ),
         }
     }
     assert!(contacts_checked > 400, "{contacts_checked}");

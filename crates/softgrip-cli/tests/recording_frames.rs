@@ -201,19 +201,25 @@ fn check(name: &str, summary: &Value, messages: &[Value], pressure: bool) -> (us
         }
     }
     assert_eq!(statics, 1, "{name}: /tf_static once");
+    check_tree(name, &tree, &used, &marked);
+    (contacts, messages.len())
+}
+
+/// One tree rooted at world; every used frame in it; every body with a marker.
+fn check_tree(name: &str, tree: &Tree, used: &BTreeSet<String>, marked: &BTreeSet<String>) {
     // One tree rooted at world: every frame reaches it.
     let frames: BTreeSet<String> = tree.keys().cloned().chain(["world".to_owned()]).collect();
     for frame in tree.keys() {
-        world_pose(&tree, frame);
+        world_pose(tree, frame);
     }
-    for frame in &used {
+    for frame in used {
         assert!(
             frames.contains(frame),
             "{name}: frame id {frame} is not in the tf tree"
         );
     }
     // Every body (a child of world) has a marker in its frame or in a frame it carries.
-    for (child, (parent, ..)) in &tree {
+    for (child, (parent, ..)) in tree {
         if parent == "world" {
             let carried = tree
                 .iter()
@@ -224,7 +230,6 @@ fn check(name: &str, summary: &Value, messages: &[Value], pressure: bool) -> (us
             );
         }
     }
-    (contacts, messages.len())
 }
 
 #[test]

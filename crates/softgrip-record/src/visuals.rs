@@ -3,6 +3,7 @@
 //! contact plane) and the contacts' normal forces (arrows), for Foxglove's 3D panel and RViz.
 
 use crate::msgs::geometry_msgs::{Point, Pose, Quaternion, Vector3};
+use crate::msgs::softgrip_msgs::SoftContactMsg;
 use crate::msgs::std_msgs::{ColorRGBA, Header};
 use crate::msgs::visualization_msgs::{Marker, MarkerArray};
 use crate::sink::{SceneInfo, ShapeGeometry, ShapeInfo};
@@ -226,23 +227,36 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
         });
     }
     for (i, c) in step.contacts.iter().enumerate() {
-        let Some(tip) = step.fingertips.iter().find(|t| t.name == c.fingertip) else {
-            continue;
-        };
-        let len = c.normal_force * tip.arrow_scale;
-        let (p, n) = (c.point.to_array(), c.normal.to_array());
-        let end: [f64; 3] = std::array::from_fn(|k| p[k] + len * n[k]);
-        let r = tip.radius;
-        markers.push(Marker {
-            scale: Vector3 {
-                x: 0.04 * r,
-                y: 0.1 * r,
-                z: 0.15 * r,
-            },
-            color: FORCE,
-            points: vec![c.point, Point::from_array(end)],
-            ..base(NS_FORCES, i, Marker::ARROW)
-        });
+        if let Some(arrow) = force_arrow(step, c) {
+            markers.push(Marker {
+                header: header.clone(),
+                id: id(i),
+                ..arrow
+            });
+        }
     }
     MarkerArray { markers }
+}
+
+/// The normal-force arrow of contact `c` (ns [`NS_FORCES`]; header and id left to the caller),
+/// `None` if its fingertip is not in the step.
+fn force_arrow(step: &StepRecord, c: &SoftContactMsg) -> Option<Marker> {
+    let tip = step.fingertips.iter().find(|t| t.name == c.fingertip)?;
+    let len = c.normal_force * tip.arrow_scale;
+    let (p, n) = (c.point.to_array(), c.normal.to_array());
+    let end: [f64; 3] = std::array::from_fn(|k| p[k] + len * n[k]);
+    let r = tip.radius;
+    Some(Marker {
+        ns: NS_FORCES.to_owned(),
+        r#type: Marker::ARROW,
+        action: Marker::ADD,
+        scale: Vector3 {
+            x: 0.04 * r,
+            y: 0.1 * r,
+            z: 0.15 * r,
+        },
+        color: FORCE,
+        points: vec![c.point, Point::from_array(end)],
+        ..Default::default()
+    })
 }
