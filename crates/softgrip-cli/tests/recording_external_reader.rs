@@ -81,8 +81,8 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
         "{law}"
     );
     assert!(meta["softgrip_version"].is_string());
-    // 300 steps, 6 messages each.
-    assert_eq!(rec.messages.len(), 300 * 6);
+    // 300 steps, 6 messages each, and /tf_static once.
+    assert_eq!(rec.messages.len(), 300 * 6 + 1);
 
     let mut contacts_checked = 0;
     let mut peak = std::collections::HashMap::<String, (f64, f64)>::new();
@@ -140,7 +140,9 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
                     t["sec"].as_u64().unwrap() * 1_000_000_000 + t["nanosec"].as_u64().unwrap();
                 assert_eq!(ns, c.clock.as_nanos());
             }
-            _ => assert!([topics::TF, topics::MARKERS].contains(&m.topic.as_str())),
+            _ => assert!(
+                [topics::TF, topics::TF_STATIC, topics::MARKERS].contains(&m.topic.as_str())
+            ),
         }
     }
     assert!(contacts_checked > 400, "{contacts_checked}");

@@ -6,10 +6,12 @@ use std::path::Path;
 use std::sync::{Arc, Mutex};
 
 use softgrip_law::ContactPatch;
+use softgrip_rapier::rapier3d::prelude::{SharedShape, Vector};
 use softgrip_rapier::{SoftFingertip, TipContact};
 use softgrip_record::{
     ContactReading, FingertipInfo, FingertipLaw, McapReport, McapSinkError, RecorderOptions,
-    RecordingStats, RunSummary, SceneInfo, SinkError, StepFrame, StepSink, TipRunSummary,
+    RecordingStats, RunSummary, SceneInfo, ShapeGeometry, ShapeInfo, SinkError, StepFrame,
+    StepSink, TipRunSummary, UpAxis,
 };
 
 use crate::scene::Scene;
@@ -29,10 +31,78 @@ pub fn fingertip_law(tip: &SoftFingertip, name: &str) -> FingertipLaw {
     }
 }
 
-/// What the sinks learn of a scene before its first step.
+fn array(v: Vector) -> [f64; 3] {
+    [f64::from(v.x), f64::from(v.y), f64::from(v.z)]
+}
+
+/// A built shape's geometry as plain numbers (`None` for a kind softgrip's scenes do not
+/// make).
+pub fn shape_geometry(shape: &SharedShape) -> Option<ShapeGeometry> {
+    if let Some(h) = shape.as_halfspace() {
+        return Some(ShapeGeometry::Plane {
+            normal: array(h.normal),
+        });
+    }
+    if let Some(c) = shape.as_cuboid() {
+        return Some(ShapeGeometry::Cuboid {
+            half_extents: array(c.half_extents),
+        });
+    }
+    if let Some(b) = shape.as_ball() {
+        return Some(ShapeGeometry::Ball {
+            radius: f64::from(b.radius),
+        });
+    }
+    if let Some(c) = shape.as_cylinder() {
+        return Some(ShapeGeometry::Cylinder {
+            half_height: f64::from(c.half_height),
+            radius: f64::from(c.radius),
+        });
+    }
+    let (vertices, triangles) = if let Some(c) = shape.as_convex_polyhedron() {
+        let (v, t) = c.to_trimesh();
+        (v.into_iter().map(array).collect(), t)
+    } else {
+        let m = shape.as_trimesh()?;
+        let v = m.vertices().iter().copied().map(array).collect();
+        (v, m.indices().to_vec())
+    };
+    Some(ShapeGeometry::Mesh {
+        vertices,
+        triangles,
+    })
+}
+
+/// Every rigid body's shapes of `scene`, in scene order, in their body frames.
+fn shapes(scene: &Scene) -> Vec<ShapeInfo> {
+    let f = scene.file();
+    f.bodies
+        .iter()
+        .enumerate()
+        .flat_map(|(i, body)| {
+            scene
+                .shapes(i)
+                .iter()
+                .zip(&body.shapes)
+                .filter_map(|(shape, spec)| {
+                    Some(ShapeInfo {
+                        body: body.name.clone(),
+                        offset: spec.offset,
+                        geometry: shape_geometry(shape)?,
+                    })
+                })
+        })
+        .collect()
+}
+
+/// What the sinks learn of a scene before its first step (scene files are y-up: recordings
+/// turn them z-up, [`UpAxis::Y`]).
 pub fn scene_info(scene: &Scene) -> SceneInfo {
     let f = scene.file();
     SceneInfo {
+        shapes: shapes(scene),
+        up: UpAxis::Y,
+        gravity: f.gravity,
         origin: scene.origin().to_owned(),
         dt: f.dt,
         steps: scene.steps(),
@@ -52,7 +122,8 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
     }
 }
 
-/// The numbers of a plugin readout, with its patch when pressure is recorded.
+/// The numbers of a plugin readout with its patch (radius and pressure; pass a patch with zero
+/// pressures when the scene does not record pressure: the radius is always recorded).
 pub fn contact_reading(c: &TipContact, patch: Option<ContactPatch>) -> ContactReading {
     ContactReading {
         point: c.point,

@@ -1,67 +1,151 @@
 //! [`StepConverter`]: a sink's [`StepFrame`] to the messages of a step ([`StepRecord`]),
 //! converted by one function for the MCAP recorder and the ROS 2 publisher alike.
 
+use std::sync::Arc;
+
 use softgrip_law::ContactPatch;
 
-use crate::msgs::geometry_msgs::{Point, Vector3, Wrench};
+pub use crate::frames::WORLD_FRAME;
+use crate::frames::{UpAxis, fingertip_frame, rotate, rotate_inverse};
+use crate::msgs::geometry_msgs::{Point, Quaternion, Transform, TransformStamped, Vector3, Wrench};
 use crate::msgs::softgrip_msgs::SoftContactMsg;
-use crate::sink::{ContactSample, SceneInfo, StepFrame, WrenchSample};
+use crate::msgs::std_msgs::Header;
+use crate::msgs::tf2_msgs::TFMessage;
+use crate::msgs::visualization_msgs::Marker;
+use crate::sink::{ContactSample, FingertipInfo, SceneInfo, StepFrame, WrenchSample};
 use crate::step::{BodyPose, FingertipState, StepRecord};
-
-/// Name of the world frame (the `/tf` root) in softgrip's recordings.
-pub const WORLD_FRAME: &str = "world";
+use crate::visuals;
 
 /// Where a fingertip sits on its body, to place its `/tf` frame and marker.
 #[derive(Debug, Clone)]
 struct TipMount {
     name: String,
+    frame: String,
     body: String,
     offset: [f64; 3],
     radius: f64,
+    arrow_scale: f64,
 }
 
 /// Turns [`StepFrame`]s into the messages of a step ([`StepRecord`]): what the MCAP recorder
 /// writes and the ROS 2 publisher sends.
+///
+/// What is recorded is z-up under the fixed root [`WORLD_FRAME`] (REP 103): every position,
+/// orientation and vector of the frame (scene axes, [`SceneInfo::up`]) is rotated into world
+/// axes here, once. Bodies are children of the world on `/tf`; each fingertip is a child of its
+/// body ([`fingertip_frame`]), its constant offset on `/tf_static`, which the first converted
+/// step carries. Wrenches are in the fingertip's frame. Stamps are `round(step · dt · 1e9)` ns
+/// from the f64 step index and `dt` (the frame's `time` only when `dt` is unknown).
 #[derive(Debug, Clone, Default)]
 pub struct StepConverter {
     tips: Vec<TipMount>,
+    up: UpAxis,
+    dt: f64,
+    shapes: Arc<[Marker]>,
+    /// `/tf_static`, until a step has carried it.
+    tf_static: Option<TFMessage>,
+}
+
+/// Length of a contact's force arrow per newton for a fingertip \[m/N\]: one fingertip
+/// radius R at the force of its law at x = 0.2 (`R / F(0.2 R)`; 0 if that force is not
+/// positive). Scale-free: the arrows of a 20 mm fingertip and of a 30 um cell squeezed alike
+/// are alike relative to the fingertip.
+pub fn arrow_scale(tip: &FingertipInfo) -> f64 {
+    let force = tip
+        .law
+        .law()
+        .map(|law| law.response(0.2 * tip.radius).force)
+        .unwrap_or(0.0);
+    if force > 0.0 && force.is_finite() && tip.radius > 0.0 {
+        tip.radius / force
+    } else {
+        0.0
+    }
 }
 
 impl StepConverter {
-    /// The converter of a scene (it needs where each fingertip is mounted).
+    /// The converter of a scene (it needs where each fingertip is mounted, the up axis, `dt`
+    /// and the bodies' shapes).
     pub fn new(info: &SceneInfo) -> Self {
-        let tips = info
+        let tips: Vec<TipMount> = info
             .fingertips
             .iter()
             .map(|t| TipMount {
                 name: t.name.clone(),
+                frame: fingertip_frame(info, &t.name),
                 body: t.body.clone(),
                 offset: t.offset,
                 radius: t.radius,
+                arrow_scale: arrow_scale(t),
             })
             .collect();
-        Self { tips }
+        let header = Header::new(0, "");
+        let tf_static = (!tips.is_empty()).then(|| TFMessage {
+            transforms: tips
+                .iter()
+                .map(|t| TransformStamped {
+                    header: Header {
+                        frame_id: t.body.clone(),
+                        ..header.clone()
+                    },
+                    child_frame_id: t.frame.clone(),
+                    transform: Transform {
+                        translation: Vector3::from_array(t.offset),
+                        rotation: Quaternion::IDENTITY,
+                    },
+                })
+                .collect(),
+        });
+        Self {
+            tips,
+            up: info.up,
+            dt: info.dt,
+            shapes: visuals::shape_markers(info).into(),
+            tf_static,
+        }
+    }
+
+    /// The stamp of step `step` \[ns\]: `round(step · dt · 1e9)` in f64 (an exact multiple of
+    /// dt to 1 ns), or `round(time · 1e9)` when `dt` is unknown (0).
+    pub fn stamp_ns(&self, step: u64, time: f64) -> u64 {
+        let t = if self.dt > 0.0 {
+            step as f64 * self.dt
+        } else {
+            time
+        };
+        (t * 1e9).round() as u64
     }
 
     /// Fills `step` from `frame`, reusing its allocations (the world frame is
-    /// [`WORLD_FRAME`]).
-    pub fn convert(&self, frame: &StepFrame, step: &mut StepRecord) {
-        step.time_ns = (frame.time * 1e9).round() as u64;
+    /// [`WORLD_FRAME`]). The first call also fills `step.tf_static`; later calls clear it.
+    pub fn convert(&mut self, frame: &StepFrame, step: &mut StepRecord) {
+        step.time_ns = self.stamp_ns(frame.step, frame.time);
         if step.world_frame != WORLD_FRAME {
             step.world_frame = WORLD_FRAME.to_owned();
         }
+        step.tf_static = self.tf_static.take().map(|mut tf| {
+            for t in &mut tf.transforms {
+                t.header.stamp = step.header().stamp;
+            }
+            tf
+        });
+        if !Arc::ptr_eq(&step.shapes, &self.shapes) {
+            step.shapes = Arc::clone(&self.shapes);
+        }
+        let up = self.up;
         step.bodies.truncate(frame.bodies.len());
         for (i, b) in frame.bodies.iter().enumerate() {
+            let (position, orientation) = (up.vector(b.translation), up.rotation(b.rotation));
             match step.bodies.get_mut(i) {
                 Some(p) => {
                     p.name.clone_from(&b.name);
-                    p.position = b.translation;
-                    p.orientation = b.rotation;
+                    p.position = position;
+                    p.orientation = orientation;
                 }
                 None => step.bodies.push(BodyPose {
                     name: b.name.clone(),
-                    position: b.translation,
-                    orientation: b.rotation,
+                    position,
+                    orientation,
                 }),
             }
         }
@@ -71,10 +155,12 @@ impl StepConverter {
             match step.fingertips.get_mut(i) {
                 Some(t) => {
                     t.name.clone_from(&w.fingertip);
+                    t.frame.clone_from(&state.frame);
                     t.position = state.position;
                     t.orientation = state.orientation;
                     t.radius = state.radius;
                     t.wrench = state.wrench;
+                    t.arrow_scale = state.arrow_scale;
                 }
                 None => step.fingertips.push(FingertipState {
                     name: w.fingertip.clone(),
@@ -84,59 +170,90 @@ impl StepConverter {
         }
         step.contacts.clear();
         step.contacts
-            .extend(frame.contacts.iter().map(soft_contact_msg));
+            .extend(frame.contacts.iter().map(|c| soft_contact_msg_in(c, up)));
     }
 
-    /// The `i`-th fingertip's pose (from its body's and its mount), radius and wrench (its
-    /// name is left empty: the caller reuses its own string).
+    /// The `i`-th fingertip's pose (world, from its body's and its mount), radius, frame and
+    /// wrench in that frame (its name is left empty: the caller reuses its own string).
     fn fingertip_state(&self, i: usize, w: &WrenchSample, frame: &StepFrame) -> FingertipState {
         let mount = self
             .tips
             .iter()
             .find(|t| t.name == w.fingertip)
             .or_else(|| self.tips.get(i));
-        let (position, orientation, radius) = match mount {
-            Some(m) => {
-                let body = frame.bodies.iter().find(|b| b.name == m.body);
-                let (p, q) = body.map_or(([0.0; 3], [0.0, 0.0, 0.0, 1.0]), |b| {
-                    (b.translation, b.rotation)
-                });
-                let o = rotate(q, m.offset);
-                ([p[0] + o[0], p[1] + o[1], p[2] + o[2]], q, m.radius)
-            }
-            None => ([0.0; 3], [0.0, 0.0, 0.0, 1.0], 0.0),
+        let Some(m) = mount else {
+            // Not in the scene info: a world-axes wrench on a world-fixed frame.
+            return FingertipState {
+                orientation: [0.0, 0.0, 0.0, 1.0],
+                wrench: Wrench {
+                    force: Vector3::from_array(self.up.vector(w.force)),
+                    torque: Vector3::from_array(self.up.vector(w.torque)),
+                },
+                ..FingertipState::default()
+            };
         };
+        let body = frame.bodies.iter().find(|b| b.name == m.body);
+        let (p, q) = body.map_or(([0.0; 3], [0.0, 0.0, 0.0, 1.0]), |b| {
+            (b.translation, b.rotation)
+        });
+        let o = rotate(q, m.offset);
+        let centre = [p[0] + o[0], p[1] + o[1], p[2] + o[2]];
         FingertipState {
             name: String::new(),
-            position,
-            orientation,
-            radius,
+            position: self.up.vector(centre),
+            orientation: self.up.rotation(q),
+            radius: m.radius,
+            // The fingertip frame has its body's axes: scene axes -> body axes is q*.
             wrench: Wrench {
-                force: Vector3::from_array(w.force),
-                torque: Vector3::from_array(w.torque),
+                force: Vector3::from_array(rotate_inverse(q, w.force)),
+                torque: Vector3::from_array(rotate_inverse(q, w.torque)),
             },
+            frame: m.frame.clone(),
+            arrow_scale: m.arrow_scale,
         }
     }
 }
 
-/// A contact of the frame as a `softgrip_msgs/SoftContact` (its header is set per step, by
-/// [`StepRecord::take_contact_array`]).
+/// A contact of the frame as a `softgrip_msgs/SoftContact`, its vectors as they are (a z-up
+/// frame; its header is set per step, by [`StepRecord::take_contact_array`]).
+///
+/// `contact_radius` is the law's radius a at the end-of-step compression (whenever the patch
+/// is given). `mean_pressure` is `normal_force / (π a²)` (the step-average force over that
+/// patch), so `mean_pressure · π a² = normal_force`; `peak_pressure` keeps the law's ratio of
+/// peak to mean pressure (3/2 for Hertz). Both are 0 when the patch carries no pressure.
 pub fn soft_contact_msg(c: &ContactSample) -> SoftContactMsg {
+    soft_contact_msg_in(c, UpAxis::Z)
+}
+
+/// `(mean, peak)` pressure \[Pa\] of `patch` carrying `normal_force` \[N\]: 0 without a patch
+/// or when the patch carries no pressure (the scene does not record pressure).
+fn pressures(patch: &ContactPatch, normal_force: f64) -> (f64, f64) {
+    let area = std::f64::consts::PI * patch.radius * patch.radius;
+    if !(area > 0.0 && normal_force > 0.0 && patch.mean_pressure > 0.0) {
+        return (0.0, 0.0);
+    }
+    let mean = normal_force / area;
+    (mean, mean * (patch.peak_pressure / patch.mean_pressure))
+}
+
+/// [`soft_contact_msg`] of a contact whose vectors are in the axes of a scene with up axis `up`.
+fn soft_contact_msg_in(c: &ContactSample, up: UpAxis) -> SoftContactMsg {
     let k = &c.contact;
     let patch = k.patch.unwrap_or(ContactPatch::EMPTY);
+    let (mean_pressure, peak_pressure) = pressures(&patch, k.normal_force);
     let mut m = SoftContactMsg {
         fingertip: c.fingertip.clone(),
         other: c.other.clone(),
-        point: Point::from_array(k.point),
-        normal: Vector3::from_array(k.normal),
+        point: Point::from_array(up.vector(k.point)),
+        normal: Vector3::from_array(up.vector(k.normal)),
         compression: k.delta,
         ratio_x: k.x,
         normal_force: k.normal_force,
-        friction_force: Vector3::from_array(k.friction_force),
+        friction_force: Vector3::from_array(up.vector(k.friction_force)),
         torsional_moment: k.torsional_moment,
         contact_radius: patch.radius,
-        mean_pressure: patch.mean_pressure,
-        peak_pressure: patch.peak_pressure,
+        mean_pressure,
+        peak_pressure,
         stiffness: k.stiffness,
         sliding: k.sliding,
         peak_normal_force: k.peak_normal_force,
@@ -147,32 +264,4 @@ pub fn soft_contact_msg(c: &ContactSample) -> SoftContactMsg {
     };
     m.set_level(k.level);
     m
-}
-
-/// `q v q*` for a unit quaternion `[x, y, z, w]`.
-fn rotate(q: [f64; 4], v: [f64; 3]) -> [f64; 3] {
-    let [x, y, z, w] = q;
-    // t = 2 (q_v x v); v' = v + w t + q_v x t
-    let t = [
-        2.0 * (y * v[2] - z * v[1]),
-        2.0 * (z * v[0] - x * v[2]),
-        2.0 * (x * v[1] - y * v[0]),
-    ];
-    [
-        v[0] + w * t[0] + (y * t[2] - z * t[1]),
-        v[1] + w * t[1] + (z * t[0] - x * t[2]),
-        v[2] + w * t[2] + (x * t[1] - y * t[0]),
-    ]
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn rotate_by_quarter_turn_about_z() {
-        let h = std::f64::consts::FRAC_1_SQRT_2;
-        let v = rotate([0.0, 0.0, h, h], [1.0, 0.0, 0.0]);
-        assert!((v[0]).abs() < 1e-12 && (v[1] - 1.0).abs() < 1e-12);
-    }
 }

@@ -4,6 +4,7 @@ pub mod cdr;
 mod convert;
 mod decoded;
 mod error;
+pub mod frames;
 mod mcap_sink;
 mod message;
 pub mod metadata;
@@ -17,20 +18,24 @@ mod step_messages;
 pub mod topics;
 pub mod visuals;
 
-pub use convert::{StepConverter, WORLD_FRAME, soft_contact_msg};
+pub use convert::{StepConverter, WORLD_FRAME, arrow_scale, soft_contact_msg};
 pub use decoded::Message;
 pub use error::{Error, Result};
+pub use frames::{UpAxis, fingertip_frame};
 pub use mcap_sink::{McapReport, McapSink, McapSinkError};
 pub use message::RosMessage;
 pub use metadata::{
     FingertipLaw, MetadataError, MetadataRecord, RecordingInfo, RunSummary, SOFTGRIP_VERSION,
     TipRunSummary,
 };
-pub use recorder::{METADATA_NAME, RUN_SUMMARY_NAME, Recorder, RecorderOptions, RecordingStats};
+pub use recorder::{
+    METADATA_NAME, OFFERED_QOS_PROFILES, RUN_SUMMARY_NAME, Recorder, RecorderOptions,
+    RecordingStats,
+};
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
 pub use sink::{
-    BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, SinkError, StepFrame,
-    StepSink, WrenchSample,
+    BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, ShapeGeometry, ShapeInfo,
+    SinkError, StepFrame, StepSink, WrenchSample,
 };
 pub use step::{BodyPose, FingertipState, StepRecord, contact_wrench};
 pub use step_messages::{Delivery, StepTopic, StepVisitor, visit_step};

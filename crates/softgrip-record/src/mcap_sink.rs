@@ -184,6 +184,7 @@ impl McapSink {
             every_n_steps,
             steps: info.steps,
             law: info.fingertips.iter().map(|t| t.law.clone()).collect(),
+            gravity: info.up.vector(info.gravity),
             ..RecordingInfo::default()
         };
         let path = path.as_ref();

@@ -23,6 +23,10 @@ pub const METADATA_NAME: &str = RecordingInfo::NAME;
 /// finishes.
 pub const RUN_SUMMARY_NAME: &str = RunSummary::NAME;
 
+/// The channel metadata key rosbag2 reads the offered QoS from (the step table's channels
+/// carry it: [`Delivery::offered_qos_profiles`](crate::Delivery::offered_qos_profiles)).
+pub const OFFERED_QOS_PROFILES: &str = "offered_qos_profiles";
+
 /// How the file is written.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct RecorderOptions {
@@ -179,10 +183,14 @@ impl Recorder {
         Ok(id)
     }
 
-    fn add_channel<M: RosMessage>(&mut self, topic: &str) -> Result<u16> {
+    fn add_channel<M: RosMessage>(
+        &mut self,
+        topic: &str,
+        metadata: &BTreeMap<String, String>,
+    ) -> Result<u16> {
         let schema = self.schema_id::<M>()?;
         self.writer()
-            .add_channel(schema, topic, "cdr", &BTreeMap::new())
+            .add_channel(schema, topic, "cdr", metadata)
             .map_err(Error::Write)
     }
 
@@ -190,7 +198,7 @@ impl Recorder {
         if let Some(&id) = self.channels.get(topic) {
             return Ok(id);
         }
-        let id = self.add_channel::<M>(topic)?;
+        let id = self.add_channel::<M>(topic, &BTreeMap::new())?;
         self.channels.insert(topic.to_owned(), id);
         Ok(id)
     }
@@ -290,7 +298,12 @@ impl StepVisitor for Recorder {
         let channel = match known {
             Some(&id) => id,
             None => {
-                let id = self.add_channel::<M>(&topic.name(fingertip))?;
+                // rosbag2's channel metadata: `ros2 bag play` offers the recorded QoS.
+                let qos = BTreeMap::from([(
+                    OFFERED_QOS_PROFILES.to_owned(),
+                    topic.delivery().offered_qos_profiles(),
+                )]);
+                let id = self.add_channel::<M>(&topic.name(fingertip), &qos)?;
                 self.step_channels
                     .entry(topic)
                     .or_default()

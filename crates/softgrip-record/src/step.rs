@@ -1,5 +1,7 @@
 //! [`StepRecord`]: what the simulation hands the recorder after a step, and the standard
-//! messages built from it (`/tf`, the fingertip wrenches, `/clock`).
+//! messages built from it (`/tf`, `/tf_static`, the fingertip wrenches, `/clock`).
+
+use std::sync::Arc;
 
 use crate::msgs::builtin_interfaces::Time;
 use crate::msgs::geometry_msgs::{Quaternion, Transform, TransformStamped, Vector3, Wrench};
@@ -7,8 +9,10 @@ use crate::msgs::rosgraph_msgs::Clock;
 use crate::msgs::softgrip_msgs::{SoftContactArrayMsg, SoftContactMsg};
 use crate::msgs::std_msgs::Header;
 use crate::msgs::tf2_msgs::TFMessage;
+use crate::msgs::visualization_msgs::Marker;
 
-/// A body's pose for `/tf` (its frame is its name, child of the world frame).
+/// A body's pose for `/tf` (its frame is its name, child of the world frame; world axes are
+/// z-up).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyPose {
     /// Name of the body (its tf frame).
@@ -20,9 +24,9 @@ pub struct BodyPose {
 }
 
 /// A fingertip after a step: its pose, radius and the net contact wrench on it.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct FingertipState {
-    /// Name of the fingertip (its tf frame and `/softgrip/<name>/wrench`).
+    /// Name of the fingertip (`/softgrip/<name>/wrench`, the contacts' `fingertip`).
     pub name: String,
     /// Centre of the fingertip sphere, world \[m\].
     pub position: [f64; 3],
@@ -30,9 +34,15 @@ pub struct FingertipState {
     pub orientation: [f64; 4],
     /// Radius R \[m\], > 0.
     pub radius: f64,
-    /// Net contact wrench on the fingertip, world axes, torque about the centre
-    /// ([`contact_wrench`] computes it from the contacts).
+    /// Net contact wrench on the fingertip, torque about its centre, in the axes of `frame`
+    /// (as ROS means a `WrenchStamped`; [`contact_wrench`] computes it in world axes from the
+    /// contacts).
     pub wrench: Wrench,
+    /// Its tf frame ([`fingertip_frame`](crate::frames::fingertip_frame)): the wrench's and
+    /// its marker's `frame_id`. Empty: the world frame (then `wrench` is in world axes).
+    pub frame: String,
+    /// Length of its contacts' force arrows per newton \[m/N\] (0: no arrows).
+    pub arrow_scale: f64,
 }
 
 /// One step's worth of recordable state.
@@ -48,6 +58,12 @@ pub struct StepRecord {
     pub fingertips: Vec<FingertipState>,
     /// Other bodies to publish on `/tf`.
     pub bodies: Vec<BodyPose>,
+    /// `/tf_static` (each fingertip's frame on its body), on the first step a converter fills
+    /// only; `None` on the others.
+    pub tf_static: Option<TFMessage>,
+    /// The rigid bodies' shape markers, in their body frames (stamped with the step's time by
+    /// [`visuals::markers`](crate::visuals::markers)); shared by every step of a run.
+    pub shapes: Arc<[Marker]>,
 }
 
 impl StepRecord {
@@ -77,7 +93,17 @@ impl StepRecord {
         }
     }
 
-    /// `/tf`: every fingertip, then every body, as a child of the world frame.
+    /// A fingertip's wrench frame: its tf frame, or the world frame if it has none.
+    pub fn frame_of<'a>(&'a self, tip: &'a FingertipState) -> &'a str {
+        if tip.frame.is_empty() {
+            &self.world_frame
+        } else {
+            &tip.frame
+        }
+    }
+
+    /// `/tf`: every body as a child of the world frame, then every fingertip that has no frame
+    /// of its own on `/tf_static` (`frame` empty) as a child of the world frame.
     pub fn tf(&self) -> TFMessage {
         let header = self.header();
         let pose = |name: &str, position: [f64; 3], orientation: [f64; 4]| TransformStamped {
@@ -91,13 +117,14 @@ impl StepRecord {
         let tips = self
             .fingertips
             .iter()
+            .filter(|t| t.frame.is_empty())
             .map(|t| pose(&t.name, t.position, t.orientation));
         let bodies = self
             .bodies
             .iter()
             .map(|b| pose(&b.name, b.position, b.orientation));
         TFMessage {
-            transforms: tips.chain(bodies).collect(),
+            transforms: bodies.chain(tips).collect(),
         }
     }
 }

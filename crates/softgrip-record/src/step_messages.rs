@@ -8,6 +8,7 @@ use std::borrow::Cow;
 
 use crate::message::RosMessage;
 use crate::msgs::geometry_msgs::WrenchStamped;
+use crate::msgs::std_msgs::Header;
 use crate::step::StepRecord;
 use crate::topics;
 use crate::visuals;
@@ -21,6 +22,38 @@ pub enum Delivery {
     Tf,
     /// Everything else: reliable, a short history.
     Data,
+    /// `/tf_static`: reliable, transient-local (a late subscriber gets it), latest only, as
+    /// tf2's static broadcaster.
+    Static,
+}
+
+impl Delivery {
+    /// History depth of the class (keep last n): clock 1, tf 100, data 10, static 1; as
+    /// softgrip-ros2 publishes them.
+    pub fn depth(self) -> u32 {
+        match self {
+            Delivery::Clock | Delivery::Static => 1,
+            Delivery::Tf => 100,
+            Delivery::Data => 10,
+        }
+    }
+
+    /// The channel metadata value `offered_qos_profiles` rosbag2 writes (a YAML list of one
+    /// profile; rmw enums as integers: history 1 keep last, reliability 1 reliable / 2 best
+    /// effort, durability 1 transient local / 2 volatile, liveliness 1 automatic; durations
+    /// 0 = unspecified), so that `ros2 bag play` offers the live QoS: `/tf_static`
+    /// transient-local, `/clock` best effort, the rest reliable and volatile.
+    pub fn offered_qos_profiles(self) -> String {
+        let reliability = if self == Delivery::Clock { 2 } else { 1 };
+        let durability = if self == Delivery::Static { 1 } else { 2 };
+        let zero = "\n    sec: 0\n    nsec: 0";
+        format!(
+            "- history: 1\n  depth: {}\n  reliability: {reliability}\n  durability: \
+             {durability}\n  deadline:{zero}\n  lifespan:{zero}\n  liveliness: 1\n  \
+             liveliness_lease_duration:{zero}\n  avoid_ros_namespace_conventions: false",
+            self.depth()
+        )
+    }
 }
 
 /// A topic of a step.
@@ -36,12 +69,16 @@ pub enum StepTopic {
     Wrench,
     /// [`topics::MARKERS`], `visualization_msgs/msg/MarkerArray`.
     Markers,
+    /// [`topics::TF_STATIC`], `tf2_msgs/msg/TFMessage`: each fingertip's frame on its body,
+    /// on the first step only (right after `/clock`).
+    TfStatic,
 }
 
 impl StepTopic {
-    /// Every topic, in the order a step's messages come.
-    pub const ALL: [StepTopic; 5] = [
+    /// Every topic, in the order a step's messages come (`/tf_static` on the first step only).
+    pub const ALL: [StepTopic; 6] = [
         StepTopic::Clock,
+        StepTopic::TfStatic,
         StepTopic::Tf,
         StepTopic::Contacts,
         StepTopic::Wrench,
@@ -57,6 +94,7 @@ impl StepTopic {
             StepTopic::Contacts => Cow::Borrowed(topics::CONTACTS),
             StepTopic::Wrench => Cow::Owned(topics::wrench(fingertip)),
             StepTopic::Markers => Cow::Borrowed(topics::MARKERS),
+            StepTopic::TfStatic => Cow::Borrowed(topics::TF_STATIC),
         }
     }
 
@@ -71,6 +109,7 @@ impl StepTopic {
             StepTopic::Clock => Delivery::Clock,
             StepTopic::Tf => Delivery::Tf,
             StepTopic::Contacts | StepTopic::Wrench | StepTopic::Markers => Delivery::Data,
+            StepTopic::TfStatic => Delivery::Static,
         }
     }
 }
@@ -92,23 +131,26 @@ pub trait StepVisitor {
 }
 
 /// Hands every message of `step` to `visitor`, in the order of [`StepTopic::ALL`]: `/clock`,
-/// `/tf`, `/softgrip/contacts` (each contact's header set to the step's), one
-/// `/softgrip/<fingertip>/wrench` per fingertip, `/softgrip/markers`.
+/// `/tf_static` (when the step carries it: the first of a run), `/tf`, `/softgrip/contacts`
+/// (each contact's header set to the step's), one `/softgrip/<fingertip>/wrench` per
+/// fingertip (in the fingertip's frame), `/softgrip/markers`.
 ///
 /// `step` is only borrowed mutably to stamp its contacts and move them into the array
 /// without a copy; they are back in `step.contacts` when this returns.
 pub fn visit_step<V: StepVisitor>(step: &mut StepRecord, visitor: &mut V) -> Result<(), V::Error> {
     let t = step.time_ns;
     visitor.message(StepTopic::Clock, "", t, &step.clock())?;
+    if let Some(tf_static) = &step.tf_static {
+        visitor.message(StepTopic::TfStatic, "", t, tf_static)?;
+    }
     visitor.message(StepTopic::Tf, "", t, &step.tf())?;
     let array = step.take_contact_array();
     let taken = visitor.message(StepTopic::Contacts, "", t, &array);
     step.contacts = array.contacts;
     taken?;
-    let header = step.header();
     for tip in &step.fingertips {
         let msg = WrenchStamped {
-            header: header.clone(),
+            header: Header::new(t, step.frame_of(tip)),
             wrench: tip.wrench,
         };
         visitor.message(StepTopic::Wrench, &tip.name, t, &msg)?;

@@ -4,6 +4,9 @@
 pub const CONTACTS: &str = "/softgrip/contacts";
 /// Body and fingertip poses: `tf2_msgs/msg/TFMessage`.
 pub const TF: &str = "/tf";
+/// Each fingertip's constant frame on its body: `tf2_msgs/msg/TFMessage`, once per run
+/// (transient-local on ROS 2).
+pub const TF_STATIC: &str = "/tf_static";
 /// Contact patches and fingertips for 3D views: `visualization_msgs/msg/MarkerArray`.
 pub const MARKERS: &str = "/softgrip/markers";
 /// Simulation time: `rosgraph_msgs/msg/Clock`.

@@ -1,56 +1,210 @@
-//! `/softgrip/markers`: the contact patches (discs of radius a on the contact plane) and the
-//! fingertips (spheres of radius R), for Foxglove's 3D panel and RViz.
+//! `/softgrip/markers`: every rigid body's shapes (in their body frames), the fingertips
+//! (spheres of radius R in their frames), the contact patches (discs of radius a on the
+//! contact plane) and the contacts' normal forces (arrows), for Foxglove's 3D panel and RViz.
 
 use crate::msgs::geometry_msgs::{Point, Pose, Quaternion, Vector3};
-use crate::msgs::std_msgs::ColorRGBA;
+use crate::msgs::softgrip_msgs::SoftContactMsg;
+use crate::msgs::std_msgs::{ColorRGBA, Header};
 use crate::msgs::visualization_msgs::{Marker, MarkerArray};
+use crate::sink::{SceneInfo, ShapeGeometry, ShapeInfo};
 use crate::step::StepRecord;
 
 /// Marker namespace of the contact patches.
 pub const NS_PATCHES: &str = "contact_patches";
 /// Marker namespace of the fingertips.
 pub const NS_FINGERTIPS: &str = "fingertips";
+/// Marker namespace of the rigid bodies' shapes (id = the shape's index in
+/// [`SceneInfo::shapes`], stable over the run).
+pub const NS_BODIES: &str = "bodies";
+/// Marker namespace of the contacts' normal-force arrows (id = the contact's index).
+pub const NS_FORCES: &str = "contact_forces";
 
-/// Thickness of a drawn contact disc: 2 % of its radius, at least 0.05 mm [m].
-fn disc_thickness(radius: f64) -> f64 {
-    (0.02 * radius).max(5e-5)
-}
+/// Thickness of a drawn contact disc relative to its radius [-]: 2 % of a, no absolute floor
+/// (a 30 um cell's patches are drawn as thin as a 20 mm fingertip's, relatively).
+pub const DISC_THICKNESS: f64 = 0.02;
+
+/// Side of the square slab a plane is drawn as, in largest fingertip radii [-] (1 m without
+/// fingertips); its thickness is 1/100 of its side, below the plane.
+pub const PLANE_EXTENT_RADII: f64 = 40.0;
 
 /// Colour of a patch: green inside the law's validity range, red past it.
 const PATCH_VALID: ColorRGBA = ColorRGBA::new(0.1, 0.8, 0.2, 0.9);
 const PATCH_EXCEEDED: ColorRGBA = ColorRGBA::new(0.9, 0.1, 0.1, 0.9);
 const FINGERTIP: ColorRGBA = ColorRGBA::new(0.3, 0.5, 0.9, 0.35);
+const FORCE: ColorRGBA = ColorRGBA::new(1.0, 0.85, 0.1, 1.0);
+const PLANE: ColorRGBA = ColorRGBA::new(0.55, 0.55, 0.58, 1.0);
+/// Body colours, by body index (cycled).
+const BODY: [ColorRGBA; 4] = [
+    ColorRGBA::new(0.85, 0.55, 0.25, 0.8),
+    ColorRGBA::new(0.6, 0.65, 0.75, 0.8),
+    ColorRGBA::new(0.45, 0.7, 0.6, 0.8),
+    ColorRGBA::new(0.75, 0.5, 0.7, 0.8),
+];
 
-/// The step's markers: a `DELETEALL` (so patches of contacts that ended disappear), a sphere
-/// per fingertip (ns `fingertips`, id = index) and a disc per contact (ns `contact_patches`,
-/// id = index): a cylinder at the contact point, axis along the normal, diameter 2a.
+fn id(i: usize) -> i32 {
+    i32::try_from(i).unwrap_or(i32::MAX)
+}
+
+/// The markers of every rigid body's shape of `info` (ns [`NS_BODIES`], id = index), each in
+/// its body's frame, stamp 0 ([`markers`] stamps them): a plane as a square slab below it
+/// ([`PLANE_EXTENT_RADII`]), a cuboid as a `CUBE`, a ball as a `SPHERE`, a cylinder (body y
+/// axis) as a `CYLINDER`, a mesh or convex hull as a `TRIANGLE_LIST`.
+pub fn shape_markers(info: &SceneInfo) -> Vec<Marker> {
+    let r_max = info.fingertips.iter().map(|t| t.radius).fold(0.0, f64::max);
+    let extent = if r_max > 0.0 {
+        PLANE_EXTENT_RADII * r_max
+    } else {
+        1.0
+    };
+    info.shapes
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let body = info.bodies.iter().position(|b| *b == s.body).unwrap_or(i);
+            shape_marker(s, id(i), BODY[body % BODY.len()], extent)
+        })
+        .collect()
+}
+
+/// One shape's marker (see [`shape_markers`]).
+fn shape_marker(s: &ShapeInfo, id: i32, color: ColorRGBA, extent: f64) -> Marker {
+    let at = |offset: [f64; 3], orientation: Quaternion| Pose {
+        position: Point::from_array(offset),
+        orientation,
+    };
+    let (r#type, pose, scale, color, points) = match &s.geometry {
+        ShapeGeometry::Plane { normal: n } => {
+            let t = extent / 100.0;
+            let c: [f64; 3] = std::array::from_fn(|k| s.offset[k] - 0.5 * t * n[k]);
+            let scale = Vector3 {
+                x: extent,
+                y: extent,
+                z: t,
+            };
+            (
+                Marker::CUBE,
+                at(c, Quaternion::z_to(*n)),
+                scale,
+                PLANE,
+                Vec::new(),
+            )
+        }
+        ShapeGeometry::Cuboid { half_extents: h } => {
+            let scale = Vector3::from_array(h.map(|v| 2.0 * v));
+            (
+                Marker::CUBE,
+                at(s.offset, Quaternion::IDENTITY),
+                scale,
+                color,
+                Vec::new(),
+            )
+        }
+        ShapeGeometry::Ball { radius } => {
+            let d = 2.0 * radius;
+            let scale = Vector3 { x: d, y: d, z: d };
+            (
+                Marker::SPHERE,
+                at(s.offset, Quaternion::IDENTITY),
+                scale,
+                color,
+                Vec::new(),
+            )
+        }
+        ShapeGeometry::Cylinder {
+            half_height,
+            radius,
+        } => {
+            let d = 2.0 * radius;
+            let scale = Vector3 {
+                x: d,
+                y: d,
+                z: 2.0 * half_height,
+            };
+            let pose = at(s.offset, Quaternion::z_to([0.0, 1.0, 0.0]));
+            (Marker::CYLINDER, pose, scale, color, Vec::new())
+        }
+        ShapeGeometry::Mesh {
+            vertices,
+            triangles,
+        } => {
+            let points = triangles
+                .iter()
+                .flatten()
+                .filter_map(|&v| vertices.get(v as usize))
+                .map(|&p| Point::from_array(p))
+                .collect();
+            let scale = Vector3 {
+                x: 1.0,
+                y: 1.0,
+                z: 1.0,
+            };
+            let pose = at(s.offset, Quaternion::IDENTITY);
+            (Marker::TRIANGLE_LIST, pose, scale, color, points)
+        }
+    };
+    Marker {
+        header: Header::new(0, &s.body),
+        ns: NS_BODIES.to_owned(),
+        id,
+        r#type,
+        action: Marker::ADD,
+        pose,
+        scale,
+        color,
+        frame_locked: true,
+        points,
+        ..Default::default()
+    }
+}
+
+/// The step's markers: a `DELETEALL` (so patches of contacts that ended disappear), every body
+/// shape (ns [`NS_BODIES`], in its body frame), a sphere per fingertip (ns `fingertips`, id =
+/// index, in its frame), a disc per contact (ns `contact_patches`, id = index: a cylinder at
+/// the contact point, axis along the normal, diameter 2a, thickness [`DISC_THICKNESS`] a) and
+/// an arrow per contact (ns [`NS_FORCES`], id = index) from the contact point along the normal
+/// (the force on the fingertip), `normal_force × arrow_scale` long: one fingertip radius at the
+/// law's force at x = 0.2 ([`arrow_scale`](crate::arrow_scale)).
 pub fn markers(step: &StepRecord) -> MarkerArray {
     let header = step.header();
     let base = |ns: &str, id: usize, r#type: i32| Marker {
         header: header.clone(),
         ns: ns.to_owned(),
-        id: i32::try_from(id).unwrap_or(i32::MAX),
+        id: self::id(id),
         r#type,
         action: Marker::ADD,
         ..Default::default()
     };
-    let mut markers = Vec::with_capacity(1 + step.fingertips.len() + step.contacts.len());
+    let n = 1 + step.shapes.len() + step.fingertips.len() + 2 * step.contacts.len();
+    let mut markers = Vec::with_capacity(n);
     markers.push(Marker {
         header: header.clone(),
         action: Marker::DELETEALL,
         ..Default::default()
     });
+    markers.extend(step.shapes.iter().map(|m| {
+        let mut m = m.clone();
+        m.header.stamp = header.stamp;
+        m
+    }));
     for (i, tip) in step.fingertips.iter().enumerate() {
         let d = 2.0 * tip.radius;
-        markers.push(Marker {
-            pose: Pose {
-                position: Point::from_array(tip.position),
-                orientation: Quaternion::from_xyzw(tip.orientation),
+        let own = !tip.frame.is_empty();
+        let mut m = Marker {
+            pose: if own {
+                Pose::default()
+            } else {
+                Pose {
+                    position: Point::from_array(tip.position),
+                    orientation: Quaternion::from_xyzw(tip.orientation),
+                }
             },
             scale: Vector3 { x: d, y: d, z: d },
             color: FINGERTIP,
+            frame_locked: own,
             ..base(NS_FINGERTIPS, i, Marker::SPHERE)
-        });
+        };
+        m.header.frame_id = step.frame_of(tip).to_owned();
+        markers.push(m);
     }
     for (i, c) in step.contacts.iter().enumerate() {
         let d = 2.0 * c.contact_radius;
@@ -62,7 +216,7 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
             scale: Vector3 {
                 x: d,
                 y: d,
-                z: disc_thickness(c.contact_radius),
+                z: DISC_THICKNESS * c.contact_radius,
             },
             color: if c.validity_exceeded {
                 PATCH_EXCEEDED
@@ -72,5 +226,37 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
             ..base(NS_PATCHES, i, Marker::CYLINDER)
         });
     }
+    for (i, c) in step.contacts.iter().enumerate() {
+        if let Some(arrow) = force_arrow(step, c) {
+            markers.push(Marker {
+                header: header.clone(),
+                id: id(i),
+                ..arrow
+            });
+        }
+    }
     MarkerArray { markers }
+}
+
+/// The normal-force arrow of contact `c` (ns [`NS_FORCES`]; header and id left to the caller),
+/// `None` if its fingertip is not in the step.
+fn force_arrow(step: &StepRecord, c: &SoftContactMsg) -> Option<Marker> {
+    let tip = step.fingertips.iter().find(|t| t.name == c.fingertip)?;
+    let len = c.normal_force * tip.arrow_scale;
+    let (p, n) = (c.point.to_array(), c.normal.to_array());
+    let end: [f64; 3] = std::array::from_fn(|k| p[k] + len * n[k]);
+    let r = tip.radius;
+    Some(Marker {
+        ns: NS_FORCES.to_owned(),
+        r#type: Marker::ARROW,
+        action: Marker::ADD,
+        scale: Vector3 {
+            x: 0.04 * r,
+            y: 0.1 * r,
+            z: 0.15 * r,
+        },
+        color: FORCE,
+        points: vec![c.point, Point::from_array(end)],
+        ..Default::default()
+    })
 }

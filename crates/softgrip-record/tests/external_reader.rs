@@ -207,7 +207,7 @@ fn python_mcap_ros2_decodes_every_message() {
                 &topics::wrench(&tip.name),
                 "geometry_msgs/msg/WrenchStamped",
             );
-            assert_header(&w["header"], step);
+            assert_eq!(w["header"]["frame_id"], step.frame_of(tip));
             assert_vec3(&w["wrench"]["force"], tip.wrench.force.to_array(), "force");
             assert_vec3(
                 &w["wrench"]["torque"],
@@ -234,7 +234,12 @@ fn python_mcap_ros2_decodes_every_message() {
             // float32 colour: exact in JSON as the f32's value.
             assert_eq!(f(&g["color"]["a"]), f64::from(w.color.a));
             assert_eq!(g["frame_locked"].as_bool(), Some(w.frame_locked));
-            assert_eq!(g["points"].as_array().map(Vec::len), Some(0));
+            assert_eq!(g["header"]["frame_id"], w.header.frame_id.as_str());
+            let points = g["points"].as_array().unwrap();
+            assert_eq!(points.len(), w.points.len());
+            for (p, q) in points.iter().zip(&w.points) {
+                assert_vec3(p, q.to_array(), "marker point");
+            }
             assert_eq!(g["mesh_use_embedded_materials"].as_bool(), Some(false));
         }
     }

@@ -10,6 +10,7 @@ use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use ros2_client::{Context, Node, Publisher, QosProfile};
+use softgrip_record::msgs::tf2_msgs::TFMessage;
 use softgrip_record::{Delivery, RosMessage, StepRecord, StepTopic, StepVisitor, visit_step};
 
 use crate::error::{Error, Result};
@@ -68,6 +69,9 @@ struct Shared {
     /// Set by `close`: the worker drains the queue until then, and discards the rest.
     flush_deadline: Mutex<Option<Instant>>,
     last_failure: Mutex<Option<String>>,
+    /// `/tf_static` of the run, kept until published: the step that carried it may be dropped
+    /// by a full queue, then the next published step carries it.
+    tf_static: Mutex<Option<TFMessage>>,
 }
 
 impl Shared {
@@ -145,6 +149,7 @@ impl Ros2Publisher {
                 discarded_at_close: AtomicU64::new(0),
                 flush_deadline: Mutex::new(None),
                 last_failure: Mutex::new(None),
+                tf_static: Mutex::new(None),
             }),
         };
         let shared = Arc::clone(&worker.shared);
@@ -177,6 +182,13 @@ impl Ros2Publisher {
             return Err(Error::PublisherDead { panic: None });
         }
         self.shared.submitted.fetch_add(1, Ordering::Relaxed);
+        if let Some(tf) = &step.tf_static {
+            *self
+                .shared
+                .tf_static
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner) = Some(tf.clone());
+        }
         match self.shared.queue.push(step) {
             Pushed::Queued | Pushed::DroppedOldest => Ok(()),
             Pushed::Closed => Err(Error::PublisherDead { panic: None }),
@@ -293,6 +305,7 @@ fn qos_of(delivery: Delivery) -> QosProfile {
         Delivery::Clock => qos::clock(),
         Delivery::Tf => qos::tf(),
         Delivery::Data => qos::data(),
+        Delivery::Static => qos::tf_static(),
     }
 }
 
@@ -368,6 +381,16 @@ impl Worker {
             }
             match self.shared.queue.pop_timeout(Duration::from_millis(100)) {
                 Popped::Item(mut step) => {
+                    // `/tf_static` once: with the first step published, whichever it is.
+                    let pending = self
+                        .shared
+                        .tf_static
+                        .lock()
+                        .unwrap_or_else(PoisonError::into_inner)
+                        .take();
+                    if step.tf_static.is_none() {
+                        step.tf_static = pending;
+                    }
                     // Publishing never fails as a whole: each refused message is counted.
                     let Ok(()) = visit_step(&mut step, self);
                     self.shared.published.fetch_add(1, Ordering::Relaxed);

@@ -4,12 +4,15 @@
 //! |---|---|---|---|---|
 //! | `/softgrip/contacts`, `/softgrip/<tip>/wrench`, `/softgrip/markers` | reliable | keep last 10 | volatile | `rclcpp::QoS(10)`, the default profile |
 //! | `/tf` | reliable | keep last 100 | volatile | `tf2_ros::DynamicBroadcasterQoS` |
+//! | `/tf_static` | reliable | keep last 1 | transient local | `tf2_ros::StaticBroadcasterQoS` |
 //! | `/clock` | best effort | keep last 1 | volatile | `rclcpp::ClockQoS` (what `use_sim_time` subscribes with) |
 //! | `/softgrip/command` (subscribed) | reliable | keep last 10 | volatile | the default profile |
 //!
 //! Why: the data topics are what a plot or a logger wants complete, so they are reliable, with
 //! the default depth of 10; volatile, because a late joiner wants the current squeeze, not old
-//! steps. `/tf` follows tf2's broadcaster so `tf2_ros::TransformListener` matches it. `/clock`
+//! steps. `/tf` follows tf2's broadcaster so `tf2_ros::TransformListener` matches it; `/tf_static`
+//! (the fingertips' frames on their bodies, sent once) follows tf2's static broadcaster: a
+//! listener that joins later still receives it. `/clock`
 //! follows rclcpp's clock QoS: a late tick is worth nothing once the next one is out, so it is
 //! never retransmitted. A reliable publisher matches reliable and best-effort subscribers; a
 //! best-effort one matches only best-effort subscribers, so subscribe to `/clock` best effort.
@@ -36,6 +39,14 @@ const fn profile(reliability: Reliability, depth: usize) -> QosProfile {
     QosProfile {
         reliability,
         durability: Durability::Volatile,
+        ..latched(reliability, depth)
+    }
+}
+
+const fn latched(reliability: Reliability, depth: usize) -> QosProfile {
+    QosProfile {
+        reliability,
+        durability: Durability::TransientLocal,
         history: History::KeepLast { depth },
         deadline: None,
         lifespan: None,
@@ -61,4 +72,9 @@ pub const fn tf() -> QosProfile {
 /// `/clock`: best effort, keep last 1, volatile.
 pub const fn clock() -> QosProfile {
     profile(Reliability::BestEffort, 1)
+}
+
+/// `/tf_static`: reliable, keep last 1, transient local.
+pub const fn tf_static() -> QosProfile {
+    latched(RELIABLE, 1)
 }

@@ -7,6 +7,7 @@ use crate::components::{BodyPose, Fingertip, FingertipWrench, RigidBody};
 use crate::resources::{
     CurrentFrame, Physics, Publisher, RecordSelection, Recorder, SceneInfoResource, SimClock,
 };
+use softgrip_law::ContactPatch;
 use softgrip_record::{BodySample, ContactSample, WrenchSample};
 
 use crate::to_record::contact_reading;
@@ -71,8 +72,22 @@ pub fn assemble_frame(
             f.contacts.push(ContactSample {
                 fingertip: name_of(tip),
                 other: name_of(other),
-                contact: contact_reading(c, sel.pressure.then(|| c.patch())),
+                contact: contact_reading(c, Some(recorded_patch(c, sel.pressure))),
             });
+        }
+    }
+}
+
+/// A contact's patch as recorded: its radius always (cheap, and what a 3D view draws), its
+/// pressures only when the scene records pressure.
+fn recorded_patch(c: &softgrip_rapier::TipContact, pressure: bool) -> ContactPatch {
+    let patch = c.patch();
+    if pressure {
+        patch
+    } else {
+        ContactPatch {
+            radius: patch.radius,
+            ..ContactPatch::EMPTY
         }
     }
 }

@@ -84,6 +84,10 @@ pub struct RecordingInfo {
     /// The law of each fingertip, in scene order.
     #[serde(with = "json_text")]
     pub law: Vec<FingertipLaw>,
+    /// Gravity in the recording's world frame (z-up, REP 103) \[m/s²\]: `[0, 0, -9.81]` for a
+    /// scene with gravity down its up axis; `[0, 0, 0]` when not given.
+    #[serde(with = "json_text")]
+    pub gravity: [f64; 3],
 }
 
 impl Default for RecordingInfo {
@@ -96,6 +100,7 @@ impl Default for RecordingInfo {
             every_n_steps: 0,
             steps: 0,
             law: Vec::new(),
+            gravity: [0.0; 3],
         }
     }
 }

@@ -10,5 +10,5 @@ mod scene;
 mod step_sink;
 
 pub use frame::{BodySample, ContactReading, ContactSample, StepFrame, WrenchSample};
-pub use scene::{FingertipInfo, SceneInfo};
+pub use scene::{FingertipInfo, SceneInfo, ShapeGeometry, ShapeInfo};
 pub use step_sink::{SinkError, StepSink};

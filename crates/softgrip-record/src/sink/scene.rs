@@ -1,13 +1,15 @@
 //! [`SceneInfo`]: what a sink learns once, before the first step.
 
+use crate::frames::UpAxis;
 use crate::metadata::FingertipLaw;
 
 /// A fingertip of the scene: where it is mounted and its law.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FingertipInfo {
-    /// Fingertip name (its `/tf` frame and `/softgrip/<name>/wrench`).
+    /// Fingertip name (`/softgrip/<name>/wrench`; its tf frame is
+    /// [`fingertip_frame`](crate::frames::fingertip_frame), the name unless a body has it).
     pub name: String,
-    /// Name of the body that carries it.
+    /// Name of the body that carries it (the parent of its tf frame).
     pub body: String,
     /// Centre of the fingertip sphere in its body's frame \[m\].
     pub offset: [f64; 3],
@@ -17,12 +19,58 @@ pub struct FingertipInfo {
     pub law: FingertipLaw,
 }
 
+/// The geometry of a rigid body's shape, in the shape's own frame (its body's axes, at its
+/// offset), as plain numbers \[m\].
+#[derive(Debug, Clone, PartialEq)]
+pub enum ShapeGeometry {
+    /// An infinite plane through the shape's origin, solid below `normal` (unit).
+    Plane {
+        /// Outward unit normal, body axes.
+        normal: [f64; 3],
+    },
+    /// A box of half extents \[m\], > 0, along the body's axes.
+    Cuboid {
+        /// Half extents \[m\].
+        half_extents: [f64; 3],
+    },
+    /// A sphere.
+    Ball {
+        /// Radius \[m\], > 0.
+        radius: f64,
+    },
+    /// A cylinder along the body's y axis.
+    Cylinder {
+        /// Half height \[m\], > 0.
+        half_height: f64,
+        /// Radius \[m\], > 0.
+        radius: f64,
+    },
+    /// A triangle mesh (a triangle mesh shape, or a convex hull's faces).
+    Mesh {
+        /// Vertices \[m\].
+        vertices: Vec<[f64; 3]>,
+        /// Triangles: indices into `vertices`, counter-clockwise seen from outside.
+        triangles: Vec<[u32; 3]>,
+    },
+}
+
+/// A rigid body's shape (collider), to draw it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapeInfo {
+    /// Name of the body it belongs to (the frame it is drawn in).
+    pub body: String,
+    /// Position of the shape's origin in its body's frame \[m\].
+    pub offset: [f64; 3],
+    /// Its geometry.
+    pub geometry: ShapeGeometry,
+}
+
 /// What a sink learns once, before the first step.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct SceneInfo {
     /// Where the scene came from (a file path, or a description).
     pub origin: String,
-    /// Time step \[s\], > 0.
+    /// Time step \[s\], > 0 (0: unknown; stamps then come from the frame's `time`).
     pub dt: f64,
     /// Steps the run takes.
     pub steps: u64,
@@ -30,4 +78,11 @@ pub struct SceneInfo {
     pub bodies: Vec<String>,
     /// Fingertips, in scene order.
     pub fingertips: Vec<FingertipInfo>,
+    /// Every rigid body's shapes (not the fingertips), in scene order.
+    pub shapes: Vec<ShapeInfo>,
+    /// The scene's up axis: what the frames' numbers (poses, contacts, wrenches, gravity) are
+    /// in. Recordings are z-up whatever it is ([`UpAxis`]).
+    pub up: UpAxis,
+    /// Gravity, scene axes \[m/s²\] (recorded in world axes in the `softgrip` metadata).
+    pub gravity: [f64; 3],
 }

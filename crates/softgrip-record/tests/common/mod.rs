@@ -57,6 +57,8 @@ pub fn step(k: u64, dt_ns: u64) -> StepRecord {
             orientation: [0.0, 0.0, (0.1 * t).sin(), (0.1 * t).cos()],
             radius: r,
             wrench,
+            frame: name.to_string(),
+            arrow_scale: 1e-3,
         });
     }
     StepRecord {
@@ -69,6 +71,7 @@ pub fn step(k: u64, dt_ns: u64) -> StepRecord {
             position: [0.0, 0.001 * t, 0.05],
             orientation: [0.0, 0.0, 0.0, 1.0],
         }],
+        ..StepRecord::default()
     }
 }
 

@@ -46,6 +46,7 @@ def main(path):
         summary = reader.get_summary()
         stats = summary.statistics if summary else None
         metadata = {m.name: dict(m.metadata) for m in reader.iter_metadata()}
+        channels = {c.topic: dict(c.metadata) for c in summary.channels.values()} if summary else {}
         print(json.dumps({
             "summary": {
                 "messages": count,
@@ -54,6 +55,7 @@ def main(path):
                 "chunk_indexes": len(summary.chunk_indexes) if summary else 0,
                 "profile": reader.get_header().profile,
                 "metadata": metadata,
+                "channels": channels,
             }
         }))
 

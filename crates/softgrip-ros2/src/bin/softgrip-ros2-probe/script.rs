@@ -72,6 +72,7 @@ pub fn step(k: u64) -> StepRecord {
             orientation: [0.0, 0.0, (0.1 * kf).sin(), (0.1 * kf).cos()],
             radius: RADIUS,
             wrench,
+            ..Default::default()
         });
     }
     StepRecord {
@@ -84,5 +85,6 @@ pub fn step(k: u64) -> StepRecord {
             position: [0.0, 1e-3 * kf / 7.0, 0.05],
             orientation: [0.0, 0.0, 0.0, 1.0],
         }],
+        ..StepRecord::default()
     }
 }
