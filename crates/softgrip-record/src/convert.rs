@@ -4,8 +4,10 @@
 use softgrip_law::ContactPatch;
 
 use crate::msgs::geometry_msgs::{Point, Vector3, Wrench};
+use crate::msgs::sensor_msgs::Image;
 use crate::msgs::softgrip_msgs::SoftContactMsg;
-use crate::sink::{ContactSample, SceneInfo, StepFrame, WrenchSample};
+use crate::msgs::std_msgs::Header;
+use crate::sink::{ContactSample, SceneInfo, StepFrame, TactileSample, WrenchSample};
 use crate::step::{BodyPose, FingertipState, StepRecord};
 
 /// Name of the world frame (the `/tf` root) in softgrip's recordings.
@@ -85,6 +87,13 @@ impl StepConverter {
         step.contacts.clear();
         step.contacts
             .extend(frame.contacts.iter().map(soft_contact_msg));
+        step.tactile.clear();
+        step.tactile.extend(
+            frame
+                .tactile
+                .iter()
+                .map(|s| (s.fingertip.clone(), tactile_image(s, step.time_ns))),
+        );
     }
 
     /// The `i`-th fingertip's pose (from its body's and its mount), radius and wrench (its
@@ -147,6 +156,16 @@ pub fn soft_contact_msg(c: &ContactSample) -> SoftContactMsg {
     };
     m.set_level(k.level);
     m
+}
+
+/// A fingertip's tactile image as a `sensor_msgs/Image` (`32FC1`, pressure \[Pa\],
+/// little-endian, row-major, `step = 4 columns`) stamped `time_ns` \[ns\], in the
+/// fingertip's frame.
+pub fn tactile_image(s: &TactileSample, time_ns: u64) -> Image {
+    // The fingertip's tf frame. The `frames` work gives it its own name when it collides with
+    // its body's (`fingertip_frame`); until then it is the fingertip's name, as on `/tf`.
+    let frame = &s.fingertip;
+    Image::tactile(Header::new(time_ns, frame), s.rows, s.columns, &s.pressure)
 }
 
 /// `q v q*` for a unit quaternion `[x, y, z, w]`.

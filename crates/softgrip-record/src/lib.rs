@@ -17,7 +17,7 @@ mod step_messages;
 pub mod topics;
 pub mod visuals;
 
-pub use convert::{StepConverter, WORLD_FRAME, soft_contact_msg};
+pub use convert::{StepConverter, WORLD_FRAME, soft_contact_msg, tactile_image};
 pub use decoded::Message;
 pub use error::{Error, Result};
 pub use mcap_sink::{McapReport, McapSink, McapSinkError};
@@ -30,7 +30,7 @@ pub use recorder::{METADATA_NAME, RUN_SUMMARY_NAME, Recorder, RecorderOptions, R
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
 pub use sink::{
     BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, SinkError, StepFrame,
-    StepSink, WrenchSample,
+    StepSink, TactileSample, WrenchSample,
 };
 pub use step::{BodyPose, FingertipState, StepRecord, contact_wrench};
 pub use step_messages::{Delivery, StepTopic, StepVisitor, visit_step};

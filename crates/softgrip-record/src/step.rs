@@ -4,6 +4,7 @@
 use crate::msgs::builtin_interfaces::Time;
 use crate::msgs::geometry_msgs::{Quaternion, Transform, TransformStamped, Vector3, Wrench};
 use crate::msgs::rosgraph_msgs::Clock;
+use crate::msgs::sensor_msgs::Image;
 use crate::msgs::softgrip_msgs::{SoftContactArrayMsg, SoftContactMsg};
 use crate::msgs::std_msgs::Header;
 use crate::msgs::tf2_msgs::TFMessage;
@@ -48,6 +49,9 @@ pub struct StepRecord {
     pub fingertips: Vec<FingertipState>,
     /// Other bodies to publish on `/tf`.
     pub bodies: Vec<BodyPose>,
+    /// The tactile image of each fingertip with a pad: (fingertip name, its `32FC1` image,
+    /// stamped with the step's time, `frame_id` the fingertip's frame).
+    pub tactile: Vec<(String, Image)>,
 }
 
 impl StepRecord {

@@ -36,16 +36,20 @@ pub enum StepTopic {
     Wrench,
     /// [`topics::MARKERS`], `visualization_msgs/msg/MarkerArray`.
     Markers,
+    /// [`topics::tactile`] of each fingertip with a pad, `sensor_msgs/msg/Image` (`32FC1`,
+    /// pressure \[Pa\], in the fingertip's frame).
+    Tactile,
 }
 
 impl StepTopic {
     /// Every topic, in the order a step's messages come.
-    pub const ALL: [StepTopic; 5] = [
+    pub const ALL: [StepTopic; 6] = [
         StepTopic::Clock,
         StepTopic::Tf,
         StepTopic::Contacts,
         StepTopic::Wrench,
         StepTopic::Markers,
+        StepTopic::Tactile,
     ];
 
     /// The topic's name; `fingertip` names the fingertip of a per-fingertip topic (ignored by
@@ -57,12 +61,13 @@ impl StepTopic {
             StepTopic::Contacts => Cow::Borrowed(topics::CONTACTS),
             StepTopic::Wrench => Cow::Owned(topics::wrench(fingertip)),
             StepTopic::Markers => Cow::Borrowed(topics::MARKERS),
+            StepTopic::Tactile => Cow::Owned(topics::tactile(fingertip)),
         }
     }
 
     /// Whether there is one such topic per fingertip.
     pub fn per_fingertip(self) -> bool {
-        self == StepTopic::Wrench
+        matches!(self, StepTopic::Wrench | StepTopic::Tactile)
     }
 
     /// How the topic is delivered live.
@@ -70,7 +75,9 @@ impl StepTopic {
         match self {
             StepTopic::Clock => Delivery::Clock,
             StepTopic::Tf => Delivery::Tf,
-            StepTopic::Contacts | StepTopic::Wrench | StepTopic::Markers => Delivery::Data,
+            StepTopic::Contacts | StepTopic::Wrench | StepTopic::Markers | StepTopic::Tactile => {
+                Delivery::Data
+            }
         }
     }
 }
@@ -93,7 +100,8 @@ pub trait StepVisitor {
 
 /// Hands every message of `step` to `visitor`, in the order of [`StepTopic::ALL`]: `/clock`,
 /// `/tf`, `/softgrip/contacts` (each contact's header set to the step's), one
-/// `/softgrip/<fingertip>/wrench` per fingertip, `/softgrip/markers`.
+/// `/softgrip/<fingertip>/wrench` per fingertip, `/softgrip/markers`, one
+/// `/softgrip/<fingertip>/tactile` per fingertip with a pad.
 ///
 /// `step` is only borrowed mutably to stamp its contacts and move them into the array
 /// without a copy; they are back in `step.contacts` when this returns.
@@ -113,5 +121,9 @@ pub fn visit_step<V: StepVisitor>(step: &mut StepRecord, visitor: &mut V) -> Res
         };
         visitor.message(StepTopic::Wrench, &tip.name, t, &msg)?;
     }
-    visitor.message(StepTopic::Markers, "", t, &visuals::markers(step))
+    visitor.message(StepTopic::Markers, "", t, &visuals::markers(step))?;
+    for (tip, image) in &step.tactile {
+        visitor.message(StepTopic::Tactile, tip, t, image)?;
+    }
+    Ok(())
 }

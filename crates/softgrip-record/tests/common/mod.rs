@@ -69,6 +69,7 @@ pub fn step(k: u64, dt_ns: u64) -> StepRecord {
             position: [0.0, 0.001 * t, 0.05],
             orientation: [0.0, 0.0, 0.0, 1.0],
         }],
+        tactile: Vec::new(),
     }
 }
 

@@ -84,5 +84,6 @@ pub fn step(k: u64) -> StepRecord {
             position: [0.0, 1e-3 * kf / 7.0, 0.05],
             orientation: [0.0, 0.0, 0.0, 1.0],
         }],
+        tactile: Vec::new(),
     }
 }
