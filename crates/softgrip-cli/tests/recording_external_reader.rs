@@ -7,6 +7,7 @@
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
 mod common;
+mod tactile;
 
 use std::process::Command;
 
@@ -81,10 +82,11 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
         "{law}"
     );
     assert!(meta["softgrip_version"].is_string());
-    // 300 steps, 6 messages each, and /tf_static once.
-    assert_eq!(rec.messages.len(), 300 * 6 + 1);
+    // 300 steps, 8 messages each (6, and a tactile image per fingertip), and /tf_static once.
+    assert_eq!(rec.messages.len(), 300 * 8 + 1);
 
     let mut contacts_checked = 0;
+    let mut images = tactile::Images::default();
     let mut peak = std::collections::HashMap::<String, (f64, f64)>::new();
     for (py, m) in messages.iter().zip(&rec.messages) {
         assert_eq!(py["topic"], m.topic.as_str());
@@ -128,7 +130,9 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
                     e.1 = e.1.max(p["ratio_x"].as_f64().unwrap());
                     contacts_checked += 1;
                 }
+                images.contacts(a);
             }
+            Message::Image(img) => images.check(&m.topic, &py["msg"], img),
             Message::Wrench(w) => {
                 let f = &py["msg"]["wrench"]["force"];
                 assert!(close(f["x"].as_f64().unwrap(), w.wrench.force.x));
@@ -146,6 +150,7 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
         }
     }
     assert!(contacts_checked > 400, "{contacts_checked}");
+    images.finish(300);
     // What the simulation reported: the summary's peak force and peak x (every step recorded).
     for tip in ["left_tip", "right_tip"] {
         let line = stdout

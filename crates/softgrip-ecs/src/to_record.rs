@@ -5,14 +5,17 @@
 use std::path::Path;
 use std::sync::{Arc, Mutex};
 
+use bevy_ecs::prelude::{Name, Query};
 use softgrip_law::ContactPatch;
 use softgrip_rapier::rapier3d::prelude::{SharedShape, Vector};
 use softgrip_rapier::{SoftFingertip, TipContact};
 use softgrip_record::{
     ContactReading, FingertipInfo, FingertipLaw, McapReport, McapSinkError, RecorderOptions,
     RecordingStats, RunSummary, SceneInfo, ShapeGeometry, ShapeInfo, SinkError, StepFrame,
-    StepSink, TipRunSummary, UpAxis,
+    StepSink, TactileSample, TipRunSummary, UpAxis,
 };
+
+use crate::resources::Physics;
 
 use crate::scene::Scene;
 use crate::summary::Summary;
@@ -143,6 +146,33 @@ pub fn contact_reading(c: &TipContact, patch: Option<ContactPatch>) -> ContactRe
         contact_duration: c.contact_duration,
         patch,
     }
+}
+
+/// The plugin's tactile images (`SoftContacts::tactile_images`) as the sinks' plain
+/// [`TactileSample`]s (pressure \[Pa\] as `f32`), named by their fingertip entity, written to
+/// `out` (its allocations reused).
+pub fn tactile_samples(physics: &Physics, names: &Query<&Name>, out: &mut Vec<TactileSample>) {
+    let images = physics.world.soft.tactile_images();
+    let mut n = 0;
+    for (handle, image) in images {
+        let name = physics
+            .collider_entity(handle)
+            .and_then(|e| names.get(e).ok())
+            .map_or("", |n| n.as_str());
+        if n == out.len() {
+            out.push(TactileSample::default());
+        }
+        let s = &mut out[n];
+        s.fingertip.clear();
+        s.fingertip.push_str(name);
+        s.rows = image.grid().rows();
+        s.columns = image.grid().columns();
+        s.pressure.clear();
+        s.pressure
+            .extend(image.pressure().iter().map(|p| *p as f32));
+        n += 1;
+    }
+    out.truncate(n);
 }
 
 /// The run's summary for the sinks: `steps` run, and per fingertip its slips, validity

@@ -14,6 +14,7 @@ use crate::fingertip::SoftFingertip;
 use crate::readout::{Accums, TipContact};
 use crate::solve::{Row, SolveScratch};
 use crate::substep::SoftAccuracy;
+use crate::taxels::TactileImage;
 
 /// Memory of one contact between steps.
 #[derive(Debug, Clone, Copy)]
@@ -74,6 +75,8 @@ pub struct SoftContacts {
     pub(crate) accuracy: SoftAccuracy,
     pub(crate) geoms: Vec<Geom>,
     pub(crate) scratch: Scratch,
+    /// The tactile image of each fingertip with a pad, in handle order.
+    pub(crate) tactile: Vec<(ColliderHandle, TactileImage)>,
 }
 
 impl SoftContacts {
@@ -143,6 +146,11 @@ impl SoftContacts {
         self.soft_colliders.insert(collider);
         self.tip_models
             .insert(collider, Arc::new(Model::of_tip(&fingertip)));
+        self.tactile.retain(|(h, _)| *h != collider);
+        if let Some(grid) = fingertip.tactile() {
+            self.tactile.push((collider, TactileImage::new(*grid)));
+            self.tactile.sort_unstable_by_key(|(h, _)| raw(*h));
+        }
         self.tips.insert(collider, fingertip);
         self.groups.insert(collider, groups);
         self.tip_order = self.groups.iter().map(|(h, g)| (*h, *g)).collect();

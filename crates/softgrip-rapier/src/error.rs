@@ -16,6 +16,16 @@ pub enum Error {
         /// The valid range, with its unit.
         range: &'static str,
     },
+    /// A tactile pad is outside its valid range ([`TactilePad`](crate::TactilePad)).
+    #[error("`{field}` must be {range}, got {value}")]
+    InvalidTactilePad {
+        /// Name of the offending field, e.g. `tactile.width`.
+        field: &'static str,
+        /// The value that was passed (a count as a number).
+        value: f64,
+        /// The valid range, with its unit and the numbers of this fingertip.
+        range: String,
+    },
     /// The builder was given neither a material nor a preset.
     #[error("a fingertip needs a material: call `.material(..)` or `.preset(..)`")]
     MissingMaterial,

@@ -4,6 +4,7 @@ use softgrip_law::{ContactLaw, ContactParams, Level, Material};
 
 use crate::error::{Error, Result};
 use crate::presets::Preset;
+use crate::tactile::{TactileGrid, TactilePad};
 
 /// Default coefficient of restitution e [-] (see [`SoftFingertipBuilder::restitution`]).
 pub const DEFAULT_RESTITUTION: f64 = 0.5;
@@ -53,6 +54,7 @@ pub struct SoftFingertip {
     torsional_friction: bool,
     law: ContactLaw,
     damping_zeta: f64,
+    tactile: Option<TactileGrid>,
 }
 
 impl SoftFingertip {
@@ -69,6 +71,7 @@ impl SoftFingertip {
             restitution_speed: DEFAULT_RESTITUTION_SPEED,
             friction: DEFAULT_FRICTION,
             torsional_friction: true,
+            tactile: None,
         }
     }
 
@@ -116,6 +119,13 @@ impl SoftFingertip {
     /// The contact law against a rigid body.
     pub fn law(&self) -> &ContactLaw {
         &self.law
+    }
+
+    /// The tactile pad, if the fingertip has one
+    /// ([`SoftFingertipBuilder::tactile`]): its image is
+    /// [`SoftContacts::tactile_image`](crate::SoftContacts::tactile_image).
+    pub fn tactile(&self) -> Option<&TactileGrid> {
+        self.tactile.as_ref()
     }
 
     /// Dimensionless Hunt-Crossley damping `zeta = alpha v_ref` [-] that gives the restitution
@@ -202,6 +212,7 @@ pub struct SoftFingertipBuilder {
     restitution_speed: f64,
     friction: f64,
     torsional_friction: bool,
+    tactile: Option<TactilePad>,
 }
 
 impl SoftFingertipBuilder {
@@ -271,6 +282,14 @@ impl SoftFingertipBuilder {
         self
     }
 
+    /// A tactile sensor pad: after every step the plugin integrates the pressure of the
+    /// fingertip's contacts over each taxel ([`crate::TactileImage`]); without one nothing is
+    /// computed. Checked by [`build`](Self::build) (`tactile.*` fields).
+    pub fn tactile(mut self, pad: TactilePad) -> Self {
+        self.tactile = Some(pad);
+        self
+    }
+
     /// A name for readouts.
     pub fn name(mut self, name: impl Into<String>) -> Self {
         self.name = name.into();
@@ -312,6 +331,10 @@ impl SoftFingertipBuilder {
                 "finite, > 0 and <= 1e13 Pa",
             );
         }
+        let tactile = self
+            .tactile
+            .map(|pad| pad.validate(self.radius))
+            .transpose()?;
         let material = self.material.ok_or(Error::MissingMaterial)?;
         let law = match self.law {
             Some(law) => {
@@ -340,6 +363,7 @@ impl SoftFingertipBuilder {
             torsional_friction: self.torsional_friction,
             law,
             damping_zeta: hunt_crossley_zeta(self.restitution),
+            tactile,
         })
     }
 }

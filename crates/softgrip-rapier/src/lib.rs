@@ -14,6 +14,8 @@ mod readout;
 mod solve;
 mod step;
 mod substep;
+mod tactile;
+mod taxels;
 mod world;
 
 pub use contacts::SoftContacts;
@@ -28,6 +30,8 @@ pub use fingertip::{
 pub use presets::Preset;
 pub use readout::TipContact;
 pub use substep::{AMPLITUDE_FRACTION, MAX_SUBSTEPS, SoftAccuracy};
+pub use tactile::{MAX_TAXELS_PER_SIDE, TactileGrid, TactilePad};
+pub use taxels::TactileImage;
 pub use world::SoftWorld;
 
 /// Re-exports of the crates the API uses.

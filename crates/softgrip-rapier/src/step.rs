@@ -165,6 +165,9 @@ impl Step<'_> {
         // 5. Readout.
         readout::assemble(&mut scratch.accums, dt, &mut self.soft.contacts);
         self.soft.scratch = scratch;
+        if !self.soft.tactile.is_empty() {
+            self.soft.update_tactile(&self.physics.colliders);
+        }
     }
 
     /// The substep count of a step of `dt` \[s\] from its prepared rows (the largest any contact

@@ -8,11 +8,12 @@ use softgrip_law::ContactPatch;
 pub use crate::frames::WORLD_FRAME;
 use crate::frames::{UpAxis, fingertip_frame, rotate, rotate_inverse};
 use crate::msgs::geometry_msgs::{Point, Quaternion, Transform, TransformStamped, Vector3, Wrench};
+use crate::msgs::sensor_msgs::Image;
 use crate::msgs::softgrip_msgs::SoftContactMsg;
 use crate::msgs::std_msgs::Header;
 use crate::msgs::tf2_msgs::TFMessage;
 use crate::msgs::visualization_msgs::Marker;
-use crate::sink::{ContactSample, FingertipInfo, SceneInfo, StepFrame, WrenchSample};
+use crate::sink::{ContactSample, FingertipInfo, SceneInfo, StepFrame, TactileSample, WrenchSample};
 use crate::step::{BodyPose, FingertipState, StepRecord};
 use crate::visuals;
 
@@ -171,6 +172,15 @@ impl StepConverter {
         step.contacts.clear();
         step.contacts
             .extend(frame.contacts.iter().map(|c| soft_contact_msg_in(c, up)));
+        step.tactile.clear();
+        step.tactile.extend(frame.tactile.iter().map(|s| {
+            let frame = self
+                .tips
+                .iter()
+                .find(|t| t.name == s.fingertip)
+                .map_or(s.fingertip.as_str(), |t| t.frame.as_str());
+            (s.fingertip.clone(), tactile_image(s, frame, step.time_ns))
+        }));
     }
 
     /// The `i`-th fingertip's pose (world, from its body's and its mount), radius, frame and
@@ -264,4 +274,11 @@ fn soft_contact_msg_in(c: &ContactSample, up: UpAxis) -> SoftContactMsg {
     };
     m.set_level(k.level);
     m
+}
+
+/// A fingertip's tactile image as a `sensor_msgs/Image` (`32FC1`, pressure \[Pa\],
+/// little-endian, row-major, `step = 4 columns`) stamped `time_ns` \[ns\], in the
+/// fingertip's tf frame `frame` ([`fingertip_frame`]).
+pub fn tactile_image(s: &TactileSample, frame: &str, time_ns: u64) -> Image {
+    Image::tactile(Header::new(time_ns, frame), s.rows, s.columns, &s.pressure)
 }

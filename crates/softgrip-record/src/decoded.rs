@@ -4,6 +4,7 @@ use crate::cdr::CdrError;
 use crate::message::RosMessage;
 use crate::msgs::geometry_msgs::WrenchStamped;
 use crate::msgs::rosgraph_msgs::Clock;
+use crate::msgs::sensor_msgs::Image;
 use crate::msgs::softgrip_msgs::SoftContactArrayMsg;
 use crate::msgs::tf2_msgs::TFMessage;
 use crate::msgs::visualization_msgs::MarkerArray;
@@ -21,6 +22,8 @@ pub enum Message {
     Markers(MarkerArray),
     /// `rosgraph_msgs/msg/Clock`.
     Clock(Clock),
+    /// `sensor_msgs/msg/Image` (a fingertip's tactile image).
+    Image(Image),
     /// Any other schema or encoding: kept as bytes.
     Other {
         /// Schema name (empty without a schema).
@@ -46,6 +49,7 @@ impl Message {
             TFMessage::TYPE_NAME => Self::Tf(TFMessage::from_cdr(data)?),
             MarkerArray::TYPE_NAME => Self::Markers(MarkerArray::from_cdr(data)?),
             Clock::TYPE_NAME => Self::Clock(Clock::from_cdr(data)?),
+            Image::TYPE_NAME => Self::Image(Image::from_cdr(data)?),
             _ => Self::other(schema_name, data),
         })
     }

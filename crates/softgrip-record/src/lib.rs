@@ -18,7 +18,7 @@ mod step_messages;
 pub mod topics;
 pub mod visuals;
 
-pub use convert::{StepConverter, WORLD_FRAME, arrow_scale, soft_contact_msg};
+pub use convert::{StepConverter, WORLD_FRAME, arrow_scale, soft_contact_msg, tactile_image};
 pub use decoded::Message;
 pub use error::{Error, Result};
 pub use frames::{UpAxis, fingertip_frame};
@@ -35,7 +35,7 @@ pub use recorder::{
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
 pub use sink::{
     BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, ShapeGeometry, ShapeInfo,
-    SinkError, StepFrame, StepSink, WrenchSample,
+    SinkError, StepFrame, StepSink, TactileSample, WrenchSample,
 };
 pub use step::{BodyPose, FingertipState, StepRecord, contact_wrench};
 pub use step_messages::{Delivery, StepTopic, StepVisitor, visit_step};

@@ -6,6 +6,7 @@ use std::sync::Arc;
 use crate::msgs::builtin_interfaces::Time;
 use crate::msgs::geometry_msgs::{Quaternion, Transform, TransformStamped, Vector3, Wrench};
 use crate::msgs::rosgraph_msgs::Clock;
+use crate::msgs::sensor_msgs::Image;
 use crate::msgs::softgrip_msgs::{SoftContactArrayMsg, SoftContactMsg};
 use crate::msgs::std_msgs::Header;
 use crate::msgs::tf2_msgs::TFMessage;
@@ -64,6 +65,9 @@ pub struct StepRecord {
     /// The rigid bodies' shape markers, in their body frames (stamped with the step's time by
     /// [`visuals::markers`](crate::visuals::markers)); shared by every step of a run.
     pub shapes: Arc<[Marker]>,
+    /// The tactile image of each fingertip with a pad: (fingertip name, its `32FC1` image,
+    /// stamped with the step's time, `frame_id` the fingertip's frame).
+    pub tactile: Vec<(String, Image)>,
 }
 
 impl StepRecord {

@@ -72,17 +72,21 @@ pub enum StepTopic {
     /// [`topics::TF_STATIC`], `tf2_msgs/msg/TFMessage`: each fingertip's frame on its body,
     /// on the first step only (right after `/clock`).
     TfStatic,
+    /// [`topics::tactile`] of each fingertip with a pad, `sensor_msgs/msg/Image` (`32FC1`,
+    /// pressure \[Pa\], in the fingertip's frame).
+    Tactile,
 }
 
 impl StepTopic {
     /// Every topic, in the order a step's messages come (`/tf_static` on the first step only).
-    pub const ALL: [StepTopic; 6] = [
+    pub const ALL: [StepTopic; 7] = [
         StepTopic::Clock,
         StepTopic::TfStatic,
         StepTopic::Tf,
         StepTopic::Contacts,
         StepTopic::Wrench,
         StepTopic::Markers,
+        StepTopic::Tactile,
     ];
 
     /// The topic's name; `fingertip` names the fingertip of a per-fingertip topic (ignored by
@@ -95,12 +99,13 @@ impl StepTopic {
             StepTopic::Wrench => Cow::Owned(topics::wrench(fingertip)),
             StepTopic::Markers => Cow::Borrowed(topics::MARKERS),
             StepTopic::TfStatic => Cow::Borrowed(topics::TF_STATIC),
+            StepTopic::Tactile => Cow::Owned(topics::tactile(fingertip)),
         }
     }
 
     /// Whether there is one such topic per fingertip.
     pub fn per_fingertip(self) -> bool {
-        self == StepTopic::Wrench
+        matches!(self, StepTopic::Wrench | StepTopic::Tactile)
     }
 
     /// How the topic is delivered live.
@@ -108,7 +113,9 @@ impl StepTopic {
         match self {
             StepTopic::Clock => Delivery::Clock,
             StepTopic::Tf => Delivery::Tf,
-            StepTopic::Contacts | StepTopic::Wrench | StepTopic::Markers => Delivery::Data,
+            StepTopic::Contacts | StepTopic::Wrench | StepTopic::Markers | StepTopic::Tactile => {
+                Delivery::Data
+            }
             StepTopic::TfStatic => Delivery::Static,
         }
     }
@@ -133,7 +140,8 @@ pub trait StepVisitor {
 /// Hands every message of `step` to `visitor`, in the order of [`StepTopic::ALL`]: `/clock`,
 /// `/tf_static` (when the step carries it: the first of a run), `/tf`, `/softgrip/contacts`
 /// (each contact's header set to the step's), one `/softgrip/<fingertip>/wrench` per
-/// fingertip (in the fingertip's frame), `/softgrip/markers`.
+/// fingertip (in the fingertip's frame), `/softgrip/markers`, one
+/// `/softgrip/<fingertip>/tactile` per fingertip with a pad.
 ///
 /// `step` is only borrowed mutably to stamp its contacts and move them into the array
 /// without a copy; they are back in `step.contacts` when this returns.
@@ -155,5 +163,9 @@ pub fn visit_step<V: StepVisitor>(step: &mut StepRecord, visitor: &mut V) -> Res
         };
         visitor.message(StepTopic::Wrench, &tip.name, t, &msg)?;
     }
-    visitor.message(StepTopic::Markers, "", t, &visuals::markers(step))
+    visitor.message(StepTopic::Markers, "", t, &visuals::markers(step))?;
+    for (tip, image) in &step.tactile {
+        visitor.message(StepTopic::Tactile, tip, t, image)?;
+    }
+    Ok(())
 }

@@ -36,3 +36,14 @@ pub fn ros_name_token(name: &str) -> String {
     }
     s
 }
+
+/// The tactile image topic of a fingertip, `/softgrip/<fingertip>/tactile`
+/// (`sensor_msgs/msg/Image`, `32FC1`, pressure \[Pa\]); the name is sanitised as in
+/// [`wrench`].
+///
+/// ```
+/// assert_eq!(softgrip_record::topics::tactile("left_tip"), "/softgrip/left_tip/tactile");
+/// ```
+pub fn tactile(fingertip: &str) -> String {
+    format!("/softgrip/{}/tactile", ros_name_token(fingertip))
+}

@@ -11,7 +11,7 @@ use softgrip_record::cdr::{CdrError, CdrWriter};
 use softgrip_record::msgs::builtin_interfaces::{Duration, Time};
 use softgrip_record::msgs::geometry_msgs::*;
 use softgrip_record::msgs::rosgraph_msgs::Clock;
-use softgrip_record::msgs::sensor_msgs::CompressedImage;
+use softgrip_record::msgs::sensor_msgs::{CompressedImage, Image};
 use softgrip_record::msgs::softgrip_msgs::{SoftContactArrayMsg, SoftContactMsg};
 use softgrip_record::msgs::std_msgs::{ColorRGBA, Header};
 use softgrip_record::msgs::tf2_msgs::TFMessage;
@@ -276,4 +276,33 @@ proptest! {
         let _ = SoftContactArrayMsg::from_cdr(&b);
         let _ = TFMessage::from_cdr(&b);
     }
+}
+
+/// A tactile image: `32FC1`, little-endian pressures, and the CDR layout of `sensor_msgs/Image`
+/// (header, height, width, encoding, is_bigendian, step, data).
+#[test]
+fn tactile_image_bytes() {
+    let img = Image::tactile(
+        Header::new(1_500_000_000, "tip"),
+        2,
+        2,
+        &[0.0, 1.0, 2.5e4, -0.0],
+    );
+    roundtrip(&img);
+    assert_eq!(
+        (img.height, img.width, img.step, img.is_bigendian),
+        (2, 2, 8, 0)
+    );
+    assert_eq!(&img.data[4..8], &1.0f32.to_le_bytes());
+    assert_eq!(img.pixels_f32(), vec![0.0, 1.0, 2.5e4, -0.0]);
+    let bytes = img.to_cdr();
+    // encapsulation 4, stamp 8, frame_id "tip\0" (4 + 4), height, width: then "32FC1\0".
+    assert_eq!(&bytes[20..28], &[2, 0, 0, 0, 2, 0, 0, 0]);
+    assert_eq!(&bytes[28..32], &6u32.to_le_bytes());
+    assert_eq!(&bytes[32..38], b"32FC1\0");
+    // The last 16 bytes are the pixels, after their count 16.
+    assert_eq!(
+        &bytes[bytes.len() - 20..bytes.len() - 16],
+        &16u32.to_le_bytes()
+    );
 }

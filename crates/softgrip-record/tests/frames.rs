@@ -116,6 +116,7 @@ fn frame(step: u64, pressure: bool) -> StepFrame {
     let h = std::f64::consts::FRAC_1_SQRT_2;
     StepFrame {
         step,
+        tactile: Vec::new(),
         time: step as f64 * (1.0 / 60.0) as f32 as f64, // an f32-rounded time: not used
         bodies: vec![
             BodySample {

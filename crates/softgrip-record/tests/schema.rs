@@ -8,7 +8,7 @@ use softgrip_record::RosMessage;
 use softgrip_record::msgs::builtin_interfaces::{Duration, Time};
 use softgrip_record::msgs::geometry_msgs::*;
 use softgrip_record::msgs::rosgraph_msgs::Clock;
-use softgrip_record::msgs::sensor_msgs::CompressedImage;
+use softgrip_record::msgs::sensor_msgs::{CompressedImage, Image};
 use softgrip_record::msgs::softgrip_msgs::{LEVEL_KINDS, SoftContactArrayMsg, SoftContactMsg};
 use softgrip_record::msgs::std_msgs::{ColorRGBA, Header};
 use softgrip_record::msgs::tf2_msgs::TFMessage;
@@ -108,6 +108,7 @@ fn fields_match_msg_text() {
     check::<TFMessage>();
     check::<Clock>();
     check::<CompressedImage>();
+    check::<Image>();
     check::<UVCoordinate>();
     check::<MeshFile>();
     check::<Marker>();

@@ -44,6 +44,10 @@ pub(crate) fn check_fingertips(
             .material(material)
             .restitution(t.restitution)
             .friction(t.friction);
+        let builder = match &t.tactile {
+            Some(pad) => builder.tactile(pad.pad()),
+            None => builder,
+        };
         let builder = match law {
             TipLaw::Level(level) => builder.level(level),
             TipLaw::Tabulated(curve) => {
@@ -52,7 +56,11 @@ pub(crate) fn check_fingertips(
         };
         let tip = builder.build().map_err(|e| SceneError::Fingertip {
             origin: c.origin.to_string(),
-            field: format!("fingertip[{i}]"),
+            // A pad's error names its key: `fingertip[0].tactile.rows`.
+            field: match &e {
+                softgrip_rapier::Error::InvalidTactilePad { field, .. } => f(field),
+                _ => format!("fingertip[{i}]"),
+            },
             source: e,
         })?;
         tips.push(tip);

@@ -263,6 +263,48 @@ pub struct FingertipSpec {
     /// Density of the fingertip's ball [kg/m^3], finite and > 0 (default 1070, silicone).
     #[serde(default = "default_tip_density")]
     pub density: f64,
+    /// A tactile sensor pad (`[fingertip.tactile]`; default none: no image is computed).
+    #[serde(default)]
+    pub tactile: Option<TactileSpec>,
+}
+
+/// `[fingertip.tactile]`: a pad of `rows` x `columns` taxels over a patch of the fingertip's
+/// surface (the plugin's `softgrip_rapier::TactilePad`, which checks the ranges).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TactileSpec {
+    /// Rows of taxels (the image's height), in 1..=1024.
+    pub rows: u32,
+    /// Columns of taxels (the image's width), in 1..=1024.
+    pub columns: u32,
+    /// Direction of the pad's centre in the fingertip's frame (its body's axes), non-zero.
+    pub direction: [f64; 3],
+    /// Direction of the image's top in the fingertip's frame, not parallel to `direction`
+    /// (default `+z`, or `+x` when `direction` is within 25° of the z axis).
+    #[serde(default)]
+    pub up: Option<[f64; 3]>,
+    /// Width covered by the columns, along the surface \[m\], > 0.
+    pub width: f64,
+    /// Height covered by the rows, along the surface \[m\], > 0;
+    /// `sqrt(width² + height²) <= π radius`.
+    pub height: f64,
+}
+
+impl TactileSpec {
+    /// The plugin's pad.
+    pub fn pad(&self) -> softgrip_rapier::TactilePad {
+        let pad = softgrip_rapier::TactilePad::new(
+            self.rows,
+            self.columns,
+            self.direction,
+            self.width,
+            self.height,
+        );
+        match self.up {
+            Some(up) => pad.with_up(up),
+            None => pad,
+        }
+    }
 }
 
 fn default_tip_restitution() -> f64 {

@@ -26,7 +26,7 @@ pub use digest::ContactDigest;
 pub use error::SceneError;
 pub use format::{
     BodyKind, BodySpec, DEFAULT_EVERY_N_STEPS, FingertipSpec, GripperSpec, MaterialSpec, MoveSpec,
-    RecordSpec, SceneFile, ShapeKind, ShapeSpec, SqueezeSpec, WaypointSpec,
+    RecordSpec, SceneFile, ShapeKind, ShapeSpec, SqueezeSpec, TactileSpec, WaypointSpec,
 };
 pub use gripper::{
     GripperEvent, GripperProgram, GripperState, JawState, Phase, Squeeze, jaw_compressions,

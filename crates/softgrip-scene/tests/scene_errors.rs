@@ -110,3 +110,54 @@ fn mesh_shapes_load_from_obj_and_stl() {
     assert!(matches!(missing, SceneError::Mesh { .. }), "{missing}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `[fingertip.tactile]`: the default scene's pads, and a bad pad's error naming its key.
+#[test]
+fn tactile_pads_parse_and_bad_pads_name_their_key() {
+    let scene = Scene::default_scene();
+    for tip in scene.fingertips() {
+        let grid = tip
+            .tactile()
+            .expect("the default scene's fingertips carry pads");
+        assert_eq!((grid.rows(), grid.columns()), (16, 16));
+        assert!((grid.taxel_area() - 1e-6).abs() < 1e-18);
+    }
+    let tip = "[[fingertip]]\nname = \"t\"\nbody = \"table\"\nradius = 0.01\npreset = \"dragon-skin-30\"\n";
+    let pad = |extra: &str| {
+        format!(
+            "{BASE}{tip}[fingertip.tactile]\nrows = 8\ncolumns = 8\ndirection = [0.0, -1.0, 0.0]\n{extra}"
+        )
+    };
+    let ok = parse(&pad("width = 0.01\nheight = 0.01\n")).unwrap();
+    let grid = ok.fingertips()[0].tactile().unwrap();
+    // Default `up`: +z (the direction is not near the z axis).
+    assert_eq!(grid.pad().up, [0.0, 0.0, 1.0]);
+    for (extra, field, needle) in [
+        (
+            "width = 0.04\nheight = 0.01\n",
+            "fingertip[0].tactile.width",
+            "got 0.04",
+        ),
+        (
+            "width = nan\nheight = 0.01\n",
+            "fingertip[0].tactile.width",
+            "got NaN",
+        ),
+        (
+            "width = 0.01\nheight = 0.0\n",
+            "fingertip[0].tactile.height",
+            "> 0 m",
+        ),
+        (
+            "width = 0.01\nheight = 0.01\nup = [0.0, 2.0, 0.0]\n",
+            "fingertip[0].tactile.up",
+            "not parallel",
+        ),
+    ] {
+        let err = parse(&pad(extra)).unwrap_err();
+        assert_eq!(err.field(), Some(field), "{err}");
+        assert!(err.to_string().contains(needle), "{err}");
+    }
+    let err = parse(&pad("width = 0.01\nheight = 0.01\nrow = 3\n")).unwrap_err();
+    assert!(matches!(err, SceneError::Parse { .. }), "{err}");
+}

@@ -10,7 +10,7 @@ use crate::resources::{
 use softgrip_law::ContactPatch;
 use softgrip_record::{BodySample, ContactSample, WrenchSample};
 
-use crate::to_record::contact_reading;
+use crate::to_record::{contact_reading, tactile_samples};
 
 /// Fills [`CurrentFrame`] with what [`RecordSelection`] asks for, names resolved. Scheduled
 /// only on steps that a sink takes ([`StepSink::wants`](crate::StepSink::wants)): with only
@@ -31,6 +31,8 @@ pub fn assemble_frame(
     f.bodies.clear();
     f.wrenches.clear();
     f.contacts.clear();
+    // Tactile images whenever a fingertip has a pad (the plugin computes them only then).
+    tactile_samples(&physics, &names, &mut f.tactile);
     if sel.poses {
         let mut list: Vec<_> = bodies.iter().collect();
         list.sort_by_key(|(e, ..)| e.index_u32());

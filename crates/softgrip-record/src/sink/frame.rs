@@ -86,4 +86,20 @@ pub struct StepFrame {
     pub wrenches: Vec<WrenchSample>,
     /// Soft contacts (`record.contacts`; with `patch` when `record.pressure`).
     pub contacts: Vec<ContactSample>,
+    /// Tactile images of the fingertips with a pad (always, when a fingertip has one).
+    pub tactile: Vec<TactileSample>,
+}
+
+/// A fingertip's tactile image over a step: mean pressure of each taxel.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct TactileSample {
+    /// Fingertip name.
+    pub fingertip: String,
+    /// Rows of taxels (the image's height), >= 1.
+    pub rows: u32,
+    /// Columns of taxels (the image's width), >= 1.
+    pub columns: u32,
+    /// Mean pressure of each taxel \[Pa\], >= 0, row-major from the pad's top-left taxel
+    /// (`rows * columns` values).
+    pub pressure: Vec<f32>,
 }

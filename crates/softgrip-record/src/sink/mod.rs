@@ -9,6 +9,8 @@ mod frame;
 mod scene;
 mod step_sink;
 
-pub use frame::{BodySample, ContactReading, ContactSample, StepFrame, WrenchSample};
+pub use frame::{
+    BodySample, ContactReading, ContactSample, StepFrame, TactileSample, WrenchSample,
+};
 pub use scene::{FingertipInfo, SceneInfo, ShapeGeometry, ShapeInfo};
 pub use step_sink::{SinkError, StepSink};

@@ -1,0 +1,306 @@
+//! [`TactileImage`]: the taxel pressures of a fingertip's pad after a step, and the integral
+//! of a contact's Hertz-shaped pressure over each taxel (see `tactile` for the geometry).
+
+use rapier3d::prelude::{ColliderHandle, ColliderSet};
+
+use crate::contacts::SoftContacts;
+use crate::tactile::TactileGrid;
+
+/// Mean pressure \[Pa\] of each taxel of a fingertip's pad over the last step, row-major
+/// (row 0 at the pad's top, `v = +height/2`; column 0 at its left, `u = -width/2`).
+///
+/// ```
+/// use softgrip_rapier::{Preset, SoftFingertip, TactileImage, TactilePad};
+/// let pad = TactilePad::new(4, 4, [0.0, -1.0, 0.0], 0.008, 0.008);
+/// let tip = SoftFingertip::builder(0.01).preset(Preset::DragonSkin30).tactile(pad).build().unwrap();
+/// let mut image = TactileImage::new(*tip.tactile().unwrap());
+/// image.add_disc([0.0, 0.0], 0.002, 1.5); // 1.5 N over a = 2 mm at the centre
+/// assert!((image.total_force() / 1.5 - 1.0).abs() < 1e-6);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct TactileImage {
+    grid: TactileGrid,
+    pressure: Vec<f64>,
+}
+
+impl TactileImage {
+    /// A zero image of `grid`.
+    pub fn new(grid: TactileGrid) -> Self {
+        let n = grid.rows() as usize * grid.columns() as usize;
+        Self {
+            grid,
+            pressure: vec![0.0; n],
+        }
+    }
+
+    /// The pad's grid.
+    pub fn grid(&self) -> &TactileGrid {
+        &self.grid
+    }
+
+    /// Mean pressure of every taxel \[Pa\], `>= 0`, row-major (`rows x columns` values).
+    pub fn pressure(&self) -> &[f64] {
+        &self.pressure
+    }
+
+    /// Mean pressure \[Pa\] of the taxel at `row`, `column` (0 outside the grid).
+    pub fn at(&self, row: u32, column: u32) -> f64 {
+        if row >= self.grid.rows() || column >= self.grid.columns() {
+            return 0.0;
+        }
+        self.pressure[row as usize * self.grid.columns() as usize + column as usize]
+    }
+
+    /// `Σ taxel pressure x taxel area` \[N\]: the normal force on the pad.
+    pub fn total_force(&self) -> f64 {
+        self.pressure.iter().sum::<f64>() * self.grid.taxel_area()
+    }
+
+    /// Pressure-weighted mean of the taxel centres, pad coordinates `(u, v)` \[m\]; `None` for
+    /// an empty image.
+    pub fn centroid(&self) -> Option<[f64; 2]> {
+        let (mut s, mut su, mut sv) = (0.0, 0.0, 0.0);
+        for r in 0..self.grid.rows() {
+            for c in 0..self.grid.columns() {
+                let p = self.at(r, c);
+                let [u, v] = self.grid.taxel_center(r, c);
+                s += p;
+                su += p * u;
+                sv += p * v;
+            }
+        }
+        (s > 0.0).then(|| [su / s, sv / s])
+    }
+
+    /// Sets every taxel to 0.
+    pub fn clear(&mut self) {
+        self.pressure.fill(0.0);
+    }
+
+    /// Adds the law's Hertz-shaped pressure `p(ρ) = (3/2) F/(π a²) sqrt(1 - ρ²/a²)` of a
+    /// contact of normal force `force` \[N\] and radius `radius` a \[m\], centred at pad
+    /// coordinates `center` \[m\]; nothing unless `force` and `radius` are finite and > 0.
+    /// Only the taxels under the disc are visited.
+    pub fn add_disc(&mut self, center: [f64; 2], radius: f64, force: f64) {
+        let a = radius;
+        if !(a > 0.0 && a.is_finite() && force > 0.0 && force.is_finite()) {
+            return;
+        }
+        let g = self.grid;
+        let (du, dv) = (g.taxel_width(), g.taxel_height());
+        let (half_w, half_h) = (0.5 * g.pad().width, 0.5 * g.pad().height);
+        let (cols, rows) = (g.columns() as usize, g.rows() as usize);
+        // Columns with u in [cu - a, cu + a], rows with v in [cv - a, cv + a] (row 0 at the top).
+        let span = |lo: f64, hi: f64, step: f64, n: usize| {
+            let first = (lo / step).floor().max(0.0) as usize;
+            let last = ((hi / step).ceil().max(0.0) as usize).min(n);
+            first..last
+        };
+        let columns = span(center[0] - a + half_w, center[0] + a + half_w, du, cols);
+        let row_range = span(half_h - center[1] - a, half_h - center[1] + a, dv, rows);
+        // ∫∫ p = (3 F / (2 π a³)) ∫∫ sqrt(a² - x² - y²); a taxel's mean divides by its area.
+        let scale = 1.5 * force / (std::f64::consts::PI * a * a * a) / g.taxel_area();
+        for r in row_range {
+            let v1 = half_h - r as f64 * dv - center[1];
+            let v0 = v1 - dv;
+            for c in columns.clone() {
+                let u0 = -half_w + c as f64 * du - center[0];
+                let cap = cap_integral(a, u0, u0 + du, v0, v1);
+                self.pressure[r * cols + c] += scale * cap;
+            }
+        }
+    }
+}
+
+/// Gauss-Legendre nodes and weights on [-1, 1], 8 points (exact for polynomials of degree 15).
+const GAUSS_8: [(f64, f64); 8] = [
+    (-0.960_289_856_497_536_3, 0.101_228_536_290_376_3),
+    (-0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
+    (-0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (-0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
+    (0.960_289_856_497_536_3, 0.101_228_536_290_376_3),
+];
+
+/// `∫_{x0}^{x1} ∫_{y0}^{y1} sqrt(a² - x² - y²)₊ dy dx` [m³]: the volume of the hemisphere of
+/// radius `a` over a rectangle (coordinates relative to its centre).
+///
+/// The inner integral is exact: `∫_0^y sqrt(b² - t²) dt = (y sqrt(b² - y²) + b² asin(y/b)) / 2`
+/// with `b = sqrt(a² - x²)` and `y` clamped to `[-b, b]`. The outer one is Gauss-Legendre on
+/// the pieces of `[x0, x1] ∩ [-a, a]` between the kinks `x = ±sqrt(a² - y_i²)` (where the
+/// disc's edge crosses `y = y0` or `y = y1`), on each of which the integrand is smooth
+/// except for a `(x - kink)^(3/2)` end: relative error below 1e-5 of a taxel's value.
+pub(crate) fn cap_integral(a: f64, x0: f64, x1: f64, y0: f64, y1: f64) -> f64 {
+    let (lo, hi) = (x0.max(-a), x1.min(a));
+    if !(lo < hi && y0 < a && y1 > -a) {
+        return 0.0;
+    }
+    let mut cuts = [lo, hi, hi, hi, hi, hi];
+    let mut n = 1;
+    for y in [y0, y1] {
+        if y.abs() < a {
+            let k = (a * a - y * y).sqrt();
+            for x in [-k, k] {
+                if x > lo && x < hi {
+                    cuts[n] = x;
+                    n += 1;
+                }
+            }
+        }
+    }
+    cuts[n] = hi;
+    cuts[..=n].sort_unstable_by(f64::total_cmp);
+    let inner = |x: f64| {
+        let b2 = (a * a - x * x).max(0.0);
+        let b = b2.sqrt();
+        let s = |y: f64| {
+            if y >= b {
+                return 0.25 * std::f64::consts::PI * b2;
+            }
+            if y <= -b {
+                return -0.25 * std::f64::consts::PI * b2;
+            }
+            // (b - y)(b + y), not b² - y²: no cancellation near the chord's ends.
+            let chord = ((b - y) * (b + y)).max(0.0).sqrt();
+            0.5 * (y * chord + b2 * (y / b).clamp(-1.0, 1.0).asin())
+        };
+        s(y1) - s(y0)
+    };
+    let mut total = 0.0;
+    for w in cuts[..=n].windows(2) {
+        let (m, h) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
+        if h > 0.0 {
+            total += h * GAUSS_8
+                .iter()
+                .map(|(t, wt)| wt * inner(m + h * t))
+                .sum::<f64>();
+        }
+    }
+    total
+}
+
+impl SoftContacts {
+    /// The tactile image of the fingertip `collider` after the last step (`None` unless the
+    /// fingertip was built with a pad, [`SoftFingertipBuilder::tactile`]).
+    ///
+    /// [`SoftFingertipBuilder::tactile`]: crate::SoftFingertipBuilder::tactile
+    pub fn tactile_image(&self, collider: ColliderHandle) -> Option<&TactileImage> {
+        self.tactile
+            .iter()
+            .find(|(h, _)| *h == collider)
+            .map(|(_, i)| i)
+    }
+
+    /// Every tactile image, in the fingertips' handle order.
+    pub fn tactile_images(&self) -> impl Iterator<Item = (ColliderHandle, &TactileImage)> {
+        self.tactile.iter().map(|(h, i)| (*h, i))
+    }
+
+    /// Recomputes the images of the fingertips with a pad from the readout (after the step's
+    /// readout is assembled; read-only for the physics). Each contact is laid on the pad of
+    /// its fingertip, and on the other's for a soft-soft pair (its direction reversed).
+    pub(crate) fn update_tactile(&mut self, colliders: &ColliderSet) {
+        for (handle, image) in &mut self.tactile {
+            image.clear();
+            let Some(pose) = colliders.get(*handle).map(|c| *c.position()) else {
+                continue;
+            };
+            let q = pose.rotation;
+            let q = [q.x as f64, q.y as f64, q.z as f64, q.w as f64];
+            for c in &self.contacts {
+                // The patch's direction from the fingertip's centre: against the normal
+                // (other -> fingertip) on the fingertip's side, along it on the other's.
+                let sign = if c.fingertip == *handle {
+                    -1.0
+                } else if c.other == *handle {
+                    1.0
+                } else {
+                    continue;
+                };
+                let local = rotate_inverse(q, c.normal.map(|n| sign * n));
+                let Some(center) = image.grid.coordinates(local) else {
+                    continue;
+                };
+                image.add_disc(center, c.patch().radius, c.normal_force);
+            }
+        }
+    }
+}
+
+/// `q* v q` for a unit quaternion `[x, y, z, w]`: `v` from world axes into the body's.
+fn rotate_inverse(q: [f64; 4], v: [f64; 3]) -> [f64; 3] {
+    let [x, y, z, w] = q;
+    let (x, y, z) = (-x, -y, -z);
+    // t = 2 (q_v x v); v' = v + w t + q_v x t
+    let t = [
+        2.0 * (y * v[2] - z * v[1]),
+        2.0 * (z * v[0] - x * v[2]),
+        2.0 * (x * v[1] - y * v[0]),
+    ];
+    [
+        v[0] + w * t[0] + (y * t[2] - z * t[1]),
+        v[1] + w * t[1] + (z * t[0] - x * t[2]),
+        v[2] + w * t[2] + (x * t[1] - y * t[0]),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Brute-force midpoint sum of the same integral.
+    fn brute(a: f64, x0: f64, x1: f64, y0: f64, y1: f64) -> f64 {
+        let n = 2000;
+        let (dx, dy) = ((x1 - x0) / n as f64, (y1 - y0) / n as f64);
+        let mut s = 0.0;
+        for i in 0..n {
+            let x = x0 + (i as f64 + 0.5) * dx;
+            for j in 0..n {
+                let y = y0 + (j as f64 + 0.5) * dy;
+                s += (a * a - x * x - y * y).max(0.0).sqrt();
+            }
+        }
+        s * dx * dy
+    }
+
+    #[test]
+    fn cap_integral_of_the_whole_disc_is_the_hemisphere() {
+        let a = 0.003;
+        let v = cap_integral(a, -1.0, 1.0, -1.0, 1.0);
+        let exact = 2.0 / 3.0 * std::f64::consts::PI * a * a * a;
+        assert!((v / exact - 1.0).abs() < 1e-12, "{v} vs {exact}");
+        let q = cap_integral(a, 0.0, 1.0, 0.0, 1.0);
+        assert!(
+            (q / (exact / 4.0) - 1.0).abs() < 1e-12,
+            "{q} vs {}",
+            exact / 4.0
+        );
+    }
+
+    #[test]
+    fn cap_integral_of_cut_rectangles_matches_a_fine_sum() {
+        let a = 1.0;
+        for (x0, x1, y0, y1) in [
+            (0.3, 0.9, -0.2, 0.5),
+            (-0.95, -0.4, 0.6, 1.2),
+            (0.7, 1.3, 0.6, 1.3),
+            (-0.1, 0.1, -0.1, 0.1),
+        ] {
+            let v = cap_integral(a, x0, x1, y0, y1);
+            let b = brute(a, x0, x1, y0, y1);
+            assert!(
+                (v / b - 1.0).abs() < 2e-5,
+                "{x0} {x1} {y0} {y1}: {v} vs {b}"
+            );
+        }
+    }
+
+    #[test]
+    fn rotate_inverse_undoes_a_quarter_turn_about_z() {
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        let v = rotate_inverse([0.0, 0.0, h, h], [0.0, 1.0, 0.0]);
+        assert!((v[0] - 1.0).abs() < 1e-12 && v[1].abs() < 1e-12);
+    }
+}
