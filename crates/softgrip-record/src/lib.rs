@@ -10,11 +10,13 @@ pub mod metadata;
 pub mod msgs;
 mod recorder;
 mod recording;
+mod recover;
 pub mod schema;
 pub mod sink;
 mod step;
 mod step_messages;
 pub mod topics;
+pub mod units;
 pub mod visuals;
 
 pub use convert::{StepConverter, WORLD_FRAME, soft_contact_msg};
@@ -28,6 +30,7 @@ pub use metadata::{
 };
 pub use recorder::{METADATA_NAME, RUN_SUMMARY_NAME, Recorder, RecorderOptions, RecordingStats};
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
+pub use recover::{RecoverReport, recover};
 pub use sink::{
     BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, SinkError, StepFrame,
     StepSink, WrenchSample,
