@@ -4,8 +4,10 @@
 mod export;
 mod inspect;
 mod plot;
+mod recover;
 
 pub use export::{ExportArgs, export};
+pub use recover::{RecoverArgs, recover};
 pub use inspect::{InspectArgs, inspect};
 pub use plot::{PlotArgs, plot};
 
