@@ -22,10 +22,7 @@ pub fn check_output(out: &Path, inputs: &[&Path], force: bool) -> Result<()> {
             "{}: is a directory; give the name of a file to write",
             out.display()
         ),
-        Ok(_) if !force => bail!(
-            "{}: exists; pass --force to overwrite it",
-            out.display()
-        ),
+        Ok(_) if !force => bail!("{}: exists; pass --force to overwrite it", out.display()),
         _ => Ok(()),
     }
 }

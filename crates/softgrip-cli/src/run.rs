@@ -353,7 +353,11 @@ fn print_summary(sim: &Simulation, done: &Done) {
         "wall time {}, simulated {}, real-time factor {}",
         si(wall, "s"),
         si(sim_time, "s"),
-        sig(if wall > 0.0 { sim_time / wall } else { f64::NAN })
+        sig(if wall > 0.0 {
+            sim_time / wall
+        } else {
+            f64::NAN
+        })
     );
 }
 
@@ -363,7 +367,9 @@ fn print_ros2(stats: Option<Arc<Mutex<Option<PublisherStats>>>>) {
     if let Some(s) = published {
         outln!(
             "ros2: {} steps published, {} dropped (queue full), {} publish failures",
-            s.published, s.dropped, s.publish_failures
+            s.published,
+            s.dropped,
+            s.publish_failures
         );
     }
 }

@@ -31,7 +31,9 @@ impl Stop {
                 .and_then(|_| signal_hook::flag::register(sig, seen.clone()))
                 .and_then(|_| signal_hook::flag::register_usize(sig, signal.clone(), sig as usize));
             if let Err(e) = r {
-                eprintln!("warning: no handler for signal {sig} ({e}); it will not finish the recording");
+                eprintln!(
+                    "warning: no handler for signal {sig} ({e}); it will not finish the recording"
+                );
             }
         }
         Self { signal }

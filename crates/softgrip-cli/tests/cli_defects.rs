@@ -51,13 +51,21 @@ fn broken_pipe_on_stdout_does_not_panic_and_finishes_the_recording() {
     stdout.read_exact(&mut first).unwrap();
     drop(stdout);
     let mut err = String::new();
-    child.stderr.take().unwrap().read_to_string(&mut err).unwrap();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
     let status = child.wait().unwrap();
     assert!(!err.contains("panicked"), "{err}");
     assert_eq!(status.code(), Some(0), "{err}");
     let rec = Recording::open(&out).unwrap();
     assert!(!rec.recovered());
-    assert!(rec.run_summary().unwrap().is_some(), "finished with its summary");
+    assert!(
+        rec.run_summary().unwrap().is_some(),
+        "finished with its summary"
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
 

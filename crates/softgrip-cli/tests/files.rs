@@ -35,7 +35,11 @@ fn run_out_over_the_scene_is_refused() {
         assert_eq!(code, Some(1), "{err}");
         assert!(err.contains("over the input"), "{err}");
     }
-    assert_eq!(std::fs::read(&scene).unwrap(), before, "the scene is untouched");
+    assert_eq!(
+        std::fs::read(&scene).unwrap(),
+        before,
+        "the scene is untouched"
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -57,7 +61,10 @@ fn existing_outputs_are_not_overwritten_without_force() {
     let cases: [(Vec<&str>, &Path); 4] = [
         (vec!["run", "--out", s(&other)], &other),
         (vec!["plot", s(&rec), "-o", s(&png)], &png),
-        (vec!["export", s(&rec), "--csv", s(&csv)], &csv.join("clock.csv")),
+        (
+            vec!["export", s(&rec), "--csv", s(&csv)],
+            &csv.join("clock.csv"),
+        ),
         (vec!["recover", s(&rec), s(&fixed)], &fixed),
     ];
     for (args, target) in &cases {
@@ -129,7 +136,10 @@ fn flipped_byte_in_the_summary_section_is_found_and_named() {
     ] {
         let (code, _, err) = run(&args);
         assert_eq!(code, Some(1), "{args:?}: {err}");
-        assert!(err.contains("Summary section CRC failed"), "{args:?}: {err}");
+        assert!(
+            err.contains("Summary section CRC failed"),
+            "{args:?}: {err}"
+        );
     }
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -127,7 +127,10 @@ fn python_mcap_reader_decodes_a_softgrip_run_recording() {
                     e.0 = e.0.max(p["peak_normal_force"].as_f64().unwrap());
                     // Peak x: the step's largest compression over R (every substep and the
                     // step's end), as the run summary defines it.
-                    let (x, d) = (p["ratio_x"].as_f64().unwrap(), p["compression"].as_f64().unwrap());
+                    let (x, d) = (
+                        p["ratio_x"].as_f64().unwrap(),
+                        p["compression"].as_f64().unwrap(),
+                    );
                     let max_d = p["max_compression"].as_f64().unwrap();
                     e.1 = e.1.max(if x > 0.0 { x.max(max_d * x / d) } else { x });
                     contacts_checked += 1;

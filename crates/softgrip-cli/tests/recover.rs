@@ -19,7 +19,12 @@ fn sigkilled_recording_is_recovered_for_the_python_reader() {
     let scene = common::long_scene(&dir, 10_000.0);
     let killed = dir.join("killed.mcap");
     let mut child = Command::new(env!("CARGO_BIN_EXE_softgrip"))
-        .args(["run", scene.to_str().unwrap(), "--out", killed.to_str().unwrap()])
+        .args([
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            killed.to_str().unwrap(),
+        ])
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .spawn()
@@ -43,7 +48,11 @@ fn sigkilled_recording_is_recovered_for_the_python_reader() {
     println!("{stdout}");
     let rec = Recording::open(&fixed).unwrap();
     assert!(!rec.recovered(), "the output is a finished file");
-    assert!(rec.messages.len() >= closed, "{} < {closed}", rec.messages.len());
+    assert!(
+        rec.messages.len() >= closed,
+        "{} < {closed}",
+        rec.messages.len()
+    );
     assert!(stdout.contains(&format!("recovered {} messages", rec.messages.len())));
     // The killed file's last chunk was open (a placeholder length) if the kill hit one.
     let open_chunk = bytes

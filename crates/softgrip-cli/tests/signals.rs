@@ -38,7 +38,12 @@ fn signal_finishes(sig: &str, code: i32) {
     let scene = common::long_scene(&dir, 10_000.0);
     let out = dir.join("s.mcap");
     let mut child = Command::new(env!("CARGO_BIN_EXE_softgrip"))
-        .args(["run", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .args([
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
         .stdout(Stdio::piped())
         .stderr(Stdio::null())
         .spawn()
@@ -66,7 +71,10 @@ fn signal_finishes(sig: &str, code: i32) {
         .unwrap();
     let rec = Recording::open(&out).unwrap();
     assert!(!rec.recovered(), "{sig}: the file is finished");
-    let summary = rec.run_summary().unwrap().expect("the run summary is written");
+    let summary = rec
+        .run_summary()
+        .unwrap()
+        .expect("the run summary is written");
     assert_eq!(summary.steps, steps);
     // Nothing recorded is lost: every step (every_n_steps = 1) up to the signal.
     assert_eq!(rec.on_topic(topics::CLOCK).count() as u64, steps, "{sig}");
@@ -105,14 +113,22 @@ fn signal_before_the_first_step_still_finishes_the_recording() {
     let pid = child.id();
     let start = Instant::now();
     while !(caught(pid, 2) && caught(pid, 15) && caught(pid, 1)) {
-        assert!(start.elapsed() < Duration::from_secs(2), "no handlers installed");
+        assert!(
+            start.elapsed() < Duration::from_secs(2),
+            "no handlers installed"
+        );
         std::thread::sleep(Duration::from_millis(1));
     }
     assert!(!Path::new(&out).exists(), "handlers come before the output");
     kill(pid, "TERM");
     let status = child.wait().unwrap();
     let mut text = String::new();
-    child.stdout.take().unwrap().read_to_string(&mut text).unwrap();
+    child
+        .stdout
+        .take()
+        .unwrap()
+        .read_to_string(&mut text)
+        .unwrap();
     assert_eq!(status.code(), Some(143), "{text}");
     assert!(text.contains("(step 0 of 300) by SIGTERM"), "{text}");
     let rec = Recording::open(&out).unwrap();

@@ -75,18 +75,25 @@ fn run_summary_metadata_and_inspect_agree_and_max_compression_covers_compression
                 .find(|l| l.starts_with(&format!("fingertip {}:", tip.name)))
                 .unwrap();
             for line in [r, i] {
-                assert!(close(si_after(line, "peak force "), tip.peak_force), "{scene}: {line} vs {tip:?}");
-                assert!(close(si_after(line, "peak x "), tip.peak_x), "{scene}: {line} vs {tip:?}");
+                assert!(
+                    close(si_after(line, "peak force "), tip.peak_force),
+                    "{scene}: {line} vs {tip:?}"
+                );
+                assert!(
+                    close(si_after(line, "peak x "), tip.peak_x),
+                    "{scene}: {line} vs {tip:?}"
+                );
             }
-            assert!(r.contains(&format!("validity excursions {}", tip.validity_excursions)), "{r}");
-            let events = inspect
-                .lines()
-                .skip_while(|l| *l != i)
-                .nth(1)
-                .unwrap();
+            assert!(
+                r.contains(&format!("validity excursions {}", tip.validity_excursions)),
+                "{r}"
+            );
+            let events = inspect.lines().skip_while(|l| *l != i).nth(1).unwrap();
             let n = tip.validity_excursions;
             assert!(
-                events.contains(&format!("validity excursions: {n} (every step; {n} in the recorded steps")),
+                events.contains(&format!(
+                    "validity excursions: {n} (every step; {n} in the recorded steps"
+                )),
                 "{scene}: {events}"
             );
         }

@@ -46,15 +46,18 @@ pub fn recover(input: &Path, output: &Path) -> Result<RecoverReport> {
     let file_len = file.metadata().map_err(io(input))?.len();
     let mut src = BufReader::new(file);
     let mut magic = [0u8; 8];
-    src.read_exact(&mut magic)
-        .map_err(|_| Error::Truncated { len: file_len as usize })?;
+    src.read_exact(&mut magic).map_err(|_| Error::Truncated {
+        len: file_len as usize,
+    })?;
     if magic != *mcap::MAGIC {
         return Err(Error::NotMcap);
     }
     let out = File::create(output).map_err(io(output))?;
     let writer = WriteOptions::new()
         .profile("ros2")
-        .library(format!("softgrip-record {SOFTGRIP_VERSION} recover (mcap-rs)"))
+        .library(format!(
+            "softgrip-record {SOFTGRIP_VERSION} recover (mcap-rs)"
+        ))
         .compression(Some(Compression::Zstd))
         .create(BufWriter::new(out))
         .map_err(Error::Write)?;
@@ -117,7 +120,9 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
             if opcode == op::CHUNK {
                 self.chunk(at, &body)?;
             } else if !(0x01..=0x10).contains(&opcode) {
-                self.skip(format!("unknown opcode 0x{opcode:02x} at byte {at}; stopped there"));
+                self.skip(format!(
+                    "unknown opcode 0x{opcode:02x} at byte {at}; stopped there"
+                ));
                 return Ok(());
             } else {
                 match mcap::read::parse_record(opcode, &body) {
@@ -155,7 +160,9 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                 }
             },
             other => {
-                self.skip(format!("chunk at byte {at}: compression `{other}` not supported; skipped"));
+                self.skip(format!(
+                    "chunk at byte {at}: compression `{other}` not supported; skipped"
+                ));
                 return Ok(());
             }
         };
@@ -179,7 +186,8 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
         let Some(name_len) = body.get(28..32) else {
             return Ok(());
         };
-        let name_len = u32::from_le_bytes(name_len.try_into().expect("invariant: 4 bytes")) as usize;
+        let name_len =
+            u32::from_le_bytes(name_len.try_into().expect("invariant: 4 bytes")) as usize;
         let data_at = 32usize.saturating_add(name_len).saturating_add(8);
         let (Some(name), Some(data)) = (body.get(32..32 + name_len.min(64)), body.get(data_at..))
         else {
@@ -233,8 +241,14 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
             Record::Channel(c) => {
                 let schema_ok = c.schema_id == 0 || self.schemas.contains(&c.schema_id);
                 if schema_ok && self.channels.insert(c.id) {
-                    w.add_channel_with_id(c.id, c.schema_id, &c.topic, &c.message_encoding, &c.metadata)
-                        .map_err(Error::Write)?;
+                    w.add_channel_with_id(
+                        c.id,
+                        c.schema_id,
+                        &c.topic,
+                        &c.message_encoding,
+                        &c.metadata,
+                    )
+                    .map_err(Error::Write)?;
                 }
             }
             Record::Message { header, data } => {
@@ -249,9 +263,7 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                     ));
                 }
             }
-            Record::Metadata(m) => w
-                .write_metadata(&m)
-                .map_err(Error::Write)?,
+            Record::Metadata(m) => w.write_metadata(&m).map_err(Error::Write)?,
             Record::Attachment { header, data, .. } => w
                 .attach(&Attachment {
                     log_time: header.log_time,

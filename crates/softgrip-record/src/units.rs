@@ -22,10 +22,7 @@ pub fn si(value: f64, unit: &str) -> String {
     }
     let rounded = round_sig(value);
     let exp3 = (rounded.abs().log10() / 3.0).floor() as i32;
-    let Some(prefix) = usize::try_from(exp3 + 5)
-        .ok()
-        .and_then(|i| PREFIXES.get(i))
-    else {
+    let Some(prefix) = usize::try_from(exp3 + 5).ok().and_then(|i| PREFIXES.get(i)) else {
         return format!("{} {unit}", scientific(value));
     };
     let mantissa = rounded / 10f64.powi(3 * exp3);

@@ -47,7 +47,10 @@ fn record_heads(b: &[u8]) -> Vec<usize> {
     while at + 9 <= b.len() {
         heads.push(at);
         let len = u64::from_le_bytes(b[at + 1..at + 9].try_into().unwrap());
-        match usize::try_from(len).ok().and_then(|l| (at + 9).checked_add(l)) {
+        match usize::try_from(len)
+            .ok()
+            .and_then(|l| (at + 9).checked_add(l))
+        {
             Some(next) if next <= b.len() => at = next,
             _ => break,
         }

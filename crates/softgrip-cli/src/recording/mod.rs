@@ -7,9 +7,9 @@ mod plot;
 mod recover;
 
 pub use export::{ExportArgs, export};
-pub use recover::{RecoverArgs, recover};
 pub use inspect::{InspectArgs, inspect};
 pub use plot::{PlotArgs, plot};
+pub use recover::{RecoverArgs, recover};
 
 use std::path::Path;
 
