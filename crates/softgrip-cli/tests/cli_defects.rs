@@ -23,7 +23,7 @@ fn text(o: &std::process::Output) -> (String, String) {
 #[test]
 fn realtime_factor_1e_300_is_a_range_error_not_a_panic() {
     for bad in ["1e-300", "-1", "inf", "NaN", "1e9"] {
-        let o = common::softgrip(&["run", "--realtime-factor", bad]);
+        let o = common::softgrip(&["run", &format!("--realtime-factor={bad}")]);
         let (_, err) = text(&o);
         assert_eq!(o.status.code(), Some(2), "{bad}: {err}");
         assert!(!err.contains("panicked"), "{bad}: {err}");
