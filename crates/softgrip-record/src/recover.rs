@@ -232,11 +232,9 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
     fn record(&mut self, rec: Record<'_>) -> Result<()> {
         let w = &mut self.writer;
         match rec {
-            Record::Schema { header, data } => {
-                if header.id != 0 && self.schemas.insert(header.id) {
-                    w.add_schema_with_id(header.id, &header.name, &header.encoding, &data)
-                        .map_err(Error::Write)?;
-                }
+            Record::Schema { header, data } if header.id != 0 && self.schemas.insert(header.id) => {
+                w.add_schema_with_id(header.id, &header.name, &header.encoding, &data)
+                    .map_err(Error::Write)?;
             }
             Record::Channel(c) => {
                 let schema_ok = c.schema_id == 0 || self.schemas.contains(&c.schema_id);
