@@ -65,7 +65,7 @@ pub fn run(args: &BenchLawArgs) -> Result<()> {
         .iter()
         .map(|&nu| measure(nu, budget))
         .collect::<Result<Vec<_>>>()?;
-    print!("{}", table(&panels, budget));
+    crate::out::text(&table(&panels, budget));
 
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create {}", args.out.display()))?;

@@ -5,7 +5,7 @@ use clap::{Parser, Subcommand};
 
 use crate::bench_law::BenchLawArgs;
 use crate::curve::CurveArgs;
-use crate::recording::{ExportArgs, InspectArgs, PlotArgs};
+use crate::recording::{ExportArgs, InspectArgs, PlotArgs, RecoverArgs};
 use crate::run::RunArgs;
 
 /// Soft-fingertip contact: the law's curves, its speed-vs-error table and figures.
@@ -33,6 +33,8 @@ pub enum Command {
     Export(ExportArgs),
     /// Draw a recording: force vs x with the law's curves, force and contact radius vs time.
     Plot(PlotArgs),
+    /// Rewrite a killed or damaged recording as a finished, indexed MCAP file.
+    Recover(RecoverArgs),
 }
 
 /// Parses the command line. Help and version are printed as clap prints them; a usage error

@@ -5,10 +5,14 @@ mod bench_law;
 mod cli;
 mod curve;
 mod fe;
+mod files;
 mod level_arg;
+mod out;
 mod plot;
 mod recording;
+mod report;
 mod run;
+mod signals;
 mod timing;
 mod xrange;
 
@@ -21,18 +25,22 @@ fn main() -> ExitCode {
         Command::Curve(args) => curve::run(&args),
         Command::BenchLaw(args) => bench_law::run(&args),
         Command::Run(args) => match run::run(&args) {
-            Ok(run::RunEnd::Interrupted) => return ExitCode::from(run::INTERRUPTED_EXIT_CODE),
+            Ok(run::RunEnd::Interrupted(sig)) => {
+                out::flush();
+                return ExitCode::from(signals::exit_code(sig));
+            }
             other => other.map(|_| ()),
         },
         Command::Inspect(args) => recording::inspect(&args),
         Command::Export(args) => recording::export(&args),
         Command::Plot(args) => recording::plot(&args),
+        Command::Recover(args) => recording::recover(&args),
     };
+    out::flush();
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            // `{:#}` joins the context chain on one line.
-            eprintln!("error: {e:#}");
+            eprintln!("error: {}", report::one_line(&e));
             ExitCode::FAILURE
         }
     }

@@ -2,15 +2,19 @@
 //! progress on long runs, an MCAP recording, Ctrl-C handling and a per-fingertip summary.
 
 use std::io::Write;
-use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
+use softgrip_ecs::softgrip_record::units::{si, sig};
 use softgrip_ecs::{McapReport, McapSink, Physics, Simulation, Summary};
 use softgrip_ros2::PublisherStats;
-use softgrip_scene::{ContactDigest, DEFAULT_SCENE, Scene};
+use softgrip_scene::{ContactDigest, DEFAULT_SCENE, LevelSpec, Scene};
+
+use crate::files::check_output;
+use crate::out::outln;
+use crate::signals::Stop;
 
 /// Arguments of `softgrip run`.
 #[derive(Debug, Clone, clap::Args)]
@@ -20,6 +24,9 @@ pub struct RunArgs {
     /// Write an MCAP recording (ROS 2 messages, see crates/softgrip-record/README.md).
     #[arg(long, value_name = "FILE.mcap")]
     pub out: Option<PathBuf>,
+    /// Overwrite `--out` if it exists (never one of the run's inputs).
+    #[arg(long)]
+    pub force: bool,
     /// Record every N-th step (overrides the scene's `record.every_n_steps`; 1 = every step).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub every: Option<u64>,
@@ -29,8 +36,8 @@ pub struct RunArgs {
     #[arg(long)]
     pub ros2: bool,
     /// Pace the simulation at this multiple of real time (1 = real time, 0 = as fast as
-    /// possible). Default: 1 with `--ros2`, else 0.
-    #[arg(long, value_name = "F")]
+    /// possible; else from 0.001 to 1000). Default: 1 with `--ros2`, else 0.
+    #[arg(long, value_name = "F", value_parser = parse_realtime_factor)]
     pub realtime_factor: Option<f64>,
     /// Print the digest of every step's contact values (`digest <hex> steps <n> contacts
     /// <m>`): the golden value crates/softgrip-cli/tests/digest.rs holds. For tests.
@@ -38,28 +45,46 @@ pub struct RunArgs {
     pub digest: bool,
 }
 
-/// Set by the Ctrl-C handler; the step loop checks it after every step.
-static STOP: AtomicBool = AtomicBool::new(false);
-
 /// Test-only: `SOFTGRIP_TEST_PANIC_AT_STEP=N` panics after step N (to test that a panic still
 /// finishes the recording). Not for users.
 const PANIC_AT_STEP_VAR: &str = "SOFTGRIP_TEST_PANIC_AT_STEP";
 
-/// Exit code of a run interrupted by Ctrl-C (128 + SIGINT, as shells report it).
-pub const INTERRUPTED_EXIT_CODE: u8 = 130;
+/// Smallest and largest `--realtime-factor` other than 0.
+pub const REALTIME_FACTOR_RANGE: (f64, f64) = (1e-3, 1e3);
+
+/// `--realtime-factor`: 0, or finite in [`REALTIME_FACTOR_RANGE`].
+fn parse_realtime_factor(s: &str) -> Result<f64, String> {
+    let (lo, hi) = REALTIME_FACTOR_RANGE;
+    let v: f64 = s.parse().map_err(|_| format!("`{s}` is not a number"))?;
+    if v == 0.0 || (lo..=hi).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!(
+            "must be 0 (as fast as possible) or from {lo} to {hi} (multiples of real time), got {s}"
+        ))
+    }
+}
 
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RunEnd {
     /// Every step of the scene's duration.
     Complete,
-    /// Stopped by Ctrl-C (the recording is finished).
-    Interrupted,
+    /// Stopped by this signal (SIGINT, SIGTERM or SIGHUP; the recording is finished).
+    Interrupted(i32),
 }
 
 /// Runs the command.
 pub fn run(args: &RunArgs) -> Result<RunEnd> {
+    // Before anything is read or written: a signal from now on finishes the recording.
+    let stop = Stop::install();
+    slow_start_for_tests();
     let (scene, text) = load_scene(args)?;
+    if let Some(out) = &args.out {
+        let inputs = inputs(args.scene.as_deref(), &scene);
+        let inputs: Vec<&Path> = inputs.iter().map(PathBuf::as_path).collect();
+        check_output(out, &inputs, args.force)?;
+    }
     let panic_at = panic_at_step()?;
     let every = args
         .every
@@ -75,11 +100,7 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
     let pace = args
         .realtime_factor
         .unwrap_or(if args.ros2 { 1.0 } else { 0.0 });
-    if !(pace.is_finite() && pace >= 0.0) {
-        bail!("--realtime-factor must be finite and >= 0, got {pace}");
-    }
-    install_ctrlc();
-    println!(
+    outln!(
         "scene {}: {} steps of {:.6} s",
         scene.origin(),
         scene.steps(),
@@ -87,13 +108,20 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
     );
     sim.initialize();
     let mut digest = args.digest.then(ContactDigest::new);
-    let done = step_loop(&mut sim, scene.file().dt, pace, panic_at, digest.as_mut());
+    let done = step_loop(
+        &mut sim,
+        &stop,
+        scene.file().dt,
+        pace,
+        panic_at,
+        digest.as_mut(),
+    );
     sim.finish()
         .map_err(|e| anyhow::anyhow!("{e}"))
         .context("recorder")?;
     print_summary(&sim, &done);
     if let Some(d) = digest {
-        println!("{d}");
+        outln!("{d}");
     }
     print_ros2(sinks.ros2);
     if let (Some(out), Some(handle)) = (&args.out, sinks.recording) {
@@ -156,7 +184,7 @@ fn attach_sinks(
         let sink =
             softgrip_ros2::Ros2Sink::new(&softgrip_ecs::scene_info(scene), &Default::default())
                 .context("starting the ROS 2 publisher (--ros2)")?;
-        println!(
+        outln!(
             "ros2: publishing on domain {} (node /softgrip)",
             sink.domain_id().unwrap_or_default()
         );
@@ -166,16 +194,35 @@ fn attach_sinks(
     Ok((sim, handles))
 }
 
-/// Ctrl-C sets [`STOP`] (the loop ends after the step); a second one exits at once.
-fn install_ctrlc() {
-    if let Err(e) = ctrlc::set_handler(|| {
-        if STOP.swap(true, Ordering::SeqCst) {
-            // Second Ctrl-C: give up at once (closed chunks stay readable: `softgrip inspect`
-            // recovers them).
-            std::process::exit(i32::from(INTERRUPTED_EXIT_CODE));
-        }
-    }) {
-        eprintln!("warning: no Ctrl-C handler ({e}); Ctrl-C will not finish the recording");
+/// The files a run reads: the scene, its meshes and its measured curves.
+fn inputs(scene_path: Option<&Path>, scene: &Scene) -> Vec<PathBuf> {
+    let Some(path) = scene_path else {
+        return Vec::new();
+    };
+    let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let f = scene.file();
+    let meshes = f
+        .bodies
+        .iter()
+        .flat_map(|b| &b.shapes)
+        .filter_map(|s| s.file.as_deref());
+    let curves = f.fingertips.iter().filter_map(|t| match &t.level {
+        LevelSpec::Tabulated(p) => Some(p.as_str()),
+        LevelSpec::Named(_) => None,
+    });
+    std::iter::once(path.to_path_buf())
+        .chain(meshes.chain(curves).map(|p| base.join(p)))
+        .collect()
+}
+
+/// Test-only: `SOFTGRIP_TEST_SLOW_START_MS=N` waits N ms before the scene is read (a slow
+/// start, to test that a signal then still finishes the run). Not for users.
+fn slow_start_for_tests() {
+    if let Some(ms) = std::env::var("SOFTGRIP_TEST_SLOW_START_MS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+    {
+        std::thread::sleep(Duration::from_millis(ms));
     }
 }
 
@@ -193,10 +240,11 @@ struct Done {
     end: RunEnd,
 }
 
-/// Steps the scene's duration (or until Ctrl-C), paced at `pace` times real time (0 = as fast
+/// Steps the scene's duration (or until a signal in `stop`), paced at `pace` times real time (0 = as fast
 /// as possible), with progress on stderr on long runs; adds every step to `digest`.
 fn step_loop(
     sim: &mut Simulation,
+    stop: &Stop,
     dt: f64,
     pace: f64,
     panic_at: Option<u64>,
@@ -208,6 +256,10 @@ fn step_loop(
     let mut steps = 0;
     let mut end = RunEnd::Complete;
     while steps < total {
+        if let Some(sig) = stop.received() {
+            end = RunEnd::Interrupted(sig);
+            break;
+        }
         sim.step();
         steps += 1;
         if let Some(d) = digest.as_deref_mut() {
@@ -216,9 +268,13 @@ fn step_loop(
         if pace > 0.0 {
             // Real-time pacing (for live publishing): wait until the wall clock reaches the
             // simulated time of this step, divided by the factor.
-            let due = start + Duration::from_secs_f64(steps as f64 * dt / pace);
+            // (A wait too long for a `Duration` is no wait at all: the factor's range keeps it
+            // far from that.)
+            let wait = Duration::try_from_secs_f64(steps as f64 * dt / pace).ok();
             let now = Instant::now();
-            if due > now {
+            if let Some(due) = wait.and_then(|w| start.checked_add(w))
+                && due > now
+            {
                 std::thread::sleep(due - now);
             }
         }
@@ -226,10 +282,6 @@ fn step_loop(
             panic!("{PANIC_AT_STEP_VAR}: test panic after step {steps}");
         }
         progress.show(steps, total);
-        if STOP.load(Ordering::SeqCst) && steps < total {
-            end = RunEnd::Interrupted;
-            break;
-        }
     }
     let wall = start.elapsed();
     progress.finish();
@@ -283,21 +335,29 @@ impl Progress {
 /// The interruption, each fingertip's summary, and the wall time.
 fn print_summary(sim: &Simulation, done: &Done) {
     let (steps, total) = (done.steps, done.total);
-    if done.end == RunEnd::Interrupted {
-        println!(
-            "interrupted at t = {:.4} s (step {steps} of {total})",
-            steps as f64 * done.dt
+    if let RunEnd::Interrupted(sig) = done.end {
+        outln!(
+            "interrupted at t = {:.4} s (step {steps} of {total}) by {}",
+            steps as f64 * done.dt,
+            crate::signals::name(sig)
         );
     }
     for (_, tip) in &sim.world.resource::<Summary>().tips {
-        println!("fingertip {tip}");
+        outln!("fingertip {tip}");
     }
     let sim_time = steps as f64 * done.dt;
-    println!(
-        "wall time {:.3} s, simulated {:.3} s, real-time factor {:.1}",
-        done.wall.as_secs_f64(),
-        sim_time,
-        sim_time / done.wall.as_secs_f64().max(1e-12)
+    let wall = done.wall.as_secs_f64();
+    // `sig` and `si` print "n/a" rather than inf or NaN (a wall time below the clock's
+    // resolution, a huge dt).
+    outln!(
+        "wall time {}, simulated {}, real-time factor {}",
+        si(wall, "s"),
+        si(sim_time, "s"),
+        sig(if wall > 0.0 {
+            sim_time / wall
+        } else {
+            f64::NAN
+        })
     );
 }
 
@@ -305,9 +365,11 @@ fn print_summary(sim: &Simulation, done: &Done) {
 fn print_ros2(stats: Option<Arc<Mutex<Option<PublisherStats>>>>) {
     let published = stats.and_then(|h| *h.lock().unwrap_or_else(|e| e.into_inner()));
     if let Some(s) = published {
-        println!(
+        outln!(
             "ros2: {} steps published, {} dropped (queue full), {} publish failures",
-            s.published, s.dropped, s.publish_failures
+            s.published,
+            s.dropped,
+            s.publish_failures
         );
     }
 }
@@ -325,7 +387,7 @@ fn print_recording(
     };
     let size = std::fs::metadata(out).map(|m| m.len()).unwrap_or(0);
     let wall = done.wall.as_secs_f64();
-    println!(
+    outln!(
         "recorded {} of {} steps (every {every}) to {}: {} messages, {} chunks, {} bytes; writing took {:.1} ms ({:.1} % of the wall time)",
         r.frames_written,
         done.steps,

@@ -39,14 +39,15 @@ pub struct SlipStarted {
     pub time: f64,
 }
 
-/// A contact's compression went past its law's validity range (`Regime::Extended`).
+/// A contact's compression went past its law's validity range in some substep of the step
+/// (`TipContact::validity_exceeded`), and had not in the step before: one per excursion.
 #[derive(Message, Debug, Clone, Copy, PartialEq)]
 pub struct ValidityExcursion {
     /// The contact's entity.
     pub contact: Entity,
     /// The fingertip entity.
     pub fingertip: Entity,
-    /// Compression ratio reached [-].
+    /// Largest compression ratio of the step (`TipContact::max_x`) [-].
     pub x: f64,
     /// The law's validity limit [-].
     pub x_max: f64,

@@ -1,10 +1,20 @@
 //! [`Summary`]: per-fingertip peaks, slips, validity excursions and the grip at the commanded
 //! depth, accumulated by [`accumulate_summary`].
+//!
+//! One definition of each figure, over every substep of every step (the run summary, the
+//! recording's `softgrip_run_summary` and `softgrip inspect` use the same):
+//! - peak force: the largest `TipContact::peak_normal_force` (a substep's normal force);
+//! - peak x: the largest `TipContact::max_x` (the compression at the start of any substep or
+//!   the end of the step, over R); the two are independent maxima: in an impact the force
+//!   peaks before the compression does;
+//! - validity excursions: steps in which a contact's `validity_exceeded` (past the law's range
+//!   in any substep) is set and was not in the step before; slips likewise with `sliding`.
 
 use std::collections::BTreeMap;
 use std::fmt;
 
 use bevy_ecs::prelude::{Entity, MessageReader, Name, Query, Res, ResMut, Resource, With};
+use softgrip_record::units::{si, sig};
 use softgrip_scene::Phase;
 
 use crate::components::Fingertip;
@@ -17,11 +27,12 @@ use crate::resources::Physics;
 pub struct TipSummary {
     /// Fingertip name.
     pub name: String,
-    /// Largest normal force of any contact of the fingertip (substep peak) \[N\].
+    /// Largest normal force of any contact of the fingertip in any substep \[N\].
     pub peak_force: f64,
-    /// Largest compression ratio x = delta / R [-].
+    /// Largest compression ratio x = delta / R of any contact in any substep (including the
+    /// end of each step) [-]; a maximum of its own, not x at the peak force.
     pub peak_x: f64,
-    /// Contact radius at the largest compression \[m\].
+    /// Contact radius at the largest compression (the law's at it) \[m\].
     pub peak_radius: f64,
     /// Slip events (`SlipStarted`).
     pub slips: u32,
@@ -107,9 +118,9 @@ pub fn accumulate_summary(
         };
         let s = summary.entry(tip, name.as_str());
         s.peak_force = s.peak_force.max(c.peak_normal_force);
-        if c.x > s.peak_x {
-            s.peak_x = c.x;
-            s.peak_radius = c.patch().radius;
+        if c.max_x > s.peak_x {
+            s.peak_x = c.max_x;
+            s.peak_radius = c.law().patch(c.max_delta).radius;
         }
     }
     for m in slips.read() {
@@ -155,19 +166,20 @@ impl fmt::Display for TipSummary {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}: peak force {:.4} N, peak x {:.4}, peak contact radius {:.3} mm, slips {}, validity excursions {}",
+            "{}: peak force {}, peak x {}, peak contact radius {}, slips {}, validity excursions {}",
             self.name,
-            self.peak_force,
-            self.peak_x,
-            self.peak_radius * 1e3,
+            si(self.peak_force, "N"),
+            sig(self.peak_x),
+            si(self.peak_radius, "m"),
             self.slips,
             self.validity_excursions
         )?;
         if let (Some(d), Some(force)) = (self.commanded_depth, self.squeeze_force) {
             write!(
                 f,
-                ", squeeze {force:.4} N at commanded depth {:.4} mm",
-                d * 1e3
+                ", squeeze {} at commanded depth {}",
+                si(force, "N"),
+                si(d, "m")
             )?;
         }
         Ok(())

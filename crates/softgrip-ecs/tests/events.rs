@@ -9,7 +9,6 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use common::Probe;
-use softgrip_law::Regime;
 
 use bevy_ecs::prelude::{IntoScheduleConfigs, Message, Messages, World};
 use softgrip_ecs::{
@@ -73,7 +72,7 @@ fn each_transition_writes_one_message() {
         let mut now = HashMap::new();
         for c in &f.contacts {
             let key = (c.fingertip.clone(), c.other.clone());
-            let (sliding, extended) = (c.contact.sliding, c.contact.regime == Regime::Extended);
+            let (sliding, extended) = (c.contact.sliding, c.contact.validity_exceeded);
             let (was_sliding, was_extended) = match last.get(&key) {
                 Some(&s) => s,
                 None => {

@@ -60,8 +60,11 @@ pub struct TipContact {
     /// Largest normal force of any substep of the step \[N\] (an impact's peak; equals
     /// `normal_force` for an unsplit step).
     pub peak_normal_force: f64,
-    /// Largest compression at the start of any substep of the step \[m\].
+    /// Largest compression of the step \[m\]: the maximum over the start of every substep and
+    /// the end of the step, so `max_delta >= delta` always.
     pub max_delta: f64,
+    /// Largest compression ratio of the step, `max_delta / R` [-] (`>= x`).
+    pub max_x: f64,
     /// Time in contact (compression > 0) during the step \[s\].
     pub contact_duration: f64,
     pub(crate) model: Arc<Model>,
@@ -217,7 +220,8 @@ fn add(e: &mut Accum, row: &Row, delta: f64, delta_end: f64, h: f64) {
     e.sliding |= row.sliding;
     e.extended |= row.extended;
     e.peak_force = e.peak_force.max(row.jn / h);
-    e.max_delta = e.max_delta.max(delta);
+    // The end of the substep too: the last substep's end is the step's `delta`.
+    e.max_delta = e.max_delta.max(delta).max(delta_end);
     if delta > 0.0 {
         e.duration += h;
     }
@@ -252,6 +256,7 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
             validity_exceeded: a.extended || resp.regime == Regime::Extended,
             peak_normal_force: a.peak_force,
             max_delta: a.max_delta,
+            max_x: a.max_delta / a.model.radius,
             contact_duration: a.duration,
             model: a.model,
         });

@@ -11,11 +11,13 @@ pub mod metadata;
 pub mod msgs;
 mod recorder;
 mod recording;
+mod recover;
 pub mod schema;
 pub mod sink;
 mod step;
 mod step_messages;
 pub mod topics;
+pub mod units;
 pub mod visuals;
 
 pub use convert::{StepConverter, WORLD_FRAME, arrow_scale, soft_contact_msg, tactile_image};
@@ -33,6 +35,7 @@ pub use recorder::{
     RecordingStats,
 };
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
+pub use recover::{RecoverReport, recover};
 pub use sink::{
     BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, ShapeGeometry, ShapeInfo,
     SinkError, StepFrame, StepSink, TactileSample, WrenchSample,

@@ -2,6 +2,8 @@
 //! recovering every complete chunk of a file whose writer was killed.
 
 use std::collections::{BTreeMap, HashMap};
+use std::fs::File;
+use std::io::{BufReader, Read, Seek, SeekFrom};
 use std::path::Path;
 
 use mcap::records::Record;
@@ -87,6 +89,8 @@ struct Scan {
     channels: BTreeMap<u16, Channel>,
     metadata: BTreeMap<String, BTreeMap<String, String>>,
     messages: Vec<RecordedMessage>,
+    /// The summary's statistics record (a finished file).
+    statistics: Option<mcap::records::Statistics>,
 }
 
 impl Scan {
@@ -111,6 +115,7 @@ impl Scan {
             Record::Metadata(m) => {
                 self.metadata.insert(m.name, m.metadata);
             }
+            Record::Statistics(st) => self.statistics = Some(st),
             Record::Message { header, data } => {
                 let Some(channel) = self.channels.get(&header.channel_id) else {
                     return Err(ScanStop::Damaged(format!(
@@ -146,36 +151,49 @@ impl Scan {
 }
 
 impl Scan {
-    /// Reads every record of `bytes` (a whole file, or its complete records when `finished` is
-    /// false), decompressing chunks. Each chunk's CRC is checked before any of its records is
-    /// used, so a damaged chunk adds nothing; record and chunk sizes are bounded so a corrupt
-    /// length cannot exhaust memory.
-    fn read(&mut self, bytes: &[u8], finished: bool) -> Result<(), ScanStop> {
+    /// Reads every record of `src` (a whole file, or its complete records when `finished` is
+    /// false), decompressing chunks, in pieces of at most 64 KiB at a time beyond the record
+    /// being read. Every CRC the file carries is checked (each chunk's before any of its
+    /// records is used, the data section's, the summary section's; attachments' when parsed);
+    /// record and chunk sizes are bounded so a corrupt length cannot exhaust memory.
+    fn read(&mut self, src: &mut impl Read, finished: bool) -> Result<(), ScanStop> {
         let options = LinearReaderOptions::default()
             .with_skip_end_magic(!finished)
             .with_emit_chunks(false)
             .with_prevalidate_chunk_crcs(true)
             .with_validate_data_section_crc(finished)
+            .with_validate_summary_section_crc(finished)
             .with_record_length_limit(MAX_RECORD_SIZE);
         let mut reader = LinearReader::new_with_options(options);
-        let mut rest = bytes;
+        let mut read = 0u64;
+        let at = |read: u64, e: &dyn std::fmt::Display| format!("{e} (read up to byte {read})");
         while let Some(event) = reader.next_event() {
             match event {
                 Ok(LinearReadEvent::ReadRequest(need)) => {
-                    let n = need.min(rest.len());
-                    reader.insert(n).copy_from_slice(&rest[..n]);
+                    let buf = reader.insert(need.min(READ_PIECE));
+                    let n = read_some(src, buf).map_err(|e| ScanStop::Damaged(e.to_string()))?;
                     reader.notify_read(n);
-                    rest = &rest[n..];
+                    read += n as u64;
                 }
                 Ok(LinearReadEvent::Record { data, opcode }) => {
                     let record = mcap::read::parse_record(opcode, data)
-                        .map_err(|e| ScanStop::Damaged(e.to_string()))?;
+                        .map_err(|e| ScanStop::Damaged(at(read, &e)))?;
                     self.apply(record)?;
                 }
-                Err(e) => return Err(ScanStop::Damaged(e.to_string())),
+                Err(e) => return Err(ScanStop::Damaged(at(read, &e))),
             }
         }
         Ok(())
+    }
+}
+
+/// Fills as much of `buf` as the source gives in one go (0 at its end).
+fn read_some(src: &mut impl Read, buf: &mut [u8]) -> std::io::Result<usize> {
+    loop {
+        match src.read(buf) {
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            r => return r,
+        }
     }
 }
 
@@ -186,27 +204,71 @@ enum ScanStop {
 
 /// Largest record or (uncompressed) chunk read [bytes] (softgrip writes 512 KiB chunks; other
 /// writers 1-4 MiB).
-const MAX_RECORD_SIZE: usize = 256 << 20;
+pub(crate) const MAX_RECORD_SIZE: usize = 256 << 20;
+
+/// Bytes handed to the MCAP reader at a time.
+const READ_PIECE: usize = 64 << 10;
 
 /// The MCAP magic, at both ends of a finished file.
 const MAGIC: &[u8] = mcap::MAGIC;
 
 impl Recording {
-    /// Reads the file at `path` (see [`from_bytes`](Self::from_bytes)).
+    /// Reads the file at `path`, streamed: the file is never read whole into memory (a
+    /// device such as `/dev/zero` is refused after its first 8 bytes), see
+    /// [`from_bytes`](Self::from_bytes) for what is checked.
     pub fn open(path: impl AsRef<Path>) -> Result<Self> {
         let path = path.as_ref();
-        let bytes = std::fs::read(path).map_err(|source| Error::Io {
+        let io = |source| Error::Io {
             path: path.to_path_buf(),
             source,
-        })?;
-        Self::from_bytes(&bytes)
+        };
+        let mut file = File::open(path).map_err(io)?;
+        let meta = file.metadata().map_err(io)?;
+        if meta.is_dir() {
+            return Err(io(std::io::Error::from(std::io::ErrorKind::IsADirectory)));
+        }
+        let mut head = [0u8; 8];
+        let n = read_full(&mut file, &mut head).map_err(io)?;
+        check_magic(&head[..n])?;
+        if !meta.is_file() {
+            // A pipe or device: its length is unknown, so it is read as a stream up to a bound.
+            let mut bytes = head.to_vec();
+            (&mut file)
+                .take(MAX_STREAM_SIZE + 1)
+                .read_to_end(&mut bytes)
+                .map_err(io)?;
+            if bytes.len() as u64 > MAX_STREAM_SIZE {
+                return Err(Error::Corrupt {
+                    reason: format!(
+                        "not a regular file and longer than {MAX_STREAM_SIZE} bytes: refused"
+                    ),
+                });
+            }
+            return Self::from_bytes(&bytes);
+        }
+        let len = meta.len();
+        let mut tail = [0u8; 8];
+        let finished = len >= 16
+            && file.seek(SeekFrom::End(-8)).is_ok()
+            && read_full(&mut file, &mut tail).is_ok_and(|k| k == 8)
+            && tail == *MAGIC;
+        file.seek(SeekFrom::Start(0)).map_err(io)?;
+        let mut src = BufReader::with_capacity(READ_PIECE, file);
+        if finished {
+            Self::read_finished(&mut src)
+        } else {
+            let (end, chunks) = complete_records_end(&mut src, len).map_err(io)?;
+            src.seek(SeekFrom::Start(0)).map_err(io)?;
+            Ok(Self::recover(&mut src.take(end), end, len, chunks))
+        }
     }
 
     /// Reads a recording from memory.
     ///
-    /// - A finished file (ends with the MCAP magic) is read whole with chunk CRCs checked and
-    ///   its summary statistics compared with what was read; any damage is
-    ///   [`Error::Corrupt`], a message that does not decode is [`Error::Decode`].
+    /// - A finished file (ends with the MCAP magic) is read whole with every CRC checked
+    ///   (chunks, data section, summary section, attachments) and its summary statistics
+    ///   compared with what was read; any damage is [`Error::Corrupt`] naming the damaged
+    ///   part, a message that does not decode is [`Error::Decode`].
     /// - An unfinished file (the writer was killed) is read up to the last complete chunk, and
     ///   [`recovery`](Self::recovery) says how much was kept and why reading stopped.
     /// - A file that does not start with the MCAP magic is [`Error::NotMcap`] (or
@@ -214,66 +276,51 @@ impl Recording {
     ///
     /// It never panics on any input.
     pub fn from_bytes(bytes: &[u8]) -> Result<Self> {
-        if bytes.len() < MAGIC.len() {
-            return Err(if MAGIC.starts_with(bytes) {
-                Error::Truncated { len: bytes.len() }
-            } else {
-                Error::NotMcap
-            });
-        }
-        if !bytes.starts_with(MAGIC) {
-            return Err(Error::NotMcap);
-        }
+        check_magic(&bytes[..bytes.len().min(MAGIC.len())])?;
         let finished = bytes.len() >= 2 * MAGIC.len() && bytes.ends_with(MAGIC);
         if finished {
-            Self::read_finished(bytes)
+            Self::read_finished(&mut &bytes[..])
         } else {
-            Ok(Self::recover(bytes))
+            let len = bytes.len() as u64;
+            let (end, chunks) = complete_records_end(&mut std::io::Cursor::new(bytes), len)
+                .expect("invariant: reading memory does not fail");
+            Ok(Self::recover(&mut &bytes[..end as usize], end, len, chunks))
         }
     }
 
-    fn read_finished(bytes: &[u8]) -> Result<Self> {
+    fn read_finished(src: &mut impl Read) -> Result<Self> {
         let corrupt = |reason: String| Error::Corrupt { reason };
-        let summary = mcap::Summary::read(bytes).map_err(|e| corrupt(format!("summary: {e}")))?;
         let mut scan = Scan::default();
-        match scan.read(bytes, true) {
+        match scan.read(src, true) {
             Ok(()) => {}
             Err(ScanStop::Damaged(reason)) => return Err(corrupt(reason)),
             Err(ScanStop::Decode(e)) => return Err(e),
         }
-        let stats = summary.and_then(|s| s.stats).unwrap_or_default();
+        let stats = scan.statistics.take().unwrap_or_default();
         let read = scan.messages.len() as u64;
         if stats.message_count != read {
             return Err(corrupt(format!(
-                "the summary counts {} messages, the data section has {read}",
+                "summary section: the statistics count {} messages, the data section has {read}",
                 stats.message_count
             )));
         }
         Ok(Self::from_scan(scan, stats.chunk_count, None))
     }
 
-    fn recover(bytes: &[u8]) -> Self {
-        // Frame the top-level records by their lengths (opcode u8, length u64, body) to find
-        // the end of the last complete one; a killed writer leaves a partial record after it.
-        let mut end = MAGIC.len();
-        let mut chunks = 0;
-        while let Some(next) = next_record_end(bytes, end) {
-            if bytes[end] == mcap::records::op::CHUNK {
-                chunks += 1;
-            }
-            end = next;
-        }
+    /// Reads the `end` bytes of complete records (`chunks` of them chunks) of an unfinished
+    /// file of `file_len` bytes.
+    fn recover(src: &mut impl Read, end: u64, file_len: u64, chunks: u32) -> Self {
         let mut scan = Scan::default();
-        let stopped_because = match scan.read(&bytes[..end], false) {
-            Ok(()) if end == bytes.len() => "the file ends without a summary and footer".into(),
+        let stopped_because = match scan.read(src, false) {
+            Ok(()) if end == file_len => "the file ends without a summary and footer".into(),
             Ok(()) => format!("incomplete record at byte {end}"),
             Err(ScanStop::Damaged(reason)) => reason,
             Err(ScanStop::Decode(e)) => e.to_string(),
         };
         let recovery = Recovery {
             chunks,
-            bytes_kept: end as u64,
-            file_len: bytes.len() as u64,
+            bytes_kept: end,
+            file_len,
             stopped_because,
         };
         Self::from_scan(scan, chunks, Some(recovery))
@@ -350,14 +397,58 @@ impl Recording {
     }
 }
 
-/// The end of the complete record starting at `offset` (opcode u8, body length u64 LE, body),
-/// if the bytes hold all of it.
-fn next_record_end(bytes: &[u8], offset: usize) -> Option<usize> {
-    let len = bytes.get(offset + 1..offset.checked_add(9)?)?;
-    let mut a = [0u8; 8];
-    a.copy_from_slice(len);
-    usize::try_from(u64::from_le_bytes(a))
-        .ok()
-        .and_then(|l| (offset + 9).checked_add(l))
-        .filter(|&end| end <= bytes.len())
+/// Largest pipe or device read as a recording [bytes] (a regular file is streamed, whatever
+/// its size).
+const MAX_STREAM_SIZE: u64 = 1 << 30;
+
+/// [`Error::NotMcap`] or [`Error::Truncated`] unless `head` (the first 8 bytes, or all there
+/// are) is the magic.
+fn check_magic(head: &[u8]) -> Result<()> {
+    if head.len() < MAGIC.len() {
+        return Err(if MAGIC.starts_with(head) {
+            Error::Truncated { len: head.len() }
+        } else {
+            Error::NotMcap
+        });
+    }
+    if head != MAGIC {
+        return Err(Error::NotMcap);
+    }
+    Ok(())
+}
+
+/// Reads until `buf` is full or the source ends; the bytes read.
+fn read_full(src: &mut impl Read, buf: &mut [u8]) -> std::io::Result<usize> {
+    let mut n = 0;
+    while n < buf.len() {
+        match read_some(src, &mut buf[n..])? {
+            0 => break,
+            k => n += k,
+        }
+    }
+    Ok(n)
+}
+
+/// The end of the last complete top-level record of a file of `len` bytes (after the magic;
+/// opcode u8, body length u64 LE, body): a killed writer leaves a partial record after it.
+/// Only the 9-byte record heads are read; bodies are skipped by seeking. Also the number of
+/// chunks among those records.
+fn complete_records_end(src: &mut (impl Read + Seek), len: u64) -> std::io::Result<(u64, u32)> {
+    let mut end = MAGIC.len() as u64;
+    let mut chunks = 0;
+    loop {
+        src.seek(SeekFrom::Start(end))?;
+        let mut head = [0u8; 9];
+        if read_full(src, &mut head)? < 9 {
+            return Ok((end, chunks));
+        }
+        let body = u64::from_le_bytes(head[1..].try_into().expect("invariant: 8 bytes"));
+        match (end + 9).checked_add(body) {
+            Some(next) if next <= len => end = next,
+            _ => return Ok((end, chunks)),
+        }
+        if head[0] == mcap::records::op::CHUNK {
+            chunks += 1;
+        }
+    }
 }

@@ -15,6 +15,7 @@ use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_ecs::softgrip_record::{Message, Recording, topics};
 
 use super::{fingertips, open, seconds};
+use crate::files::check_output;
 
 /// Arguments of `softgrip export`.
 #[derive(Debug, Clone, clap::Args)]
@@ -24,7 +25,13 @@ pub struct ExportArgs {
     /// Directory for the CSV files (created if needed).
     #[arg(long, value_name = "DIR")]
     pub csv: PathBuf,
+    /// Overwrite CSV files that exist in DIR.
+    #[arg(long)]
+    pub force: bool,
 }
+
+/// The files `export` writes into its directory.
+const FILES: [&str; 4] = ["contacts.csv", "wrenches.csv", "poses.csv", "clock.csv"];
 
 /// A row of `contacts.csv`: every field of a `SoftContactMsg`, at its log time.
 #[derive(Serialize, Default)]
@@ -215,6 +222,9 @@ impl<R: Serialize + Default> Table<R> {
 
 /// Runs the command; prints the files written and their rows.
 pub fn export(args: &ExportArgs) -> Result<()> {
+    for name in FILES {
+        check_output(&args.csv.join(name), &[&args.file], args.force)?;
+    }
     let rec = open(&args.file)?;
     std::fs::create_dir_all(&args.csv)
         .with_context(|| format!("creating {}", args.csv.display()))?;
@@ -225,16 +235,16 @@ pub fn export(args: &ExportArgs) -> Result<()> {
         );
     }
     for (name, rows) in write_all(&rec, &args.csv)? {
-        println!("{}: {rows} rows", args.csv.join(name).display());
+        crate::out::outln!("{}: {rows} rows", args.csv.join(name).display());
     }
     Ok(())
 }
 
 fn write_all(rec: &Recording, dir: &Path) -> Result<Vec<(&'static str, usize)>> {
-    let mut contacts = Table::<ContactRow>::create(dir, "contacts.csv")?;
-    let mut wrenches = Table::<WrenchRow>::create(dir, "wrenches.csv")?;
-    let mut poses = Table::<PoseRow>::create(dir, "poses.csv")?;
-    let mut clock = Table::<ClockRow>::create(dir, "clock.csv")?;
+    let mut contacts = Table::<ContactRow>::create(dir, FILES[0])?;
+    let mut wrenches = Table::<WrenchRow>::create(dir, FILES[1])?;
+    let mut poses = Table::<PoseRow>::create(dir, FILES[2])?;
+    let mut clock = Table::<ClockRow>::create(dir, FILES[3])?;
     let names = fingertips(rec);
     let tip_of_topic = |topic: &str| {
         names

@@ -6,6 +6,8 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::Result;
+use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+use softgrip_ecs::softgrip_record::units::{si, sig};
 use softgrip_ecs::softgrip_record::{Recording, RecordingInfo, TipRunSummary};
 
 use super::{contact_radius, contacts, fingertips, info, laws, open, seconds};
@@ -32,7 +34,7 @@ struct TipFindings {
 /// Runs the command.
 pub fn inspect(args: &InspectArgs) -> Result<()> {
     let rec = open(&args.file)?;
-    print!("{}", report(&args.file.display().to_string(), &rec));
+    crate::out::text(&report(&args.file.display().to_string(), &rec));
     Ok(())
 }
 
@@ -143,11 +145,17 @@ fn findings(rec: &Recording) -> HashMap<String, TipFindings> {
             f.peak_force = c.peak_normal_force;
             f.peak_force_t = t;
         }
-        if c.ratio_x > f.peak_x {
-            f.peak_x = c.ratio_x;
+        // Peak x: the step's largest compression (`max_compression`, every substep and the
+        // end of the step) over R, as the run summary counts it.
+        let law = law_cache.get(&c.fingertip).and_then(Option::as_ref);
+        let x = max_x(c, law);
+        if x > f.peak_x {
+            f.peak_x = x;
             f.peak_x_t = t;
-            let law = law_cache.get(&c.fingertip).and_then(Option::as_ref);
-            f.peak_radius = contact_radius(c, law);
+            f.peak_radius = match law {
+                Some(l) => l.patch(c.max_compression.max(c.compression)).radius,
+                None => contact_radius(c, None),
+            };
         }
         let key = (c.fingertip.clone(), c.other.clone());
         let (was_sliding, was_past, _) = state.get(&key).copied().unwrap_or((false, false, t));
@@ -162,16 +170,29 @@ fn findings(rec: &Recording) -> HashMap<String, TipFindings> {
     found
 }
 
+/// A recorded contact's largest compression ratio of its step: `max_compression / R` (R from
+/// `compression / ratio_x`, else the law's in the metadata), never below `ratio_x`.
+fn max_x(c: &SoftContactMsg, law: Option<&softgrip_law::ContactLaw>) -> f64 {
+    let radius = (c.ratio_x > 0.0)
+        .then(|| c.compression / c.ratio_x)
+        .or_else(|| law.map(|l| l.delta_max() / l.x_max()))
+        .filter(|r| r.is_finite() && *r > 0.0);
+    match radius {
+        Some(r) => (c.max_compression / r).max(c.ratio_x),
+        None => c.ratio_x,
+    }
+}
+
 /// A fingertip's two lines; `counted` is the run's own summary of it, if the file has one.
 fn write_tip(out: &mut String, tip: &str, f: &TipFindings, counted: Option<&TipRunSummary>) {
     let _ = writeln!(
         out,
-        "fingertip {tip}: peak force {:.6} N (t = {:.4} s), peak x {:.4} (t = {:.4} s), contact radius at peak x {:.4} mm",
-        f.peak_force,
+        "fingertip {tip}: peak force {} (t = {:.4} s), peak x {} (t = {:.4} s), contact radius at peak x {}",
+        si(f.peak_force, "N"),
         f.peak_force_t,
-        f.peak_x,
+        sig(f.peak_x),
         f.peak_x_t,
-        f.peak_radius * 1e3
+        si(f.peak_radius, "m")
     );
     // The run's own counts cover every step; the recording may hold every n-th only, and
     // a slip or excursion shorter than n steps falls between recorded steps.

@@ -4,10 +4,12 @@
 mod export;
 mod inspect;
 mod plot;
+mod recover;
 
 pub use export::{ExportArgs, export};
 pub use inspect::{InspectArgs, inspect};
 pub use plot::{PlotArgs, plot};
+pub use recover::{RecoverArgs, recover};
 
 use std::path::Path;
 

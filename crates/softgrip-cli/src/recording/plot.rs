@@ -11,6 +11,7 @@ use softgrip_ecs::FingertipLaw;
 use softgrip_law::{ContactLaw, Level};
 
 use super::{contact_radius, contacts, fingertips, laws, open};
+use crate::files::check_output;
 use crate::plot::style::{
     CAPTION_SIZE, FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE, draw_curve, draw_legend, ensure_font,
     series_colour,
@@ -24,6 +25,9 @@ pub struct PlotArgs {
     /// The figure (PNG).
     #[arg(short = 'o', long = "out", value_name = "FIG.png")]
     pub out: PathBuf,
+    /// Overwrite the figure if it exists.
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// One recorded sample of a fingertip's contact.
@@ -44,6 +48,17 @@ struct Column {
 
 /// Runs the command.
 pub fn plot(args: &PlotArgs) -> Result<()> {
+    check_output(&args.out, &[&args.file], args.force)?;
+    let png = args
+        .out
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !png {
+        bail!(
+            "{}: the figure is a PNG image: give a file name ending in .png",
+            args.out.display()
+        );
+    }
     let rec = open(&args.file)?;
     if rec.recovered() {
         eprintln!(
@@ -83,7 +98,7 @@ pub fn plot(args: &PlotArgs) -> Result<()> {
         rec.softgrip_metadata("origin").unwrap_or("recording")
     );
     draw(&args.out, &title, &columns)?;
-    println!("{}", args.out.display());
+    crate::out::outln!("{}", args.out.display());
     Ok(())
 }
 

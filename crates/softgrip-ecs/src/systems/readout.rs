@@ -4,7 +4,7 @@
 use std::collections::BTreeMap;
 
 use bevy_ecs::prelude::{Commands, Entity, Query, Res, ResMut};
-use softgrip_law::{ContactPatch, Regime};
+use softgrip_law::ContactPatch;
 use softgrip_rapier::TipContact;
 use softgrip_rapier::rapier3d::prelude::ColliderSet;
 
@@ -144,7 +144,7 @@ fn update(
         sc.patch = patch;
     }
     let old = (t.entity, t.sliding, t.extended);
-    (t.sliding, t.extended, t.seen) = (c.sliding, c.regime == Regime::Extended, now.step);
+    (t.sliding, t.extended, t.seen) = (c.sliding, c.validity_exceeded, now.step);
     old
 }
 
@@ -170,7 +170,7 @@ fn start(
     let t = Tracked {
         entity,
         sliding: c.sliding,
-        extended: c.regime == Regime::Extended,
+        extended: c.validity_exceeded,
         seen: now.step,
     };
     tracked.insert((sides.tip, sides.other), t);
@@ -201,11 +201,11 @@ fn write_transitions(
             time: now.time,
         });
     }
-    if c.regime == Regime::Extended && !was_extended {
+    if c.validity_exceeded && !was_extended {
         commands.write_message(ValidityExcursion {
             contact: entity,
             fingertip: sides.tip,
-            x: c.x,
+            x: c.max_x,
             x_max: c.law().x_max(),
             time: now.time,
         });
