@@ -206,20 +206,36 @@ impl ContactParams {
     }
 }
 
+/// Room the law's scales keep below `f64::MAX` (see `scales`).
+const SCALE_HEADROOM: f64 = 1e12;
+
 /// The law's scales stay finite and non-zero: the force `E* R^2`, the energy `E* R^3` and
 /// `1/R` (found by tests/fuzz_law.rs: R = 1e308 gave an infinite force scale and `response`
 /// returned inf; R = 1e-200 a zero one and `compression_for_force(0)` returned NaN).
+///
+/// Each scale keeps [`SCALE_HEADROOM`] of room below `f64::MAX`: the normalised law multiplies
+/// them by up to ~1e3 (force, stiffness past the validity range), and E* = 1.3e308 with
+/// R = 0.19 m passed an `E* R^3` check yet gave an infinite stiffness (tests/fuzz_law.rs).
 fn scales(effective_modulus: f64, radius: f64) -> Result<()> {
     let energy = effective_modulus * radius * radius * radius;
     let force = effective_modulus * radius * radius;
+    let stiffness = effective_modulus * radius;
+    let room = |v: f64| (v * SCALE_HEADROOM).is_finite();
     // force > 0: a scale that underflows to 0 made `compression_for_force(0)` NaN (0/0).
-    if energy.is_finite() && force > 0.0 && (1.0 / radius).is_finite() {
+    if !room(effective_modulus) {
+        return Err(Error::InvalidParameter {
+            field: "effective_modulus",
+            value: effective_modulus,
+            range: "small enough that 1e12 E* [Pa] is finite",
+        });
+    }
+    if room(energy) && room(force) && room(stiffness) && force > 0.0 && (1.0 / radius).is_finite() {
         Ok(())
     } else {
         Err(Error::InvalidParameter {
             field: "radius",
             value: radius,
-            range: "small enough that E* R^3 [J] is finite, large enough that E* R^2 [N] > 0",
+            range: "small enough that 1e12 E* R^3 [J] and 1e12 E* R [N/m] are finite, large enough that E* R^2 [N] > 0",
         })
     }
 }

@@ -195,3 +195,27 @@ fn radius_1e308_overflowing_the_force_scale_is_an_error() {
     );
     assert!(softgrip_law::ContactParams::try_new(m, 1e30).is_ok());
 }
+
+/// Found by tests/fuzz_law.rs (case 257 of seed 0x5eed1a3): the exact neo-Hookean radius
+/// integrates the uniaxial volume change down to sub-compressions where the bracket search of
+/// Eq. 33 started at a probe that underflowed to 0 and never moved: `evaluate` hung.
+#[test]
+fn neo_hookean_exact_radius_at_tiny_sub_compressions_returns() {
+    let m = Material::try_from_effective_modulus(5.537_434_755_495_728e11, 0.3).unwrap();
+    let p = ContactParams::try_new(m, 0.551_833_923_042_262_1).unwrap();
+    let law = ContactLaw::try_new(p, Level::NeoHookeanExact).unwrap();
+    let s = law.evaluate(0.109_650_201_182_690_99).unwrap();
+    assert!(s.patch.radius.is_finite() && s.patch.radius > 0.0, "{s:?}");
+    // a/R at x = 0.199 is close to artanh(sqrt x) = 0.47 for the full theory (MODEL.md)
+    let a = s.patch.radius / p.radius();
+    assert!((a - 0.199f64.sqrt().atanh()).abs() < 0.05, "a/R = {a}");
+}
+
+/// Found by tests/fuzz_law.rs (case 603): E* = 1.3e308 passed the scale checks and `response`
+/// returned an infinite stiffness. The effective modulus keeps 1e12 of room below f64::MAX.
+#[test]
+fn effective_modulus_1e308_is_an_error_not_an_infinite_stiffness() {
+    let m = Material::try_new(1e308, 0.49).unwrap();
+    let err = ContactParams::try_new(m, 0.187_528_446_568_229_15).unwrap_err();
+    assert!(err.to_string().contains("effective_modulus"), "{err}");
+}

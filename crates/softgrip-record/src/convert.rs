@@ -13,7 +13,9 @@ use crate::msgs::softgrip_msgs::SoftContactMsg;
 use crate::msgs::std_msgs::Header;
 use crate::msgs::tf2_msgs::TFMessage;
 use crate::msgs::visualization_msgs::Marker;
-use crate::sink::{ContactSample, FingertipInfo, SceneInfo, StepFrame, TactileSample, WrenchSample};
+use crate::sink::{
+    ContactSample, FingertipInfo, SceneInfo, StepFrame, TactileSample, WrenchSample,
+};
 use crate::step::{BodyPose, FingertipState, StepRecord};
 use crate::visuals;
 

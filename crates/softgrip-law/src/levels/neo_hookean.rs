@@ -65,6 +65,11 @@ impl Uniaxial {
             m * (j + c) + 3.0 * (1.0 + j) * cb * cb * w * j
         };
         let j_lin = -3.0 * m * x / (m + 3.0);
+        if x < X_SERIES {
+            // The series (relative error O(x)). Below it the bracket search could start at a
+            // probe that underflows to 0 and never moves (the law fuzz target hung there).
+            return j_lin;
+        }
         let (mut lo, mut hi) = (-1.0_f64, 0.0_f64);
         let mut probe = 0.5 * j_lin;
         while probe > -1.0 {
