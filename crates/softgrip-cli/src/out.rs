@@ -25,14 +25,14 @@ pub fn flush() {
     }
 }
 
-/// `println!` that never panics (see [`line`]).
+/// `println!` that never panics (see [`line()`]).
 macro_rules! outln {
     () => { $crate::out::line(format_args!("")) };
     ($($arg:tt)*) => { $crate::out::line(format_args!($($arg)*)) };
 }
 pub(crate) use outln;
 
-/// Writes `text` as it is to stdout (see [`line`]).
+/// Writes `text` as it is to stdout (see [`line()`]).
 pub fn text(text: &str) {
     line(format_args!("{}", text.strip_suffix('\n').unwrap_or(text)));
 }
