@@ -200,7 +200,7 @@ impl SoftContacts {
 
     /// Recomputes the images of the fingertips with a pad from the readout (after the step's
     /// readout is assembled; read-only for the physics). Each contact is laid on the pad of
-    /// its fingertip, and on the other's for a soft-soft pair (its direction reversed).
+    /// its fingertip (a soft-soft pair has a readout row for each of its two fingertips).
     pub(crate) fn update_tactile(&mut self, colliders: &ColliderSet) {
         for (handle, image) in &mut self.tactile {
             image.clear();
@@ -209,17 +209,12 @@ impl SoftContacts {
             };
             let q = pose.rotation;
             let q = [q.x as f64, q.y as f64, q.z as f64, q.w as f64];
-            for c in &self.contacts {
+            // A soft-soft pair is in the readout once per fingertip (each with its own normal),
+            // so every pad takes only the rows of its own fingertip.
+            for c in self.contacts.iter().filter(|c| c.fingertip == *handle) {
                 // The patch's direction from the fingertip's centre: against the normal
-                // (other -> fingertip) on the fingertip's side, along it on the other's.
-                let sign = if c.fingertip == *handle {
-                    -1.0
-                } else if c.other == *handle {
-                    1.0
-                } else {
-                    continue;
-                };
-                let local = rotate_inverse(q, c.normal.map(|n| sign * n));
+                // (other -> fingertip).
+                let local = rotate_inverse(q, c.normal.map(|n| -n));
                 let Some(center) = image.grid.coordinates(local) else {
                     continue;
                 };
