@@ -2,7 +2,8 @@
 //! recordings as an MCAP reader softgrip did not write decodes them (Python `mcap` +
 //! `mcap-ros2-support`, `crates/softgrip-record/tests/python/read_recording.py`): one tf tree
 //! rooted at `world` with no repeated child in any message; every frame id used exists; the
-//! world is z-up (gravity and the table's normal); every body has a marker; a patch radius > 0
+//! world is z-up (gravity and the table's normal); every body has a marker; max_compression >=
+//! compression in every contact; a patch radius > 0
 //! whenever a contact exists and `mean_pressure · π a² = normal_force`; wrenches in the
 //! fingertip frames; stamps exact multiples of dt to 1 ns; rosbag2's `offered_qos_profiles`
 //! on every channel, `/tf_static` transient-local. Needs `SOFTGRIP_PY`.
@@ -171,6 +172,11 @@ fn check(name: &str, summary: &Value, messages: &[Value], pressure: bool) -> (us
                     used.insert(c["header"]["frame_id"].as_str().unwrap().to_owned());
                     let a = f(&c["contact_radius"]);
                     assert!(a > 0.0, "{name}: a contact of radius {a} at {t} ns");
+                    let (x, x_max) = (f(&c["compression"]), f(&c["max_compression"]));
+                    assert!(
+                        x_max >= x,
+                        "{name}: max_compression {x_max} < compression {x} at {t} ns"
+                    );
                     let (fz, p) = (f(&c["normal_force"]), f(&c["mean_pressure"]));
                     if pressure {
                         assert!(

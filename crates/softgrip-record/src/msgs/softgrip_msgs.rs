@@ -52,7 +52,7 @@ ros_message! {
         pub sliding: bool,
         /// Largest normal force of any substep \[N\].
         pub peak_normal_force: f64,
-        /// Largest compression at the start of any substep \[m\].
+        /// Largest compression of any substep, the end of the step included \[m\] (>= `compression`).
         pub max_compression: f64,
         /// Time in contact during the step \[s\].
         pub contact_duration: f64,
