@@ -10,6 +10,7 @@ use crate::error::{Error, Result};
 use crate::level::{Level, LevelKind};
 use crate::levels::NormalisedLaw;
 use crate::levels::auto::{Auto, Reference};
+use crate::levels::backed::Backed;
 use crate::levels::calibrated::Calibrated;
 use crate::levels::fit::Fit;
 use crate::levels::hertz::Hertz;
@@ -19,6 +20,7 @@ use crate::levels::neo_hookean::NeoHookeanExact;
 use crate::levels::nh_table::NeoHookeanTable;
 use crate::levels::tabulated::Tabulated;
 use crate::levels::tatara::Tatara;
+use crate::material::ContactParams;
 
 /// The chosen level.
 #[derive(Debug, Clone)]
@@ -31,15 +33,21 @@ pub(crate) enum Curve {
     NeoHookeanExact(NeoHookeanExact),
     Tatara(Tatara),
     Calibrated(Calibrated),
+    Backed(Backed),
     Auto(Arc<Auto>),
     Tabulated(Arc<Tabulated>),
     Custom(Arc<dyn NormalisedLaw>),
 }
 
 impl Curve {
-    /// The built-in level `level` at Poisson ratio `nu`, validated.
-    pub(crate) fn try_new(level: Level, nu: f64) -> Result<Self> {
+    /// The built-in level `level` for `params` (its Poisson ratio and backing), validated.
+    ///
+    /// With a backing other than free, `calibrated` (and `auto`'s reference) is the backed
+    /// construction's own law; every other level is the free sphere's.
+    pub(crate) fn try_new(level: Level, params: &ContactParams) -> Result<Self> {
         level.validate()?;
+        let nu = params.poisson_ratio();
+        let backing = params.backing();
         let needs_compressible = |kind| {
             if nu < 0.5 {
                 Ok(())
@@ -65,12 +73,15 @@ impl Curve {
                 Curve::NeoHookeanExact(NeoHookeanExact::new(nu))
             }
             Level::Tatara => Curve::Tatara(Tatara::new(nu)),
-            Level::Calibrated => Curve::Calibrated(Calibrated::try_new(nu)?),
+            Level::Calibrated if backing.is_free() => Curve::Calibrated(Calibrated::try_new(nu)?),
+            Level::Calibrated => {
+                Curve::Backed(Backed::try_new(backing, params.thickness_ratio(), nu)?)
+            }
             Level::Auto { tolerance } => {
-                let reference = if nu < 0.5 {
-                    Reference::Table(Arc::new(NeoHookeanTable::new(nu)))
+                let reference = if backing.is_free() {
+                    Reference::Free(Calibrated::try_new(nu)?)
                 } else {
-                    Reference::Incompressible
+                    Reference::Backed(Backed::try_new(backing, params.thickness_ratio(), nu)?)
                 };
                 Curve::Auto(Arc::new(Auto::new(nu, tolerance, reference)))
             }
@@ -99,6 +110,7 @@ impl Curve {
             Curve::NeoHookeanExact(c) => c,
             Curve::Tatara(c) => c,
             Curve::Calibrated(c) => c,
+            Curve::Backed(c) => c,
             Curve::Auto(c) => c.as_ref(),
             Curve::Tabulated(c) => c.as_ref(),
             Curve::Custom(c) => c.as_ref(),
@@ -115,7 +127,7 @@ impl Curve {
             Curve::NeoHookean(_) => LevelKind::NeoHookean,
             Curve::NeoHookeanExact(_) => LevelKind::NeoHookeanExact,
             Curve::Tatara(_) => LevelKind::Tatara,
-            Curve::Calibrated(_) | Curve::Auto(_) => LevelKind::Calibrated,
+            Curve::Calibrated(_) | Curve::Backed(_) | Curve::Auto(_) => LevelKind::Calibrated,
             Curve::Tabulated(_) => LevelKind::Tabulated,
             Curve::Custom(_) => LevelKind::Custom,
         }
@@ -134,6 +146,7 @@ impl Curve {
             Curve::NeoHookeanExact(c) => with(c.force_stiffness(x), LevelKind::NeoHookeanExact),
             Curve::Tatara(c) => with(c.force_stiffness(x), LevelKind::Tatara),
             Curve::Calibrated(c) => with(c.force_stiffness(x), LevelKind::Calibrated),
+            Curve::Backed(c) => with(c.force_stiffness(x), LevelKind::Calibrated),
             Curve::Auto(c) => c.force_stiffness_kind(x),
             Curve::Tabulated(c) => with(c.force_stiffness(x), LevelKind::Tabulated),
             Curve::Custom(c) => with(custom_force_stiffness(c.as_ref(), x), LevelKind::Custom),

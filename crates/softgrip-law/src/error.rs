@@ -29,6 +29,17 @@ pub enum Error {
         /// Why not.
         reason: &'static str,
     },
+    /// Two soft bodies that cannot be combined into one contact law: only two free spheres
+    /// combine ([`crate::ContactParams::try_combine_params`]).
+    #[error(
+        "a soft body with backing `{first}` and one with backing `{second}` cannot be combined into one law: only two `free` soft bodies combine"
+    )]
+    IncompatibleBacking {
+        /// The first body's backing.
+        first: &'static str,
+        /// The second body's backing.
+        second: &'static str,
+    },
     /// A compression past the validity range of the level (checked API only).
     #[error(
         "compression ratio x = delta/R = {x} is outside the validity range of level `{level}` (0 <= x <= {x_max})"

@@ -67,6 +67,7 @@ struct Edge {
     k: f64,
     w: f64,
     radius: f64,
+    shape: f64,
 }
 
 /// One level of the contact law bound to a contact's parameters.
@@ -117,7 +118,7 @@ impl ContactLaw {
     /// `nu < 0.5`), or for [`Level::Tabulated`] and [`Level::Custom`], which need data
     /// ([`Error::LevelNeedsData`]: use [`tabulated`](Self::tabulated), [`custom`](Self::custom)).
     pub fn try_new(params: ContactParams, level: Level) -> Result<Self> {
-        let curve = Curve::try_new(level, params.poisson_ratio())?;
+        let curve = Curve::try_new(level, &params)?;
         Ok(Self::bind(params, level, curve))
     }
 
@@ -177,6 +178,7 @@ impl ContactLaw {
             k,
             w: finite_non_negative(c.energy(x)),
             radius: finite_non_negative(c.radius(x)),
+            shape: c.pressure_shape(x),
         };
         let (e, r) = (params.effective_modulus(), params.radius());
         Self {
@@ -313,7 +315,12 @@ impl ContactLaw {
         } else {
             e.radius * (x.min(X_FROZEN) / e.x).sqrt()
         };
-        ContactPatch::new(self.response(delta).force, rho * self.params.radius())
+        let m = if x <= e.x {
+            self.curve.as_dyn().pressure_shape(x)
+        } else {
+            e.shape
+        };
+        ContactPatch::with_shape(self.response(delta).force, rho * self.params.radius(), m)
     }
 
     /// Checked: the whole state at compression `delta` \[m\], finite and in

@@ -1,5 +1,6 @@
 #![doc = include_str!("../README.md")]
 
+mod backing;
 mod curve;
 mod error;
 pub mod fitting;
@@ -13,6 +14,7 @@ mod quadrature;
 mod root;
 mod tabulated;
 
+pub use backing::Backing;
 pub use error::{Error, Result};
 pub use law::{ContactLaw, ContactState, NormalResponse, Regime};
 pub use level::{DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, Level, LevelKind};

@@ -1,6 +1,7 @@
 //! Elastic material of a soft body, and the contact parameters of a fingertip (material and
 //! radius, or two soft bodies combined).
 
+use crate::backing::Backing;
 use crate::error::{Error, Result, positive};
 
 /// An isotropic elastic material: Young's modulus `E` and Poisson ratio `nu`.
@@ -102,6 +103,7 @@ pub struct ContactParams {
     effective_modulus: f64,
     radius: f64,
     poisson_ratio: f64,
+    backing: Backing,
 }
 
 impl ContactParams {
@@ -122,6 +124,7 @@ impl ContactParams {
             effective_modulus: material.effective_modulus(),
             radius,
             poisson_ratio: material.poisson_ratio(),
+            backing: Backing::Free,
         })
     }
 
@@ -180,7 +183,81 @@ impl ContactParams {
             radius,
             poisson_ratio: (c1 * material1.poisson_ratio() + c2 * material2.poisson_ratio())
                 / (c1 + c2),
+            backing: Backing::Free,
         })
+    }
+
+    /// Two soft bodies given by their own parameters (each a body on a rigid plane), combined as
+    /// [`try_combine`](Self::try_combine) does (`1/E* = 1/E1* + 1/E2*`, `1/R = 1/R1 + 1/R2`,
+    /// compliance-weighted nu). Only free spheres combine: the combined law is the free sphere's,
+    /// and no law exists for a bonded pad pressed on another soft body, so a backed one is
+    /// [`Error::IncompatibleBacking`].
+    ///
+    /// ```
+    /// use softgrip_law::{Backing, ContactParams, Error, Material};
+    /// let m = Material::try_new(1.0e6, 0.49).unwrap();
+    /// let free = ContactParams::try_new(m, 0.01).unwrap();
+    /// assert!(ContactParams::try_combine_params(&free, &free).is_ok());
+    /// let flat = free.with_backing(Backing::Flat).unwrap();
+    /// let err = ContactParams::try_combine_params(&free, &flat).unwrap_err();
+    /// assert!(matches!(err, Error::IncompatibleBacking { second: "flat", .. }));
+    /// ```
+    pub fn try_combine_params(first: &ContactParams, second: &ContactParams) -> Result<Self> {
+        if !(first.backing.is_free() && second.backing.is_free()) {
+            return Err(Error::IncompatibleBacking {
+                first: first.backing.name(),
+                second: second.backing.name(),
+            });
+        }
+        let m = |p: &ContactParams| {
+            Material::try_from_effective_modulus(p.effective_modulus, p.poisson_ratio)
+        };
+        Self::try_combine(m(first)?, first.radius, m(second)?, second.radius)
+    }
+
+    /// The same contact with the fingertip built as `backing`. A [`Backing::Core`] needs a
+    /// finite skin thickness `0 < t < R` \[m\] ([`Error::InvalidParameter`] naming `thickness`
+    /// otherwise).
+    ///
+    /// ```
+    /// use softgrip_law::{Backing, ContactParams, Material};
+    /// let p = ContactParams::try_new(Material::try_new(1.0e6, 0.49).unwrap(), 0.01).unwrap();
+    /// let core = p.with_backing(Backing::Core { thickness: 0.004 }).unwrap();
+    /// assert_eq!(core.thickness_ratio(), Some(0.4));
+    /// let err = p.with_backing(Backing::Core { thickness: 0.01 }).unwrap_err();
+    /// assert!(err.to_string().contains("`thickness` must be"));
+    /// ```
+    pub fn with_backing(self, backing: Backing) -> Result<Self> {
+        if let Backing::Core { thickness } = backing {
+            if !(thickness > 0.0 && thickness < self.radius && thickness.is_finite()) {
+                return Err(Error::InvalidParameter {
+                    field: "thickness",
+                    value: thickness,
+                    range: "finite and in (0, R) m, R the fingertip's outer radius",
+                });
+            }
+            // t/R must be representable away from 0 and 1 (the law is a function of t/R).
+            let ratio = thickness / self.radius;
+            if !(ratio > 0.0 && ratio < 1.0) {
+                return Err(Error::InvalidParameter {
+                    field: "thickness",
+                    value: thickness,
+                    range: "in (0, R) m with t/R strictly between 0 and 1",
+                });
+            }
+        }
+        Ok(Self { backing, ..self })
+    }
+
+    /// How the fingertip is built ([`Backing::Free`] unless set by
+    /// [`with_backing`](Self::with_backing)).
+    pub fn backing(&self) -> Backing {
+        self.backing
+    }
+
+    /// Skin thickness over outer radius t/R [-] of a [`Backing::Core`], else `None`.
+    pub fn thickness_ratio(&self) -> Option<f64> {
+        self.backing.thickness().map(|t| t / self.radius)
     }
 
     /// Parameters given directly: E* \[Pa\] (finite, > 0), R \[m\] (finite, > 0), nu [-]

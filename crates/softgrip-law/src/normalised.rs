@@ -66,4 +66,12 @@ pub trait NormalisedLaw: Send + Sync + Debug {
 
     /// Largest compression ratio of the validity range [-]: finite, in `(0, 4]`.
     fn x_max(&self) -> f64;
+
+    /// Exponent `m` [-] of the pressure profile `p(r) = p0 (1 - r^2/a^2)^m` at `x` in
+    /// `(0, x_max]`, in `[0, 2]` (`p0 = (m + 1) F / (pi a^2)`, so the profile carries the force
+    /// exactly). The default is Hertz's `1/2`.
+    fn pressure_shape(&self, x: f64) -> f64 {
+        let _ = x;
+        0.5
+    }
 }

@@ -12,38 +12,36 @@
 //! exact integral. Correcting by a line at most doubles the raw error, hence the half
 //! tolerance; the tests check the result against the full theory on a fine grid.
 
-use std::sync::Arc;
-
 use super::NormalisedLaw;
+use super::backed::Backed;
+use super::calibrated::Calibrated;
 use super::fit::Fit;
 use super::hertz::Hertz;
 use super::incompressible::Incompressible;
-use super::nh_table::NeoHookeanTable;
 use crate::level::{DEFAULT_FIT_K, LevelKind};
 use crate::quadrature::integrate;
 
-/// The reference of `Auto`: the full theory, which at `nu = 0.5` is the incompressible law.
+/// The reference of `Auto`: the most accurate level of the construction, `calibrated` (within
+/// its stated error of the finite elements), so that `Auto` at tolerance `tol` is within `tol`
+/// plus calibrated's own error of the FE truth.
 #[derive(Debug, Clone)]
 pub(crate) enum Reference {
-    /// Tabulated compressible theory (`nu < 0.5`).
-    Table(Arc<NeoHookeanTable>),
-    /// `nu = 0.5`.
-    Incompressible,
+    /// The free sphere's calibrated level.
+    Free(Calibrated),
+    /// A backed fingertip's calibrated level.
+    Backed(Backed),
 }
 
 impl Reference {
     fn curve(&self) -> &dyn NormalisedLaw {
         match self {
-            Reference::Table(t) => t.as_ref(),
-            Reference::Incompressible => &Incompressible,
+            Reference::Free(c) => c,
+            Reference::Backed(b) => b,
         }
     }
 
     fn kind(&self) -> LevelKind {
-        match self {
-            Reference::Table(_) => LevelKind::NeoHookean,
-            Reference::Incompressible => LevelKind::Incompressible,
-        }
+        LevelKind::Calibrated
     }
 }
 
@@ -82,8 +80,8 @@ impl Candidate {
             Candidate::Hertz => super::hertz(x),
             Candidate::Fit(f) => f.force_stiffness(x),
             Candidate::Incompressible => Incompressible.force_stiffness(x),
-            Candidate::Reference(Reference::Table(t)) => t.force_stiffness(x),
-            Candidate::Reference(Reference::Incompressible) => Incompressible.force_stiffness(x),
+            Candidate::Reference(Reference::Free(c)) => c.force_stiffness(x),
+            Candidate::Reference(Reference::Backed(b)) => b.force_stiffness(x),
         }
     }
 }
@@ -241,8 +239,12 @@ impl NormalisedLaw for Auto {
     }
 
     fn radius(&self, x: f64) -> f64 {
-        // The full theory's radius: continuous whatever level serves the force.
+        // The reference's radius: continuous whatever level serves the force.
         self.reference.curve().radius(x)
+    }
+
+    fn pressure_shape(&self, x: f64) -> f64 {
+        self.reference.curve().pressure_shape(x)
     }
 
     fn x_max(&self) -> f64 {

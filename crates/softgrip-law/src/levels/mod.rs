@@ -2,7 +2,9 @@
 //! ratio `x = delta / R`, implementing [`crate::NormalisedLaw`]. One level per file.
 
 pub(crate) mod auto;
+pub(crate) mod backed;
 pub(crate) mod calibrated;
+pub(crate) mod dual;
 pub(crate) mod fit;
 pub(crate) mod hertz;
 pub(crate) mod incompressible;
