@@ -71,7 +71,7 @@ impl ContactPatch {
 
     /// Pressure p(r) \[Pa\] at distance `r` \[m\] from the centre; 0 outside the patch.
     pub fn pressure_at(&self, r: f64) -> f64 {
-        if self.radius <= 0.0 || !(r.abs() < self.radius) {
+        if self.radius <= 0.0 || r.is_nan() || r.abs() >= self.radius {
             return 0.0;
         }
         let s = r / self.radius;
