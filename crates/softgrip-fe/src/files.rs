@@ -33,17 +33,27 @@ pub struct FeFile {
     pub nu: Option<f64>,
     /// What it holds.
     pub about: &'static str,
+    /// The construction it models: `free` (a sphere between two plates), `flat` (a hemisphere
+    /// bonded at its flat face) or `core` (a skin over a rigid core).
+    pub geometry: &'static str,
+    /// For `core`: skin thickness over outer radius t/R [-].
+    pub thickness_ratio: Option<f64>,
     text: &'static str,
 }
 
 /// One row of [`FILES`]: the path (relative to `tests/data/fe/`), schema, nu and description.
 macro_rules! fe_file {
     ($path:literal, $schema:ident, $nu:expr, $about:literal) => {
+        fe_file!($path, $schema, $nu, $about, "free", None)
+    };
+    ($path:literal, $schema:ident, $nu:expr, $about:literal, $geometry:literal, $t:expr) => {
         FeFile {
             path: $path,
             schema: Schema::$schema,
             nu: $nu,
             about: $about,
+            geometry: $geometry,
+            thickness_ratio: $t,
             text: include_str!(concat!("../../../tests/data/fe/", $path)),
         }
     };
@@ -88,6 +98,166 @@ pub const FILES: &[FeFile] = &[
         Some(0.49),
         "nu = 0.49 on the R/30, R/60 and R/120 meshes at seven x"
     ),
+    fe_file!(
+        "free/force_nu0.3.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE (tools/fe), free sphere, nu = 0.3, x = 0.01..0.53",
+        "free",
+        None
+    ),
+    fe_file!(
+        "free/force_nu0.4.csv",
+        Force,
+        Some(0.4),
+        "softgrip's own FE (tools/fe), free sphere, nu = 0.4, x = 0.01..0.78",
+        "free",
+        None
+    ),
+    fe_file!(
+        "free/force_nu0.45.csv",
+        Force,
+        Some(0.45),
+        "softgrip's own FE (tools/fe), free sphere, nu = 0.45, x = 0.01..0.81",
+        "free",
+        None
+    ),
+    fe_file!(
+        "free/force_nu0.49.csv",
+        Force,
+        Some(0.49),
+        "softgrip's own FE (tools/fe), free sphere, nu = 0.49, x = 0.01..0.52",
+        "free",
+        None
+    ),
+    fe_file!(
+        "flat/force_nu0.3.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE, hemisphere bonded at its flat face, nu = 0.3, x = 0.01..0.53",
+        "flat",
+        None
+    ),
+    fe_file!(
+        "flat/force_nu0.4.csv",
+        Force,
+        Some(0.4),
+        "softgrip's own FE, hemisphere bonded at its flat face, nu = 0.4, x = 0.01..0.46",
+        "flat",
+        None
+    ),
+    fe_file!(
+        "flat/force_nu0.48.csv",
+        Force,
+        Some(0.48),
+        "softgrip's own FE, hemisphere bonded at its flat face, nu = 0.48, x = 0.01..0.44",
+        "flat",
+        None
+    ),
+    fe_file!(
+        "flat/force_nu0.499.csv",
+        Force,
+        Some(0.499),
+        "softgrip's own FE, hemisphere bonded at its flat face, nu = 0.499, x = 0.01..0.31",
+        "flat",
+        None
+    ),
+    fe_file!(
+        "core/force_nu0.3_t0.2.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE, skin t/R = 0.2 over a rigid core, nu = 0.3",
+        "core",
+        Some(0.2)
+    ),
+    fe_file!(
+        "core/force_nu0.48_t0.2.csv",
+        Force,
+        Some(0.48),
+        "softgrip's own FE, skin t/R = 0.2 over a rigid core, nu = 0.48",
+        "core",
+        Some(0.2)
+    ),
+    fe_file!(
+        "core/force_nu0.499_t0.2.csv",
+        Force,
+        Some(0.499),
+        "softgrip's own FE, skin t/R = 0.2 over a rigid core, nu = 0.499",
+        "core",
+        Some(0.2)
+    ),
+    fe_file!(
+        "core/force_nu0.3_t0.4.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE, skin t/R = 0.4 over a rigid core, nu = 0.3",
+        "core",
+        Some(0.4)
+    ),
+    fe_file!(
+        "core/force_nu0.48_t0.4.csv",
+        Force,
+        Some(0.48),
+        "softgrip's own FE, skin t/R = 0.4 over a rigid core, nu = 0.48",
+        "core",
+        Some(0.4)
+    ),
+    fe_file!(
+        "core/force_nu0.499_t0.4.csv",
+        Force,
+        Some(0.499),
+        "softgrip's own FE, skin t/R = 0.4 over a rigid core, nu = 0.499",
+        "core",
+        Some(0.4)
+    ),
+    fe_file!(
+        "core/force_nu0.3_t0.6.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE, skin t/R = 0.6 over a rigid core, nu = 0.3",
+        "core",
+        Some(0.6)
+    ),
+    fe_file!(
+        "core/force_nu0.48_t0.6.csv",
+        Force,
+        Some(0.48),
+        "softgrip's own FE, skin t/R = 0.6 over a rigid core, nu = 0.48",
+        "core",
+        Some(0.6)
+    ),
+    fe_file!(
+        "core/force_nu0.499_t0.6.csv",
+        Force,
+        Some(0.499),
+        "softgrip's own FE, skin t/R = 0.6 over a rigid core, nu = 0.499",
+        "core",
+        Some(0.6)
+    ),
+    fe_file!(
+        "core/force_nu0.3_t0.8.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE, skin t/R = 0.8 over a rigid core, nu = 0.3",
+        "core",
+        Some(0.8)
+    ),
+    fe_file!(
+        "core/force_nu0.48_t0.8.csv",
+        Force,
+        Some(0.48),
+        "softgrip's own FE, skin t/R = 0.8 over a rigid core, nu = 0.48",
+        "core",
+        Some(0.8)
+    ),
+    fe_file!(
+        "core/force_nu0.499_t0.8.csv",
+        Force,
+        Some(0.499),
+        "softgrip's own FE, skin t/R = 0.8 over a rigid core, nu = 0.499",
+        "core",
+        Some(0.8)
+    ),
 ];
 
 /// The file at `path` (relative to `tests/data/fe/`), if it is embedded.
@@ -106,7 +276,7 @@ pub fn file(path: &str) -> Option<&'static FeFile> {
 pub fn force_reference(nu: f64) -> Option<&'static FeFile> {
     FILES
         .iter()
-        .find(|f| f.schema == Schema::Force && f.nu == Some(nu))
+        .find(|f| f.schema == Schema::Force && f.nu == Some(nu) && !f.path.contains('/'))
 }
 
 impl FeFile {
@@ -184,6 +354,8 @@ mod tests {
             schema: Schema::Force,
             nu: Some(0.49),
             about: "a file of the next campaign",
+            geometry: "free",
+            thickness_ratio: None,
             text: "# CalculiX 2.21, free sphere\n# mesh R/60\ndelta_over_R,force_N,contact_radius_mm\n\
                    0.01,0.0054149,0.0915245\n# a comment between rows\n0.02,0.0155219,0.141968\n",
         };
@@ -208,6 +380,8 @@ mod tests {
             schema: Schema::Force,
             nu: Some(0.3),
             about: "",
+            geometry: "free",
+            thickness_ratio: None,
             text: "delta_over_R,force_N,contact_radius_mm\n0.1,abc,0.3\n",
         };
         let err = f.points().expect_err("bad number");

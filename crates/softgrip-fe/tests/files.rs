@@ -17,12 +17,17 @@ fn every_file_parses_into_its_rows_and_points() {
         .unwrap_or_else(|e| panic!("{e}"));
         let points = f.points().unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(points.len(), rows, "{}", f.path);
-        assert!(rows >= 7, "{}: {rows} rows", f.path);
+        // The thinnest, most incompressible core skin stops earliest (t/R = 0.2, nu = 0.499:
+        // x = 0.04, 4 rows).
+        assert!(rows >= 4, "{}: {rows} rows", f.path);
         for p in &points {
             assert!(p.x > 0.0 && p.x < 1.0, "{}: x = {}", f.path, p.x);
             assert!(p.force_norm > 0.0 && p.force_norm.is_finite(), "{}", f.path);
             assert!(p.radius_norm > 0.0 && p.radius_norm < 2.0, "{}", f.path);
-            assert!(p.nu == 0.3 || p.nu == 0.49, "{}: nu = {}", f.path, p.nu);
+            assert!(p.nu >= 0.3 && p.nu < 0.5, "{}: nu = {}", f.path, p.nu);
+            if let Some(nu) = f.nu {
+                assert_eq!(p.nu, nu, "{}", f.path);
+            }
         }
         // A header line and one line per row (the files carry no comments yet).
         assert_eq!(f.text().lines().count(), rows + 1 + f.provenance().len());

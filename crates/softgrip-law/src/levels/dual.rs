@@ -35,6 +35,16 @@ impl Dual {
         }
     }
 
+    /// `self^k` for a constant `k`, `v > 0`.
+    #[inline(always)]
+    pub(crate) fn powf(self, k: f64) -> Self {
+        let p = self.v.powf(k);
+        Self {
+            v: p,
+            d: k * p / self.v * self.d,
+        }
+    }
+
     /// `self * k` for a constant `k`.
     #[inline(always)]
     pub(crate) fn scale(self, k: f64) -> Self {

@@ -1,0 +1,261 @@
+//! The backed fingertips (`Backing::Flat`, `Backing::Core`) and the free sphere's extension,
+//! against softgrip's own finite elements (`tests/data/fe/{free,flat,core}/`, embedded by
+//! `softgrip-fe`), and the law's invariants for every backing. The numbers in the comments are
+//! what the current code gives.
+
+use softgrip_law::{Backing, ContactLaw, ContactParams, Error, Level, LevelKind, Regime};
+
+/// A law in normalised units (E* = 1 Pa, R = 1 m) with `backing` (thickness as t/R).
+fn law(level: Level, nu: f64, backing: Backing) -> ContactLaw {
+    let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+        .and_then(|p| p.with_backing(backing))
+        .expect("valid params");
+    ContactLaw::try_new(p, level).expect("level builds")
+}
+
+/// `(x, f)` of an embedded FE force file.
+fn fe(path: &str) -> Vec<(f64, f64)> {
+    softgrip_fe::file(path)
+        .unwrap_or_else(|| panic!("{path} is embedded"))
+        .points()
+        .expect("parses")
+        .into_iter()
+        .map(|p| (p.x, p.force_norm))
+        .collect()
+}
+
+/// Largest `|F_law / F_FE - 1|` over the FE points with `0.01 <= x <= hi`, and where.
+fn worst(law: &ContactLaw, data: &[(f64, f64)], hi: f64) -> (f64, f64) {
+    data.iter()
+        .filter(|p| p.0 >= 0.01 - 1e-9 && p.0 <= hi + 1e-9)
+        .map(|&(x, f)| ((law.response(x).force / f - 1.0).abs(), x))
+        .fold((0.0, 0.0), |m, e| if e.0 > m.0 { e } else { m })
+}
+
+#[test]
+fn free_calibrated_reaches_the_fe_reach_on_held_out_nu() {
+    // Fitted on the reference (nu = 0.3 and 0.49); softgrip's own FE at nu = 0.4 and 0.45 is
+    // not in the fit. Seen: 1.74 % (0.4, at x = 0.2) and 1.27 % (0.45) to x = 0.78.
+    for nu in [0.4, 0.45] {
+        let cal = law(Level::Calibrated, nu, Backing::Free);
+        assert!((cal.x_max() - 0.78).abs() < 1e-12, "x_max {}", cal.x_max());
+        let (w, x) = worst(&cal, &fe(&format!("free/force_nu{nu}.csv")), 0.78);
+        assert!(w < 0.02, "nu = {nu}: {:.2} % at x = {x}", w * 100.0);
+    }
+    // And the reference itself, to its reach: seen 0.72 % (0.3, to 0.61), 1.34 % (0.49, to 0.78).
+    for (nu, hi, tol) in [(0.3, 0.61, 0.01), (0.49, 0.78, 0.015)] {
+        let cal = law(Level::Calibrated, nu, Backing::Free);
+        let (w, x) = worst(&cal, &fe(&format!("force_nu{nu}.csv")), hi);
+        assert!(w < tol, "nu = {nu}: {:.2} % at x = {x}", w * 100.0);
+    }
+}
+
+#[test]
+fn flat_calibrated_is_within_1_percent_of_its_fe_at_every_nu() {
+    // Seen: 0.54 % (0.3), 0.75 % (0.4), 0.55 % (0.48), 0.63 % (0.499) over 0.01..reach; each nu
+    // held out of the fit in turn stays within 1.31 % (crate README).
+    for (nu, reach) in [(0.3, 0.53), (0.4, 0.46), (0.48, 0.44), (0.499, 0.31)] {
+        let flat = law(Level::Calibrated, nu, Backing::Flat);
+        let (w, x) = worst(&flat, &fe(&format!("flat/force_nu{nu}.csv")), reach);
+        assert!(w < 0.01, "nu = {nu}: {:.2} % at x = {x}", w * 100.0);
+        assert!(
+            flat.x_max() >= reach.min(0.44) - 1e-12,
+            "x_max {}",
+            flat.x_max()
+        );
+    }
+}
+
+#[test]
+fn flat_is_stiffer_than_the_free_sphere_as_the_issue_measured() {
+    // Issue 10: at nu = 0.49 the bonded hemisphere carries 1.04x the free sphere at x = 0.01,
+    // 1.16x at 0.1, 1.30x at 0.2 and 1.63x at 0.4 (FE over FE).
+    let flat = law(Level::Calibrated, 0.49, Backing::Flat);
+    let free = law(Level::Calibrated, 0.49, Backing::Free);
+    for (x, want) in [(0.01, 1.04), (0.1, 1.16), (0.2, 1.30), (0.4, 1.63)] {
+        let r = flat.response(x).force / free.response(x).force;
+        assert!((r / want - 1.0).abs() < 0.02, "x = {x}: {r:.3} vs {want}");
+    }
+}
+
+#[test]
+fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
+    // PROVISIONAL form (issue 10 open): seen within 6.5 % at every (nu, t/R) pair to where
+    // the FE stops; asserted at 7 % so that a regression shows.
+    for t in [0.2, 0.4, 0.6, 0.8] {
+        for nu in [0.3, 0.48, 0.499] {
+            let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
+            let data = fe(&format!("core/force_nu{nu}_t{t}.csv"));
+            let (w, x) = worst(&core, &data, core.x_max());
+            assert!(w < 0.07, "nu = {nu} t = {t}: {:.2} % at x = {x}", w * 100.0);
+        }
+    }
+}
+
+#[test]
+fn the_published_levels_with_a_backing_are_the_free_sphere_s() {
+    for level in [
+        Level::Hertz,
+        Level::fit(),
+        Level::Incompressible,
+        Level::Tatara,
+    ] {
+        let free = law(level, 0.45, Backing::Free);
+        for b in [Backing::Flat, Backing::Core { thickness: 0.4 }] {
+            let backed = law(level, 0.45, b);
+            assert_eq!(
+                backed.response(0.2).force,
+                free.response(0.2).force,
+                "{level} {b}"
+            );
+        }
+    }
+}
+
+/// Every backing and a spread of nu and t/R, including values not in the FE data.
+fn every_backed_law() -> Vec<(f64, Backing, ContactLaw)> {
+    let mut out = Vec::new();
+    for nu in [0.3, 0.33, 0.35, 0.42, 0.47, 0.49, 0.499, 0.5] {
+        let mut backings = vec![Backing::Free, Backing::Flat];
+        backings.extend([0.05, 0.2, 0.3, 0.5, 0.7, 0.95].map(|t| Backing::Core { thickness: t }));
+        for b in backings {
+            out.push((nu, b, law(Level::Calibrated, nu, b)));
+        }
+    }
+    out
+}
+
+#[test]
+fn every_backing_is_zero_at_contact_monotone_finite_and_passive() {
+    for (nu, b, law) in every_backed_law() {
+        assert_eq!(law.response(0.0).force, 0.0);
+        let n = 400;
+        let mut prev = 0.0;
+        for i in 1..=n {
+            let x = law.x_max() * f64::from(i) / f64::from(n);
+            let r = law.response(x);
+            assert_eq!(r.regime, Regime::Valid);
+            assert!(
+                r.force.is_finite() && r.stiffness.is_finite(),
+                "nu {nu} {b} x {x}"
+            );
+            assert!(
+                r.force > prev && r.stiffness > 0.0,
+                "nu {nu} {b} x {x}: {r:?}"
+            );
+            let patch = law.patch(x);
+            assert!(
+                patch.radius > 0.0 && patch.radius.is_finite(),
+                "nu {nu} {b} x {x}"
+            );
+            prev = r.force;
+        }
+    }
+}
+
+#[test]
+fn every_backing_s_stiffness_is_the_derivative_and_energy_the_integral() {
+    for (nu, b, law) in every_backed_law() {
+        let x_max = law.x_max();
+        for i in 1..10 {
+            let x = x_max * f64::from(i) / 10.0;
+            let h = 1e-6 * x_max;
+            let fd = (law.response(x + h).force - law.response(x - h).force) / (2.0 * h);
+            let k = law.response(x).stiffness;
+            assert!(
+                (fd / k - 1.0).abs() < 1e-6,
+                "nu {nu} {b} x {x}: {fd} vs {k}"
+            );
+            // Energy against a fine midpoint rule of the force.
+            let m = 20_000;
+            let w: f64 = (0..m)
+                .map(|j| law.response(x * (f64::from(j) + 0.5) / f64::from(m)).force)
+                .sum::<f64>()
+                * x
+                / f64::from(m);
+            assert!((law.energy(x) / w - 1.0).abs() < 1e-6, "nu {nu} {b} x {x}");
+        }
+    }
+}
+
+#[test]
+fn every_backing_s_inverse_round_trips() {
+    for (nu, b, law) in every_backed_law() {
+        for frac in [1e-4, 0.01, 0.3, 0.77, 1.0] {
+            let f = law.force_max() * frac;
+            let d = law.compression_for_force(f).expect("in range");
+            let back = law.response(d).force;
+            assert!((back / f - 1.0).abs() < 1e-9, "nu {nu} {b} F {f}: {back}");
+        }
+    }
+}
+
+#[test]
+fn core_tends_to_flat_as_the_core_vanishes() {
+    for nu in [0.3, 0.45, 0.49] {
+        let flat = law(Level::Calibrated, nu, Backing::Flat);
+        let core = law(Level::Calibrated, nu, Backing::Core { thickness: 0.999 });
+        for x in [0.01, 0.1, 0.3] {
+            let r = core.response(x).force / flat.response(x).force - 1.0;
+            assert!(r.abs() < 1e-4, "nu {nu} x {x}: {r:e}");
+        }
+    }
+}
+
+#[test]
+fn auto_with_a_backing_stays_within_its_tolerance_of_that_backing_s_calibrated() {
+    for b in [Backing::Flat, Backing::Core { thickness: 0.5 }] {
+        for nu in [0.3, 0.45, 0.49] {
+            let auto = law(Level::auto(), nu, b);
+            let cal = law(Level::Calibrated, nu, b);
+            assert_eq!(auto.x_max(), cal.x_max());
+            for i in 1..500 {
+                let x = cal.x_max() * (f64::from(i) + 0.2937) / 500.5;
+                let r = auto.response(x).force / cal.response(x).force - 1.0;
+                assert!(r.abs() <= 0.01, "{b} nu {nu} x {x}: {r:e}");
+            }
+            assert_eq!(auto.kind_at(0.1), LevelKind::Calibrated);
+        }
+    }
+}
+
+#[test]
+fn a_backed_fingertip_below_nu_0_3_is_a_typed_error() {
+    let p = ContactParams::try_from_parts(1.0, 1.0, 0.25)
+        .and_then(|p| p.with_backing(Backing::Flat))
+        .expect("valid params");
+    let err = ContactLaw::try_new(p, Level::Calibrated).unwrap_err();
+    assert!(
+        matches!(err, Error::IncompatibleLevel { nu, .. } if nu == 0.25),
+        "{err}"
+    );
+    assert!(err.to_string().contains("0.3 <= nu <= 0.5"), "{err}");
+    // The free sphere's levels still build there.
+    assert!(ContactLaw::try_new(p, Level::Hertz).is_ok());
+}
+
+#[test]
+fn combining_a_backed_body_is_a_typed_error() {
+    let free = ContactParams::try_from_parts(1e6, 0.01, 0.49).expect("valid");
+    let core = free
+        .with_backing(Backing::Core { thickness: 0.003 })
+        .expect("valid");
+    let err = ContactParams::try_combine_params(&core, &free).unwrap_err();
+    assert_eq!(
+        err,
+        Error::IncompatibleBacking {
+            first: "core",
+            second: "free"
+        }
+    );
+    assert!(
+        err.to_string()
+            .contains("only two `free` soft bodies combine")
+    );
+    for t in [0.0, -1e-3, 0.01, 0.02, f64::NAN, f64::INFINITY] {
+        let e = free
+            .with_backing(Backing::Core { thickness: t })
+            .unwrap_err();
+        assert!(e.to_string().contains("`thickness` must be"), "{t}: {e}");
+    }
+}
