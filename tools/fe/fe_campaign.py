@@ -54,6 +54,11 @@ def cases():
     # the free sphere's reach at nu >= 0.4 (x = 0.76-0.78), for calibrated's extension past 0.65
     # checked on nu the reference does not have; R/40 (R/30 and R/60 agree to 0.003 % at x = 0.5)
     c += [("free", nu, 0, 40, "reach") for nu in (0.4, 0.45)]
+    # held out of every fit: nu and t/R between the fitted ones, to check the calibrated forms
+    # on constructions they were not fitted to (the tests say which files are held out)
+    c += [("core", 0.4, 0.3, 40, "heldout"), ("flat", 0.45, 0, 40, "heldout"),
+          ("core", 0.45, 0.5, 40, "heldout"), ("core", 0.35, 0.7, 40, "heldout"),
+          ("flat", 0.35, 0, 40, "heldout"), ("core", 0.49, 0.3, 40, "heldout")]
     return c
 
 
@@ -191,7 +196,7 @@ def write_pressure(path, res, x):
 def cmd_export(a):
     done = {}
     for g, nu, t, h, role in cases():
-        if role not in ("main", "reach"):
+        if role not in ("main", "reach", "heldout"):
             continue
         res = load(a.runs, g, nu, t, h, role)
         if res is None or not res["rows"]:
