@@ -259,3 +259,93 @@ fn combining_a_backed_body_is_a_typed_error() {
         assert!(e.to_string().contains("`thickness` must be"), "{t}: {e}");
     }
 }
+
+/// `(r/R, p/E*)` of an FE pressure profile (R = 1 mm, mu = 1 MPa), the two nodes nearest the
+/// axis dropped (the tied on-axis face makes them jitter by up to 20 %: see the file's
+/// provenance line).
+fn profile(text: &str, nu: f64) -> Vec<(f64, f64)> {
+    let e_star = 2.0 * (1.0 + nu) / (1.0 - nu * nu); // MPa
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("r_mm"))
+        .skip(2)
+        .map(|l| {
+            let mut it = l
+                .split(',')
+                .map(|v| v.trim().parse::<f64>().expect("number"));
+            (it.next().expect("r"), it.next().expect("p") / e_star)
+        })
+        .collect()
+}
+
+macro_rules! pressure_files {
+    ($($g:literal, $nu:literal, $x:literal);* $(;)?) => {
+        [$(($g, $nu, $x, include_str!(concat!("../../../tests/data/fe/", $g, "/pressure_nu", $nu, "_d", $x, ".csv")))),*]
+    };
+}
+
+#[test]
+fn pressure_follows_the_fe_profile_for_free_and_flat() {
+    let files = pressure_files!(
+        "free", "0.3", "0.1"; "free", "0.3", "0.3"; "free", "0.3", "0.5";
+        "free", "0.4", "0.1"; "free", "0.4", "0.3"; "free", "0.4", "0.5";
+        "free", "0.45", "0.1"; "free", "0.45", "0.3"; "free", "0.45", "0.5";
+        "free", "0.49", "0.1"; "free", "0.49", "0.3"; "free", "0.49", "0.5";
+        "flat", "0.3", "0.1"; "flat", "0.3", "0.3"; "flat", "0.3", "0.5";
+        "flat", "0.4", "0.1"; "flat", "0.4", "0.3";
+        "flat", "0.48", "0.1"; "flat", "0.48", "0.3";
+        "flat", "0.499", "0.1"; "flat", "0.499", "0.3";
+    );
+    for (g, nu, x, text) in files {
+        let (nu, x): (f64, f64) = (nu.parse().expect("nu"), x.parse().expect("x"));
+        let backing = if g == "flat" {
+            Backing::Flat
+        } else {
+            Backing::Free
+        };
+        let law = law(Level::Calibrated, nu, backing);
+        let patch = law.patch(x);
+        let fe = profile(text, nu);
+        let fe_peak = fe.iter().fold(0.0_f64, |m, p| m.max(p.1));
+        let a_fe = fe.last().expect("rows").0;
+        // Target 5 %. Seen: peak within 2.3 % (free) and 2.0 % (flat); the profile within
+        // 4.4 % and 3.6 % of FE's peak over r <= 0.8 a.
+        let peak = patch.peak_pressure / fe_peak - 1.0;
+        assert!(
+            peak.abs() < 0.03,
+            "{g} nu {nu} x {x}: peak {:.2} %",
+            peak * 100.0
+        );
+        let worst = fe
+            .iter()
+            .filter(|p| p.0 <= 0.8 * a_fe)
+            .map(|&(r, p)| (patch.pressure_at(r) - p).abs() / fe_peak)
+            .fold(0.0_f64, f64::max);
+        assert!(
+            worst < 0.05,
+            "{g} nu {nu} x {x}: profile {:.2} %",
+            worst * 100.0
+        );
+    }
+}
+
+#[test]
+fn torsion_limit_comes_from_the_profile() {
+    // mu F a (m + 1) B(3/2, m + 1): 3 pi/16 for Hertz's shape, larger for a flatter patch.
+    let law = law(Level::Calibrated, 0.49, Backing::Flat);
+    let patch = law.patch(0.1);
+    assert!(patch.shape < 0.45, "{}", patch.shape);
+    let f = law.response(0.1).force;
+    let t = patch.torsion_limit(0.8, f) / (0.8 * f * patch.radius);
+    // Numerical integral of r p(r) 2 pi r dr / (F a).
+    let n = 20_000;
+    let a = patch.radius;
+    let num: f64 = (0..n)
+        .map(|i| {
+            let r = (f64::from(i) + 0.5) / f64::from(n) * a;
+            patch.pressure_at(r) * r * 2.0 * std::f64::consts::PI * r * a / f64::from(n)
+        })
+        .sum::<f64>()
+        / (f * a);
+    assert!((t / num - 1.0).abs() < 1e-4, "{t} vs {num}");
+    assert!(t > 3.0 * std::f64::consts::PI / 16.0, "{t}");
+}
