@@ -1,20 +1,30 @@
-//! `softgrip bench-law`: the speed-vs-error table of every level of the law, against the FE
-//! reference, and its two figures.
+//! `softgrip bench-law`: the speed-vs-error table of every level of the law for every
+//! construction of a fingertip (free sphere, flat-backed hemisphere, skin over a core), against
+//! that construction's FE, and its two figures.
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Duration;
 
 use anyhow::{Context, Result};
-use softgrip_law::{ContactLaw, ContactParams, Level};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Level};
 
 use crate::accuracy::{MaxError, Quantity, max_error};
 use crate::fe::{Dataset, FeCurve};
 use crate::plot::{ForcePanel, SpeedPoint, draw_force_vs_x, draw_speed_vs_error};
 use crate::timing::{ns_per_eval, sample_points};
 
-/// Poisson ratios of the FE reference.
-const NUS: [f64; 2] = [0.3, 0.49];
+/// The constructions and Poisson ratios of the table: (backing, t/R for core, nu, FE file in
+/// `tests/data/fe/`). The free sphere against the reference, the backed ones against
+/// softgrip's own FE campaign (`tools/fe/`).
+const PANELS: [(&str, f64, f64, &str); 6] = [
+    ("free", 0.0, 0.3, "force_nu0.3.csv"),
+    ("free", 0.0, 0.49, "force_nu0.49.csv"),
+    ("flat", 0.0, 0.3, "flat/force_nu0.3.csv"),
+    ("flat", 0.0, 0.48, "flat/force_nu0.48.csv"),
+    ("core", 0.4, 0.48, "core/force_nu0.48_t0.4.csv"),
+    ("core", 0.8, 0.3, "core/force_nu0.3_t0.8.csv"),
+];
 /// Range of the first force-error column, where the paper's claims are made.
 const FORCE_RANGE: (f64, f64) = (0.01, 0.5);
 /// Range of the radius-error column (the FE radius scatters by +-10 % below x = 0.05).
@@ -46,9 +56,11 @@ struct Row {
     radius: Option<MaxError>,
 }
 
-/// Everything measured at one Poisson ratio.
+/// Everything measured for one construction at one Poisson ratio.
 #[derive(Debug)]
 struct Panel {
+    /// `free`, `flat` or `core t/R = ...`.
+    construction: String,
     nu: f64,
     fe: FeCurve,
     /// FE points past `fe`'s range (nu = 0.3: the volume collapse, x > 0.61).
@@ -61,9 +73,9 @@ struct Panel {
 /// Measures, prints the table on stdout and writes the figures.
 pub fn run(args: &BenchLawArgs) -> Result<()> {
     let budget = Duration::from_millis(if args.quick { 2 } else { 50 });
-    let panels = NUS
+    let panels = PANELS
         .iter()
-        .map(|&nu| measure(nu, budget))
+        .map(|&(backing, tau, nu, path)| measure(backing, tau, nu, path, budget))
         .collect::<Result<Vec<_>>>()?;
     crate::out::text(&table(&panels, budget));
 
@@ -72,7 +84,7 @@ pub fn run(args: &BenchLawArgs) -> Result<()> {
     let force_panels: Vec<ForcePanel<'_>> = panels
         .iter()
         .map(|p| ForcePanel {
-            nu: p.nu,
+            title: format!("{}, ν = {}", p.construction, p.nu),
             laws: p.rows.iter().map(|r| (r.level.name(), &r.law)).collect(),
             fe: &p.fe.points,
             fe_beyond: &p.fe_beyond,
@@ -86,7 +98,7 @@ pub fn run(args: &BenchLawArgs) -> Result<()> {
             p.rows.iter().filter_map(|r| {
                 Some(SpeedPoint {
                     label: r.level.name().to_owned(),
-                    nu: p.nu,
+                    series: format!("{}, ν = {}", p.construction, p.nu),
                     ns_per_eval: r.ns_response,
                     force_error_pct: 100.0 * r.force_paper_range?.max_abs,
                 })
@@ -107,17 +119,30 @@ pub fn run(args: &BenchLawArgs) -> Result<()> {
     Ok(())
 }
 
-fn measure(nu: f64, budget: Duration) -> Result<Panel> {
-    let dataset = Dataset::force_at(nu).context("no FE reference at this nu")?;
-    let fe = dataset.load()?;
+fn measure(
+    backing: &str,
+    tau: f64,
+    nu: f64,
+    path: &'static str,
+    budget: Duration,
+) -> Result<Panel> {
+    let fe = Dataset::File(path).load()?;
     let fe_end = fe.points.last().map_or(0.0, |p| p.x);
-    let fe_beyond = if dataset == Dataset::ForceNu03 {
+    let fe_beyond = if path == "force_nu0.3.csv" {
         let full = Dataset::FullNu03.load()?;
         full.points.into_iter().filter(|p| p.x > fe_end).collect()
     } else {
         Vec::new()
     };
-    let params = ContactParams::try_from_parts(1.0, 1.0, nu)?;
+    let (backing, construction) = match backing {
+        "flat" => (Backing::Flat, "flat".to_owned()),
+        "core" => (
+            Backing::Core { thickness: tau },
+            format!("core t/R = {tau}"),
+        ),
+        _ => (Backing::Free, "free".to_owned()),
+    };
+    let params = ContactParams::try_from_parts(1.0, 1.0, nu)?.with_backing(backing)?;
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
     for level in Level::ALL {
@@ -151,6 +176,7 @@ fn measure(nu: f64, budget: Duration) -> Result<Panel> {
         });
     }
     Ok(Panel {
+        construction,
         nu,
         fe,
         fe_beyond,
@@ -170,17 +196,20 @@ fn table(panels: &[Panel], budget: Duration) -> String {
     // Writing to a String cannot fail.
     let _ = writeln!(
         s,
-        "Speed vs error of the contact law levels. Times: best of 5 runs over {:?} in total per \
-         cell, 1024 fixed pseudo-random x in (0, x_max), {build}. Errors: max |law - FE| / FE over \
-         the FE points (tests/data/fe/, CalculiX, compressible neo-Hookean), only where \
-         x <= x_max of the level.\n",
+        "Speed vs error of the contact law levels, for each construction of a fingertip. Times: \
+         best of 5 runs over {:?} in total per cell, 1024 fixed pseudo-random x in (0, x_max), \
+         {build}. Errors: max |law - FE| / FE over that construction's FE points \
+         (tests/data/fe/, CalculiX, compressible neo-Hookean), only where x <= x_max of the \
+         level. With a backing, `calibrated` is that construction's own law and `auto` is \
+         measured against it; every other level is the free sphere's law (a baseline).\n",
         budget
     );
     for p in panels {
         let fe_range = range_of(&p.fe.points);
         let _ = writeln!(
             s,
-            "### nu = {} (FE: {}, x = {:.2}..{:.2})\n",
+            "### {} nu = {} (FE: {}, x = {:.2}..{:.2})\n",
+            p.construction,
             p.nu,
             p.fe.dataset.file_name(),
             fe_range.0,

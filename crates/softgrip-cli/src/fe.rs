@@ -12,13 +12,11 @@ use anyhow::{Context, Result};
 /// One embedded FE data set.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Dataset {
-    /// `force_nu0.3.csv`: nu = 0.3, x = 0.01..0.61 (beyond, the material collapses in volume).
-    ForceNu03,
-    /// `force_nu0.49.csv`: nu = 0.49, x = 0.01..0.78.
-    ForceNu049,
     /// `full_nu0.3.csv`: nu = 0.3, every converged point to x = 0.85, with the smallest
     /// element Jacobian.
     FullNu03,
+    /// Any embedded force file, by its path in `tests/data/fe/` (e.g. `flat/force_nu0.48.csv`).
+    File(&'static str),
 }
 
 /// One FE point, normalised.
@@ -44,23 +42,11 @@ pub struct FeCurve {
 }
 
 impl Dataset {
-    /// The force reference at `nu`, if there is one (nu = 0.3 or 0.49).
-    pub fn force_at(nu: f64) -> Option<Self> {
-        if nu == 0.3 {
-            Some(Self::ForceNu03)
-        } else if nu == 0.49 {
-            Some(Self::ForceNu049)
-        } else {
-            None
-        }
-    }
-
     /// File name in `tests/data/fe/`.
     pub fn file_name(self) -> &'static str {
         match self {
-            Self::ForceNu03 => "force_nu0.3.csv",
-            Self::ForceNu049 => "force_nu0.49.csv",
             Self::FullNu03 => "full_nu0.3.csv",
+            Self::File(path) => path,
         }
     }
 
@@ -92,8 +78,8 @@ mod tests {
 
     #[test]
     fn embedded_files_load_with_their_ranges() {
-        let f03 = Dataset::ForceNu03.load().expect("loads");
-        let f049 = Dataset::ForceNu049.load().expect("loads");
+        let f03 = Dataset::File("force_nu0.3.csv").load().expect("loads");
+        let f049 = Dataset::File("force_nu0.49.csv").load().expect("loads");
         let full = Dataset::FullNu03.load().expect("loads");
         assert_eq!(f03.points.len(), 61);
         assert_eq!(f03.points.last().map(|p| p.x), Some(0.61));

@@ -15,12 +15,18 @@ const LEVELS: [&str; 9] = [
     "auto",
 ];
 
-/// The table's cells for `level` in the section of `nu`.
+/// The table's cells for `level` in the section of the free sphere at `nu`.
 fn cells<'a>(table: &'a str, nu: &str, level: &str) -> Vec<&'a str> {
+    section_cells(table, &format!("free nu = {nu} "), level)
+}
+
+/// The table's cells for `level` in the section whose heading starts with `heading`.
+fn section_cells<'a>(table: &'a str, heading: &str, level: &str) -> Vec<&'a str> {
+    let nu = heading;
     let section = table
         .split("### ")
-        .find(|s| s.starts_with(&format!("nu = {nu} ")))
-        .unwrap_or_else(|| panic!("no section for nu = {nu}"));
+        .find(|s| s.starts_with(heading))
+        .unwrap_or_else(|| panic!("no section {heading}"));
     let row = section
         .lines()
         .find(|l| l.starts_with(&format!("| {level} |")))
@@ -62,6 +68,34 @@ fn quick_run_prints_every_level_and_writes_two_pngs() {
         // Hertz more than 50 % off (FE is more than twice Hertz at x = 0.5).
         assert!(percent(cells(&table, nu, "fit")[4]) < 5.0, "{table}");
         assert!(percent(cells(&table, nu, "hertz")[4]) > 50.0, "{table}");
+    }
+
+    // Each backed construction has its own section; its calibrated level is that
+    // construction's law (within 1 % of the flat FE, seen 0.55 % at nu = 0.48), and the free
+    // sphere's levels are far off (Hertz more than 50 %, the free calibrated more than 10 % at
+    // x = 0.44).
+    let flat_cal = section_cells(&table, "flat nu = 0.48 ", "calibrated");
+    assert!(percent(flat_cal[5]) < 1.0, "{table}");
+    assert!(
+        percent(section_cells(&table, "flat nu = 0.48 ", "hertz")[5]) > 50.0,
+        "{table}"
+    );
+    assert!(
+        percent(section_cells(&table, "flat nu = 0.48 ", "fit")[5]) > 10.0,
+        "{table}"
+    );
+    for heading in [
+        "flat nu = 0.3 ",
+        "core t/R = 0.4 nu = 0.48 ",
+        "core t/R = 0.8 nu = 0.3 ",
+    ] {
+        for level in LEVELS {
+            assert_eq!(
+                section_cells(&table, heading, level).len(),
+                8,
+                "{heading} {level}"
+            );
+        }
     }
 
     for name in ["law_force_vs_x.png", "law_speed_vs_error.png"] {

@@ -1,5 +1,5 @@
 //! `law_force_vs_x.png`: each level's normalised force against the FE points, one column per
-//! Poisson ratio; the lower row shows the same as `chi = f / f_Hertz`, where levels that lie
+//! construction and Poisson ratio; the lower row shows the same as `chi = f / f_Hertz`, where levels that lie
 //! on top of each other in `f` come apart.
 
 use std::path::Path;
@@ -20,11 +20,11 @@ const X_PLOT: f64 = 0.86;
 /// Spacing of the points of each level's line.
 const DX: f64 = 0.0025;
 
-/// One Poisson ratio: the levels (normalised, E* = 1 and R = 1) and the FE reference.
+/// One construction at one Poisson ratio: the levels (normalised, E* = 1 and R = 1) and its FE.
 #[derive(Debug)]
 pub struct ForcePanel<'a> {
-    /// Poisson ratio nu [-].
-    pub nu: f64,
+    /// What the panel shows, e.g. `flat, ν = 0.48`.
+    pub title: String,
     /// Name and law of each level.
     pub laws: Vec<(&'a str, &'a ContactLaw)>,
     /// FE points of the force reference.
@@ -58,7 +58,7 @@ pub fn draw_force_vs_x(path: &Path, panels: &[ForcePanel<'_>]) -> Result<()> {
     root.fill(&WHITE).map_err(|e| failed(&e))?;
     let root = root
         .titled(
-            "Contact force of a soft sphere: law levels (lines) vs finite elements (points)",
+            "Contact force of a soft fingertip, by construction: law levels (lines) vs finite elements (points)",
             (FONT, TITLE_SIZE),
         )
         .map_err(|e| failed(&e))?;
@@ -83,11 +83,11 @@ fn chart<DB: DrawingBackend>(
             .fold(0.0, f64::max);
     let (caption, y_desc) = match shown {
         Shown::Force => (
-            format!("ν = {}: normalised force", panel.nu),
+            format!("{}: normalised force", panel.title),
             "f = F / (E* R²)  [-]",
         ),
         Shown::Chi => (
-            format!("ν = {}: correction to Hertz", panel.nu),
+            format!("{}: correction to Hertz", panel.title),
             "χ = F / F_Hertz  [-]",
         ),
     };

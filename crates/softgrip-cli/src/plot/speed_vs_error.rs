@@ -15,8 +15,9 @@ use super::style::{CAPTION_SIZE, FONT, LABEL_SIZE, TICK_SIZE, ensure_font, serie
 pub struct SpeedPoint {
     /// Level name, drawn beside the point.
     pub label: String,
-    /// Poisson ratio nu [-]: one colour and marker per value.
-    pub nu: f64,
+    /// The construction and Poisson ratio, e.g. `flat, ν = 0.48`: one colour and marker per
+    /// value.
+    pub series: String,
     /// Time per evaluation of force and stiffness \[ns\], > 0.
     pub ns_per_eval: f64,
     /// Largest relative force error against FE [%], > 0.
@@ -45,9 +46,12 @@ pub fn draw_speed_vs_error(path: &Path, points: &[SpeedPoint], x_desc: &str) -> 
     };
     let (x_lo, x_hi) = bounds(|p| p.ns_per_eval);
     let (y_lo, y_hi) = bounds(|p| p.force_error_pct);
-    let mut nus: Vec<f64> = shown.iter().map(|p| p.nu).collect();
-    nus.sort_by(f64::total_cmp);
-    nus.dedup();
+    let mut nus: Vec<&str> = Vec::new();
+    for p in &shown {
+        if !nus.contains(&p.series.as_str()) {
+            nus.push(&p.series);
+        }
+    }
 
     let mut chart = ChartBuilder::on(&root)
         .caption(
@@ -74,10 +78,10 @@ pub fn draw_speed_vs_error(path: &Path, points: &[SpeedPoint], x_desc: &str) -> 
 
     for (i, &nu) in nus.iter().enumerate() {
         let colour = series_colour(i);
-        let of_nu: Vec<&SpeedPoint> = shown.iter().copied().filter(|p| p.nu == nu).collect();
+        let of_nu: Vec<&SpeedPoint> = shown.iter().copied().filter(|p| p.series == nu).collect();
         let at = of_nu.iter().map(|p| (p.ns_per_eval, p.force_error_pct));
-        let label = format!("ν = {nu}");
-        // Circles for the first nu, triangles for the second: readable without colour too.
+        let label = nu.to_owned();
+        // Circles and triangles alternate: readable without colour too.
         if i % 2 == 0 {
             chart
                 .draw_series(at.map(|c| Circle::new(c, 6, colour.filled())))
@@ -107,15 +111,15 @@ pub fn draw_speed_vs_error(path: &Path, points: &[SpeedPoint], x_desc: &str) -> 
 
 type LogLog = Cartesian2d<LogCoord<f64>, LogCoord<f64>>;
 
-/// Level names beside their points, in the colour of their nu, placed so that none overlap;
+/// Level names beside their points, in the colour of their series, placed so that none overlap;
 /// a thin leader line joins a label that had to move away from its point.
 fn draw_labels<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     chart: &ChartContext<'_, DB, LogLog>,
     shown: &[&SpeedPoint],
-    nus: &[f64],
+    nus: &[&str],
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-    let colour_of = |nu: f64| series_colour(nus.iter().position(|&n| n == nu).unwrap_or(0));
+    let colour_of = |nu: &str| series_colour(nus.iter().position(|&n| n == nu).unwrap_or(0));
     let (xs, ys) = chart.plotting_area().get_pixel_range();
     let area = PixelBox {
         x: xs.start,
@@ -140,7 +144,7 @@ fn draw_labels<DB: DrawingBackend>(
         .zip(&pixels)
         .zip(place(&pixels, &sizes, area).into_iter().zip(sizes))
     {
-        let colour = colour_of(p.nu);
+        let colour = colour_of(&p.series);
         if far {
             let end = (corner.0 + w / 2, corner.1 + h / 2);
             root.draw(&PathElement::new([(px, py), end], colour.mix(0.5)))?;
