@@ -7,7 +7,7 @@ use std::hint::black_box;
 use criterion::{
     BenchmarkGroup, Criterion, criterion_group, criterion_main, measurement::WallTime,
 };
-use softgrip_law::{ContactLaw, ContactParams, Level, Material};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material};
 
 /// 1024 compressions spread over (0, delta_max) in a scrambled order, as contacts of a scene
 /// would come.
@@ -68,6 +68,18 @@ fn bench_levels(c: &mut Criterion) {
         let r = auto.response(d);
         r.force + r.stiffness
     });
+    // The backed constructions' calibrated levels (target: at most 2x fit's cost).
+    for (name, backing) in [
+        ("calibrated-flat", Backing::Flat),
+        ("calibrated-core", Backing::Core { thickness: 0.004 }),
+    ] {
+        let backed = params.with_backing(backing).expect("valid backing");
+        let law = ContactLaw::try_new(backed, Level::Calibrated).expect("level builds");
+        bench_pass(&mut force, name, &deltas(&law), |d| {
+            let r = law.response(d);
+            r.force + r.stiffness
+        });
+    }
     force.finish();
 
     let mut patch = c.benchmark_group("with_radius_pressure");

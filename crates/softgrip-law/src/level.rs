@@ -8,7 +8,8 @@ use crate::error::{Error, Result};
 
 /// The paper's `k` of Eq. 38 (the least-squares value is 1.1141).
 pub const DEFAULT_FIT_K: f64 = 10.0 / 9.0;
-/// Default force tolerance of [`Level::Auto`]: 1 % against the full theory.
+/// Default force tolerance of [`Level::Auto`]: 1 % against `calibrated` (the truth's best
+/// estimate for the construction).
 pub const DEFAULT_AUTO_TOLERANCE: f64 = 0.01;
 /// Default compression ratio at which [`Level::Linear`] matches Hertz's force.
 pub const DEFAULT_LINEAR_MATCH_X: f64 = 0.05;
@@ -50,10 +51,13 @@ pub enum Level {
     Tabulated,
     /// A user's own [`crate::NormalisedLaw`] (build it with [`crate::ContactLaw::custom`]).
     Custom,
-    /// Per call, the cheapest of Hertz, fit, incompressible and the tabulated full theory whose
-    /// error against the full theory is within `tolerance` at that `x`.
+    /// Per call, the cheapest of Hertz, fit, incompressible and `calibrated` whose error against
+    /// `calibrated` (the most accurate level of the fingertip's construction, itself within its
+    /// stated error of the finite elements) is within `tolerance` at that `x`: `auto` at 1 % is
+    /// within 1 % plus calibrated's own error of the FE. With a backing (flat, core) the cheap
+    /// levels are the free sphere's and are 7-60 % off, so `auto` is `calibrated` there.
     Auto {
-        /// Relative force tolerance against the full theory, in (0, 0.5].
+        /// Relative force tolerance against `calibrated`, in (0, 0.5].
         tolerance: f64,
     },
 }

@@ -80,14 +80,17 @@ fn flat_is_stiffer_than_the_free_sphere_as_the_issue_measured() {
 
 #[test]
 fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
-    // PROVISIONAL form (issue 10 open): seen within 6.5 % at every (nu, t/R) pair to where
-    // the FE stops; asserted at 7 % so that a regression shows.
+    // PROVISIONAL form (issue 10 open). Seen, to x_max = min(flat's, 0.6 t/R): t/R = 0.4: 1.0,
+    // 0.9, 1.2 %; 0.6: 0.9, 0.6, 1.5 %; 0.8: 1.9, 1.2, 0.9 % (nu = 0.3, 0.48, 0.499); t/R = 0.2:
+    // 3.1, 5.6, 6.0 % (the thin, nearly incompressible skin: the 2 % target is not met there).
     for t in [0.2, 0.4, 0.6, 0.8] {
         for nu in [0.3, 0.48, 0.499] {
             let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
+            assert!((core.x_max() - (0.6 * t).min(core.x_max())).abs() < 1e-12);
             let data = fe(&format!("core/force_nu{nu}_t{t}.csv"));
             let (w, x) = worst(&core, &data, core.x_max());
-            assert!(w < 0.07, "nu = {nu} t = {t}: {:.2} % at x = {x}", w * 100.0);
+            let tol = if t < 0.3 { 0.065 } else { 0.02 };
+            assert!(w < tol, "nu = {nu} t = {t}: {:.2} % at x = {x}", w * 100.0);
         }
     }
 }

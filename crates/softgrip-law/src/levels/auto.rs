@@ -1,16 +1,19 @@
-//! The `Auto` level: per call, the cheapest level whose known error against the full theory
-//! is inside a force tolerance at that `x` ("model only what a scene needs").
+//! The `Auto` level: per call, the cheapest level whose known error against `calibrated` (the
+//! most accurate level of the fingertip's construction: within its stated error of the finite
+//! elements) is inside a force tolerance at that `x` ("model only what a scene needs"). So
+//! `auto` at tolerance `tol` is within `tol` plus calibrated's own error of the FE truth.
 //!
-//! At construction (once per material) the range `0 <= x <= x_max` of the full theory is cut
-//! into cells of width 1/64; each cell gets the first of Hertz, fit (`k = 10/9`), incompressible
-//! whose error against the full theory stays within half the tolerance at nine points of the
-//! cell, else the tabulated full theory itself. Neighbouring cells with the same level merge
-//! into a segment. Inside a segment the level's force is multiplied by the straight line
-//! `phi(x)` that makes it equal the full theory at both ends of the segment: the law is then
-//! continuous (no force jump where the level changes, so it stays monotone and an integrator
-//! sees no step), the stiffness is the exact derivative `f_L' phi + f_L phi'`, and the energy the
-//! exact integral. Correcting by a line at most doubles the raw error, hence the half
-//! tolerance; the tests check the result against the full theory on a fine grid.
+//! At construction (once per material and backing) the range `0 <= x <= x_max` of calibrated
+//! is cut into cells of width 1/64; each cell gets the first of Hertz, fit (`k = 10/9`),
+//! incompressible whose error against calibrated stays within half the tolerance at nine points
+//! of the cell, else calibrated itself. Neighbouring cells with the same level merge into a
+//! segment. Inside a segment the level's force is multiplied by the straight line `phi(x)` that
+//! makes it equal calibrated at both ends of the segment: the law is then continuous (no force
+//! jump where the level changes, so it stays monotone and an integrator sees no step), the
+//! stiffness is the exact derivative `f_L' phi + f_L phi'`, and the energy the exact integral.
+//! Correcting by a line at most doubles the raw error, hence the half tolerance; the tests check
+//! the result against calibrated on a fine grid. The cheap levels are the free sphere's, so
+//! with a backing (flat, core) they are never close enough and `auto` is calibrated.
 
 use super::NormalisedLaw;
 use super::backed::Backed;
