@@ -195,12 +195,14 @@ impl Backed {
         })
     }
 
+    /// `chi` and `x chi'` at `x > 0`.
     #[inline(always)]
-    fn chi(&self, x: Dual) -> Dual {
+    fn chi(&self, x0: f64) -> Dual {
+        let x = Dual::var(x0);
         let w = 1.0 - x;
         let x2 = x * x;
         let n = w + x2.scale(1.0 / 3.0);
-        let s = x.sqrt();
+        let s = Dual::sqrt_of_var(x0);
         let sf = Dual::c(1.0) - x.scale(self.d) + s.scale(self.c) + x2.scale(self.e);
         let den = w * w + x2.scale(self.b2);
         let flat = n * sf / den;
@@ -220,8 +222,11 @@ impl Backed {
 impl NormalisedLaw for Backed {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
-        let chi = self.chi(Dual::var(x));
-        super::scale_by_chi(x, chi.v, chi.d)
+        // f = (4/3) chi x sqrt(x), df/dx = (4/3) sqrt(x) (3/2 chi + x chi').
+        let chi = self.chi(x);
+        let s = x.sqrt();
+        let h = 4.0 / 3.0 * s;
+        (h * chi.v * x, h * (1.5 * chi.v + chi.d))
     }
 
     fn energy(&self, x: f64) -> f64 {
@@ -229,7 +234,7 @@ impl NormalisedLaw for Backed {
         // no pole on [0, x_max]).
         integrate(0.0, x.sqrt(), 4, |u| {
             let s = u * u;
-            8.0 / 3.0 * self.chi(Dual::c(s)).v * s * s
+            8.0 / 3.0 * self.chi(s).v * s * s
         })
     }
 

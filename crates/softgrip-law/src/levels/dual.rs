@@ -1,11 +1,14 @@
-//! Forward-mode dual numbers `v + d eps` (eps^2 = 0): a law written once as a function of `x`
-//! gives its exact derivative alongside its value, so the stiffness is the derivative of the
-//! force by construction. Hand-written (a few lines) so that everything inlines into the hot
-//! path: `cargo bench -p softgrip-law --bench levels` times the levels that use it.
+//! Forward-mode dual numbers carrying a value and its *scaled* derivative `x dv/dx`: a law
+//! written once as a function of `x` gives its exact derivative alongside its value, so the
+//! stiffness is the derivative of the force by construction. Scaled by `x` so that `sqrt(x)`
+//! costs no division (`x d sqrt(x)/dx = sqrt(x)/2`) and a power none either: a level built on
+//! it needs one square root and one division per division in its form, like the hand-grouped
+//! `calibrated`. Hand-written (a few lines) so that everything inlines into the hot path
+//! (`cargo bench -p softgrip-law` times the levels that use it).
 
 use std::ops::{Add, Div, Mul, Sub};
 
-/// A value and its derivative with respect to `x`.
+/// A value `v` and its scaled derivative `d = x dv/dx`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Dual {
     pub(crate) v: f64,
@@ -13,10 +16,17 @@ pub(crate) struct Dual {
 }
 
 impl Dual {
-    /// The variable itself: `x + 1 eps`.
+    /// The variable itself: `x dx/dx = x`.
     #[inline(always)]
     pub(crate) fn var(x: f64) -> Self {
-        Self { v: x, d: 1.0 }
+        Self { v: x, d: x }
+    }
+
+    /// `sqrt(x)` of the variable `x > 0`: `x d sqrt(x)/dx = sqrt(x)/2`, no division.
+    #[inline(always)]
+    pub(crate) fn sqrt_of_var(x: f64) -> Self {
+        let s = x.sqrt();
+        Self { v: s, d: 0.5 * s }
     }
 
     /// A constant.
@@ -25,23 +35,13 @@ impl Dual {
         Self { v, d: 0.0 }
     }
 
-    /// `sqrt`, for `v > 0`.
-    #[inline(always)]
-    pub(crate) fn sqrt(self) -> Self {
-        let s = self.v.sqrt();
-        Self {
-            v: s,
-            d: 0.5 * self.d / s,
-        }
-    }
-
-    /// `self^k` for a constant `k`, `v > 0`.
+    /// `self^k` for a constant `k`, `v > 0` (one `powf`, no division).
     #[inline(always)]
     pub(crate) fn powf(self, k: f64) -> Self {
-        let p = self.v.powf(k);
+        let below = self.v.powf(k - 1.0);
         Self {
-            v: p,
-            d: k * p / self.v * self.d,
+            v: below * self.v,
+            d: k * below * self.d,
         }
     }
 
@@ -128,15 +128,18 @@ mod tests {
     use super::Dual;
 
     #[test]
-    fn derivative_of_a_rational_function_with_a_root() {
-        // f = (1 + 2 sqrt(x)) / (1 - x)^2 at x = 0.3: f' by hand.
-        let x = Dual::var(0.3);
+    fn scaled_derivative_of_a_rational_function_with_a_root_and_a_power() {
+        // f = (1 + 2 sqrt(x)) / (1 - x)^2 * x^0.3 at x = 0.3: x f'(x) by hand.
+        let x0 = 0.3f64;
+        let x = Dual::var(x0);
         let w = 1.0 - x;
-        let f = (Dual::c(1.0) + x.sqrt().scale(2.0)) / (w * w);
-        let s = 0.3f64.sqrt();
-        let fv = (1.0 + 2.0 * s) / (0.7f64 * 0.7);
-        let fd = (1.0 / s) / (0.7f64 * 0.7) + (1.0 + 2.0 * s) * 2.0 / 0.7f64.powi(3);
-        assert!((f.v - fv).abs() < 1e-14);
-        assert!((f.d - fd).abs() < 1e-13);
+        let f = (Dual::c(1.0) + Dual::sqrt_of_var(x0).scale(2.0)) / (w * w) * x.powf(0.3);
+        let s = x0.sqrt();
+        let g = (1.0 + 2.0 * s) / (0.7f64 * 0.7);
+        let dg = (1.0 / s) / (0.7f64 * 0.7) + (1.0 + 2.0 * s) * 2.0 / 0.7f64.powi(3);
+        let h = x0.powf(0.3);
+        let dh = 0.3 * x0.powf(-0.7);
+        assert!((f.v - g * h).abs() < 1e-14);
+        assert!((f.d - x0 * (dg * h + g * dh)).abs() < 1e-13);
     }
 }
