@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Embed tactile_turbo.ts into softgrip.json as one Foxglove User Script per tactile pad, and point
-the layout's Image panels at the scripts' colour-mapped outputs.
+"""Embed the User Scripts into the Foxglove layouts and point their panels at the scripts' outputs:
+- softgrip.json: tactile_turbo.ts once per tactile pad (Image panels show the colour-mapped pads);
+- softgrip-micro.json: contacts_micro.ts (plots of the cells' forces in uN and radii in um).
 
-usage: python3 tools/foxglove/make_layouts.py          # rewrite softgrip.json in place
-       python3 tools/foxglove/make_layouts.py --check  # exit 1 if softgrip.json is stale
+usage: python3 tools/foxglove/make_layouts.py          # rewrite both layouts in place
+       python3 tools/foxglove/make_layouts.py --check  # exit 1 if a layout is stale
 
 The pads are the default scene's (scenes/default.toml): left_tip and right_tip. For another
 scene, add its fingertip names to TIPS (a fingertip named like its body is recorded as
@@ -24,7 +25,7 @@ def script(tip: str) -> dict:
     return {"name": f"{tip} tactile turbo", "sourceCode": src}
 
 
-def build(layout: dict) -> dict:
+def build_default(layout: dict) -> dict:
     layout["userNodes"] = {f"tactile-turbo-{tip}": script(tip) for tip in TIPS}
     for tip in TIPS:
         topic = f"/studio_script/softgrip/{tip}/tactile_turbo"
@@ -39,17 +40,50 @@ def build(layout: dict) -> dict:
     return layout
 
 
+MICRO_TOPIC = "/studio_script/softgrip/contacts_micro"
+# (panel, field, title); every plot's y axis starts at 0 (minYValue).
+MICRO_PLOTS = [
+    ("Plot!force", "normal_force_un", "normal force [uN]"),
+    ("Plot!radius", "contact_radius_um", "contact radius [um]"),
+]
+
+
+def build_micro(layout: dict) -> dict:
+    layout["userNodes"] = {
+        "contacts-micro": {
+            "name": "contacts in uN and um",
+            "sourceCode": (HERE / "contacts_micro.ts").read_text(),
+        }
+    }
+    for panel, field, title in MICRO_PLOTS:
+        cfg = layout["configById"][panel]
+        cfg["paths"] = [
+            {
+                "value": f'{MICRO_TOPIC}.contacts[:]{{fingertip=="sphere"}}.{field}',
+                "enabled": True,
+                "timestampMethod": "receiveTime",
+                "label": f"sphere {field}",
+            }
+        ]
+        cfg["title"] = title
+        cfg["minYValue"] = 0
+        cfg["sidebarDimension"] = 40
+    return layout
+
+
 def main() -> int:
-    path = HERE / "softgrip.json"
-    old = path.read_text()
-    new = json.dumps(build(json.loads(old)), indent=1) + "\n"
-    if "--check" in sys.argv:
-        if new != old:
-            print(f"{path} is stale: run python3 {pathlib.Path(__file__).name}", file=sys.stderr)
-            return 1
-        return 0
-    path.write_text(new)
-    return 0
+    stale = 0
+    for name, build in [("softgrip.json", build_default), ("softgrip-micro.json", build_micro)]:
+        path = HERE / name
+        old = path.read_text()
+        new = json.dumps(build(json.loads(old)), indent=1) + "\n"
+        if "--check" in sys.argv:
+            if new != old:
+                print(f"{path} is stale: run python3 {pathlib.Path(__file__).name}", file=sys.stderr)
+                stale = 1
+        else:
+            path.write_text(new)
+    return stale
 
 
 if __name__ == "__main__":
