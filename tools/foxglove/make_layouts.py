@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Embed the User Scripts into the Foxglove layouts and point their panels at the scripts' outputs:
 - softgrip.json: tactile_turbo.ts once per tactile pad (Image panels show the colour-mapped pads);
-- softgrip-micro.json: contacts_micro.ts (plots of the cells' forces in uN and radii in um).
+- softgrip-micro.json: contacts_micro.ts (plots of the cells' forces in uN and radii in um);
+- softgrip-sphere.json (written from softgrip-micro.json): the millimetre sphere between plates
+  (scenes/ecoflex_sphere.toml), grid 200 times larger, camera 400 times farther, plots in N and m.
 
 usage: python3 tools/foxglove/make_layouts.py          # rewrite both layouts in place
        python3 tools/foxglove/make_layouts.py --check  # exit 1 if a layout is stale
@@ -71,11 +73,39 @@ def build_micro(layout: dict) -> dict:
     return layout
 
 
+def build_sphere(_old: dict) -> dict:
+    """The micro layout scaled up 200 times (R = 5 mm vs the cells' 14-16 um), raw N and m."""
+    layout = build_micro(json.loads((HERE / "softgrip-micro.json").read_text()))
+    del layout["userNodes"]
+    k = 200.0
+    cam = layout["configById"]["3D!grasp"]["cameraState"]
+    for key in ("distance", "near", "far"):
+        cam[key] = round(cam[key] * 2 * k, 12)  # twice as far: a patch grows to 1.6 R
+    tf = layout["configById"]["3D!grasp"]["scene"]["transforms"]
+    for key in ("labelSize", "axisScale"):
+        tf[key] = round(tf[key] * k, 12)
+    grid = layout["configById"]["3D!grasp"]["layers"]["grid"]
+    grid["size"] = round(grid["size"] * k, 12)
+    for panel, field, title in [
+        ("Plot!force", "normal_force", "normal force [N]"),
+        ("Plot!radius", "contact_radius", "contact radius [m]"),
+    ]:
+        cfg = layout["configById"][panel]
+        cfg["paths"][0]["value"] = f'/softgrip/contacts.contacts[:]{{fingertip=="sphere"}}.{field}'
+        cfg["paths"][0]["label"] = f"sphere {field}"
+        cfg["title"] = title
+    return layout
+
+
 def main() -> int:
     stale = 0
-    for name, build in [("softgrip.json", build_default), ("softgrip-micro.json", build_micro)]:
+    for name, build in [
+        ("softgrip.json", build_default),
+        ("softgrip-micro.json", build_micro),
+        ("softgrip-sphere.json", build_sphere),
+    ]:
         path = HERE / name
-        old = path.read_text()
+        old = path.read_text() if path.exists() else "{}"
         new = json.dumps(build(json.loads(old)), indent=1) + "\n"
         if "--check" in sys.argv:
             if new != old:
