@@ -25,8 +25,8 @@ fn step(force: f64) -> StepRecord {
         }],
         contacts: vec![SoftContactMsg {
             fingertip: "tip".into(),
-            point: Point { x: 0.01, y: 0.0, z: 0.0 },
-            normal: Vector3 { x: 1.0, y: 0.0, z: 0.0 },
+            point: Point::from_array([0.01, 0.0, 0.0]),
+            normal: Vector3::from_array([1.0, 0.0, 0.0]),
             normal_force: force,
             ..Default::default()
         }],
@@ -37,7 +37,10 @@ fn step(force: f64) -> StepRecord {
 /// Length of the drawn arrow of `step(force)` [m].
 fn drawn(force: f64) -> f64 {
     let markers = visuals::markers(&step(force)).markers;
-    let arrow = markers.iter().find(|m| m.ns == NS_FORCES).expect("an arrow");
+    let arrow = markers
+        .iter()
+        .find(|m| m.ns == NS_FORCES)
+        .expect("an arrow");
     arrow.points[1].x - arrow.points[0].x
 }
 
@@ -45,7 +48,11 @@ fn drawn(force: f64) -> f64 {
 fn arrows_are_linear_up_to_the_reference_force() {
     for f in [0.1, 1.0, 2.5, 5.0] {
         let want = R * f / F_REF;
-        assert!((drawn(f) - want).abs() < 1e-17, "{f} N: {} vs {want}", drawn(f));
+        assert!(
+            (drawn(f) - want).abs() < 1e-17,
+            "{f} N: {} vs {want}",
+            drawn(f)
+        );
     }
 }
 

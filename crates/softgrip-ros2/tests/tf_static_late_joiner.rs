@@ -13,8 +13,8 @@ mod script;
 
 use std::time::{Duration, Instant};
 
-use softgrip_record::msgs::softgrip_msgs::SoftContactArrayMsg;
 use softgrip_record::msgs::geometry_msgs::{Quaternion, Transform, TransformStamped, Vector3};
+use softgrip_record::msgs::softgrip_msgs::SoftContactArrayMsg;
 use softgrip_record::msgs::std_msgs::Header;
 use softgrip_record::msgs::tf2_msgs::TFMessage;
 use softgrip_ros2::{NodeOptions, Ros2Publisher, Ros2PublisherOptions, Ros2Subscriber, qos};
@@ -39,8 +39,18 @@ fn tf_static() -> TFMessage {
     let h = std::f64::consts::FRAC_1_SQRT_2;
     TFMessage {
         transforms: vec![
-            frame("thumb", "jaw_left", [0.0125, -1.0 / 3.0 * 1e-3, 7e-4], [0.0, 0.0, 0.0, 1.0]),
-            frame("index_finger", "jaw_right", [-0.0125, 2e-5, 0.1], [0.0, h, 0.0, h]),
+            frame(
+                "thumb",
+                "jaw_left",
+                [0.0125, -1.0 / 3.0 * 1e-3, 7e-4],
+                [0.0, 0.0, 0.0, 1.0],
+            ),
+            frame(
+                "index_finger",
+                "jaw_right",
+                [-0.0125, 2e-5, 0.1],
+                [0.0, h, 0.0, h],
+            ),
         ],
     }
 }
