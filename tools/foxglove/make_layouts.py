@@ -29,6 +29,8 @@ def script(tip: str) -> dict:
 
 def build_default(layout: dict) -> dict:
     layout["userNodes"] = {f"tactile-turbo-{tip}": script(tip) for tip in TIPS}
+    for panel in ("Plot!force", "Plot!radius"):
+        layout["configById"][panel]["sidebarDimension"] = 64  # the legend: 2 rows, not half the plot
     for tip in TIPS:
         topic = f"/studio_script/softgrip/{tip}/tactile_turbo"
         layout["configById"][f"ImageViewPanel!{tip}"] = {
