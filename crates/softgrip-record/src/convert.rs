@@ -49,9 +49,10 @@ pub struct StepConverter {
     tf_static: Option<TFMessage>,
 }
 
-/// Length of a contact's force arrow per newton for a fingertip \[m/N\]: one fingertip
-/// radius R at the force of its law at x = 0.2 (`R / F(0.2 R)`; 0 if that force is not
-/// positive). Scale-free: the arrows of a 20 mm fingertip and of a 30 um cell squeezed alike
+/// Length of a contact's force arrow per newton for a fingertip \[m/N\], up to its reference
+/// force: one fingertip radius R at the force of its law at x = 0.2 (`R / F(0.2 R)`; 0 if that
+/// force is not positive); above it the length grows logarithmically and is capped
+/// ([`visuals::arrow_length`](crate::visuals::arrow_length)). Scale-free: the arrows of a 20 mm fingertip and of a 30 um cell squeezed alike
 /// are alike relative to the fingertip.
 pub fn arrow_scale(tip: &FingertipInfo) -> f64 {
     let force = tip

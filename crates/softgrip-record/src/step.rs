@@ -42,7 +42,9 @@ pub struct FingertipState {
     /// Its tf frame ([`fingertip_frame`](crate::frames::fingertip_frame)): the wrench's and
     /// its marker's `frame_id`. Empty: the world frame (then `wrench` is in world axes).
     pub frame: String,
-    /// Length of its contacts' force arrows per newton \[m/N\] (0: no arrows).
+    /// Length of its contacts' force arrows per newton \[m/N\] up to the reference force
+    /// `radius / arrow_scale`, logarithmic and capped above it
+    /// ([`visuals::arrow_length`](crate::visuals::arrow_length)); 0: no arrows.
     pub arrow_scale: f64,
 }
 

@@ -27,6 +27,39 @@ pub const DISC_THICKNESS: f64 = 0.02;
 /// fingertips); its thickness is 1/100 of its side, below the plane.
 pub const PLANE_EXTENT_RADII: f64 = 40.0;
 
+/// Longest force arrow, in fingertip radii [-]: [`arrow_length`] never draws an arrow longer
+/// than 4 R, whatever the force (an impact, a cell pressed far past its range).
+pub const ARROW_MAX_RADII: f64 = 4.0;
+
+/// Length of a normal-force arrow \[m\] for a force `force` \[N\] on a fingertip of radius
+/// `radius` \[m\] whose reference force is `radius / arrow_scale` (its law's force at x = 0.2,
+/// [`arrow_scale`](crate::arrow_scale) \[m/N\]). With u = force · arrow_scale / radius (the force
+/// in reference forces):
+///
+/// L / R = u for u ≤ 1 (linear: one radius at the reference force),
+/// L / R = min(1 + ln u, [`ARROW_MAX_RADII`]) for u > 1 (logarithmic, continuous with the
+/// linear part in value and slope, capped: 4 R from u = e³ ≈ 20 on).
+///
+/// The law's force grows steeply with x (Hertz alone: F(0.6 R) = 3^1.5 F(0.2 R) = 5.2 F(0.2 R)),
+/// so a linear arrow would leave the view at large x and in impacts. 0 for a non-positive or non-finite force,
+/// radius or scale (no arrow is drawn).
+///
+/// ```
+/// use softgrip_record::visuals::{arrow_length, ARROW_MAX_RADII};
+/// let (r, k) = (0.01, 0.01 / 5.0); // R = 10 mm, 5 N reference force
+/// assert!((arrow_length(2.5, r, k) - 0.005).abs() < 1e-15); // linear: half the reference
+/// assert!((arrow_length(10.0, r, k) - r * (1.0 + 2f64.ln())).abs() < 1e-15); // logarithmic
+/// assert_eq!(arrow_length(1e6, r, k), ARROW_MAX_RADII * r); // capped
+/// ```
+pub fn arrow_length(force: f64, radius: f64, arrow_scale: f64) -> f64 {
+    let u = force * arrow_scale / radius;
+    if !(u > 0.0 && u.is_finite() && radius.is_finite()) {
+        return 0.0;
+    }
+    let radii = if u <= 1.0 { u } else { 1.0 + u.ln() };
+    radius * radii.min(ARROW_MAX_RADII)
+}
+
 /// Colour of a patch: green inside the law's validity range, red past it.
 const PATCH_VALID: ColorRGBA = ColorRGBA::new(0.1, 0.8, 0.2, 0.9);
 const PATCH_EXCEEDED: ColorRGBA = ColorRGBA::new(0.9, 0.1, 0.1, 0.9);
@@ -162,8 +195,9 @@ fn shape_marker(s: &ShapeInfo, id: i32, color: ColorRGBA, extent: f64) -> Marker
 /// index, in its frame), a disc per contact (ns `contact_patches`, id = index: a cylinder at
 /// the contact point, axis along the normal, diameter 2a, thickness [`DISC_THICKNESS`] a) and
 /// an arrow per contact (ns [`NS_FORCES`], id = index) from the contact point along the normal
-/// (the force on the fingertip), `normal_force × arrow_scale` long: one fingertip radius at the
-/// law's force at x = 0.2 ([`arrow_scale`](crate::arrow_scale)).
+/// (the force on the fingertip), [`arrow_length`] long: one fingertip radius at the law's force
+/// at x = 0.2 ([`arrow_scale`](crate::arrow_scale)), linear below it, logarithmic above it,
+/// never longer than [`ARROW_MAX_RADII`] radii.
 pub fn markers(step: &StepRecord) -> MarkerArray {
     let header = step.header();
     let base = |ns: &str, id: usize, r#type: i32| Marker {
@@ -242,7 +276,7 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
 /// `None` if its fingertip is not in the step.
 fn force_arrow(step: &StepRecord, c: &SoftContactMsg) -> Option<Marker> {
     let tip = step.fingertips.iter().find(|t| t.name == c.fingertip)?;
-    let len = c.normal_force * tip.arrow_scale;
+    let len = arrow_length(c.normal_force, tip.radius, tip.arrow_scale);
     let (p, n) = (c.point.to_array(), c.normal.to_array());
     let end: [f64; 3] = std::array::from_fn(|k| p[k] + len * n[k]);
     let r = tip.radius;
