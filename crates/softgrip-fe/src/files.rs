@@ -258,6 +258,54 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.8)
     ),
+    fe_file!(
+        "flat/force_nu0.35.csv",
+        Force,
+        Some(0.35),
+        "held out of every fit: hemisphere bonded at its flat face, nu = 0.35, x = 0.01..0.5 (end of the load)",
+        "flat",
+        None
+    ),
+    fe_file!(
+        "flat/force_nu0.45.csv",
+        Force,
+        Some(0.45),
+        "held out of every fit: hemisphere bonded at its flat face, nu = 0.45, x = 0.01..0.43",
+        "flat",
+        None
+    ),
+    fe_file!(
+        "core/force_nu0.4_t0.3.csv",
+        Force,
+        Some(0.4),
+        "held out of every fit: skin t/R = 0.3 over a rigid core, nu = 0.4, x = 0.01..0.23",
+        "core",
+        Some(0.3)
+    ),
+    fe_file!(
+        "core/force_nu0.49_t0.3.csv",
+        Force,
+        Some(0.49),
+        "held out of every fit: skin t/R = 0.3 over a rigid core, nu = 0.49, x = 0.01..0.2",
+        "core",
+        Some(0.3)
+    ),
+    fe_file!(
+        "core/force_nu0.45_t0.5.csv",
+        Force,
+        Some(0.45),
+        "held out of every fit: skin t/R = 0.5 over a rigid core, nu = 0.45, x = 0.01..0.39",
+        "core",
+        Some(0.5)
+    ),
+    fe_file!(
+        "core/force_nu0.35_t0.7.csv",
+        Force,
+        Some(0.35),
+        "held out of every fit: skin t/R = 0.7 over a rigid core, nu = 0.35, x = 0.01..0.5 (end of the load)",
+        "core",
+        Some(0.7)
+    ),
 ];
 
 /// The file at `path` (relative to `tests/data/fe/`), if it is embedded.
