@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
 use softgrip_law::{ContactLaw, ContactPatch, LevelKind, Regime};
 
-use crate::detect::{Model, raw};
+use crate::detect::{Model, Series, raw};
 use crate::solve::Row;
 
 /// One soft contact after a step. Cheap to produce: the contact radius and pressure are only
@@ -260,16 +260,49 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
             contact_duration: a.duration,
             model: a.model,
         });
-        if let Some(last) = out.last()
+        if let Some(last) = out.last_mut()
             && last.model.soft_pair
         {
-            let mirror = mirrored(last);
-            out.push(mirror);
+            if let Some(series) = &last.model.series {
+                let series = series.clone();
+                let mirror = in_series(last, &series);
+                out.push(mirror);
+            } else {
+                let mirror = mirrored(last);
+                out.push(mirror);
+            }
         }
     }
     acc.clear();
     // Already sorted unless a split step found new contacts after its first substep.
     out.sort_by_key(|c| (raw(c.fingertip), raw(c.other)));
+}
+
+/// A pair in series (`detect::Series`): rewrites `c` as its first fingertip's own contact
+/// with the rigid mid-surface (its share `delta_1` of the approach, `x = delta_1 / R_1`, its
+/// own law's stiffness, level and regime, its own model, so `patch()` is its own patch) and
+/// returns the second fingertip's (`delta_2`, its law, normal and force vectors negated). The
+/// forces are the pair's (equal and opposite, Newton's third law).
+fn in_series(c: &mut TipContact, series: &Series) -> TipContact {
+    let (d1, d2) = series.law.split(c.delta);
+    let (m1, m2) = series.law.split(c.max_delta);
+    let mut second = mirrored(c);
+    for (row, model, delta, max_delta) in [
+        (c, &series.first, d1, m1),
+        (&mut second, &series.second, d2, m2),
+    ] {
+        let resp = model.law.response(delta);
+        row.delta = delta;
+        row.x = delta / model.radius;
+        row.max_delta = max_delta;
+        row.max_x = max_delta / model.radius;
+        row.stiffness = resp.stiffness;
+        row.level = resp.level;
+        row.validity_exceeded |= resp.regime == Regime::Extended;
+        row.regime = resp.regime;
+        row.model = model.clone();
+    }
+    second
 }
 
 /// The contact `c` of two fingertips as the second fingertip sees it: the same pair, point,
