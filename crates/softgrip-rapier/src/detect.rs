@@ -19,7 +19,7 @@ use rapier3d::prelude::{
     BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, NarrowPhase,
     QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
 };
-use softgrip_law::{ContactLaw, ContactParams};
+use softgrip_law::{Backing, ContactLaw, ContactParams};
 
 use crate::counters::SoftCounters;
 use crate::fingertip::SoftFingertip;
@@ -55,6 +55,8 @@ pub(crate) struct Model {
     /// Two fingertips of which one is backed, in series (`series`): the split of the
     /// approach and each fingertip's own model, for the readout.
     pub series: Option<Series>,
+    /// The fingertip's construction (a combined pair of free fingertips: free).
+    pub backing: Backing,
 }
 
 /// The parts of a pair in series: its law (for the split) and the two fingertips' own models.
@@ -77,6 +79,7 @@ impl Model {
             radius: tip.radius(),
             soft_pair: false,
             series: None,
+            backing: tip.backing(),
         }
     }
 
@@ -125,6 +128,7 @@ impl Model {
             soft_pair: true,
             series,
             law,
+            backing: Backing::Free,
         })
     }
 }
@@ -419,9 +423,7 @@ impl<'a> Tip<'a> {
             // rapier's own rigid contact (the hooks keep its solver contacts there).
             return (!tip_behind).then_some(g);
         }
-        let other_facing = tips
-            .get(&other_h)
-            .and_then(|t| facing_world(t, other_co));
+        let other_facing = tips.get(&other_h).and_then(|t| facing_world(t, other_co));
         let other_behind = behind_face(other_facing, &s.normal);
         match (tip_behind, other_behind) {
             (false, false) => Some(g),

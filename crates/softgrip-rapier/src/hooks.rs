@@ -99,7 +99,10 @@ impl PhysicsHooks for SoftHooks<'_> {
             return;
         }
         let side = |h: ColliderHandle| {
-            let centre = ctx.colliders.get(h).map(|c| to_f64(c.position().translation));
+            let centre = ctx
+                .colliders
+                .get(h)
+                .map(|c| to_f64(c.position().translation));
             self.facing(ctx.colliders, h).zip(centre)
         };
         let (s1, s2) = (side(c1), side(c2));

@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
-use softgrip_law::{ContactLaw, ContactPatch, LevelKind, Regime};
+use softgrip_law::{Backing, ContactLaw, ContactPatch, LevelKind, Regime};
 
 use crate::detect::{Model, Series, raw};
 use crate::solve::Row;
@@ -19,12 +19,16 @@ use crate::solve::Row;
 /// (`delta - h v_n`, what rapier's position update produces), so `normal_force` and
 /// `law(delta)` agree for a quasi-static contact.
 ///
-/// A contact of two fingertips is one pair with one combined law
-/// (`ContactParams::try_combine`) and is reported **twice**, once per fingertip: `fingertip`
-/// and `other` swapped, each with its own normal (from the other fingertip to it), the force
-/// and friction vectors exactly opposite, `delta` the approach of the two surfaces and
-/// `x = delta / R_eff` (R_eff the combined radius). Sum `normal_force` per fingertip, not over
-/// all contacts, to avoid counting such a pair twice.
+/// A contact of two fingertips is reported **twice**, once per fingertip: `fingertip` and
+/// `other` swapped, each with its own normal (from the other fingertip to it), the force and
+/// friction vectors exactly opposite. Two free fingertips are one pair with one combined law
+/// (`ContactParams::try_combine`): `delta` is the approach of the two surfaces and
+/// `x = delta / R_eff` (R_eff the combined radius) in both rows. When either is backed, the two
+/// are pressed in series on their rigid mid-surface: each row is its own fingertip's, `delta`
+/// its share of the approach (the shares add up to the approach, their forces are equal),
+/// `x = delta / R` with its own radius, and its own law's stiffness, level, regime and patch.
+/// Sum `normal_force` per fingertip, not over all contacts, to avoid counting such a pair
+/// twice.
 #[derive(Debug, Clone)]
 pub struct TipContact {
     /// The fingertip's collider.
@@ -67,6 +71,9 @@ pub struct TipContact {
     pub max_x: f64,
     /// Time in contact (compression > 0) during the step \[s\].
     pub contact_duration: f64,
+    /// The fingertip's construction (`SoftFingertip::backing`; `Free` for a combined pair of
+    /// two free fingertips).
+    pub backing: Backing,
     pub(crate) model: Arc<Model>,
 }
 
@@ -258,6 +265,7 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
             max_delta: a.max_delta,
             max_x: a.max_delta / a.model.radius,
             contact_duration: a.duration,
+            backing: a.model.backing,
             model: a.model,
         });
         if let Some(last) = out.last_mut()
@@ -300,6 +308,7 @@ fn in_series(c: &mut TipContact, series: &Series) -> TipContact {
         row.level = resp.level;
         row.validity_exceeded |= resp.regime == Regime::Extended;
         row.regime = resp.regime;
+        row.backing = model.backing;
         row.model = model.clone();
     }
     second

@@ -79,13 +79,11 @@ fn backed_fingertip_without_a_valid_facing_is_a_typed_error() {
         ([f64::NAN, 1.0, 0.0], f64::NAN),
         ([1.0, f64::INFINITY, 0.0], f64::INFINITY),
     ] {
-        let e = b()
-            .backing(core())
-            .facing(facing)
-            .build()
-            .unwrap_err();
+        let e = b().backing(core()).facing(facing).build().unwrap_err();
         match e {
-            Error::InvalidParameter { field, value: v, .. } => {
+            Error::InvalidParameter {
+                field, value: v, ..
+            } => {
                 assert_eq!(field, "facing");
                 assert!(v == value || (v.is_nan() && value.is_nan()), "{v}");
             }
@@ -160,7 +158,10 @@ fn box_on_the_back_of_a_flat_pad_is_held_rigidly() {
     let rest = |backing: Backing| {
         let mut world = SoftWorld::new();
         let tip = if backing.is_free() {
-            SoftFingertip::builder(R).material(material()).build().unwrap()
+            SoftFingertip::builder(R)
+                .material(material())
+                .build()
+                .unwrap()
         } else {
             backed(backing, [0.0, -1.0, 0.0], 0.5)
         };
@@ -183,13 +184,25 @@ fn box_on_the_back_of_a_flat_pad_is_held_rigidly() {
             world.step();
             assert!(common::all_finite(&world));
         }
-        let row = world.soft.contacts_of(pad_co).find(|c| c.other == box_co).cloned();
+        let row = world
+            .soft
+            .contacts_of(pad_co)
+            .find(|c| c.other == box_co)
+            .cloned();
         let sink = R + half as f64 - world.physics.bodies[object].translation().y as f64;
         let weight = box_mass as f64 * common::G;
-        (row, sink, law.compression_for_force(weight).unwrap(), weight)
+        (
+            row,
+            sink,
+            law.compression_for_force(weight).unwrap(),
+            weight,
+        )
     };
     let (row, sink, _, _) = rest(Backing::Flat);
-    assert!(row.is_none(), "a soft row with the box behind the face: {row:?}");
+    assert!(
+        row.is_none(),
+        "a soft row with the box behind the face: {row:?}"
+    );
     let (free_row, free_sink, delta_law, weight) = rest(Backing::Free);
     let free_row = free_row.expect("the free fingertip is soft all round");
     println!(
@@ -213,7 +226,9 @@ fn identical_flat_pads_meet_in_series_half_each() {
         assert_eq!(d1, d2, "identical pads split exactly in half");
         assert_eq!(d1, 0.5 * total);
     });
-    println!("two flat pads in series: worst |F/F_law(delta/2) - 1| = {worst:.2e} over {pairs} samples");
+    println!(
+        "two flat pads in series: worst |F/F_law(delta/2) - 1| = {worst:.2e} over {pairs} samples"
+    );
     assert!(worst < 0.005);
 }
 
@@ -221,11 +236,16 @@ fn identical_flat_pads_meet_in_series_half_each() {
 #[test]
 fn flat_and_core_pads_meet_in_series_with_equal_forces() {
     let (worst, pairs) = pads_in_series(Backing::Flat, core(), |d1, d2, total| {
-        assert!((d1 + d2 - total).abs() <= 1e-12 * total, "{d1} + {d2} vs {total}");
+        assert!(
+            (d1 + d2 - total).abs() <= 1e-12 * total,
+            "{d1} + {d2} vs {total}"
+        );
         // The core skin is stiffer: the flat pad takes the larger share.
         assert!(d1 > d2, "{d1} {d2}");
     });
-    println!("flat + core pads in series: worst |F/F_law(delta_i) - 1| = {worst:.2e} over {pairs} samples");
+    println!(
+        "flat + core pads in series: worst |F/F_law(delta_i) - 1| = {worst:.2e} over {pairs} samples"
+    );
     assert!(worst < 0.005);
 }
 
@@ -235,7 +255,10 @@ fn flat_and_core_pads_meet_in_series_with_equal_forces() {
 fn pads_in_series(a: Backing, b: Backing, check: impl Fn(f64, f64, f64)) -> (f64, usize) {
     let mut world = SoftWorld::new();
     world.physics.gravity = Vector::ZERO;
-    let (ta, tb) = (backed(a, [1.0, 0.0, 0.0], 1.0), backed(b, [-1.0, 0.0, 0.0], 1.0));
+    let (ta, tb) = (
+        backed(a, [1.0, 0.0, 0.0], 1.0),
+        backed(b, [-1.0, 0.0, 0.0], 1.0),
+    );
     let (la, lb) = (ta.law().clone(), tb.law().clone());
     let gap = 0.0005;
     let (ba, ca) = common::kinematic_tip(&mut world, Vector::new(-(R + gap) as f32, 0.0, 0.0), ta);
@@ -265,7 +288,11 @@ fn pads_in_series(a: Backing, b: Backing, check: impl Fn(f64, f64, f64)) -> (f64
             continue;
         }
         // The readout's approach is the geometric one (end of the step).
-        assert!((total - (2.0 * R - sep)).abs() < 1e-3 * total + 1e-9, "{total} vs {}", 2.0 * R - sep);
+        assert!(
+            (total - (2.0 * R - sep)).abs() < 1e-3 * total + 1e-9,
+            "{total} vs {}",
+            2.0 * R - sep
+        );
         check(ra.delta, rb.delta, total);
         assert_eq!(ra.normal_force, rb.normal_force);
         for i in 0..3 {
