@@ -67,7 +67,9 @@ fn backing(args: &CurveArgs) -> Result<Backing> {
         (name, None) => name
             .parse()
             .map_err(|e: String| anyhow::anyhow!("invalid `--backing`: {e}")),
-        (name, Some(_)) => bail!("invalid `--backing`: unknown backing `{name}`; expected one of free, flat, core"),
+        (name, Some(_)) => {
+            bail!("invalid `--backing`: unknown backing `{name}`; expected one of free, flat, core")
+        }
     }
 }
 

@@ -27,7 +27,11 @@ fn csv(args: &[&str]) -> (String, Vec<Vec<f64>>) {
     let mut lines = text.lines();
     let header = lines.next().expect("a header").to_string();
     let rows = lines
-        .map(|l| l.split(',').map(|v| v.parse::<f64>().expect("a number")).collect())
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse::<f64>().expect("a number"))
+                .collect()
+        })
         .collect();
     (header, rows)
 }
@@ -60,7 +64,14 @@ fn backed_curves_are_the_constructions_law_with_valid_past_its_range() {
     ];
     let free = law(Level::Calibrated, 0.49, Backing::Free);
     for (extra, backing) in cases {
-        let mut args = vec!["--level", "calibrated", "--nu", "0.49", "--x", "0.01:1.0:0.01"];
+        let mut args = vec![
+            "--level",
+            "calibrated",
+            "--nu",
+            "0.49",
+            "--x",
+            "0.01:1.0:0.01",
+        ];
         args.extend_from_slice(&extra);
         let (header, rows) = csv(&args);
         assert_eq!(
@@ -92,7 +103,16 @@ fn backed_curves_are_the_constructions_law_with_valid_past_its_range() {
 
 #[test]
 fn published_levels_with_a_backing_are_the_free_spheres() {
-    let (_, flat) = csv(&["--level", "hertz", "--nu", "0.3", "--backing", "flat", "--x", "0.1:0.3:0.1"]);
+    let (_, flat) = csv(&[
+        "--level",
+        "hertz",
+        "--nu",
+        "0.3",
+        "--backing",
+        "flat",
+        "--x",
+        "0.1:0.3:0.1",
+    ]);
     let (_, free) = csv(&["--level", "hertz", "--nu", "0.3", "--x", "0.1:0.3:0.1"]);
     assert_eq!(flat.len(), 3);
     assert_eq!(flat, free);
@@ -120,13 +140,20 @@ fn profile_prints_50_rows_of_the_levels_pressure_from_the_centre_to_the_edge() {
         assert_eq!(rows[49][1], 0.0);
         for row in &rows {
             assert!(row.len() == 2 && row[0] >= 0.0 && row[0] <= patch.radius);
-            assert_eq!(row[1], patch.pressure_at(row[0]), "{backing} at r = {}", row[0]);
+            assert_eq!(
+                row[1],
+                patch.pressure_at(row[0]),
+                "{backing} at r = {}",
+                row[0]
+            );
         }
         // The profile carries the force: 2 pi int p r dr (trapezoids over the 50 rows; the
         // edge's steep fall costs ~1 %) against F / (E* R^2).
         let f: f64 = rows
             .windows(2)
-            .map(|w| std::f64::consts::PI * (w[1][0] - w[0][0]) * (w[1][1] * w[1][0] + w[0][1] * w[0][0]))
+            .map(|w| {
+                std::f64::consts::PI * (w[1][0] - w[0][0]) * (w[1][1] * w[1][0] + w[0][1] * w[0][0])
+            })
             .sum();
         let force = law(Level::Calibrated, 0.45, backing).response(x).force;
         assert!((f / force - 1.0).abs() < 0.03, "{backing}: {f} vs {force}");
@@ -141,15 +168,40 @@ fn bad_combinations_are_refused_with_a_clear_message() {
         a.extend_from_slice(extra);
         a
     };
-    fails_with(&with(&["--backing", "flat", "--thickness", "0.4", "--x", "0.1:0.2:0.1"]), "`--thickness` applies only to `--backing core`");
-    fails_with(&with(&["--thickness", "0.4", "--x", "0.1:0.2:0.1"]), "`--thickness` applies only to `--backing core`");
-    fails_with(&with(&["--backing", "core", "--x", "0.1:0.2:0.1"]), "`--backing core` needs `--thickness");
+    fails_with(
+        &with(&[
+            "--backing",
+            "flat",
+            "--thickness",
+            "0.4",
+            "--x",
+            "0.1:0.2:0.1",
+        ]),
+        "`--thickness` applies only to `--backing core`",
+    );
+    fails_with(
+        &with(&["--thickness", "0.4", "--x", "0.1:0.2:0.1"]),
+        "`--thickness` applies only to `--backing core`",
+    );
+    fails_with(
+        &with(&["--backing", "core", "--x", "0.1:0.2:0.1"]),
+        "`--backing core` needs `--thickness",
+    );
     for t in ["0", "1", "1.5", "-0.2", "nan"] {
-        fails_with(&with(&["--backing", "core", "--thickness", t, "--x", "0.1:0.2:0.1"]), "must be in (0, 1)");
+        fails_with(
+            &with(&["--backing", "core", "--thickness", t, "--x", "0.1:0.2:0.1"]),
+            "must be in (0, 1)",
+        );
     }
-    fails_with(&with(&["--backing", "glued", "--x", "0.1:0.2:0.1"]), "unknown backing `glued`");
+    fails_with(
+        &with(&["--backing", "glued", "--x", "0.1:0.2:0.1"]),
+        "unknown backing `glued`",
+    );
     for x in ["0", "-0.1", "nan"] {
-        fails_with(&with(&["--backing", "flat", "--profile", x]), "`--profile` must be in (0, ");
+        fails_with(
+            &with(&["--backing", "flat", "--profile", x]),
+            "`--profile` must be in (0, ",
+        );
     }
     let past = law(Level::Calibrated, 0.49, Backing::Flat).x_max() * 1.01;
     let past = format!("{past}");
@@ -157,6 +209,9 @@ fn bad_combinations_are_refused_with_a_clear_message() {
     args.push(&past);
     fails_with(&args, "`--profile` must be in (0, ");
     // --profile is one x: a grid does not make sense with it.
-    fails_with(&with(&["--profile", "0.1", "--x", "0.1:0.2:0.1"]), "cannot be used with");
+    fails_with(
+        &with(&["--profile", "0.1", "--x", "0.1:0.2:0.1"]),
+        "cannot be used with",
+    );
     fails_with(&base, "--x");
 }

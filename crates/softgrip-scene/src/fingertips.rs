@@ -56,15 +56,9 @@ pub(crate) fn check_fingertips(
         };
         let builder = match law {
             TipLaw::Level(level) => builder.level(level),
-            TipLaw::Tabulated(curve) => tabulated_law(
-                c,
-                &f("level"),
-                builder,
-                material,
-                t.radius,
-                backing,
-                curve,
-            )?,
+            TipLaw::Tabulated(curve) => {
+                tabulated_law(c, &f("level"), builder, material, t.radius, backing, curve)?
+            }
         };
         let tip = builder.build().map_err(|e| SceneError::Fingertip {
             origin: c.origin.to_string(),

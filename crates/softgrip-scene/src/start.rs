@@ -45,8 +45,7 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
                 // A backed fingertip in the pair: the two in series on their mid-surface, valid
                 // while the depth is within the sum of their own ranges (in x of the larger R).
                 Some(j)
-                    if !(tip.backing().is_free()
-                        && scene.fingertips()[j].backing().is_free()) =>
+                    if !(tip.backing().is_free() && scene.fingertips()[j].backing().is_free()) =>
                 {
                     let o = &scene.fingertips()[j];
                     let r = tip.radius().max(o.radius());
@@ -62,7 +61,9 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
                         o.radius(),
                     );
                     match p.and_then(|p| ContactLaw::try_new(p, tip.level())) {
-                        Ok(law) => Box::new(move |depth| (depth / law.params().radius(), law.x_max())),
+                        Ok(law) => {
+                            Box::new(move |depth| (depth / law.params().radius(), law.x_max()))
+                        }
                         Err(_) => continue,
                     }
                 }

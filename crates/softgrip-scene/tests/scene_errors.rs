@@ -173,8 +173,16 @@ fn tip_with(extra: &str) -> String {
 #[test]
 fn backing_keys_are_checked_naming_the_field() {
     let cases = [
-        ("backing = \"glued\"\n", "fingertip[0].backing", "one of free, flat, core"),
-        ("backing = \"flat\"\n", "fingertip[0].facing", "needs `facing`"),
+        (
+            "backing = \"glued\"\n",
+            "fingertip[0].backing",
+            "one of free, flat, core",
+        ),
+        (
+            "backing = \"flat\"\n",
+            "fingertip[0].facing",
+            "needs `facing`",
+        ),
         (
             "backing = \"flat\"\nfacing = [0.0, 0.0, 0.0]\n",
             "fingertip[0].facing",
@@ -229,8 +237,17 @@ fn backing_keys_reach_the_fingertip() {
     let free = parse(&tip_with("")).unwrap();
     assert_eq!(free.fingertips()[0].backing(), Backing::Free);
     // The default scene's pads are bonded to their jaws, facing the box.
-    let default = Scene::parse(softgrip_scene::DEFAULT_SCENE, "default.toml", Path::new(".")).unwrap();
-    let facings: Vec<_> = default.fingertips().iter().map(|t| (t.backing(), t.facing())).collect();
+    let default = Scene::parse(
+        softgrip_scene::DEFAULT_SCENE,
+        "default.toml",
+        Path::new("."),
+    )
+    .unwrap();
+    let facings: Vec<_> = default
+        .fingertips()
+        .iter()
+        .map(|t| (t.backing(), t.facing()))
+        .collect();
     assert_eq!(
         facings,
         [
