@@ -2,6 +2,8 @@
 //! 6), run as a user runs them. Every number is compared with `ContactLaw` itself (the backed
 //! constants are being fitted: no law number is written here).
 
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
 use std::process::{Command, Output};
 
 use softgrip_law::{Backing, ContactLaw, ContactParams, Level};
