@@ -351,3 +351,85 @@ fn elastic_bounce_of_a_flat_pad_keeps_energy() {
     assert!((e10 / e0 - 1.0).abs() < 0.003, "{}", e10 / e0 - 1.0);
     assert!((e_max / e0 - 1.0).abs() < 0.003, "{}", e_max / e0 - 1.0);
 }
+
+/// The torsional friction limit is the law's: two kinematic flat pads squeeze a free box (no
+/// gravity) from above and below and are spun about the contact normal; the box cannot follow
+/// at once, so each pad's moment is saturated at `ContactPatch::torsion_limit(mu, F)` of its
+/// own patch (the integral of `mu p r dA` over the law's pressure shape; it was a fixed
+/// `3 pi / 16 mu F a`).
+#[test]
+fn spun_pads_twist_the_box_at_their_patchs_torsion_limit() {
+    let mut world = SoftWorld::new();
+    world.physics.gravity = Vector::ZERO;
+    let half = 0.02f32;
+    let object = world
+        .physics
+        .bodies
+        .insert(RigidBodyBuilder::dynamic().can_sleep(false));
+    world.physics.colliders.insert_with_parent(
+        ColliderBuilder::cuboid(half, half, half).mass(0.5),
+        object,
+        &mut world.physics.bodies,
+    );
+    let mu = 0.8;
+    // Each pressed 1 mm into the box.
+    let y = half as f64 + R - 0.001;
+    let pads: Vec<_> = [1.0f64, -1.0]
+        .into_iter()
+        .map(|side| {
+            let tip = SoftFingertip::builder(R)
+                .material(material())
+                .backing(Backing::Flat)
+                .facing([0.0, -side, 0.0])
+                .friction(mu)
+                .build()
+                .unwrap();
+            let pos = Vector::new(0.0, (side * y) as f32, 0.0);
+            (common::kinematic_tip(&mut world, pos, tip), pos)
+        })
+        .collect();
+    let dt = world.physics.integration_parameters.dt;
+    let (mut angle, mut checked) = (0.0f32, 0);
+    // The box (I = 1.3e-4 kg m^2) under the two saturated moments spins up at ~100 rad/s^2:
+    // 8 steps after the start it is still far below the pads' 60 rad/s.
+    for i in 0..20 {
+        if i >= 10 {
+            // Spin the pads fast about the normal (y): the box cannot follow at once.
+            angle += 60.0 * dt;
+        }
+        for ((body, _), pos) in &pads {
+            world.physics.bodies[*body].set_next_kinematic_position(Pose::from_parts(
+                *pos,
+                Rotation::from_axis_angle(Vector::Y, angle),
+            ));
+        }
+        world.step();
+        if i < 12 {
+            continue;
+        }
+        for ((_, co), _) in &pads {
+            let c = world
+                .soft
+                .contacts_of(*co)
+                .next()
+                .expect("pressed on the box");
+            let patch = c.patch();
+            let limit = patch.torsion_limit(mu, c.normal_force);
+            let hertz = 3.0 * std::f64::consts::PI / 16.0 * mu * c.normal_force * patch.radius;
+            if checked == 0 {
+                println!(
+                    "spun flat pads: |moment| {:.6e} N m, torsion_limit {limit:.6e} N m (shape m = {:.4}; 3 pi/16 would give {hertz:.6e})",
+                    c.torsional_moment.abs(),
+                    patch.shape
+                );
+            }
+            assert!(
+                (c.torsional_moment.abs() / limit - 1.0).abs() < 1e-3,
+                "step {i}: {} vs {limit}",
+                c.torsional_moment
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 16);
+}
