@@ -433,3 +433,58 @@ fn spun_pads_twist_the_box_at_their_patchs_torsion_limit() {
     }
     assert!(checked >= 16);
 }
+
+/// A free fingertip pressed on the back of a flat pad (behind its face) meets the rigid
+/// finger: one row, the free fingertip's, at its own law of the whole approach; the pad
+/// reports nothing.
+#[test]
+fn free_fingertip_on_the_back_of_a_flat_pad_reads_its_own_law() {
+    let mut world = SoftWorld::new();
+    world.physics.gravity = Vector::ZERO;
+    let pad = backed(Backing::Flat, [1.0, 0.0, 0.0], 1.0);
+    let free = SoftFingertip::builder(R)
+        .material(material())
+        .restitution(1.0)
+        .build()
+        .unwrap();
+    let law = free.law().clone();
+    let (_, pad_co) = common::kinematic_tip(&mut world, Vector::ZERO, pad);
+    let (free_body, free_co) = common::kinematic_tip(
+        &mut world,
+        Vector::new(-(2.0 * R) as f32 - 0.0005, 0.0, 0.0),
+        free,
+    );
+    let dt = world.physics.integration_parameters.dt as f64;
+    let mut samples = 0;
+    for i in 1..200 {
+        let x = -2.0 * R - 0.0005 + 0.001 * dt * i as f64;
+        if -x < 2.0 * R - 0.002 {
+            break;
+        }
+        common::move_to(&mut world, free_body, Vector::new(x as f32, 0.0, 0.0));
+        world.step();
+        assert_eq!(
+            world.soft.contacts_of(pad_co).count(),
+            0,
+            "the pad's back is rigid"
+        );
+        let approach = 2.0 * R + world.physics.bodies[free_body].translation().x as f64;
+        let Some(c) = world.soft.contacts_of(free_co).next() else {
+            assert!(approach < 1e-4, "no row at approach {approach}");
+            continue;
+        };
+        assert_eq!(c.other, pad_co);
+        assert!(c.backing.is_free());
+        if approach < 0.05 * R {
+            continue;
+        }
+        assert!(
+            (c.delta / approach - 1.0).abs() < 1e-3,
+            "{} vs {approach}",
+            c.delta
+        );
+        assert!((c.normal_force / law.response(c.delta).force - 1.0).abs() < 0.005);
+        samples += 1;
+    }
+    assert!(samples > 20, "{samples}");
+}
