@@ -1,15 +1,22 @@
-//! `softgrip curve`: one level of the law over a grid of compression ratios, as CSV.
+//! `softgrip curve`: one level of the law over a grid of compression ratios, as CSV; or its
+//! pressure profile at one compression ratio (`--profile X`).
 
 use std::io::{self, BufWriter, Write};
 
-use anyhow::{Context, Result};
-use softgrip_law::{ContactLaw, ContactParams};
+use anyhow::{Context, Result, bail};
+use softgrip_law::{Backing, ContactLaw, ContactParams};
 
 use crate::level_arg::LevelArgs;
 use crate::xrange::XRange;
 
 /// The CSV header, one column per normalised quantity.
 pub const HEADER: &str = "x,force_norm,stiffness_norm,energy_norm,radius_norm,p_mean_norm,valid";
+
+/// The CSV header of `--profile`: radius over the outer radius R, pressure over E*.
+pub const PROFILE_HEADER: &str = "r_norm,p_norm";
+
+/// Rows of a `--profile`: r/R from 0 to a/R in equal steps.
+pub const PROFILE_ROWS: usize = 50;
 
 /// Arguments of `softgrip curve`.
 #[derive(Debug, clap::Args)]
@@ -20,20 +27,82 @@ pub struct CurveArgs {
     /// Poisson ratio nu [-], in (-1, 0.5]; below 0.5 for neo-hookean and neo-hookean-exact.
     #[arg(long)]
     nu: f64,
-    /// Compression ratios x = delta/R [-] as START:STOP:STEP (STOP included when on the grid).
-    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
-    x: XRange,
+    /// Compression ratios x = delta/R [-] as START:STOP:STEP (STOP included when on the grid);
+    /// R is the outer radius for every backing. Not with `--profile`.
+    #[arg(
+        long,
+        value_name = "START:STOP:STEP",
+        allow_hyphen_values = true,
+        required_unless_present = "profile",
+        conflicts_with = "profile"
+    )]
+    x: Option<XRange>,
+    /// How the fingertip is built: free (a free sphere, default), flat (a hemisphere bonded at
+    /// its flat face) or core (a skin over a rigid core: needs `--thickness`).
+    #[arg(long, value_name = "free|flat|core", default_value = "free")]
+    backing: String,
+    /// Skin thickness over outer radius t/R [-] of `--backing core`, in (0, 1); only there.
+    #[arg(long, value_name = "T")]
+    thickness: Option<f64>,
+    /// Instead of the curve: the level's pressure profile at compression ratio x = X [-]
+    /// (0 < X <= the level's x_max), as CSV `r_norm,p_norm` (r/R from 0 to a/R, 50 rows; p/E*).
+    #[arg(long, value_name = "X")]
+    profile: Option<f64>,
 }
 
-/// Prints the curve to stdout. Rows past the level's validity range show the law's documented
-/// extension (tangent continuation) with `valid = 0`.
+/// The construction of `--backing` and `--thickness` (T = t/R; with R = 1 m, t = T m).
+fn backing(args: &CurveArgs) -> Result<Backing> {
+    match (args.backing.as_str(), args.thickness) {
+        ("core", Some(t)) => {
+            if !(t > 0.0 && t < 1.0) {
+                bail!("`--thickness` is t/R and must be in (0, 1), got {t}");
+            }
+            Ok(Backing::Core { thickness: t })
+        }
+        ("core", None) => bail!("`--backing core` needs `--thickness T` (t/R, in (0, 1))"),
+        ("free" | "flat", Some(_)) => bail!(
+            "`--thickness` applies only to `--backing core`, not to `--backing {}`",
+            args.backing
+        ),
+        (name, None) => name
+            .parse()
+            .map_err(|e: String| anyhow::anyhow!("invalid `--backing`: {e}")),
+        (name, Some(_)) => {
+            bail!("invalid `--backing`: unknown backing `{name}`; expected one of free, flat, core")
+        }
+    }
+}
+
+/// Prints the curve (or the profile) to stdout. Rows past the level's validity range show the
+/// law's documented extension (tangent continuation) with `valid = 0`.
 pub fn run(args: &CurveArgs) -> Result<()> {
     let level = args.level.level()?;
+    let backing = backing(args)?;
     // E* = 1 Pa and R = 1 m: the law's outputs are then the normalised quantities, delta = x.
-    let params = ContactParams::try_from_parts(1.0, 1.0, args.nu).context("invalid `--nu`")?;
-    let law = ContactLaw::try_new(params, level)
-        .with_context(|| format!("cannot build level `{level}` at nu = {}", args.nu))?;
-    match write_csv(&law, &args.x, io::stdout().lock()) {
+    let params = ContactParams::try_from_parts(1.0, 1.0, args.nu)
+        .context("invalid `--nu`")?
+        .with_backing(backing)
+        .context("invalid `--thickness`")?;
+    let law = ContactLaw::try_new(params, level).with_context(|| {
+        format!(
+            "cannot build level `{level}` at nu = {} for backing {backing}",
+            args.nu
+        )
+    })?;
+    let written = match (args.profile, &args.x) {
+        (Some(x), _) => {
+            if !(x > 0.0 && x <= law.x_max()) {
+                bail!(
+                    "`--profile` must be in (0, {}] (level `{level}`'s validity range for backing {backing}), got {x}",
+                    law.x_max()
+                );
+            }
+            write_profile(&law, x, io::stdout().lock())
+        }
+        (None, Some(xs)) => write_csv(&law, xs, io::stdout().lock()),
+        (None, None) => bail!("give `--x START:STOP:STEP` or `--profile X`"),
+    };
+    match written {
         // A closed pipe (`| head`) ends the output; it is not an error.
         Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
         other => other.context("cannot write to stdout"),
@@ -57,6 +126,19 @@ fn write_csv(law: &ContactLaw, xs: &XRange, out: impl Write) -> io::Result<()> {
             patch.mean_pressure,
             u8::from(x <= law.x_max()),
         )?;
+    }
+    out.flush()
+}
+
+/// The pressure profile of `law` (E* = 1, R = 1) at compression ratio `x`: `PROFILE_ROWS`
+/// rows from r = 0 to r = a (where p = 0), `ContactPatch::pressure_at`.
+fn write_profile(law: &ContactLaw, x: f64, out: impl Write) -> io::Result<()> {
+    let mut out = BufWriter::new(out);
+    writeln!(out, "{PROFILE_HEADER}")?;
+    let patch = law.patch(x);
+    for i in 0..PROFILE_ROWS {
+        let r = patch.radius * i as f64 / (PROFILE_ROWS - 1) as f64;
+        writeln!(out, "{r:e},{:e}", patch.pressure_at(r))?;
     }
     out.flush()
 }

@@ -145,6 +145,8 @@ fn linear_match_x_matches_hertz_there() {
     assert!(close(rows[0][1], 4.0 / 3.0 * 0.1f64.powf(1.5), 1e-12));
 }
 
+/// `auto`'s tolerance is measured against `calibrated` (issue 10 item 4; it was the full
+/// neo-Hookean theory, which is itself 5-6.6 % off FE).
 #[test]
 fn auto_accepts_a_tolerance_and_stays_near_the_full_theory() {
     let auto = curve(&[
@@ -159,7 +161,7 @@ fn auto_accepts_a_tolerance_and_stays_near_the_full_theory() {
     ]);
     let full = curve(&[
         "--level",
-        "neo-hookean",
+        "calibrated",
         "--nu",
         "0.3",
         "--x",

@@ -31,6 +31,7 @@ pub fn fingertip_law(tip: &SoftFingertip, name: &str) -> FingertipLaw {
         radius: tip.radius(),
         friction: tip.friction(),
         restitution: tip.restitution(),
+        backing: tip.backing(),
     }
 }
 
@@ -145,6 +146,7 @@ pub fn contact_reading(c: &TipContact, patch: Option<ContactPatch>) -> ContactRe
         max_delta: c.max_delta,
         contact_duration: c.contact_duration,
         patch,
+        backing: c.backing,
     }
 }
 

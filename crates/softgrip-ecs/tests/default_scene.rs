@@ -18,7 +18,22 @@ fn default_scene_squeeze_force_equals_the_law_at_the_commanded_depth() {
         println!("{s}");
         let depth = s.commanded_depth.unwrap();
         let force = s.squeeze_force.unwrap();
-        let law = tip.law().response(depth).force;
+        // The default scene's pads are bonded to their jaws (issue 10): the `flat` law,
+        // rebuilt here from the fingertip's own material, radius and level.
+        let flat = softgrip_ecs::scene::softgrip_rapier::softgrip_law::Backing::Flat;
+        assert_eq!(tip.backing(), flat);
+        let own = softgrip_ecs::scene::softgrip_rapier::softgrip_law::ContactLaw::try_new(
+            softgrip_ecs::scene::softgrip_rapier::softgrip_law::ContactParams::try_new(
+                tip.material(),
+                tip.radius(),
+            )
+            .unwrap()
+            .with_backing(flat)
+            .unwrap(),
+            tip.level(),
+        )
+        .unwrap();
+        let law = own.response(depth).force;
         let err = force / law - 1.0;
         println!(
             "{}: squeeze {force:.5} N, law({:.4} mm) = {law:.5} N, error {:+.3e}; delta {:.6} mm",
@@ -30,6 +45,26 @@ fn default_scene_squeeze_force_equals_the_law_at_the_commanded_depth() {
         assert!(err.abs() < 0.01, "{}: {force} N vs law {law} N", s.name);
         assert_eq!(s.validity_excursions, 0);
     }
+    // The backing flows through the ECS spawn: the plugin's registered pads are flat, facing
+    // the box, and bonded pads keep rapier's narrow phase for their rigid back (issue 10).
+    let physics = sim.world.resource::<softgrip_ecs::Physics>();
+    let mut registered: Vec<_> = physics
+        .world
+        .physics
+        .colliders
+        .iter()
+        .filter_map(|(h, _)| physics.world.soft.fingertip(h))
+        .map(|t| (t.name().to_string(), t.backing(), t.facing()))
+        .collect();
+    registered.sort_by(|a, b| a.0.cmp(&b.0));
+    let flat = softgrip_ecs::scene::softgrip_rapier::softgrip_law::Backing::Flat;
+    assert_eq!(
+        registered,
+        [
+            ("left_tip".to_string(), flat, Some([1.0, 0.0, 0.0])),
+            ("right_tip".to_string(), flat, Some([-1.0, 0.0, 0.0]))
+        ]
+    );
     println!("{report:?}, rtf {:.1}", report.real_time_factor());
 }
 

@@ -4,7 +4,9 @@ use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use nalgebra::Vector3;
-use rapier3d::prelude::{ActiveCollisionTypes, ColliderHandle, InteractionGroups, PhysicsWorld};
+use rapier3d::prelude::{
+    ActiveCollisionTypes, ActiveHooks, ColliderHandle, InteractionGroups, PhysicsWorld,
+};
 
 use crate::bodies::BodyTable;
 use crate::counters::SoftCounters;
@@ -60,6 +62,11 @@ pub struct SoftContacts {
     /// The collision groups each fingertip's collider had at registration (the collider's own
     /// are set to `InteractionGroups::none()`, which keeps rapier's narrow phase off it).
     pub(crate) groups: HashMap<ColliderHandle, InteractionGroups>,
+    /// The solver groups each fingertip's collider had at registration.
+    pub(crate) solver_groups: HashMap<ColliderHandle, InteractionGroups>,
+    /// The backed fingertips and their facing, in their collider's frame (for the hooks:
+    /// rapier's rigid contacts behind the flat face).
+    pub(crate) backed: HashMap<ColliderHandle, Vector3<f64>>,
     /// The fingertips and their collision groups, in handle order (the detection's order).
     pub(crate) tip_order: Vec<(ColliderHandle, InteractionGroups)>,
     /// The fingertips' colliders, for the hooks and events passed to rapier (`hooks`).
@@ -104,6 +111,15 @@ impl SoftContacts {
     /// to its active collision types (a fingertip on a kinematic finger must still see fixed
     /// and kinematic objects). The user's hooks and events passed to [`step`](Self::step)
     /// never see a fingertip's pairs either.
+    ///
+    /// **A backed fingertip** ([`SoftFingertipBuilder::backing`](crate::SoftFingertipBuilder::backing))
+    /// keeps its collision and solver groups, and gets the active hooks
+    /// `FILTER_CONTACT_PAIRS | MODIFY_SOLVER_CONTACTS`: rapier's narrow phase computes its
+    /// pairs, and the plugin's hooks keep only the solver contacts behind its flat face (the
+    /// rigid finger's side), which rapier's solver then handles as any rigid contact; every
+    /// solver contact on the pole side is dropped (the plugin's law handles that side). Its
+    /// manifolds are therefore visible in `NarrowPhase::contact_pair`, but still no event of
+    /// its pairs reaches the user's handler.
     pub fn register(
         &mut self,
         world: &mut PhysicsWorld,
@@ -128,21 +144,47 @@ impl SoftContacts {
                 fingertip_radius: fingertip.radius(),
             });
         }
-        let groups = if self.tips.contains_key(&collider) {
-            self.groups
-                .get(&collider)
-                .copied()
-                .unwrap_or(co.collision_groups())
+        let (groups, solver_groups) = if self.tips.contains_key(&collider) {
+            (
+                self.groups
+                    .get(&collider)
+                    .copied()
+                    .unwrap_or(co.collision_groups()),
+                self.solver_groups
+                    .get(&collider)
+                    .copied()
+                    .unwrap_or(co.solver_groups()),
+            )
         } else {
-            co.collision_groups()
+            (co.collision_groups(), co.solver_groups())
         };
-        co.set_collision_groups(InteractionGroups::none());
-        co.set_solver_groups(InteractionGroups::none());
+        match fingertip.facing() {
+            // A backed fingertip: rapier's narrow phase computes its pairs (its own groups),
+            // and the hooks keep only the solver contacts behind its flat face (`hooks`).
+            Some([x, y, z]) if !fingertip.backing().is_free() => {
+                co.set_collision_groups(groups);
+                co.set_solver_groups(solver_groups);
+                co.set_active_hooks(
+                    co.active_hooks()
+                        | ActiveHooks::FILTER_CONTACT_PAIRS
+                        | ActiveHooks::MODIFY_SOLVER_CONTACTS,
+                );
+                self.backed.insert(collider, Vector3::new(x, y, z));
+            }
+            _ => {
+                co.set_collision_groups(InteractionGroups::none());
+                co.set_solver_groups(InteractionGroups::none());
+                self.backed.remove(&collider);
+            }
+        }
         co.set_active_collision_types(
             co.active_collision_types()
                 | ActiveCollisionTypes::KINEMATIC_FIXED
                 | ActiveCollisionTypes::KINEMATIC_KINEMATIC,
         );
+        // A pair's model holds the fingertips' own: rebuilt with the new one on first use.
+        self.soft_pairs
+            .retain(|(a, b), _| *a != collider && *b != collider);
         self.soft_colliders.insert(collider);
         self.tip_models
             .insert(collider, Arc::new(Model::of_tip(&fingertip)));
@@ -153,6 +195,7 @@ impl SoftContacts {
         }
         self.tips.insert(collider, fingertip);
         self.groups.insert(collider, groups);
+        self.solver_groups.insert(collider, solver_groups);
         self.tip_order = self.groups.iter().map(|(h, g)| (*h, *g)).collect();
         self.tip_order.sort_unstable_by_key(|(h, _)| raw(*h));
         Ok(())
@@ -199,9 +242,13 @@ impl SoftContacts {
     pub(crate) fn model(&mut self, g: &Geom) -> Option<Arc<Model>> {
         if g.soft_pair {
             let (a, b) = (self.tips.get(&g.tip)?, self.tips.get(&g.other)?);
+            let (ma, mb) = (
+                self.tip_models.get(&g.tip)?.clone(),
+                self.tip_models.get(&g.other)?.clone(),
+            );
             self.soft_pairs
                 .entry((g.tip, g.other))
-                .or_insert_with(|| Model::of_pair(a, b).map(Arc::new))
+                .or_insert_with(|| Model::of_pair(a, b, ma, mb).map(Arc::new))
                 .clone()
         } else {
             self.tip_models.get(&g.tip).cloned()

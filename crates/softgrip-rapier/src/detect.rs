@@ -10,6 +10,7 @@
 //! shared edge or vertex gives one contact, never one per triangle.
 
 use std::collections::HashMap;
+use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::parry::bounding_volume::Aabb;
@@ -18,10 +19,11 @@ use rapier3d::prelude::{
     BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, NarrowPhase,
     QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
 };
-use softgrip_law::{ContactLaw, ContactParams};
+use softgrip_law::{Backing, ContactLaw, ContactParams};
 
 use crate::counters::SoftCounters;
 use crate::fingertip::SoftFingertip;
+use crate::series::SeriesLaw;
 
 /// The compression `delta` \[m\] of the law from parry's signed distance `dist` \[m\] (negative =
 /// penetration): `delta = -dist`. The one place where the engine's sign convention meets the
@@ -50,6 +52,21 @@ pub(crate) struct Model {
     pub radius: f64,
     /// Two fingertips: the readout reports the contact on both (`readout::assemble`).
     pub soft_pair: bool,
+    /// Two fingertips of which one is backed, in series (`series`): the split of the
+    /// approach and each fingertip's own model, for the readout.
+    pub series: Option<Series>,
+    /// The fingertip's construction (a combined pair of free fingertips: free).
+    pub backing: Backing,
+}
+
+/// The parts of a pair in series: its law (for the split) and the two fingertips' own models.
+#[derive(Debug, Clone)]
+pub(crate) struct Series {
+    pub law: Arc<SeriesLaw>,
+    /// The model of the pair's first fingertip (`Geom::tip`) against a rigid body.
+    pub first: Arc<Model>,
+    /// The model of its second fingertip (`Geom::other`).
+    pub second: Arc<Model>,
 }
 
 impl Model {
@@ -61,23 +78,57 @@ impl Model {
             torsion: tip.torsional_friction(),
             radius: tip.radius(),
             soft_pair: false,
+            series: None,
+            backing: tip.backing(),
         }
     }
 
-    /// Two fingertips: combined E*, R and nu (`ContactParams::try_combine`), the first one's
-    /// level, the larger dissipation coefficient alpha and the geometric mean of the frictions;
-    /// torsional friction only if both have it.
-    pub(crate) fn of_pair(a: &SoftFingertip, b: &SoftFingertip) -> Option<Self> {
-        let p =
-            ContactParams::try_combine(a.material(), a.radius(), b.material(), b.radius()).ok()?;
-        let law = ContactLaw::try_new(p, a.level()).ok()?;
+    /// Two fingertips `a` and `b` (their own models `model_a`, `model_b`): the larger
+    /// dissipation coefficient alpha and the geometric mean of the frictions; torsional
+    /// friction only if both have it. Both free: one combined law (combined E*, R and nu,
+    /// `ContactParams::try_combine`, `a`'s level). Either backed: the two own laws in series
+    /// ([`SeriesLaw`]), normalised by `a`'s E* and the larger radius.
+    pub(crate) fn of_pair(
+        a: &SoftFingertip,
+        b: &SoftFingertip,
+        model_a: Arc<Model>,
+        model_b: Arc<Model>,
+    ) -> Option<Self> {
+        let (law, radius, series) = if a.backing().is_free() && b.backing().is_free() {
+            let p = ContactParams::try_combine(a.material(), a.radius(), b.material(), b.radius())
+                .ok()?;
+            (ContactLaw::try_new(p, a.level()).ok()?, p.radius(), None)
+        } else {
+            let radius = a.radius().max(b.radius());
+            let reference = ContactParams::try_from_parts(
+                a.material().effective_modulus(),
+                radius,
+                a.material().poisson_ratio(),
+            )
+            .ok()?;
+            let series = Arc::new(SeriesLaw::new(
+                model_a.law.clone(),
+                model_b.law.clone(),
+                reference.effective_modulus(),
+                radius,
+            ));
+            let law = ContactLaw::custom(reference, series.clone()).ok()?;
+            let parts = Series {
+                law: series,
+                first: model_a,
+                second: model_b,
+            };
+            (law, radius, Some(parts))
+        };
         Some(Self {
             alpha: a.damping_alpha().max(b.damping_alpha()),
             friction: (a.friction() * b.friction()).sqrt(),
             torsion: a.torsional_friction() && b.torsional_friction(),
-            radius: p.radius(),
+            radius,
             soft_pair: true,
+            series,
             law,
+            backing: Backing::Free,
         })
     }
 }
@@ -159,7 +210,7 @@ pub(crate) fn detect(
     let (v_max, w_max) = fastest_motion(scene.bodies);
     // In handle order: the contacts come out sorted by (fingertip, other).
     for &(tip_h, tip_groups) in scene.tip_order {
-        let Some(tip) = Tip::of(scene, tip_h, tip_groups, dt, counters) else {
+        let Some(tip) = Tip::of(scene, tips, tip_h, tip_groups, dt, counters) else {
             continue;
         };
         tip.candidates(&qp, v_max, w_max, candidates);
@@ -201,6 +252,8 @@ struct Tip<'a> {
     /// Its current AABB.
     aabb: Aabb,
     dt: f32,
+    /// A backed fingertip's facing, world (`facing_world`).
+    facing: Option<Vector3<f64>>,
 }
 
 impl<'a> Tip<'a> {
@@ -208,6 +261,7 @@ impl<'a> Tip<'a> {
     /// centre (a non-finite centre is counted).
     fn of(
         scene: &Scene<'a>,
+        tips: &HashMap<ColliderHandle, SoftFingertip>,
         handle: ColliderHandle,
         groups: InteractionGroups,
         dt: f64,
@@ -237,6 +291,7 @@ impl<'a> Tip<'a> {
             r: ball.radius,
             aabb: collider.compute_aabb(),
             dt: dt as f32,
+            facing: tips.get(&handle).and_then(|t| facing_world(t, collider)),
         })
     }
 
@@ -351,7 +406,7 @@ impl<'a> Tip<'a> {
             }
         };
         let s = surfaces(&c, counters)?;
-        Some(Geom {
+        let g = Geom {
             tip: self.handle,
             other: other_h,
             body_tip: self.body,
@@ -361,8 +416,63 @@ impl<'a> Tip<'a> {
             normal: s.normal,
             dist: s.dist,
             soft_pair,
-        })
+        };
+        // Behind the flat face of a backed fingertip is its rigid finger (`behind_face`).
+        let tip_behind = behind_face(self.facing, &(-s.normal));
+        if !soft_pair {
+            // rapier's own rigid contact (the hooks keep its solver contacts there).
+            return (!tip_behind).then_some(g);
+        }
+        let other_facing = tips.get(&other_h).and_then(|t| facing_world(t, other_co));
+        let other_behind = behind_face(other_facing, &s.normal);
+        match (tip_behind, other_behind) {
+            (false, false) => Some(g),
+            // The other fingertip is pressed on this one's rigid finger: its own law.
+            (true, false) => Some(g.swapped(&s)),
+            // This fingertip is pressed on the other's rigid finger: its own law.
+            (false, true) => Some(Geom {
+                soft_pair: false,
+                ..g
+            }),
+            // Rigid on rigid: rapier's contact.
+            (true, true) => None,
+        }
     }
+}
+
+impl Geom {
+    /// The contact as the other fingertip sees it, alone against a rigid body (this one's
+    /// finger): the fingertips swapped, the normal negated, the closest point on the other
+    /// surface now this fingertip's (`s.point_other` was the other's: the midpoint mirrored).
+    fn swapped(self, s: &Surfaces) -> Geom {
+        Geom {
+            tip: self.other,
+            other: self.tip,
+            body_tip: self.body_other,
+            body_other: self.body_tip,
+            point: self.point,
+            point_other: 2.0 * s.point - s.point_other,
+            normal: -self.normal,
+            dist: self.dist,
+            soft_pair: false,
+        }
+    }
+}
+
+/// A backed fingertip's facing in world axes: its collider's rotation applied to
+/// `SoftFingertip::facing` (`None` for a free fingertip).
+pub(crate) fn facing_world(tip: &SoftFingertip, collider: &Collider) -> Option<Vector3<f64>> {
+    let [x, y, z] = tip.facing()?;
+    let local = Vector::new(x as f32, y as f32, z as f32);
+    Some(to_f64(collider.position().rotation * local))
+}
+
+/// Whether a contact in direction `dir` (from the fingertip's centre towards the other body,
+/// world) is behind the flat face of a fingertip facing `facing` (world; `None`: free, never
+/// behind): `dir . facing < 0`, the finger's side. The equator (`dir . facing = 0`) is soft.
+#[inline]
+pub(crate) fn behind_face(facing: Option<Vector3<f64>>, dir: &Vector3<f64>) -> bool {
+    facing.is_some_and(|f| f.dot(dir) < 0.0)
 }
 
 /// parry's contact of a pair in the plugin's `f64` algebra.

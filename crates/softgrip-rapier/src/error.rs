@@ -29,6 +29,20 @@ pub enum Error {
     /// The builder was given neither a material nor a preset.
     #[error("a fingertip needs a material: call `.material(..)` or `.preset(..)`")]
     MissingMaterial,
+    /// A backed fingertip (`flat` or `core`) was given no `facing` direction.
+    #[error(
+        "a `{0}` fingertip needs `facing`: the direction its pad faces (flat face towards the pole) in its collider's frame, a finite non-zero [x, y, z]"
+    )]
+    MissingFacing(&'static str),
+    /// A law given with `SoftFingertipBuilder::law` was built for another construction than
+    /// the fingertip's `backing`.
+    #[error("the law was built for backing {law}, the fingertip's backing is {fingertip}")]
+    BackingMismatch {
+        /// The fingertip's backing.
+        fingertip: String,
+        /// The backing of the law's parameters.
+        law: String,
+    },
     /// The contact law rejected the material, radius or level.
     #[error("contact law: {0}")]
     Law(#[from] softgrip_law::Error),

@@ -1,6 +1,6 @@
 //! [`SoftFingertip`]: the validated parameters of one soft fingertip, and its builder.
 
-use softgrip_law::{ContactLaw, ContactParams, Level, Material};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material};
 
 use crate::error::{Error, Result};
 use crate::presets::Preset;
@@ -55,6 +55,8 @@ pub struct SoftFingertip {
     law: ContactLaw,
     damping_zeta: f64,
     tactile: Option<TactileGrid>,
+    backing: Backing,
+    facing: Option<[f64; 3]>,
 }
 
 impl SoftFingertip {
@@ -72,6 +74,8 @@ impl SoftFingertip {
             friction: DEFAULT_FRICTION,
             torsional_friction: true,
             tactile: None,
+            backing: Backing::Free,
+            facing: None,
         }
     }
 
@@ -111,14 +115,30 @@ impl SoftFingertip {
         self.friction
     }
 
-    /// Whether the contact patch resists twist about the normal, up to `(3 pi / 16) mu_f F a`.
+    /// Whether the contact patch resists twist about the normal, up to the integral of
+    /// `mu_f p r dA` over the law's patch (`ContactPatch::torsion_limit`; `(3 pi / 16) mu_f F a`
+    /// for Hertz's pressure shape).
     pub fn torsional_friction(&self) -> bool {
         self.torsional_friction
     }
 
-    /// The contact law against a rigid body.
+    /// The contact law against a rigid body (for a backed fingertip, the law of its
+    /// construction: see [`SoftFingertipBuilder::backing`]).
     pub fn law(&self) -> &ContactLaw {
         &self.law
+    }
+
+    /// How the fingertip is built ([`Backing::Free`] unless set by
+    /// [`SoftFingertipBuilder::backing`]).
+    pub fn backing(&self) -> Backing {
+        self.backing
+    }
+
+    /// For a backed fingertip ([`Backing::Flat`], [`Backing::Core`]): the unit direction its
+    /// pad faces, from the flat face towards the pole, in its collider's frame (its body's
+    /// axes for a collider without a rotation of its own). `None` for a free fingertip.
+    pub fn facing(&self) -> Option<[f64; 3]> {
+        self.facing
     }
 
     /// The tactile pad, if the fingertip has one
@@ -213,6 +233,8 @@ pub struct SoftFingertipBuilder {
     friction: f64,
     torsional_friction: bool,
     tactile: Option<TactilePad>,
+    backing: Backing,
+    facing: Option<[f64; 3]>,
 }
 
 impl SoftFingertipBuilder {
@@ -274,9 +296,10 @@ impl SoftFingertipBuilder {
     }
 
     /// Torsional friction of the contact patch (default on): twist about the contact normal is
-    /// resisted up to `(3 pi / 16) mu_f F a`, the moment of Coulomb friction under a
-    /// Hertz-shaped pressure over the law's contact radius `a`. Off, a point contact that
-    /// cannot resist twist (for comparison).
+    /// resisted up to the moment of Coulomb friction under the law's pressure profile,
+    /// `ContactPatch::torsion_limit` = the integral of `mu_f p r dA` over the contact radius `a`
+    /// (`(3 pi / 16) mu_f F a` for Hertz's shape, `2/3 mu_f F a` for a uniform pressure). Off,
+    /// a point contact that cannot resist twist (for comparison).
     pub fn torsional_friction(mut self, enabled: bool) -> Self {
         self.torsional_friction = enabled;
         self
@@ -287,6 +310,33 @@ impl SoftFingertipBuilder {
     /// computed. Checked by [`build`](Self::build) (`tactile.*` fields).
     pub fn tactile(mut self, pad: TactilePad) -> Self {
         self.tactile = Some(pad);
+        self
+    }
+
+    /// How the fingertip is built (default [`Backing::Free`], a whole soft sphere): a
+    /// [`Backing::Flat`] hemisphere bonded at its flat face to a rigid finger, or a
+    /// [`Backing::Core`] skin of thickness `t` \[m\] (in (0, R)) over a rigid core. Its law
+    /// against a rigid body is then that construction's (`ContactParams::with_backing`: the
+    /// `calibrated` level, and `auto`'s reference, are the backed law; the other levels compute
+    /// the free sphere's). A backed fingertip needs [`facing`](Self::facing).
+    ///
+    /// Only the pole side is soft. A contact whose direction from the fingertip's centre
+    /// towards the other body has a negative component along `facing` (behind the flat face:
+    /// the finger's side) is a rigid contact: rapier's own solver handles it (the fingertip's
+    /// ball behaves there as a rigid ball), it has no soft readout row and no tactile pressure.
+    /// Two fingertips of which one is backed are pressed in series onto their rigid
+    /// mid-surface: see the crate README ("Backed fingertips").
+    pub fn backing(mut self, backing: Backing) -> Self {
+        self.backing = backing;
+        self
+    }
+
+    /// The direction the pad of a backed fingertip faces, from its flat face towards its pole,
+    /// in its collider's frame (its body's axes for a collider without a rotation of its own):
+    /// finite and non-zero (normalised by [`build`](Self::build)). Required for
+    /// [`Backing::Flat`] and [`Backing::Core`]; checked but not used for a free fingertip.
+    pub fn facing(mut self, direction: [f64; 3]) -> Self {
+        self.facing = Some(direction);
         self
     }
 
@@ -335,9 +385,21 @@ impl SoftFingertipBuilder {
             .tactile
             .map(|pad| pad.validate(self.radius))
             .transpose()?;
+        let facing = match self.facing {
+            Some(d) => Some(unit_facing(d)?),
+            None if self.backing.is_free() => None,
+            None => return Err(Error::MissingFacing(self.backing.name())),
+        };
         let material = self.material.ok_or(Error::MissingMaterial)?;
         let law = match self.law {
             Some(law) => {
+                let backing = law.params().backing();
+                if !backing.is_free() && backing != self.backing {
+                    return Err(Error::BackingMismatch {
+                        fingertip: self.backing.to_string(),
+                        law: backing.to_string(),
+                    });
+                }
                 let r = law.params().radius();
                 if (r - self.radius).abs() > 1e-9 * self.radius {
                     return Err(Error::InvalidParameter {
@@ -348,9 +410,10 @@ impl SoftFingertipBuilder {
                 }
                 law
             }
-            None => {
-                ContactLaw::try_new(ContactParams::try_new(material, self.radius)?, self.level)?
-            }
+            None => ContactLaw::try_new(
+                ContactParams::try_new(material, self.radius)?.with_backing(self.backing)?,
+                self.level,
+            )?,
         };
         Ok(SoftFingertip {
             name: self.name,
@@ -364,6 +427,30 @@ impl SoftFingertipBuilder {
             law,
             damping_zeta: hunt_crossley_zeta(self.restitution),
             tactile,
+            backing: self.backing,
+            facing: if self.backing.is_free() { None } else { facing },
         })
     }
+}
+
+/// `d` normalised: finite components and a norm > 0 (and finite), else the error naming
+/// `facing` with the offending number (a non-finite component, or the norm).
+fn unit_facing(d: [f64; 3]) -> Result<[f64; 3]> {
+    const RANGE: &str = "a finite, non-zero direction [x, y, z] in the collider's frame";
+    if let Some(bad) = d.iter().find(|v| !v.is_finite()) {
+        return Err(Error::InvalidParameter {
+            field: "facing",
+            value: *bad,
+            range: RANGE,
+        });
+    }
+    let norm = d.iter().map(|v| v * v).sum::<f64>().sqrt();
+    if !(norm > 0.0 && norm.is_finite()) {
+        return Err(Error::InvalidParameter {
+            field: "facing",
+            value: norm,
+            range: RANGE,
+        });
+    }
+    Ok(d.map(|v| v / norm))
 }

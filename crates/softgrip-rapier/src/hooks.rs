@@ -12,28 +12,53 @@
 //!
 //! [`SoftContacts::register`]: crate::SoftContacts::register
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
+use nalgebra::Vector3;
 use rapier3d::prelude::{
     ColliderHandle, ColliderSet, CollisionEvent, ContactModificationContext, ContactPair,
     EventHandler, PairFilterContext, PhysicsHooks, RigidBodySet, SoftBodySet, SoftBodyTearEvent,
     SolverFlags,
 };
 
+use crate::detect::{behind_face, to_f64};
+
 /// The user's [`PhysicsHooks`], with the pairs of a fingertip answered by the plugin.
 pub(crate) struct SoftHooks<'a> {
     soft: &'a HashSet<ColliderHandle>,
+    /// The backed fingertips and their facing in their collider's frame.
+    backed: &'a HashMap<ColliderHandle, Vector3<f64>>,
     user: &'a dyn PhysicsHooks,
 }
 
 impl<'a> SoftHooks<'a> {
-    /// `user`'s hooks, for every pair without a collider of `soft`.
-    pub(crate) fn new(soft: &'a HashSet<ColliderHandle>, user: &'a dyn PhysicsHooks) -> Self {
-        Self { soft, user }
+    /// `user`'s hooks, for every pair without a collider of `soft`; `backed` are the backed
+    /// fingertips (a subset of `soft`) with their facing.
+    pub(crate) fn new(
+        soft: &'a HashSet<ColliderHandle>,
+        backed: &'a HashMap<ColliderHandle, Vector3<f64>>,
+        user: &'a dyn PhysicsHooks,
+    ) -> Self {
+        Self { soft, backed, user }
     }
 
     fn is_soft_pair(&self, a: ColliderHandle, b: ColliderHandle) -> bool {
         self.soft.contains(&a) || self.soft.contains(&b)
+    }
+
+    /// A pair that rapier's solver handles where it is behind a backed fingertip's face:
+    /// at least one backed fingertip, and no free one (a free fingertip is soft all round).
+    fn is_rigid_capable(&self, a: ColliderHandle, b: ColliderHandle) -> bool {
+        let free = |h| self.soft.contains(&h) && !self.backed.contains_key(&h);
+        (self.backed.contains_key(&a) || self.backed.contains_key(&b)) && !free(a) && !free(b)
+    }
+
+    /// The world facing of backed fingertip `h` (its collider's rotation applied to it).
+    fn facing(&self, colliders: &ColliderSet, h: ColliderHandle) -> Option<Vector3<f64>> {
+        let f = self.backed.get(&h)?;
+        let co = colliders.get(h)?;
+        let local = rapier3d::prelude::Vector::new(f.x as f32, f.y as f32, f.z as f32);
+        Some(to_f64(co.position().rotation * local))
     }
 }
 
@@ -41,7 +66,11 @@ impl PhysicsHooks for SoftHooks<'_> {
     /// A pair with a fingertip: rapier's solver ignores it (the plugin applies the law's
     /// impulses itself). Any other pair: the user's answer.
     fn filter_contact_pair(&self, ctx: &PairFilterContext) -> Option<SolverFlags> {
-        if self.is_soft_pair(ctx.collider1, ctx.collider2) {
+        if self.is_rigid_capable(ctx.collider1, ctx.collider2) {
+            // Behind a backed fingertip's face: rapier's rigid contact (the solver contacts on
+            // the pole side are dropped by `modify_solver_contacts`).
+            Some(SolverFlags::COMPUTE_RIGID_IMPULSES)
+        } else if self.is_soft_pair(ctx.collider1, ctx.collider2) {
             Some(SolverFlags::empty())
         } else {
             self.user.filter_contact_pair(ctx)
@@ -58,11 +87,40 @@ impl PhysicsHooks for SoftHooks<'_> {
         }
     }
 
-    /// A pair with a fingertip has no solver contacts to modify. Any other pair: the user's.
+    /// A pair with a backed fingertip: only the solver contacts behind the flat face of every
+    /// backed fingertip of the pair are kept (the direction from its centre to its own contact
+    /// point has a negative component along its facing: the rigid finger's side); the others
+    /// belong to the plugin's law. Any other pair with a fingertip has no solver contacts.
+    /// Any other pair: the user's.
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
-        if !self.is_soft_pair(ctx.collider1, ctx.collider2) {
+        let (c1, c2) = (ctx.collider1, ctx.collider2);
+        if !self.is_soft_pair(c1, c2) {
             self.user.modify_solver_contacts(ctx);
+            return;
         }
+        let side = |h: ColliderHandle| {
+            let centre = ctx
+                .colliders
+                .get(h)
+                .map(|c| to_f64(c.position().translation));
+            self.facing(ctx.colliders, h).zip(centre)
+        };
+        let (s1, s2) = (side(c1), side(c2));
+        let rigid_capable = self.is_rigid_capable(c1, c2);
+        let Some(rigid) = ctx.rigid_mut() else {
+            return;
+        };
+        if !rigid_capable {
+            rigid.solver_contacts.clear();
+            return;
+        }
+        rigid.solver_contacts.retain(|c| {
+            let behind = |s: Option<(Vector3<f64>, Vector3<f64>)>, anchor| match s {
+                Some((facing, centre)) => behind_face(Some(facing), &(to_f64(anchor) - centre)),
+                None => true,
+            };
+            behind(s1, c.anchor1) && behind(s2, c.anchor2)
+        });
     }
 }
 

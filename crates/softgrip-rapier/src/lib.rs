@@ -11,6 +11,7 @@ mod fingertip;
 mod hooks;
 mod presets;
 mod readout;
+mod series;
 mod solve;
 mod step;
 mod substep;

@@ -6,9 +6,9 @@ use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
-use softgrip_law::{ContactLaw, ContactPatch, LevelKind, Regime};
+use softgrip_law::{Backing, ContactLaw, ContactPatch, LevelKind, Regime};
 
-use crate::detect::{Model, raw};
+use crate::detect::{Model, Series, raw};
 use crate::solve::Row;
 
 /// One soft contact after a step. Cheap to produce: the contact radius and pressure are only
@@ -19,12 +19,16 @@ use crate::solve::Row;
 /// (`delta - h v_n`, what rapier's position update produces), so `normal_force` and
 /// `law(delta)` agree for a quasi-static contact.
 ///
-/// A contact of two fingertips is one pair with one combined law
-/// (`ContactParams::try_combine`) and is reported **twice**, once per fingertip: `fingertip`
-/// and `other` swapped, each with its own normal (from the other fingertip to it), the force
-/// and friction vectors exactly opposite, `delta` the approach of the two surfaces and
-/// `x = delta / R_eff` (R_eff the combined radius). Sum `normal_force` per fingertip, not over
-/// all contacts, to avoid counting such a pair twice.
+/// A contact of two fingertips is reported **twice**, once per fingertip: `fingertip` and
+/// `other` swapped, each with its own normal (from the other fingertip to it), the force and
+/// friction vectors exactly opposite. Two free fingertips are one pair with one combined law
+/// (`ContactParams::try_combine`): `delta` is the approach of the two surfaces and
+/// `x = delta / R_eff` (R_eff the combined radius) in both rows. When either is backed, the two
+/// are pressed in series on their rigid mid-surface: each row is its own fingertip's, `delta`
+/// its share of the approach (the shares add up to the approach, their forces are equal),
+/// `x = delta / R` with its own radius, and its own law's stiffness, level, regime and patch.
+/// Sum `normal_force` per fingertip, not over all contacts, to avoid counting such a pair
+/// twice.
 #[derive(Debug, Clone)]
 pub struct TipContact {
     /// The fingertip's collider.
@@ -67,6 +71,9 @@ pub struct TipContact {
     pub max_x: f64,
     /// Time in contact (compression > 0) during the step \[s\].
     pub contact_duration: f64,
+    /// The fingertip's construction (`SoftFingertip::backing`; `Free` for a combined pair of
+    /// two free fingertips).
+    pub backing: Backing,
     pub(crate) model: Arc<Model>,
 }
 
@@ -258,18 +265,53 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
             max_delta: a.max_delta,
             max_x: a.max_delta / a.model.radius,
             contact_duration: a.duration,
+            backing: a.model.backing,
             model: a.model,
         });
-        if let Some(last) = out.last()
+        if let Some(last) = out.last_mut()
             && last.model.soft_pair
         {
-            let mirror = mirrored(last);
-            out.push(mirror);
+            if let Some(series) = &last.model.series {
+                let series = series.clone();
+                let mirror = in_series(last, &series);
+                out.push(mirror);
+            } else {
+                let mirror = mirrored(last);
+                out.push(mirror);
+            }
         }
     }
     acc.clear();
     // Already sorted unless a split step found new contacts after its first substep.
     out.sort_by_key(|c| (raw(c.fingertip), raw(c.other)));
+}
+
+/// A pair in series (`detect::Series`): rewrites `c` as its first fingertip's own contact
+/// with the rigid mid-surface (its share `delta_1` of the approach, `x = delta_1 / R_1`, its
+/// own law's stiffness, level and regime, its own model, so `patch()` is its own patch) and
+/// returns the second fingertip's (`delta_2`, its law, normal and force vectors negated). The
+/// forces are the pair's (equal and opposite, Newton's third law).
+fn in_series(c: &mut TipContact, series: &Series) -> TipContact {
+    let (d1, d2) = series.law.split(c.delta);
+    let (m1, m2) = series.law.split(c.max_delta);
+    let mut second = mirrored(c);
+    for (row, model, delta, max_delta) in [
+        (c, &series.first, d1, m1),
+        (&mut second, &series.second, d2, m2),
+    ] {
+        let resp = model.law.response(delta);
+        row.delta = delta;
+        row.x = delta / model.radius;
+        row.max_delta = max_delta;
+        row.max_x = max_delta / model.radius;
+        row.stiffness = resp.stiffness;
+        row.level = resp.level;
+        row.validity_exceeded |= resp.regime == Regime::Extended;
+        row.regime = resp.regime;
+        row.backing = model.backing;
+        row.model = model.clone();
+    }
+    second
 }
 
 /// The contact `c` of two fingertips as the second fingertip sees it: the same pair, point,

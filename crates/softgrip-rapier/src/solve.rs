@@ -20,8 +20,9 @@
 //! the other body; the tangential impulse targets zero relative tangential velocity plus a
 //! positional correction `beta * offset / h` back to the anchor, and is clamped to the disk
 //! `mu_f j_n`. If clamped, the contact slides. Torsion about the normal targets zero relative
-//! spin and is clamped to `(3 pi / 16) mu_f a j_n` (a Hertz-shaped pressure over the law's
-//! contact radius `a`). In a coupled group, friction is solved by Gauss-Seidel sweeps,
+//! spin and is clamped to `c(m) mu_f a j_n`, the moment of Coulomb friction under the law's
+//! pressure profile `(1 - r^2/a^2)^m` over its contact radius `a` (`ContactPatch::torsion_limit`;
+//! `c = 3 pi / 16` for Hertz's `m = 1/2`). In a coupled group, friction is solved by Gauss-Seidel sweeps,
 //! alternated with the normal solve; a lone contact (a group of one) takes the normal impulse
 //! and then friction and torsion in closed form, once (no iteration).
 
@@ -100,7 +101,8 @@ pub(crate) struct Row {
     pub theta: f64,
     /// Friction coefficient.
     pub mu: f64,
-    /// Torsion limit per unit normal impulse, (3 pi/16) mu a \[m\].
+    /// Torsion limit per unit normal impulse, `ContactPatch::torsion_limit(mu, 1)` \[m\]
+    /// (`(3 pi/16) mu a` for Hertz's pressure shape).
     pub torsion_arm: f64,
     /// Tangential offset of the contact from its anchor (world, in the tangent plane) \[m\].
     pub offset: Vector3<f64>,
@@ -569,7 +571,7 @@ fn solve_group(
 /// iterations. The normal impulse in closed form ([`solve_normal_single`]), then friction and
 /// torsion in closed form once: the tangential impulse cancels the relative tangential velocity
 /// plus the anchor bias (exact inverse of the 2 x 2 tangential mobility), clamped to the Coulomb
-/// disk `mu j_n`; the torsional impulse cancels the relative spin, clamped to `(3 pi/16) mu a
+/// disk `mu j_n`; the torsional impulse cancels the relative spin, clamped to `torsion_arm
 /// j_n` (one [`friction_sweep`] of the row). The coupling of the friction impulses back into
 /// the normal velocity (through the rotation of the bodies) is not iterated.
 fn solve_single(bodies: &mut [BodyState], base: &[BodyState], r: &mut Row, h: f64) -> bool {

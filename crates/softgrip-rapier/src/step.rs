@@ -50,7 +50,11 @@ impl SoftContacts {
     ) {
         // The set is read by the adapters while the rest of `self` is written.
         let soft = std::mem::take(&mut self.soft_colliders);
-        let (hooks, events) = (SoftHooks::new(&soft, hooks), SoftEvents::new(&soft, events));
+        let backed = std::mem::take(&mut self.backed);
+        let (hooks, events) = (
+            SoftHooks::new(&soft, &backed, hooks),
+            SoftEvents::new(&soft, events),
+        );
         Step {
             physics: world,
             soft: self,
@@ -59,6 +63,7 @@ impl SoftContacts {
         }
         .run();
         self.soft_colliders = soft;
+        self.backed = backed;
     }
 }
 
@@ -322,6 +327,11 @@ impl Step<'_> {
                     row.extended = true;
                 }
                 Regime::NonFinite => soft.counters.non_finite += 1,
+                // A pair in series: past either fingertip's own range.
+                _ if model.series.as_ref().is_some_and(|s| s.law.extended(delta)) => {
+                    soft.counters.validity_excursions += 1;
+                    row.extended = true;
+                }
                 _ => {}
             }
             soft.counters.contacts_evaluated += 1;
@@ -343,9 +353,9 @@ impl Step<'_> {
             };
             if model.friction > 0.0 {
                 if model.torsion {
-                    // Only the torsion limit needs the contact radius.
-                    let a = model.law.patch(delta).radius;
-                    row.torsion_arm = 3.0 * std::f64::consts::PI / 16.0 * model.friction * a;
+                    // Only the torsion limit needs the patch: the integral of mu p r dA over
+                    // the law's pressure profile, per unit normal force.
+                    row.torsion_arm = model.law.patch(delta).torsion_limit(model.friction, 1.0);
                 }
                 let anchor = other_pose
                     .map(|p| to_f64(p.transform_point(to_f32(&state.anchor_local))))

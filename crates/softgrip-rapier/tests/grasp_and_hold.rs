@@ -122,3 +122,31 @@ fn half_grip_below_friction_limit_slips() {
     // The READMEs state 0.100 m (the whole lift: the box stays on the ground); was > 5 cm.
     assert!(o.slip > 0.09, "slip {} m, README: 0.100", o.slip);
 }
+
+/// Issue 10: the same grasp with `flat` pads (hemispheres bonded to the jaws, facing the box):
+/// the squeeze depth is the flat law's inverse at 5 N, the box is held (slip during the lift
+/// only, none in the hold), the grip reads 5 N, and the torsion of the flat law's patch keeps
+/// the off-centre load from turning.
+#[test]
+fn flat_pads_hold_the_box_and_resist_twist() {
+    let flat = softgrip_law::Backing::Flat;
+    let o = run(&GraspSpec {
+        backing: flat,
+        ..GraspSpec::default()
+    });
+    let twist = run(&GraspSpec {
+        backing: flat,
+        com_offset_z: 0.002,
+        ..GraspSpec::default()
+    });
+    println!(
+        "flat pads, grasp 5 N: slip {:.3e} m (hold only {:.3e} m), lifted {:.4} m, grip {:.4} N; off-centre load: turn {:.3} deg",
+        o.slip, o.slip_hold_max, o.lifted, o.grip_force, twist.turn_deg
+    );
+    // The free pads' figures (above): slip 62 um, 0 in the hold, grip 5.000 N, 0.095 deg.
+    assert!((0.0..=124e-6).contains(&o.slip), "slip {} m", o.slip);
+    assert!(o.slip_hold_max < 1e-6, "hold slip {} m", o.slip_hold_max);
+    assert!((o.lifted - 0.1).abs() < 2e-3);
+    assert!((o.grip_force / 5.0 - 1.0).abs() < 0.005);
+    assert!(twist.turn_deg < 0.19, "turn {} deg", twist.turn_deg);
+}

@@ -276,6 +276,7 @@ fn soft_contact_msg_in(c: &ContactSample, up: UpAxis) -> SoftContactMsg {
         ..SoftContactMsg::default()
     };
     m.set_level(k.level);
+    m.set_backing(k.backing);
     m
 }
 

@@ -262,6 +262,7 @@ proptest! {
             level, level_name: name.clone(),
             validity_exceeded: flags.0, sliding: flags.1,
             peak_normal_force: v(1), max_compression: v(2), contact_duration: v(3),
+            backing: level % 3, core_thickness: v(4),
         };
         let back = SoftContactMsg::from_cdr(&c.to_cdr()).unwrap();
         // Compare bit patterns: NaN != NaN.

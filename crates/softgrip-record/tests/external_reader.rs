@@ -78,9 +78,11 @@ fn assert_contact(got: &Value, want: &SoftContactMsg, step: &StepRecord) {
         ("peak_normal_force", want.peak_normal_force),
         ("max_compression", want.max_compression),
         ("contact_duration", want.contact_duration),
+        ("core_thickness", want.core_thickness),
     ] {
         assert_close(&got[name], w, name);
     }
+    assert_eq!(got["backing"].as_u64(), Some(u64::from(want.backing)));
     assert_eq!(got["level"].as_u64(), Some(u64::from(want.level)));
     assert_eq!(got["level_name"], want.level_name.as_str());
     assert_eq!(

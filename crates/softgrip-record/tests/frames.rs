@@ -29,6 +29,7 @@ fn tip(name: &str, body: &str, radius: f64) -> FingertipInfo {
             radius,
             friction: 0.8,
             restitution: 0.5,
+            backing: softgrip_law::Backing::Free,
         },
     }
 }
@@ -100,6 +101,7 @@ fn reading(force: f64, radius: f64, pressure: bool) -> ContactReading {
         peak_normal_force: force,
         max_delta: 1e-3,
         contact_duration: 1.0 / 60.0,
+        backing: softgrip_law::Backing::Core { thickness: 0.004 },
         patch: Some(if pressure {
             patch
         } else {
@@ -272,6 +274,8 @@ fn mean_pressure_times_area_is_the_normal_force() {
     let area = std::f64::consts::PI * c.contact_radius * c.contact_radius;
     assert!((c.mean_pressure * area / c.normal_force - 1.0).abs() < 1e-14);
     assert!((c.peak_pressure / c.mean_pressure - 1.5).abs() < 1e-12);
+    // The construction goes with every contact (issue 10).
+    assert_eq!((c.backing, c.core_thickness), (2, 0.004));
     // Without pressure: the radius stays, the pressures are 0.
     let c = &convert(&mut conv, 2, false).contacts[0];
     assert_eq!(

@@ -28,6 +28,7 @@ fn info() -> RecordingInfo {
             radius: 0.01,
             friction: 0.8,
             restitution: 0.5,
+            backing: softgrip_law::Backing::Free,
         }],
         ..Default::default()
     }

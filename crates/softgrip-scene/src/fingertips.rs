@@ -4,7 +4,7 @@
 use std::collections::HashSet;
 use std::path::Path;
 
-use softgrip_law::{ContactLaw, ContactParams, Level, Material, TabulatedCurve};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material, TabulatedCurve};
 use softgrip_rapier::{Preset, SoftFingertip, SoftFingertipBuilder};
 
 use crate::curve::{MeasuredCurve, read_curve};
@@ -39,11 +39,17 @@ pub(crate) fn check_fingertips(
         )?;
         let material = material(c, t, &f)?;
         let law = law(c, t, &f, base)?;
+        let backing = backing(c, t, &f)?;
         let builder = SoftFingertip::builder(t.radius)
             .name(t.name.clone())
             .material(material)
             .restitution(t.restitution)
-            .friction(t.friction);
+            .friction(t.friction)
+            .backing(backing);
+        let builder = match t.facing {
+            Some(d) => builder.facing(d),
+            None => builder,
+        };
         let builder = match &t.tactile {
             Some(pad) => builder.tactile(pad.pad()),
             None => builder,
@@ -51,7 +57,7 @@ pub(crate) fn check_fingertips(
         let builder = match law {
             TipLaw::Level(level) => builder.level(level),
             TipLaw::Tabulated(curve) => {
-                tabulated_law(c, &f("level"), builder, material, t.radius, curve)?
+                tabulated_law(c, &f("level"), builder, material, t.radius, backing, curve)?
             }
         };
         let tip = builder.build().map_err(|e| SceneError::Fingertip {
@@ -59,6 +65,10 @@ pub(crate) fn check_fingertips(
             // A pad's error names its key: `fingertip[0].tactile.rows`.
             field: match &e {
                 softgrip_rapier::Error::InvalidTactilePad { field, .. } => f(field),
+                softgrip_rapier::Error::MissingFacing(_) => f("facing"),
+                softgrip_rapier::Error::InvalidParameter { field, .. } if *field == "facing" => {
+                    f("facing")
+                }
                 _ => format!("fingertip[{i}]"),
             },
             source: e,
@@ -96,6 +106,40 @@ fn material(
             })
         }
         _ => Err(c.name(f("preset"), "give exactly one of `preset` and `material`")),
+    }
+}
+
+/// The fingertip's construction: `backing` by name, `core_thickness` [m] with `core` only
+/// (required there, in (0, radius)).
+fn backing(
+    c: &Checker,
+    t: &FingertipSpec,
+    f: &dyn Fn(&str) -> String,
+) -> Result<Backing, SceneError> {
+    let name = t.backing.as_deref().unwrap_or("free");
+    let expected = format!("one of {}", Backing::NAMES.join(", "));
+    match (name, t.core_thickness) {
+        ("core", Some(thickness)) => {
+            if !(thickness.is_finite() && thickness > 0.0 && thickness < t.radius) {
+                let range = format!(
+                    "finite and in (0, radius) m, radius = {} m (the skin's thickness)",
+                    t.radius
+                );
+                return Err(c.invalid(f("core_thickness"), thickness, &range));
+            }
+            Ok(Backing::Core { thickness })
+        }
+        ("core", None) => Err(c.name(
+            f("core_thickness"),
+            "required with `backing = \"core\"`: the skin's thickness [m], in (0, radius)",
+        )),
+        (_, Some(_)) if Backing::NAMES.contains(&name) => Err(c.name(
+            f("core_thickness"),
+            format!("applies only to `backing = \"core\"`, the backing is `{name}`"),
+        )),
+        _ => name
+            .parse()
+            .map_err(|_: String| c.invalid(f("backing"), name, &expected)),
     }
 }
 
@@ -138,13 +182,15 @@ fn law(
 }
 
 /// The fingertip's law from its measured curve: `softgrip_law::TabulatedCurve` (monotone C1
-/// interpolation of the samples, checked) bound with the fingertip's material and radius.
+/// interpolation of the samples, checked) bound with the fingertip's material, radius and
+/// backing.
 fn tabulated_law(
     c: &Checker,
     field: &str,
     builder: SoftFingertipBuilder,
     material: Material,
     radius: f64,
+    backing: Backing,
     curve: MeasuredCurve,
 ) -> Result<SoftFingertipBuilder, SceneError> {
     let path = curve.path.clone();
@@ -154,7 +200,10 @@ fn tabulated_law(
         path: path.clone(),
         source: Box::new(source),
     };
-    let params = ContactParams::try_new(material, radius).map_err(law_error)?;
+    // The measured curve is the construction's own: its params carry the backing.
+    let params = ContactParams::try_new(material, radius)
+        .and_then(|p| p.with_backing(backing))
+        .map_err(law_error)?;
     let table = TabulatedCurve::try_new(curve.delta_m, curve.force_n).map_err(law_error)?;
     let law = ContactLaw::tabulated(params, table).map_err(law_error)?;
     Ok(builder.law(law))

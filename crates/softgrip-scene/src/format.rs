@@ -266,6 +266,20 @@ pub struct FingertipSpec {
     /// A tactile sensor pad (`[fingertip.tactile]`; default none: no image is computed).
     #[serde(default)]
     pub tactile: Option<TactileSpec>,
+    /// How the fingertip is built: `free` (default: a whole soft sphere, the paper's case),
+    /// `flat` (a soft hemisphere bonded at its flat face to the rigid finger) or `core` (a soft
+    /// skin of thickness `core_thickness` over a rigid core). `flat` and `core` need `facing`.
+    #[serde(default)]
+    pub backing: Option<String>,
+    /// Skin thickness t of a `core` fingertip \[m\], finite and in (0, radius); only with
+    /// `backing = "core"`, and required there.
+    #[serde(default)]
+    pub core_thickness: Option<f64>,
+    /// Direction the pad of a `flat` or `core` fingertip faces, from its flat face towards its
+    /// pole, in its body's axes: finite and non-zero (normalised). Required for a backed
+    /// fingertip; what touches it from the other side touches the rigid finger.
+    #[serde(default, deserialize_with = "exact_opt")]
+    pub facing: Option<[f64; 3]>,
 }
 
 /// `[fingertip.tactile]`: a pad of `rows` x `columns` taxels over a patch of the fingertip's

@@ -4,7 +4,7 @@
 //! pair and the depth ([`SceneError::StartPenetration`]), checked on the built world.
 
 use softgrip_rapier::rapier3d::parry::query;
-use softgrip_rapier::rapier3d::prelude::ColliderHandle;
+use softgrip_rapier::rapier3d::prelude::{Collider, ColliderHandle, Vector};
 use softgrip_rapier::softgrip_law::{ContactLaw, ContactParams};
 
 use crate::error::SceneError;
@@ -38,9 +38,20 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
                 continue;
             }
             let other_tip = h.fingertips.iter().position(|(_, t)| t == other_h);
-            let law = match other_tip {
+            // (x, x_max) of a depth [m]: the law's compression ratio and validity range.
+            let range: Box<dyn Fn(f64) -> (f64, f64)> = match other_tip {
                 // Each soft pair once.
                 Some(j) if j < i => continue,
+                // A backed fingertip in the pair: the two in series on their mid-surface, valid
+                // while the depth is within the sum of their own ranges (in x of the larger R).
+                Some(j)
+                    if !(tip.backing().is_free() && scene.fingertips()[j].backing().is_free()) =>
+                {
+                    let o = &scene.fingertips()[j];
+                    let r = tip.radius().max(o.radius());
+                    let x_max = (tip.law().delta_max() + o.law().delta_max()) / r;
+                    Box::new(move |depth| (depth / r, x_max))
+                }
                 Some(j) => {
                     let o = &scene.fingertips()[j];
                     let p = ContactParams::try_combine(
@@ -50,11 +61,16 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
                         o.radius(),
                     );
                     match p.and_then(|p| ContactLaw::try_new(p, tip.level())) {
-                        Ok(law) => law,
+                        Ok(law) => {
+                            Box::new(move |depth| (depth / law.params().radius(), law.x_max()))
+                        }
                         Err(_) => continue,
                     }
                 }
-                None => tip.law().clone(),
+                None => {
+                    let law = tip.law().clone();
+                    Box::new(move |depth| (depth / law.params().radius(), law.x_max()))
+                }
             };
             let Ok(Some(contact)) = query::contact(
                 other_co.position(),
@@ -65,16 +81,30 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
             ) else {
                 continue;
             };
+            // Behind a backed fingertip's flat face is its rigid finger: rapier's contact,
+            // which pushes out from any depth.
+            let n = contact.normal1;
+            let behind = |t: &softgrip_rapier::SoftFingertip, co: &Collider, sign: f32| {
+                t.facing().is_some_and(|[x, y, z]| {
+                    let f = co.position().rotation * Vector::new(x as f32, y as f32, z as f32);
+                    sign * f.dot(n) < 0.0
+                })
+            };
+            if behind(tip, tip_co, -1.0)
+                || other_tip.is_some_and(|j| behind(&scene.fingertips()[j], other_co, 1.0))
+            {
+                continue;
+            }
             let depth = -(contact.dist as f64);
-            let x = depth / law.params().radius();
-            if x > law.x_max() {
+            let (x, x_max) = range(depth);
+            if x > x_max {
                 return Err(SceneError::StartPenetration {
                     origin: c.origin.to_string(),
                     fingertip: format!("fingertip[{i}] (`{}`)", tip.name()),
                     other: other_label.clone(),
                     depth,
                     x,
-                    x_max: law.x_max(),
+                    x_max,
                 });
             }
         }

@@ -161,3 +161,98 @@ fn tactile_pads_parse_and_bad_pads_name_their_key() {
     let err = parse(&pad("width = 0.01\nheight = 0.01\nrow = 3\n")).unwrap_err();
     assert!(matches!(err, SceneError::Parse { .. }), "{err}");
 }
+
+/// A fingertip on `table` with the extra keys `extra` (issue 10: backing, core_thickness,
+/// facing).
+fn tip_with(extra: &str) -> String {
+    format!(
+        "{BASE}[[fingertip]]\nname = \"tip\"\nbody = \"table\"\nradius = 0.01\npreset = \"dragon-skin-30\"\n{extra}"
+    )
+}
+
+#[test]
+fn backing_keys_are_checked_naming_the_field() {
+    let cases = [
+        (
+            "backing = \"glued\"\n",
+            "fingertip[0].backing",
+            "one of free, flat, core",
+        ),
+        (
+            "backing = \"flat\"\n",
+            "fingertip[0].facing",
+            "needs `facing`",
+        ),
+        (
+            "backing = \"flat\"\nfacing = [0.0, 0.0, 0.0]\n",
+            "fingertip[0].facing",
+            "non-zero",
+        ),
+        (
+            "backing = \"core\"\nfacing = [1.0, 0.0, 0.0]\n",
+            "fingertip[0].core_thickness",
+            "required",
+        ),
+        (
+            "backing = \"flat\"\ncore_thickness = 0.004\nfacing = [1.0, 0.0, 0.0]\n",
+            "fingertip[0].core_thickness",
+            "applies only",
+        ),
+        (
+            "core_thickness = 0.004\n",
+            "fingertip[0].core_thickness",
+            "applies only",
+        ),
+        (
+            "backing = \"core\"\ncore_thickness = 0.01\nfacing = [1.0, 0.0, 0.0]\n",
+            "fingertip[0].core_thickness",
+            "(0, radius)",
+        ),
+        (
+            "backing = \"core\"\ncore_thickness = -0.001\nfacing = [1.0, 0.0, 0.0]\n",
+            "fingertip[0].core_thickness",
+            "(0, radius)",
+        ),
+    ];
+    for (extra, field, message) in cases {
+        let err = parse(&tip_with(extra)).unwrap_err();
+        assert_eq!(err.field(), Some(field), "{extra}: {err}");
+        assert!(err.to_string().contains(message), "{extra}: {err}");
+    }
+    let err = parse(&tip_with("facing = [1.0, 0.0]\n")).unwrap_err();
+    assert!(err.to_string().contains("exactly 3"), "{err}");
+}
+
+#[test]
+fn backing_keys_reach_the_fingertip() {
+    use softgrip_scene::softgrip_rapier::softgrip_law::Backing;
+    let scene = parse(&tip_with(
+        "backing = \"core\"\ncore_thickness = 0.004\nfacing = [0.0, 0.0, -2.0]\n",
+    ))
+    .unwrap();
+    let tip = &scene.fingertips()[0];
+    assert_eq!(tip.backing(), Backing::Core { thickness: 0.004 });
+    assert_eq!(tip.facing(), Some([0.0, 0.0, -1.0]));
+    assert_eq!(tip.law().params().thickness_ratio(), Some(0.4));
+    let free = parse(&tip_with("")).unwrap();
+    assert_eq!(free.fingertips()[0].backing(), Backing::Free);
+    // The default scene's pads are bonded to their jaws, facing the box.
+    let default = Scene::parse(
+        softgrip_scene::DEFAULT_SCENE,
+        "default.toml",
+        Path::new("."),
+    )
+    .unwrap();
+    let facings: Vec<_> = default
+        .fingertips()
+        .iter()
+        .map(|t| (t.backing(), t.facing()))
+        .collect();
+    assert_eq!(
+        facings,
+        [
+            (Backing::Flat, Some([1.0, 0.0, 0.0])),
+            (Backing::Flat, Some([-1.0, 0.0, 0.0]))
+        ]
+    );
+}

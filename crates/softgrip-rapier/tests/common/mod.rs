@@ -115,6 +115,8 @@ pub struct GraspSpec {
     /// Centre-of-mass offset of the box along z [m] (off-centre load).
     pub com_offset_z: f32,
     pub torsion: bool,
+    /// The fingertips' construction (backed pads face the box).
+    pub backing: softgrip_law::Backing,
 }
 
 impl Default for GraspSpec {
@@ -128,6 +130,7 @@ impl Default for GraspSpec {
             youngs_modulus: 0.59e6,
             com_offset_z: 0.0,
             torsion: true,
+            backing: softgrip_law::Backing::Free,
         }
     }
 }
@@ -157,15 +160,18 @@ pub fn grasp(spec: &GraspSpec) -> Grasp {
         object,
         &mut world.physics.bodies,
     );
-    let make_tip = || {
+    // The jaw at +x (sign 1) faces -x, the one at -x faces +x: towards the box.
+    let make_tip = |sign: f64| {
         SoftFingertip::builder(GRASP_R)
             .material(Material::try_new(spec.youngs_modulus, 0.49).unwrap())
             .friction(spec.friction)
             .torsional_friction(spec.torsion)
+            .backing(spec.backing)
+            .facing([-sign, 0.0, 0.0])
             .build()
             .unwrap()
     };
-    let squeeze = make_tip()
+    let squeeze = make_tip(1.0)
         .law()
         .compression_for_force(spec.grip_force)
         .unwrap();
@@ -178,7 +184,7 @@ pub fn grasp(spec: &GraspSpec) -> Grasp {
         let (b, c) = kinematic_tip(
             &mut world,
             Vector::new((sign * x_open) as f32, y0 as f32, 0.0),
-            make_tip(),
+            make_tip(sign),
         );
         jaws.push(b);
         tips.push(c);

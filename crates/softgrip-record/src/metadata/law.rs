@@ -4,13 +4,15 @@
 use std::fmt;
 
 use serde::{Deserialize, Serialize};
-use softgrip_law::{ContactLaw, ContactParams, Level, Material};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material};
 
 /// A fingertip's law, as recorded (JSON in the `law` value of the `softgrip` metadata):
-/// `{"name":"left_tip","level":{"name":"auto","tolerance":0.01},"youngs_modulus":590000.0,...}`.
+/// `{"name":"left_tip","level":{"name":"auto","tolerance":0.01},"youngs_modulus":590000.0,...,
+/// "backing":"core","core_thickness":0.004}` (`backing` absent in recordings made before
+/// issue 10: read as `free`; `core_thickness` only for `core`).
 ///
 /// ```
-/// use softgrip_law::Level;
+/// use softgrip_law::{Backing, Level};
 /// use softgrip_record::FingertipLaw;
 /// let law = FingertipLaw {
 ///     name: "thumb".into(),
@@ -20,10 +22,16 @@ use softgrip_law::{ContactLaw, ContactParams, Level, Material};
 ///     radius: 0.01,
 ///     friction: 0.8,
 ///     restitution: 0.5,
+///     backing: Backing::Core { thickness: 0.004 },
 /// };
 /// let json = serde_json::to_string(&law).unwrap();
+/// assert!(json.ends_with(r#""backing":"core","core_thickness":0.004}"#), "{json}");
 /// assert_eq!(serde_json::from_str::<FingertipLaw>(&json).unwrap(), law);
+/// assert_eq!(law.law().unwrap().params().backing(), law.backing);
 /// assert!(law.law().unwrap().response(1e-3).force > 0.0); // N at 1 mm
+/// // Before issue 10 the metadata had no backing: a free sphere.
+/// let old = json.replace(r#","backing":"core","core_thickness":0.004"#, "");
+/// assert_eq!(serde_json::from_str::<FingertipLaw>(&old).unwrap().backing, Backing::Free);
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FingertipLaw {
@@ -42,6 +50,10 @@ pub struct FingertipLaw {
     pub friction: f64,
     /// Coefficient of restitution e [-], in [0, 1].
     pub restitution: f64,
+    /// How the fingertip is built (JSON `backing` = `free` | `flat` | `core`, and
+    /// `core_thickness` \[m\] for `core`); its law is that construction's.
+    #[serde(flatten, with = "backing_json")]
+    pub backing: Backing,
 }
 
 impl FingertipLaw {
@@ -53,7 +65,8 @@ impl FingertipLaw {
     /// The same fingertip with another level (for overlays: Hertz, Tatara, ...).
     pub fn law_at(&self, level: Level) -> Result<ContactLaw, softgrip_law::Error> {
         let material = Material::try_new(self.youngs_modulus, self.poisson_ratio)?;
-        ContactLaw::try_new(ContactParams::try_new(material, self.radius)?, level)
+        let params = ContactParams::try_new(material, self.radius)?.with_backing(self.backing)?;
+        ContactLaw::try_new(params, level)
     }
 }
 
@@ -71,7 +84,52 @@ impl fmt::Display for FingertipLaw {
             f,
             " youngs_modulus={} poisson_ratio={} radius={} friction={} restitution={}",
             self.youngs_modulus, self.poisson_ratio, self.radius, self.friction, self.restitution
-        )
+        )?;
+        write!(f, " backing={}", self.backing.name())?;
+        match self.backing.thickness() {
+            Some(t) => write!(f, " core_thickness={t}"),
+            None => Ok(()),
+        }
+    }
+}
+
+/// A [`Backing`] as `"backing": "core", "core_thickness": 0.004` (flattened into the law's
+/// object; a missing `backing` is `free`).
+mod backing_json {
+    use serde::de::Error as _;
+    use serde::{Deserialize, Deserializer, Serialize, Serializer};
+    use softgrip_law::Backing;
+
+    #[derive(Serialize, Deserialize)]
+    struct BackingJson {
+        #[serde(default = "free")]
+        backing: String,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        core_thickness: Option<f64>,
+    }
+
+    fn free() -> String {
+        Backing::Free.name().to_owned()
+    }
+
+    pub(super) fn serialize<S: Serializer>(backing: &Backing, s: S) -> Result<S::Ok, S::Error> {
+        BackingJson {
+            backing: backing.name().to_owned(),
+            core_thickness: backing.thickness(),
+        }
+        .serialize(s)
+    }
+
+    pub(super) fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Backing, D::Error> {
+        let json = BackingJson::deserialize(d)?;
+        match (json.backing.as_str(), json.core_thickness) {
+            ("core", Some(thickness)) => Ok(Backing::Core { thickness }),
+            ("core", None) => Err(D::Error::custom("backing `core` needs `core_thickness`")),
+            (name, None) => name.parse().map_err(D::Error::custom),
+            (name, Some(_)) => Err(D::Error::custom(format!(
+                "`core_thickness` applies only to backing `core`, not `{name}`"
+            ))),
+        }
     }
 }
 

@@ -1,7 +1,7 @@
 //! `softgrip_msgs` (the interface package in `ros2/softgrip_msgs/`): [`SoftContactMsg`] and
 //! [`SoftContactArrayMsg`].
 
-use softgrip_law::{LevelKind, Regime};
+use softgrip_law::{Backing, LevelKind, Regime};
 
 use super::geometry_msgs::{Point, Vector3};
 use super::std_msgs::Header;
@@ -56,6 +56,10 @@ ros_message! {
         pub max_compression: f64,
         /// Time in contact during the step \[s\].
         pub contact_duration: f64,
+        /// The fingertip's construction ([`Backing::code`]: 0 free, 1 flat, 2 core).
+        pub backing: u8,
+        /// Skin thickness t of a `core` fingertip \[m\]; 0 for the others.
+        pub core_thickness: f64,
     }
 }
 
@@ -107,6 +111,35 @@ impl SoftContactMsg {
     /// Sets `validity_exceeded` from the law's regime (true for [`Regime::Extended`]).
     pub fn set_regime(&mut self, regime: Regime) {
         self.validity_exceeded = regime == Regime::Extended;
+    }
+
+    /// Sets `backing` and `core_thickness` from the fingertip's construction.
+    pub fn set_backing(&mut self, backing: Backing) {
+        self.backing = backing.code();
+        self.core_thickness = backing.thickness().unwrap_or(0.0);
+    }
+
+    /// The fingertip's construction, if `backing` is a known code (a `core` with its
+    /// `core_thickness`).
+    ///
+    /// ```
+    /// use softgrip_law::Backing;
+    /// use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+    /// let mut m = SoftContactMsg::default();
+    /// assert_eq!(m.backing(), Some(Backing::Free));
+    /// m.set_backing(Backing::Core { thickness: 0.004 });
+    /// assert_eq!((m.backing, m.core_thickness), (2, 0.004));
+    /// assert_eq!(m.backing(), Some(Backing::Core { thickness: 0.004 }));
+    /// ```
+    pub fn backing(&self) -> Option<Backing> {
+        match self.backing {
+            0 => Some(Backing::Free),
+            1 => Some(Backing::Flat),
+            2 => Some(Backing::Core {
+                thickness: self.core_thickness,
+            }),
+            _ => None,
+        }
     }
 
     /// The law level, if `level` is a known code.

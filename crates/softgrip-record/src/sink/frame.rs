@@ -1,6 +1,6 @@
 //! [`StepFrame`]: one step's data, as plain numbers.
 
-use softgrip_law::{ContactPatch, LevelKind, Regime};
+use softgrip_law::{Backing, ContactPatch, LevelKind, Regime};
 
 /// A body's pose.
 #[derive(Debug, Clone, PartialEq)]
@@ -53,12 +53,15 @@ pub struct ContactReading {
     pub sliding: bool,
     /// Largest normal force of any substep \[N\].
     pub peak_normal_force: f64,
-    /// Largest compression at the start of any substep \[m\].
+    /// Largest compression of the step \[m\]: over the start of every substep and the end
+    /// of the step (`>= delta`).
     pub max_delta: f64,
     /// Time in contact during the step \[s\], in [0, dt].
     pub contact_duration: f64,
     /// Contact radius and pressure, when the scene records pressure.
     pub patch: Option<ContactPatch>,
+    /// The construction of the fingertip whose law computed the contact.
+    pub backing: Backing,
 }
 
 /// One soft contact with both sides named.

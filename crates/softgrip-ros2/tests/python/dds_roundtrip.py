@@ -93,6 +93,8 @@ class SoftContact(IdlStruct, typename="softgrip_msgs::msg::dds_::SoftContact_"):
     peak_normal_force: float64
     max_compression: float64
     contact_duration: float64
+    backing: uint8
+    core_thickness: float64
 
 
 @dataclass
