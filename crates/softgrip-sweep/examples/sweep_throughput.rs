@@ -7,6 +7,8 @@
 //!
 //! Speed is measured here, never asserted in a test. Each thread count runs the whole sweep
 //! once after a warm-up trial; the rows must be identical across thread counts (checked).
+//! `cores used` is the process's CPU time over the wall time (Linux `/proc/self/stat`): on a
+//! shared machine it shows whether 2 threads got 2 cores.
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -34,11 +36,14 @@ fn main() -> Result<()> {
         sweep.fields().join(" x ")
     );
     sweep.run_trial(0)?; // warm-up: page in the code, the law tables
-    println!("| threads | trials | wall time [s] | trials/s | speed-up | held | errors |");
-    println!("|---:|---:|---:|---:|---:|---:|---:|");
+    println!(
+        "| threads | trials | wall time [s] | trials/s | speed-up | cores used | held | errors |"
+    );
+    println!("|---:|---:|---:|---:|---:|---:|---:|---:|");
     let mut first: Option<(f64, Vec<_>)> = None;
     for &t in &threads {
         let start = Instant::now();
+        let cpu0 = cpu_seconds();
         let table = sweep.run(
             &RunOptions {
                 threads: t,
@@ -47,6 +52,10 @@ fn main() -> Result<()> {
             &|_, _| {},
         )?;
         let wall = start.elapsed().as_secs_f64();
+        let cores = match (cpu0, cpu_seconds()) {
+            (Some(a), Some(b)) => format!("{:.2}", (b - a) / wall),
+            _ => "n/a".to_string(),
+        };
         let rate = table.rows.len() as f64 / wall;
         let outcomes: Vec<_> = table.rows.iter().map(|r| r.outcome.clone()).collect();
         let base = first.get_or_insert((rate, outcomes.clone()));
@@ -54,7 +63,7 @@ fn main() -> Result<()> {
             bail!("{t} threads gave other rows than {} threads", threads[0]);
         }
         println!(
-            "| {t} | {} | {wall:.2} | {rate:.2} | {:.2} | {} | {} |",
+            "| {t} | {} | {wall:.2} | {rate:.2} | {:.2} | {cores} | {} | {} |",
             table.rows.len(),
             rate / base.0,
             table.held_count(),
@@ -62,4 +71,16 @@ fn main() -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// User + system CPU time of this process \[s\] (Linux: `/proc/self/stat` fields 14 and 15,
+/// in clock ticks of 1/100 s); `None` elsewhere.
+fn cpu_seconds() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // The command name (field 2) is in parentheses and may hold spaces: count after it.
+    let rest = stat.rsplit_once(')')?.1;
+    let fields: Vec<&str> = rest.split_whitespace().collect();
+    // `rest` starts at field 3 (state): utime is field 14, stime field 15.
+    let ticks = |i: usize| fields.get(i - 3)?.parse::<f64>().ok();
+    Some((ticks(14)? + ticks(15)?) / 100.0)
 }
