@@ -212,3 +212,17 @@ fn per_trial_recordings_are_written() {
     let bytes = std::fs::read(&mcap).expect("the recording exists");
     assert!(bytes.starts_with(b"\x89MCAP0\r\n"), "{}", mcap.display());
 }
+
+#[test]
+fn a_hold_that_does_not_end_is_an_error_row() {
+    // 0.5 s: the grasp is still lifting (the hold ends at about 0.75 s).
+    let text = "scene = \"grasp.toml\"\n[[vary]]\nfield = \"duration\"\nvalues = [0.5, 1.2]\n";
+    let s = Sweep::from_str(text, &data("")).expect("valid");
+    let short = s.run_trial(0).expect("in range");
+    let e = short.outcome.expect_err("no end of the hold");
+    assert!(
+        e.contains("the hold did not end within the scene's duration (0.5"),
+        "{e}"
+    );
+    assert!(s.run_trial(1).expect("in range").outcome.is_ok());
+}
