@@ -7,6 +7,7 @@ use crate::bench_law::BenchLawArgs;
 use crate::curve::CurveArgs;
 use crate::recording::{ExportArgs, InspectArgs, PlotArgs, RecoverArgs};
 use crate::run::RunArgs;
+use crate::sweep::SweepArgs;
 
 /// Soft-fingertip contact: the law's curves, its speed-vs-error table and figures.
 #[derive(Debug, Parser)]
@@ -27,6 +28,10 @@ pub enum Command {
     /// Run a scene file (or the embedded default grasp), print a per-fingertip summary, and
     /// record it to MCAP with `--out`.
     Run(RunArgs),
+    /// Run a sweep file's trials (a base scene with fields varied) on all local cores and
+    /// write the results table (trial, the varied fields, held, slips, peaks, error) as
+    /// Parquet or CSV.
+    Sweep(SweepArgs),
     /// Summarise a recording: topics, duration, per-fingertip peaks, slip events, excursions.
     Inspect(InspectArgs),
     /// Write a recording's topics as CSV files (contacts, wrenches, poses, clock).

@@ -13,6 +13,7 @@ mod recording;
 mod report;
 mod run;
 mod signals;
+mod sweep;
 mod timing;
 mod xrange;
 
@@ -31,6 +32,7 @@ fn main() -> ExitCode {
             }
             other => other.map(|_| ()),
         },
+        Command::Sweep(args) => sweep::run(&args),
         Command::Inspect(args) => recording::inspect(&args),
         Command::Export(args) => recording::export(&args),
         Command::Plot(args) => recording::plot(&args),

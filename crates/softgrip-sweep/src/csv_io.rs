@@ -1,0 +1,171 @@
+//! The results table as CSV (`csv` crate): one header line of [`ResultsTable::columns`], one
+//! line per trial; an error row has empty outcome cells and its message in `error`.
+
+use std::path::Path;
+
+use crate::error::SweepError;
+use crate::table::{OUTCOME_COLUMNS, ResultsTable, TrialRow};
+use crate::trial::Outcome;
+use crate::value::{Value, ValueKind};
+
+impl ResultsTable {
+    /// The table as CSV text. Floats are written in their shortest round-trip form with a
+    /// `.` or an exponent, so [`ResultsTable::from_csv`] reads back the same bits.
+    pub fn to_csv(&self) -> String {
+        let mut w = csv::Writer::from_writer(Vec::new());
+        let mut write = |record: Vec<String>| {
+            w.write_record(&record)
+                .expect("invariant: writing CSV to memory cannot fail");
+        };
+        write(self.columns());
+        for r in &self.rows {
+            let mut cells = vec![r.trial.to_string()];
+            cells.extend(r.values.iter().map(Value::to_cell));
+            let f = |v: f64| format!("{v:?}");
+            match &r.outcome {
+                Ok(o) => cells.extend([
+                    o.held.to_string(),
+                    o.slips.to_string(),
+                    f(o.slip_distance),
+                    f(o.peak_force),
+                    f(o.peak_x),
+                    o.validity_excursions.to_string(),
+                    f(r.wall_time),
+                    String::new(),
+                ]),
+                Err(e) => {
+                    cells.extend(std::iter::repeat_n(String::new(), 6));
+                    cells.extend([f(r.wall_time), e.clone()]);
+                }
+            }
+            write(cells);
+        }
+        let bytes = w
+            .into_inner()
+            .expect("invariant: flushing CSV to memory cannot fail");
+        String::from_utf8(bytes).expect("invariant: the cells are UTF-8")
+    }
+
+    /// Writes [`ResultsTable::to_csv`] to `path`.
+    pub fn write_csv(&self, path: &Path) -> Result<(), SweepError> {
+        std::fs::write(path, self.to_csv()).map_err(|source| SweepError::Io {
+            path: path.to_path_buf(),
+            source,
+        })
+    }
+
+    /// Reads a results CSV file back.
+    pub fn read_csv(path: &Path) -> Result<Self, SweepError> {
+        let text = std::fs::read_to_string(path).map_err(|source| SweepError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Self::from_csv(&text).map_err(|message| SweepError::Results {
+            path: path.to_path_buf(),
+            message,
+        })
+    }
+
+    /// Parses results CSV text. A varied field's column type is taken from its cells: integers
+    /// if every cell is one, else numbers if every cell is one, else booleans, else text (a
+    /// text field whose every value looks like a number reads back as numbers; Parquet keeps
+    /// the type).
+    pub fn from_csv(text: &str) -> Result<Self, String> {
+        let mut r = csv::Reader::from_reader(text.as_bytes());
+        let header: Vec<String> = r
+            .headers()
+            .map_err(|e| e.to_string())?
+            .iter()
+            .map(str::to_string)
+            .collect();
+        let n = header.len();
+        if n < 1 + OUTCOME_COLUMNS.len()
+            || header[0] != "trial"
+            || header[n - OUTCOME_COLUMNS.len()..] != OUTCOME_COLUMNS
+        {
+            return Err(format!(
+                "not a sweep results table: the header must be `trial`, the varied fields, {}",
+                OUTCOME_COLUMNS.join(", ")
+            ));
+        }
+        let fields = header[1..n - OUTCOME_COLUMNS.len()].to_vec();
+        let records: Vec<csv::StringRecord> = r
+            .records()
+            .collect::<Result<_, _>>()
+            .map_err(|e| e.to_string())?;
+        let kinds: Vec<ValueKind> = (0..fields.len())
+            .map(|k| column_kind(records.iter().map(|rec| &rec[1 + k])))
+            .collect();
+        let mut rows = Vec::with_capacity(records.len());
+        for (line, rec) in records.iter().enumerate() {
+            let at = |col: usize, m: &str| format!("row {}: `{}`: {m}", line + 1, header[col]);
+            let num = |col: usize| -> Result<f64, String> {
+                rec[col]
+                    .parse()
+                    .map_err(|_| at(col, &format!("`{}` is not a number", &rec[col])))
+            };
+            let int = |col: usize| -> Result<u64, String> {
+                rec[col]
+                    .parse()
+                    .map_err(|_| at(col, &format!("`{}` is not a count", &rec[col])))
+            };
+            let trial = int(0)?;
+            let values = (0..fields.len())
+                .map(|k| cell_value(kinds[k], &rec[1 + k]))
+                .collect();
+            let o = n - OUTCOME_COLUMNS.len();
+            let wall_time = num(o + 6)?;
+            let outcome = if rec[o + 7].is_empty() {
+                Ok(Outcome {
+                    held: match &rec[o] {
+                        "true" => true,
+                        "false" => false,
+                        other => return Err(at(o, &format!("`{other}` is not true or false"))),
+                    },
+                    slips: int(o + 1)? as u32,
+                    slip_distance: num(o + 2)?,
+                    peak_force: num(o + 3)?,
+                    peak_x: num(o + 4)?,
+                    validity_excursions: int(o + 5)? as u32,
+                })
+            } else {
+                Err(rec[o + 7].to_string())
+            };
+            rows.push(TrialRow {
+                trial,
+                values,
+                outcome,
+                wall_time,
+            });
+        }
+        Ok(Self {
+            fields,
+            kinds,
+            rows,
+        })
+    }
+}
+
+/// The type of a column of cells (see [`ResultsTable::from_csv`]).
+fn column_kind<'a>(cells: impl Iterator<Item = &'a str> + Clone) -> ValueKind {
+    let mut c = cells;
+    if c.clone().all(|s| s.parse::<i64>().is_ok()) {
+        ValueKind::Int
+    } else if c.clone().all(|s| s.parse::<f64>().is_ok()) {
+        ValueKind::Float
+    } else if c.all(|s| s == "true" || s == "false") {
+        ValueKind::Bool
+    } else {
+        ValueKind::Text
+    }
+}
+
+/// A cell of a column of type `kind` (checked by [`column_kind`]).
+fn cell_value(kind: ValueKind, cell: &str) -> Value {
+    match kind {
+        ValueKind::Int => Value::Int(cell.parse().unwrap_or_default()),
+        ValueKind::Float => Value::Float(cell.parse().unwrap_or(f64::NAN)),
+        ValueKind::Bool => Value::Bool(cell == "true"),
+        ValueKind::Text => Value::Text(cell.to_string()),
+    }
+}
