@@ -74,6 +74,8 @@ pub struct Recording {
 
 struct SchemaInfo {
     name: String,
+    /// The schema text (a `.msg` definition), which tells a layout of an earlier version.
+    text: Vec<u8>,
 }
 
 struct Channel {
@@ -98,9 +100,14 @@ impl Scan {
     /// whether they mean corruption or the end of a recovery.
     fn apply(&mut self, record: Record<'_>) -> Result<(), ScanStop> {
         match record {
-            Record::Schema { header, .. } => {
-                self.schemas
-                    .insert(header.id, SchemaInfo { name: header.name });
+            Record::Schema { header, data } => {
+                self.schemas.insert(
+                    header.id,
+                    SchemaInfo {
+                        name: header.name,
+                        text: data.into_owned(),
+                    },
+                );
             }
             Record::Channel(c) => {
                 self.channels.insert(
@@ -123,19 +130,20 @@ impl Scan {
                         header.channel_id
                     )));
                 };
-                let schema_name = self
+                let (schema_name, schema_text) = self
                     .schemas
                     .get(&channel.schema)
-                    .map(|s| s.name.as_str())
-                    .unwrap_or("");
+                    .map(|s| (s.name.as_str(), s.text.as_slice()))
+                    .unwrap_or(("", &[]));
                 let message =
-                    Message::decode(schema_name, &channel.encoding, &data).map_err(|source| {
-                        ScanStop::Decode(Error::Decode {
-                            topic: channel.topic.clone(),
-                            log_time_ns: header.log_time,
-                            source,
-                        })
-                    })?;
+                    Message::decode_with_schema(schema_name, schema_text, &channel.encoding, &data)
+                        .map_err(|source| {
+                            ScanStop::Decode(Error::Decode {
+                                topic: channel.topic.clone(),
+                                log_time_ns: header.log_time,
+                                source,
+                            })
+                        })?;
                 self.messages.push(RecordedMessage {
                     topic: channel.topic.clone(),
                     log_time_ns: header.log_time,

@@ -3,6 +3,7 @@
 
 pub mod builtin_interfaces;
 pub mod geometry_msgs;
+pub(crate) mod legacy;
 pub mod rosgraph_msgs;
 pub mod sensor_msgs;
 pub mod softgrip_msgs;

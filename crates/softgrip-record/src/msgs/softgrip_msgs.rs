@@ -38,7 +38,8 @@ ros_message! {
         pub contact_radius: f64,
         /// Mean pressure F / (pi a^2) \[Pa\].
         pub mean_pressure: f64,
-        /// Peak pressure, 3/2 of the mean \[Pa\].
+        /// Peak pressure at the patch centre: (m + 1) times the mean for the law's pressure
+        /// shape m (3/2 for Hertz's) \[Pa\].
         pub peak_pressure: f64,
         /// Stiffness K = dF/d delta [N/m], >= 0.
         pub stiffness: f64,

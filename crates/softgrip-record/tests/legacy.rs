@@ -1,0 +1,50 @@
+//! Recordings of earlier versions still read: `tests/data/default_before_backing.mcap` is the
+//! default grasp as recorded before fingertips had a construction (`git show
+//! 1fc2a14:recordings/default.mcap`, 2026-12-02): its `SoftContact` schema has no `backing` and
+//! `core_thickness`. Its contacts decode, as free fingertips, with the values it was recorded
+//! with (its own run summary: peak force 11.82 N on both tips).
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+use softgrip_record::{Message, Recording};
+
+#[test]
+fn contacts_recorded_before_backing_decode_as_free_fingertips() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/default_before_backing.mcap"
+    );
+    let rec = Recording::open(path).unwrap();
+    let mut arrays = 0;
+    let mut rows = 0;
+    let mut peak: f64 = 0.0;
+    for m in &rec.messages {
+        if let Message::Contacts(c) = &m.message {
+            arrays += 1;
+            for row in &c.contacts {
+                rows += 1;
+                assert_eq!((row.backing, row.core_thickness), (0, 0.0));
+                assert!(row.normal_force.is_finite() && row.normal_force >= 0.0);
+                assert!(row.max_compression >= row.compression, "{row:?}");
+                assert!(row.fingertip == "left_tip" || row.fingertip == "right_tip");
+                peak = peak.max(row.peak_normal_force);
+            }
+        }
+    }
+    // 300 steps recorded every 4th: 75 contact arrays; the box is held in most of them.
+    assert_eq!(arrays, 75);
+    assert!(rows > 100, "{rows}");
+    // The run summary written with the file (every substep) says 11.82 N; the recorded steps
+    // hold the same peak to 4 digits.
+    let summary = rec.run_summary().unwrap().unwrap();
+    let recorded_peak = summary
+        .fingertips
+        .iter()
+        .map(|f| f.peak_force)
+        .fold(0.0_f64, f64::max);
+    assert!((recorded_peak - 11.82).abs() < 0.005, "{recorded_peak}");
+    assert!(
+        (peak / recorded_peak - 1.0).abs() < 1e-3,
+        "{peak} vs {recorded_peak}"
+    );
+}
