@@ -31,6 +31,11 @@ echo "peers: softgrip's grasp sweep on 1 thread (sweep_throughput)" >&2
 nice -n 10 target/release/examples/sweep_throughput sweeps/throughput.toml 1 > "$tmp/sweep.txt"
 cat "$tmp/sweep.txt" >&2
 echo "peers: MuJoCo and Drake (peers.py)" >&2
-cd "$here"
-nice -n 10 "$py" peers.py --rust "$tmp/rust.jsonl" --sweep "$tmp/sweep.txt" --out "$here" \
-    --load-start "$load_start" --started "$started"
+# From the scratch directory: MuJoCo writes its warnings to MUJOCO_LOG.TXT in the cwd.
+cd "$tmp"
+nice -n 10 "$py" "$here/peers.py" --rust "$tmp/rust.jsonl" --sweep "$tmp/sweep.txt" \
+    --out "$here" --load-start "$load_start" --started "$started"
+if [ -f MUJOCO_LOG.TXT ]; then
+    echo "peers: MuJoCo logged $(grep -c WARNING MUJOCO_LOG.TXT) warnings; the distinct ones:" >&2
+    grep WARNING MUJOCO_LOG.TXT | sed 's/Time = .*//; s/DOF [0-9]*/DOF N/' | sort | uniq -c >&2
+fi
