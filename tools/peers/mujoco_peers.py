@@ -349,7 +349,7 @@ def resting(n, solref=(0.02, 1.0), solimp=(0.9, 0.95, 0.001, 0.5, 2.0), dt=0.002
     µs per step after `settle` steps. The defaults are MuJoCo's own (contact solref, solimp
     and the 2 ms step): the Hertz-matched contact of the squeeze is not resolved at 2 ms or
     1/60 s (the spheres bounce; measured before choosing this). Returns (µs/step, steps
-    timed, largest sphere speed at the end [m/s])."""
+    timed per round, largest sphere speed at the end [m/s], settle steps)."""
     side = int(np.ceil(np.sqrt(n)))
     bodies = []
     for i in range(n):
@@ -376,7 +376,7 @@ def resting(n, solref=(0.02, 1.0), solimp=(0.9, 0.95, 0.001, 0.5, 2.0), dt=0.002
             timer.time(mujoco.mj_step, model, data)
         best = min(best, timer.us_per_step())
     speed = float(np.max(np.abs(data.qvel))) if model.nv else 0.0
-    return best, steps, speed
+    return best, steps, speed, settle
 
 
 # --------------------------------------------------------------------------------------------

@@ -109,13 +109,20 @@ def run_resting(rust):
     for n in (1, 10, 100, 1000):
         log(f"resting N = {n}: MuJoCo")
         out, err = guarded(f"MuJoCo resting {n}", mujoco_peers.resting, n)
-        table.setdefault("MuJoCo (default contact), dt = 2 ms", {})[n] = (
-            {"us": out[0], "note": f"max speed {out[2]:.1e} m/s"} if out else {"us": None, "note": err})
+        table.setdefault("MuJoCo (default contact), dt = 2 ms", {})[n] = resting_cell(out, err)
         log(f"resting N = {n}: Drake")
         out, err = guarded(f"Drake resting {n}", drake_peers.resting, n)
-        table.setdefault("Drake (point contact, SAP), dt = 16.7 ms", {})[n] = (
-            {"us": out[0], "note": f"max speed {out[2]:.1e} m/s"} if out else {"us": None, "note": err})
+        table.setdefault("Drake (point contact, SAP), dt = 16.7 ms", {})[n] = resting_cell(out, err)
     return table
+
+
+def resting_cell(out, err):
+    """One cell of the resting table from (µs/step, steps per round, max speed, settle
+    steps), or the failure."""
+    if out is None:
+        return {"us": None, "note": err}
+    us, steps, speed, settled = out
+    return {"us": us, "note": f"{settled}+3x{steps} steps, max speed {speed:.0e} m/s"}
 
 
 def run_grasp(rust, softgrip_sweep):
@@ -147,8 +154,9 @@ def run_grasp(rust, softgrip_sweep):
         n = len(depths) * len(densities)
         matched = (f"grip {grip:.3f} N at the end of the settle, matched to softgrip's "
                    f"{grip_2mm:.3f} N at 2 mm" if grip and abs(grip / grip_2mm - 1) < 0.01 else
-                   f"NOT matched: the grip at the end of the settle is {grip or 0:.3f} N for "
-                   f"softgrip's {grip_2mm:.3f} N at any stiffness tried")
+                   f"NOT matched: the grip at the end of the settle is {grip or 0:.3f} N "
+                   f"(softgrip's: {grip_2mm:.3f} N) at every stiffness tried, 1 to 1e9 "
+                   f"(at 0 N the box has left the grip: the squeeze pops it out)")
         out[name] = {"trials": n, "wall_s": wall, "trials_per_s": n / wall,
                      "cores_used": f"{(StepTimer._cpu() - cpu0) / wall:.2f}", "held": held,
                      "errors": 1 if failed else 0,
@@ -201,7 +209,7 @@ def markdown(rows, resting, grasp, info):
                f"single-threaded, `nice -n 10`. Versions: "
                + ", ".join(f"{k} {v}" for k, v in info["versions"].items()) + ".")
     out.append("")
-    out.append(f"### Quasi-static squeeze: R = 10 mm, E = 3 MPa, ν = 0.49, x = δ/R up to 0.6\n")
+    out.append("### Quasi-static squeeze: R = 10 mm, E = 3 MPa, ν = 0.49, x = δ/R up to 0.6\n")
     out.append(f"Error = F/F_FE − 1 against `{FE_FILE.relative_to(ROOT)}` (CalculiX, scaled by μR²); "
                f"max and mean of |error| on x = {ERR_RANGE[0]}, {ERR_RANGE[0] + 0.01:.2f}, … "
                f"{ERR_RANGE[1]} (or as far as the peer got: column `x range`).\n")
@@ -221,20 +229,29 @@ def markdown(rows, resting, grasp, info):
                    + " | ".join(pct(e["at"][x]) for x in ERR_AT)
                    + f" | {e['x_from']:.2f}–{e['x_to']:.2f} |")
     out.append("")
-    out.append("### N spheres resting on a plane (R = 10 mm, 4.48 g, 30 mm grid, settled 120 steps), time per step (best of 3 rounds)\n")
+    out.append("### N spheres resting on a plane (R = 10 mm, 4.48 g, 30 mm grid), time per step: best of 3 rounds after settling (note: settle + rounds x steps)\n")
     out.append("| engine | N = 1 | N = 10 | N = 100 | N = 1000 | note |")
     out.append("|---|---:|---:|---:|---:|---|")
     for eng, per in resting.items():
-        notes = "; ".join(f"N = {n}: {v['note']}" for n, v in sorted(per.items()) if v["note"])
+        notes = "; ".join(f"{n}: {v['note']}" for n, v in sorted(per.items()) if v["note"])
         out.append(f"| {eng} | " + " | ".join(fmt_us(per.get(n, {}).get("us")) for n in (1, 10, 100, 1000))
                    + f" | {notes} |")
     out.append("")
     out.append("### Whole grasp trials per second on one core: `sweeps/throughput.toml` (the default grasp, 8 squeeze depths × 8 box densities)\n")
-    out.append("| engine | trials | held | wall | trials/s per core | cores used | note |")
-    out.append("|---|---:|---:|---:|---:|---:|---|")
+    out.append("| engine | trials | held | wall | trials/s | cores used (CPU/wall) "
+               "| trials per CPU-second | note |")
+    out.append("|---|---:|---:|---:|---:|---:|---:|---|")
     for eng, g in grasp.items():
+        try:
+            per_cpu = f"{g['trials_per_s'] / float(g['cores_used']):.1f}"
+        except (ValueError, ZeroDivisionError):
+            per_cpu = "—"
         out.append(f"| {eng} | {g['trials']} | {g['held']} | {g['wall_s']:.2f} s | "
-                   f"{g['trials_per_s']:.1f} | {g['cores_used']} | {g.get('note', '')} |")
+                   f"{g['trials_per_s']:.1f} | {g['cores_used']} | {per_cpu} | "
+                   f"{g.get('note', '')} |")
+    out.append("")
+    out.append("On a shared machine a single-threaded run gets less than a core: trials per "
+               "CPU-second (trials/s over the cores used) is the per-core rate.")
     out.append("")
     out.append("Notes per squeeze row (how each peer was set up and matched):\n")
     for r in rows:
