@@ -194,8 +194,11 @@ def pct(v):
 
 
 def fmt_us(us):
+    """A duration given in µs, in µs, ms or s."""
     if us is None:
         return "—"
+    if us >= 1e6:
+        return f"{us / 1e6:.2f} s"
     return f"{us / 1e3:.2f} ms" if us >= 1000 else f"{us:.1f} µs"
 
 
@@ -213,19 +216,20 @@ def markdown(rows, resting, grasp, info):
     out.append(f"Error = F/F_FE − 1 against `{FE_FILE.relative_to(ROOT)}` (CalculiX, scaled by μR²); "
                f"max and mean of |error| on x = {ERR_RANGE[0]}, {ERR_RANGE[0] + 0.01:.2f}, … "
                f"{ERR_RANGE[1]} (or as far as the peer got: column `x range`).\n")
-    head = ("| peer | variant | dt | time/step | max err | mean err | "
+    head = ("| peer | variant | dt | time/step | time per simulated s | max err | mean err | "
             + " | ".join(f"x = {x}" for x in ERR_AT) + " | x range |")
     out.append(head)
-    out.append("|---|---|---:|---:|---:|---:|" + "---:|" * len(ERR_AT) + "---|")
+    out.append("|---|---|---:|---:|---:|---:|---:|" + "---:|" * len(ERR_AT) + "---|")
     for r in rows:
         e = r.get("errors")
         dt = "—" if r.get("dt") is None else f"{r['dt'] * 1e3:.3g} ms"
         if e is None:
-            out.append(f"| {r['peer']} | {r['variant']} | {dt} | {fmt_us(r.get('us_per_step'))} | "
+            out.append(f"| {r['peer']} | {r['variant']} | {dt} | {fmt_us(r.get('us_per_step'))} | | "
                        f"no data: {r['note']} |" + " |" * (len(ERR_AT) + 2))
             continue
+        per_s = fmt_us(r["us_per_step"] / r["dt"]) if r.get("dt") else "—"
         out.append(f"| {r['peer']} | {r['variant']} | {dt} | {fmt_us(r['us_per_step'])} | "
-                   f"{100 * e['max']:.1f} % | {100 * e['mean']:.1f} % | "
+                   f"{per_s} | {100 * e['max']:.1f} % | {100 * e['mean']:.1f} % | "
                    + " | ".join(pct(e["at"][x]) for x in ERR_AT)
                    + f" | {e['x_from']:.2f}–{e['x_to']:.2f} |")
     out.append("")
@@ -259,48 +263,69 @@ def markdown(rows, resting, grasp, info):
     return "\n".join(out) + "\n"
 
 
+# The curves drawn in the left panel (the right one has every row): one or a few per peer,
+# so that the lines stay readable.
+CURVES = (
+    ("softgrip", "calibrated"), ("softgrip", "fit"), ("softgrip", "hertz"),
+    ("rapier", "rigid ball, contact softness, velocity cap lifted"),
+    ("rapier", "FEM ball (R = 1 (x100), 1e4 x dynamically real mass)"),
+    ("MuJoCo", "rigid sphere, soft contact matched to Hertz at x = 0.05"),
+    ("MuJoCo", "rigid sphere, soft contact fitted to FE (least squares)"),
+    ("MuJoCo", "flex FEM sphere, 192 tets"), ("MuJoCo", "flex FEM sphere, 768 tets"),
+    ("Drake", "hydroelastic, E_h matched (Drake's estimate), hint R/4"),
+    ("Drake", "hydroelastic, E_h = E, hint R/4"),
+    ("Drake", "point contact matched to Hertz at x = 0.05"),
+)
+
+
 def plot(rows, path):
-    """Left: F/F_FE against x for every squeeze row; right: time per step against the max
+    """Left: F/F_FE against x for the rows of CURVES; right: time per step against the max
     error (log-log), one point per row."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(15, 6.5))
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(16, 8.5))
     colors = {"softgrip": "tab:green", "rapier": "tab:orange", "MuJoCo": "tab:blue",
               "Drake": "tab:red"}
-    markers = "os^vD<>phx*+"
-    counts = {}
+    markers = "os^vD<>phH*P"
+    styles = ["-", "--", ":", "-."]
+    counts, lines = {}, {}
     for r in rows:
         e = r.get("errors")
         if not e:
             continue
         i = counts.get(r["peer"], 0)
         counts[r["peer"]] = i + 1
-        xs, fs = np.array(r["x"]), np.array(r["force"])
-        keep = (xs >= 0.02) & (xs <= FE_X[-1])
-        order = np.argsort(xs[keep])
-        xk, fk = xs[keep][order], fs[keep][order]
-        label = f"{r['peer']}: {r['variant']}"
-        ax1.plot(xk, fk / fe_force(xk), color=colors.get(r["peer"], "k"), lw=1,
-                 ls=["-", "--", ":", "-."][i % 4], label=label)
+        label = f"{r['peer']}: {r['variant']} (dt {r['dt'] * 1e3:.3g} ms)"
+        color = colors.get(r["peer"], "k")
         ax2.loglog(max(e["max"], 1e-4) * 100, r["us_per_step"], markers[i % len(markers)],
-                   color=colors.get(r["peer"], "k"), ms=7, label=label)
+                   color=color, ms=7, label=label)
+        if (r["peer"], r["variant"]) in CURVES:
+            j = lines.get(r["peer"], 0)
+            lines[r["peer"]] = j + 1
+            xs, fs = np.array(r["x"]), np.array(r["force"])
+            keep = (xs >= 0.02) & (xs <= FE_X[-1])
+            order = np.argsort(xs[keep])
+            xk, fk = xs[keep][order], fs[keep][order]
+            ax1.plot(xk, fk / fe_force(xk), color=color, lw=1.2, ls=styles[j % 4],
+                     label=f"{r['peer']}: {r['variant']}")
     ax1.axhline(1.0, color="k", lw=0.8)
     ax1.set_xlim(0.0, 0.62)
-    ax1.set_ylim(0.0, 2.0)
+    ax1.set_ylim(0.0, 1.8)
     ax1.set_xlabel("x = δ/R")
     ax1.set_ylabel("F / F_FE")
     ax1.set_title("Squeeze force against FE (R = 10 mm, E = 3 MPa, ν = 0.49)")
     ax1.grid(alpha=0.3)
+    ax1.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=2)
     ax2.set_xlabel(f"max |F/F_FE − 1| over x in [{ERR_RANGE[0]}, {ERR_RANGE[1]}] [%]")
-    ax2.set_ylabel("time per step [µs]")
-    ax2.set_title("Speed vs error, one core")
+    ax2.set_ylabel("wall time per step [µs], one core")
+    ax2.set_title("Speed vs error (each peer at its own dt)")
     ax2.grid(alpha=0.3, which="both")
     ax2.legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=100, bbox_inches="tight")
 
 
 def main():
