@@ -152,6 +152,10 @@ def run_grasp(rust, softgrip_sweep):
                     failed = f"{type(exc).__name__}: {exc}"
         wall = time.perf_counter() - t0
         n = len(depths) * len(densities)
+        # The grip MuJoCo gives the same 2 mm squeeze of the lightest and the heaviest box
+        # (its soft contact's force scales with the bodies' masses; softgrip's does not).
+        grips = [mujoco_peers.grasp_trial(0.002, rho, dt, solref, solimp, True)[1] or 0.0
+                 for rho in (min(densities), max(densities))]
         matched = (f"grip {grip:.3f} N at the end of the settle, matched to softgrip's "
                    f"{grip_2mm:.3f} N at 2 mm" if grip and abs(grip / grip_2mm - 1) < 0.01 else
                    f"NOT matched: the grip at the end of the settle is {grip or 0:.3f} N "
@@ -161,7 +165,11 @@ def run_grasp(rust, softgrip_sweep):
                      "cores_used": f"{(StepTimer._cpu() - cpu0) / wall:.2f}", "held": held,
                      "errors": 1 if failed else 0,
                      "note": f"solref = ({solref[0]:.4g}, {solref[1]:.4g}), default solimp; "
-                             + matched + (f"; a trial failed: {failed}" if failed else "")}
+                             + matched
+                             + f"; the same 2 mm squeeze grips the {min(densities):g} kg/m^3 box "
+                               f"with {grips[0]:.3f} N and the {max(densities):g} kg/m^3 box "
+                               f"with {grips[1]:.3f} N"
+                             + (f"; a trial failed: {failed}" if failed else "")}
         log(f"{name}: {n} trials in {wall:.1f} s, {held} held")
     return out
 
