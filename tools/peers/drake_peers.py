@@ -38,8 +38,9 @@ FRICTIONLESS = CoulombFriction(0.0, 0.0)
 
 
 def hydro_modulus_matched():
-    """Hydroelastic modulus E_h from Drake's documented estimate (the "Estimating hydroelastic
-    modulus" section of its contact-model documentation): a compliant body of modulus E_h
+    """Hydroelastic modulus E_h from Drake's documented estimate (its C++ documentation's
+    module `hydro_params`, analytical formulas to estimate hydroelastic parameters, with
+    `multibody/plant/contact_model_doxygen.h` as its source): a compliant body of modulus E_h
     behaves as an elastic foundation of depth H, f = (E_h / H) V; for a sphere on a half-space
     H = R and V = pi R delta^2 at small delta, so f = pi E_h delta^2. Equated to Hertz's force
     at x = X_MATCH: E_h = (4/3) E* sqrt(R) delta^1.5 / (pi delta^2)."""
