@@ -72,6 +72,10 @@
 //! - Cost: `chi = (P H Q + (l0 sqrt(x) Q + l1 x) T D^2) / (D H Q)` with chi_flat = P/D,
 //!   `H = D + k (P - D)` and `Q` the crossover's two factors: one square root and one division,
 //!   no `powf` or `exp` (`cargo bench -p softgrip-law`, `force_stiffness/calibrated-core`).
+//!   Measured on the shared 2-core machine (load average 4.7): fit 7.4 ns, flat 11.0 ns, core
+//!   27.6 ns (the previous form with its `powf`: 44.4 ns at load 5.1, fit 5.7, flat 12.2): the
+//!   target of 2x fit is missed; the dependent chain of dual products, not a transcendental,
+//!   is what is left.
 //! - Thin-layer limit (t/R -> 0 at fixed delta/t, u -> infinity): for a compressible skin B grows
 //!   linearly in a/t, the oedometer's scaling; for an incompressible one (eps -> 0) as `e u^2`,
 //!   not as the thin incompressible layer's `(3 pi/8) u^3` (bonded to the core, frictionless on
