@@ -59,6 +59,10 @@ def cases():
     c += [("core", 0.4, 0.3, 40, "heldout"), ("flat", 0.45, 0, 40, "heldout"),
           ("core", 0.45, 0.5, 40, "heldout"), ("core", 0.35, 0.7, 40, "heldout"),
           ("flat", 0.35, 0, 40, "heldout"), ("core", 0.49, 0.3, 40, "heldout")]
+    # mesh convergence of the thinnest skin (t/R = 0.2: 8 elements through it at R/40, 12 at
+    # R/60), and core at nu = 0.4 for the fit: the other core runs are at nu = 0.3 and >= 0.48 only
+    c += [("core", 0.48, 0.2, 60, "conv"), ("core", 0.4, 0.4, 40, "main"),
+          ("core", 0.4, 0.2, 40, "main")]
     return c
 
 
@@ -206,6 +210,7 @@ def cmd_export(a):
             write_pressure(fname(g, nu, t, "pressure", x), res, x)
         done[(g, nu, t)] = (h, res)
         print(f"{g} nu={nu:g} t={t:g}: reached x = {res['reached']:g}: {res['why']}")
+    checks = {}
     for g, nu, t, h, role in cases():
         if role not in ("conv", "smoke"):
             continue
@@ -214,23 +219,70 @@ def cmd_export(a):
             continue
         hb, base = done[(g, nu, t)]
         Fb = {r["x"]: r for r in base["rows"]}
-        path = os.path.join(OUT, g, "convergence.csv")
-        worst = 0.0
-        with open(path, "w") as f:
-            f.write(provenance(other, f"; mesh convergence of {g} nu = {nu:g}" +
-                               (f" t/R = {t:g}" if g == "core" else "") +
-                               f": R/{hb:g} (the campaign mesh) against R/{h:g}; reldiff = "
-                               f"(F_R/{hb:g} - F_R/{h:g}) / F_R/{h:g}") + "\n")
-            f.write(f"delta_over_R,force_N_h{hb:g},force_N_h{h:g},reldiff_pct,"
-                    f"contact_radius_mm_h{hb:g},contact_radius_mm_h{h:g}\n")
-            for r in other["rows"]:
-                b = Fb.get(r["x"])
-                if b is None:
-                    continue
-                d = 100 * (b["F"] - r["F"]) / r["F"]
-                worst = max(worst, abs(d))
-                f.write(f"{r['x']:g},{b['F']:.6g},{r['F']:.6g},{d:.3f},{b['a']:.5g},{r['a']:.5g}\n")
+        prov = provenance(other, f"; mesh convergence of {g} nu = {nu:g}" +
+                          (f" t/R = {t:g}" if g == "core" else "") +
+                          f": R/{hb:g} (the campaign mesh) against R/{h:g}; reldiff = "
+                          f"(F_R/{hb:g} - F_R/{h:g}) / F_R/{h:g}")
+        rows, worst = [], 0.0
+        for r in other["rows"]:
+            b = Fb.get(r["x"])
+            if b is None:
+                continue
+            d = 100 * (b["F"] - r["F"]) / r["F"]
+            worst = max(worst, abs(d))
+            rows.append(f"{nu:g},{t:g},{hb:g},{h:g},{r['x']:g},{b['F']:.6g},{r['F']:.6g},{d:.3f},"
+                        f"{b['a']:.5g},{r['a']:.5g}")
+        checks.setdefault(g, {})[(nu, t, hb, h)] = (prov, rows)
         print(f"convergence {g} nu={nu:g} t={t:g}: max |F_h{hb:g} - F_h{h:g}| / F = {worst:.3f} %")
+    for g, new in checks.items():
+        write_convergence(os.path.join(OUT, g, "convergence.csv"), new)
+
+
+CONV_HEADER = ("nu,t_over_R,h_campaign,h_other,delta_over_R,force_N_campaign,force_N_other,"
+               "reldiff_pct,contact_radius_mm_campaign,contact_radius_mm_other")
+
+
+def read_convergence(path):
+    """The checks already in `path`, keyed (nu, t, R/h campaign, R/h other): (provenance, rows).
+    Reads this format and the earlier one-check file (header delta_over_R,force_N_h40,...)."""
+    if not os.path.exists(path):
+        return {}
+    lines = open(path).read().splitlines()
+    provs = [ln for ln in lines if ln.startswith("# provenance:")]
+    data = [ln for ln in lines if ln and not ln.startswith("#")]
+    out = {}
+    if data and data[0] == CONV_HEADER:
+        for ln in data[1:]:
+            v = ln.split(",")
+            key = tuple(float(q) for q in v[:4])
+            out.setdefault(key, [None, []])[1].append(ln)
+        for key in out:  # the provenance line names its case's nu, t/R and both meshes
+            tag = f"nu = {key[0]:g}" + (f" t/R = {key[1]:g}" if key[1] else "")
+            mesh = f"R/{key[2]:g} (the campaign mesh) against R/{key[3]:g}"
+            out[key][0] = next(pv for pv in provs if tag + ":" in pv and mesh in pv)
+    elif data:  # one check: delta_over_R,force_N_h{A},force_N_h{B},reldiff_pct,...
+        import re
+        hb, h = (float(q) for q in re.findall(r"force_N_h(\d+)", data[0]))
+        m = re.search(r"nu = ([\d.]+)(?: t/R = ([\d.]+))?:", provs[0])
+        nu, t = float(m.group(1)), float(m.group(2) or 0)
+        rows = [f"{nu:g},{t:g},{hb:g},{h:g}," + ln for ln in data[1:]]
+        out[(nu, t, hb, h)] = [provs[0], rows]
+    return {k: tuple(v) for k, v in out.items()}
+
+
+def write_convergence(path, new):
+    """`convergence.csv` of one geometry: every check (one provenance line each, then one table
+    with nu and t/R columns); checks regenerated now replace their earlier rows, the others are
+    kept (their runs need not be in this --runs directory)."""
+    checks = read_convergence(path)
+    checks.update(new)
+    with open(path, "w") as f:
+        for key in sorted(checks):
+            f.write(checks[key][0] + "\n")
+        f.write(CONV_HEADER + "\n")
+        for key in sorted(checks):
+            for ln in checks[key][1]:
+                f.write(ln + "\n")
 
 
 def cmd_reproduce(a):

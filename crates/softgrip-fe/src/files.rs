@@ -187,6 +187,22 @@ pub const FILES: &[FeFile] = &[
         Some(0.2)
     ),
     fe_file!(
+        "core/force_nu0.4_t0.2.csv",
+        Force,
+        Some(0.4),
+        "softgrip's own FE, skin t/R = 0.2 over a rigid core, nu = 0.4, x = 0.01..0.15",
+        "core",
+        Some(0.2)
+    ),
+    fe_file!(
+        "core/force_nu0.4_t0.4.csv",
+        Force,
+        Some(0.4),
+        "softgrip's own FE, skin t/R = 0.4 over a rigid core, nu = 0.4, x = 0.01..0.3",
+        "core",
+        Some(0.4)
+    ),
+    fe_file!(
         "core/force_nu0.3_t0.4.csv",
         Force,
         Some(0.3),

@@ -39,34 +39,69 @@
 //!
 //! ## Core: a skin of thickness t over a rigid core
 //!
-//! PROVISIONAL (issue 10 is open): within 1.9 % of the FE for t/R >= 0.4 at nu = 0.3, 0.48,
-//! 0.499, but 3.1-6.0 % at t/R = 0.2 (the thin, nearly incompressible skin).
+//! PROVISIONAL (issue 10 is open): within 2.37 % of the FE on every fitted curve and 2.85 % on
+//! the runs held out of the fit, so the 2 % target is missed by up to 0.4 % (fitted) and 0.9 %
+//! (held out); where exactly is listed below. The previous form (a power of chi_flat) was within
+//! 1.9 % for t/R >= 0.4 but 3.1-8.2 % at t/R = 0.2 and cost a `powf` per evaluation.
 //!
 //! ```text
-//! chi_core = chi_flat + phi (Dim(chi_t) - Dim(sqrt x)) (1 + lambda x/tau) chi_flat^(1 - k)
-//!   tau = t/R, chi_t = sqrt(x)/tau         contact radius over skin thickness
-//!   Dim(u) = Dimitriadis' bonded-layer series to third order in u (a/h of a layer of depth h)
-//!   phi = rho^n / (rho^n + c), rho = (R - t)/t   how much of a layer the core is
-//!   lambda = l0 + l1 eps,  k = k0 + k1 eps
+//! chi_core = chi_flat + phi L T / (1 + k (chi_flat - 1))
+//!   tau = t/R, rho = (R - t)/t, s = sqrt(x), u = s/tau    Hertz contact radius over skin thickness
+//!   L   = B(u) - B(s),  B(v) = v (d1 + e v / (1 + g v^2)) a bonded layer of depth t, less one of R
+//!   phi = rho^n / (rho^n + c + c2 rho)                     how much of a layer the core is
+//!   T   = 1 + lambda x/tau                                 the skin thins under the squeeze
+//!   d1  = -2 alpha0(nu)/pi                                 Dimitriadis' first order (theory)
+//!   e = e0 + e1 eps,  g = beta eps,  lambda = l0 + l1 eps,  k = k0 + k1 eps
 //! ```
 //!
-//! - `Dim(chi_t) - Dim(sqrt x)`: the excess of a bonded layer of thickness t over one of depth
-//!   R (which the flat law already carries). Dimitriadis' series alone is within 2 % of the
-//!   FE for t/R = 0.2 up to x = 0.1 (chi_t = 1.6); its fourth-order term makes it worse.
-//! - `phi`: the core is a sphere of radius R - t, not a plane: a thin skin (rho large) is a
-//!   layer, a small deep core (rho small) barely matters; phi -> 0 as t -> R, so core -> flat.
-//! - `1 + lambda x/tau`: the layer thins under the squeeze (x/tau = delta/t): a compressible
-//!   skin stiffens, an incompressible one less so.
-//! - `chi_flat^(1 - k)`: the large-deformation stiffening of the hemisphere and of the layer do
-//!   not simply multiply (k ~ 1.8 incompressible, ~0 at nu = 0.3).
+//! - `B(v)`: the correction of a contact on a layer of depth h bonded to a rigid base, at
+//!   `v = a_H/h`. Its first order is Dimitriadis' `d1(nu)` (no fit); the second order `e v` is
+//!   fitted (Dimitriadis' own second and third orders over-predict for u > 1, where the t/R = 0.2
+//!   skin is). `1 + g v^2` is the compressible crossover: a bonded layer acts incompressibly only
+//!   over lengths below `l ~ h sqrt(kappa/mu)` (the squeezed material must flow out past the
+//!   contact), beyond which it is an oedometer (`p = M w/h`) whose stiffening grows only linearly
+//!   in `a/h`; `(a/l)^2 ~ eps v^2`. Without it the held-out nu = 0.4, t/R = 0.3 run is 5.4 % off.
+//! - `- B(s)`: the layer of depth R that chi_flat (a bonded hemisphere) already carries.
+//! - `phi`: the core is a sphere of radius R - t at depth t, not a plane: a small core (rho -> 0)
+//!   acts like an inclusion (phi ~ rho^n, n = 2.4), a thin skin (rho large) as a layer (phi -> 1).
+//!   As t -> R, phi -> 0 and core -> flat.
+//! - `T`: the skin over the core's pole is squeezed by delta/t = x/tau (up to 0.6 here).
+//! - `1 / (1 + k (chi_flat - 1))`: the large-deformation stiffening of the hemisphere (chi_flat)
+//!   and the layer excess do not multiply: near incompressibility (k = 0.54-0.59) the excess grows less
+//!   than chi_flat, for a compressible skin (k < 0 at nu = 0.3) more.
+//! - Cost: `chi = (P H Q + (l0 sqrt(x) Q + l1 x) T D^2) / (D H Q)` with chi_flat = P/D,
+//!   `H = D + k (P - D)` and `Q` the crossover's two factors: one square root and one division,
+//!   no `powf` or `exp` (`cargo bench -p softgrip-law`, `force_stiffness/calibrated-core`).
+//!   Measured on the shared 2-core machine (load average 4.7): fit 7.4 ns, flat 11.0 ns, core
+//!   27.6 ns (the previous form with its `powf`: 44.4 ns at load 5.1, fit 5.7, flat 12.2): the
+//!   target of 2x fit is missed; the dependent chain of dual products, not a transcendental,
+//!   is what is left.
+//! - Thin-layer limit (t/R -> 0 at fixed delta/t, u -> infinity): for a compressible skin B grows
+//!   linearly in a/t, the oedometer's scaling; for an incompressible one (eps -> 0) as `e u^2`,
+//!   not as the thin incompressible layer's `(3 pi/8) u^3` (bonded to the core, frictionless on
+//!   the plane: F = 2 pi mu R^2 delta^3/t^3). That asymptote lies far past the FE (u <= 1.7 at
+//!   t/R = 0.2); a Pade blend reaching it was fitted and was 5-16 % off these data. Below t/R =
+//!   0.2 the form is an extrapolation.
 //!
-//! n = 1.913237, c = 0.578666, l0 = 0.635466, l1 = -2.284206, k0 = 1.816930, k1 = -4.559464:
-//! least squares on the 12 FE curves (t/R = 0.2, 0.4, 0.6, 0.8 at nu = 0.3, 0.48, 0.499) for
-//! `0.01 <= x` and `delta/t <= 0.6`. Each t/R held out in turn: 1.8 % (0.6), 2.1 % (0.8), 3.7 %
-//! (0.4), 6.2 % (0.2).
+//! n = 2.438510, c = 0.029861, c2 = 0.963584, e0 = 2.135778, e1 = -2.124863, l0 = 1.106851,
+//! l1 = 1.865438, k0 = 0.586583, k1 = -2.075281, beta = 1.547191: the smallest largest relative
+//! error (least squares, then of its 4th power) over the 14 fitted FE curves (t/R = 0.2, 0.4,
+//! 0.6, 0.8 at nu = 0.3, 0.48, 0.499, and t/R = 0.2, 0.4 at nu = 0.4), `0.01 <= x <= x_max`
+//! (`tools/calibration/fit_core.py` prints all of this). Largest error per fitted curve, nu =
+//! 0.3 / 0.4 / 0.48 / 0.499: t/R = 0.2: 1.94 / 2.13 / 2.29 / 2.24 %; 0.4: 2.08 / 2.37 / 0.73 /
+//! 1.92 %; 0.6: 1.68 / - / 0.81 / 1.32 %; 0.8: 0.60 / - / 1.59 / 1.40 %. Held out of the fit:
+//! (nu 0.35, t/R 0.7) 0.88 %, (0.4, 0.3) 1.85 %, (0.45, 0.5) 2.85 % (at x = 0.30, its x_max),
+//! (0.49, 0.3) 2.85 % (at x = 0.15). Each t/R held out of the fit in turn (an extrapolation for
+//! 0.2 and 0.8): 8.9 % (0.2), 7.2 % (0.4), 4.7 % (0.6), 9.0 % (0.8); each fitted nu: 4.6 %
+//! (0.4), 4.1 % (0.48), 3.4 % (0.499), and no fit without nu = 0.3 (the only compressible
+//! runs). Ten constants on 14 curves: the form interpolates between its data but is not yet
+//! physics enough to predict a thickness it has not seen.
 //!
-//! Validity: `0 <= x <= min(x_max_flat, 0.6 t/R)`: the FE stops at delta/t = 0.65-0.7 (the layer
-//! over the core's pole; at nu = 0.3 its elements approach volume collapse near 0.8).
+//! Validity: `0 <= x <= min(x_max_flat, 0.6 t/R)`: the FE stops at delta/t = 0.65-0.8 (the skin
+//! over the core's pole; at nu = 0.3 its elements approach volume collapse). At nu = 0.499 and
+//! t/R = 0.2 the FE stops at x = 0.09 (0.45 t): the form is validated to 0.09 only there.
+//! The t/R = 0.2 data are mesh-converged: R/60 against the campaign's R/40 within 0.22 %
+//! (`tests/data/fe/core/convergence.csv`).
 //!
 //! ## Pressure
 //!
@@ -94,8 +129,13 @@ use crate::quadrature::integrate;
 
 /// Flat: c0, c1, e0, e1, b, d.
 const FLAT: [f64; 6] = [0.681614, -0.341872, 1.754842, -2.984330, 0.791282, 0.329388];
-/// Core: n, c (how much of a layer the core is), l0, l1 (the layer's thinning), k0, k1.
-const CORE: [f64; 6] = [1.913237, 0.578666, 0.635466, -2.284206, 1.816930, -4.559464];
+/// Core: n, c, c2 (how much of a layer the core is), e0, e1 (the layer's second order), l0, l1
+/// (the layer's thinning), k0, k1 (the layer under the large-deformation stiffening), beta (the
+/// compressible crossover of the layer).
+const CORE: [f64; 10] = [
+    2.438510, 0.029861, 0.963584, 2.135778, -2.124863, 1.106851, 1.865438, 0.586583, -2.075281,
+    1.547191,
+];
 /// The core's validity: the skin over the core's pole squeezed by at most this fraction of t.
 const CORE_SQUEEZE: f64 = 0.6;
 /// Radius: q0, q1, s0, s1.
@@ -112,14 +152,15 @@ pub(crate) struct Backed {
     d: f64,
     e: f64,
     b2: f64,
-    /// Core only (else `phi = 0`): `phi(Rc/t)`.
-    phi: f64,
-    /// `1 - k(nu)`, the power of `chi_flat` the layer excess scales with.
-    one_minus_k: f64,
+    /// Core only: the layer excess times phi is
+    /// `layer[0] sqrt(x) + layer[1] x / ((1 + cross[0] x) (1 + cross[1] x))`.
+    core: bool,
+    layer: [f64; 2],
+    cross: [f64; 2],
     /// `lambda(nu) / (t/R)`: the layer's thinning factor is `1 + lambda x/(t/R)`.
     thinning: f64,
-    /// Dimitriadis' series coefficients of chi_t, chi_t^2, chi_t^3.
-    dim: [f64; 3],
+    /// `k(nu)`: the layer excess is divided by `1 + k (chi_flat - 1)`.
+    k: f64,
     /// `1 / (t/R)` (core), 0 for flat.
     inv_tau: f64,
     eps4: f64,
@@ -155,38 +196,48 @@ impl Backed {
         }
         let eps = 3.0 * (1.0 - 2.0 * nu) / (2.0 * (1.0 + nu));
         let [c0, c1, e0, e1, b, d] = FLAT;
-        let pi = std::f64::consts::PI;
-        let a0 = -(1.2876 - 1.4678 * nu + 1.3442 * nu * nu) / (1.0 - nu);
-        let b0 = (0.6387 - 1.0277 * nu + 1.5164 * nu * nu) / (1.0 - nu);
-        let dim = [
-            -2.0 * a0 / pi,
-            4.0 * a0 * a0 / (pi * pi),
-            -8.0 / (pi * pi * pi) * (a0 * a0 * a0 + 4.0 * pi * pi * b0 / 15.0),
-        ];
-        let [n, c, l0, l1, k0, k1] = CORE;
+        // Dimitriadis' bonded-layer series to first order: chi = 1 + d1 a/h + ...
+        let d1 =
+            2.0 * (1.2876 - 1.4678 * nu + 1.3442 * nu * nu) / ((1.0 - nu) * std::f64::consts::PI);
+        let [n, c, c2, ce0, ce1, l0, l1, k0, k1, beta] = CORE;
         let [q0, q1, s0, s1] = RADIUS;
-        let (phi, inv_tau, rc, x_max) = match (backing, tau) {
+        let (core, layer, cross, inv_tau, rc, x_max) = match (backing, tau) {
             (Backing::Core { .. }, Some(tau)) => {
                 let rc = 1.0 - tau;
-                let rho = (rc / tau).powf(n);
+                let rho = rc / tau;
+                let rho_n = rho.powf(n);
+                let phi = rho_n / (rho_n + c + c2 * rho);
+                let inv_tau = 1.0 / tau;
+                // phi (B(u) - B(sqrt x)), B(v) = v (d1 + e v / (1 + g v^2)), u = sqrt(x)/tau,
+                // g = beta eps: = phi d1 (1/tau - 1) sqrt(x)
+                //   + phi e (1/tau^2 - 1) x / ((1 + g x/tau^2) (1 + g x)).
+                let e = ce0 + ce1 * eps;
+                let g = beta * eps;
+                let layer = [
+                    phi * d1 * (inv_tau - 1.0),
+                    phi * e * (inv_tau * inv_tau - 1.0),
+                ];
                 (
-                    rho / (rho + c),
-                    1.0 / tau,
+                    true,
+                    layer,
+                    [g * inv_tau * inv_tau, g],
+                    inv_tau,
                     rc,
                     flat_x_max(nu).min(CORE_SQUEEZE * tau),
                 )
             }
-            _ => (0.0, 0.0, 0.0, flat_x_max(nu)),
+            _ => (false, [0.0; 2], [0.0; 2], 0.0, 0.0, flat_x_max(nu)),
         };
         Ok(Self {
             c: c0 + c1 * eps,
             d,
             e: e0 + e1 * eps,
             b2: b * b * eps,
-            phi,
-            one_minus_k: 1.0 - (k0 + k1 * eps),
+            core,
+            layer,
+            cross,
             thinning: (l0 + l1 * eps) * inv_tau,
-            dim,
+            k: k0 + k1 * eps,
             inv_tau,
             eps4: 0.25 * eps,
             rad_x: q0 + q1 * eps,
@@ -205,17 +256,18 @@ impl Backed {
         let s = Dual::sqrt_of_var(x0);
         let sf = Dual::c(1.0) - x.scale(self.d) + s.scale(self.c) + x2.scale(self.e);
         let den = w * w + x2.scale(self.b2);
-        let flat = n * sf / den;
-        if self.phi == 0.0 {
-            return flat;
+        let num = n * sf;
+        if !self.core {
+            return num / den;
         }
-        // The layer excess Dim(chi_t) - Dim(sqrt x): a layer of thickness t over a layer of the
-        // hemisphere's depth R (which chi_flat already carries); Dim(u) - 1 = u (d1 + u (d2 + d3 u)).
-        let [d1, d2, d3] = self.dim;
-        let dim_excess = |u: Dual| u * ((u.scale(d3) + d2) * u + d1);
-        let excess = dim_excess(s.scale(self.inv_tau)) - dim_excess(s);
+        // chi_flat = P/D, phi L = (l0 sqrt(x) Q + l1 x) / Q with Q the crossover's
+        // (1 + g x/tau^2)(1 + g x); chi = P/D + phi L T / (1 + k (P/D - 1))
+        //   = (P H Q + (l0 sqrt(x) Q + l1 x) T D^2) / (D H Q), H = D + k (P - D): one division.
+        let q = (Dual::c(1.0) + x.scale(self.cross[0])) * (Dual::c(1.0) + x.scale(self.cross[1]));
+        let layer = s.scale(self.layer[0]) * q + x.scale(self.layer[1]);
         let thinning = Dual::c(1.0) + x.scale(self.thinning);
-        flat + (excess * thinning).scale(self.phi) * flat.powf(self.one_minus_k)
+        let h = den + (num - den).scale(self.k);
+        (num * h * q + layer * thinning * den * den) / (den * h * q)
     }
 }
 

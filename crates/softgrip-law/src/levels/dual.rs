@@ -1,7 +1,7 @@
 //! Forward-mode dual numbers carrying a value and its *scaled* derivative `x dv/dx`: a law
 //! written once as a function of `x` gives its exact derivative alongside its value, so the
 //! stiffness is the derivative of the force by construction. Scaled by `x` so that `sqrt(x)`
-//! costs no division (`x d sqrt(x)/dx = sqrt(x)/2`) and a power none either: a level built on
+//! costs no division (`x d sqrt(x)/dx = sqrt(x)/2`): a level built on
 //! it needs one square root and one division per division in its form, like the hand-grouped
 //! `calibrated`. Hand-written (a few lines) so that everything inlines into the hot path
 //! (`cargo bench -p softgrip-law` times the levels that use it).
@@ -33,16 +33,6 @@ impl Dual {
     #[inline(always)]
     pub(crate) fn c(v: f64) -> Self {
         Self { v, d: 0.0 }
-    }
-
-    /// `self^k` for a constant `k`, `v > 0` (one `powf`, no division).
-    #[inline(always)]
-    pub(crate) fn powf(self, k: f64) -> Self {
-        let below = self.v.powf(k - 1.0);
-        Self {
-            v: below * self.v,
-            d: k * below * self.d,
-        }
     }
 
     /// `self * k` for a constant `k`.
@@ -128,17 +118,17 @@ mod tests {
     use super::Dual;
 
     #[test]
-    fn scaled_derivative_of_a_rational_function_with_a_root_and_a_power() {
-        // f = (1 + 2 sqrt(x)) / (1 - x)^2 * x^0.3 at x = 0.3: x f'(x) by hand.
+    fn scaled_derivative_of_a_rational_function_with_a_root() {
+        // f = (1 + 2 sqrt(x)) / (1 - x)^2 * x^2 at x = 0.3: x f'(x) by hand.
         let x0 = 0.3f64;
         let x = Dual::var(x0);
         let w = 1.0 - x;
-        let f = (Dual::c(1.0) + Dual::sqrt_of_var(x0).scale(2.0)) / (w * w) * x.powf(0.3);
+        let f = (Dual::c(1.0) + Dual::sqrt_of_var(x0).scale(2.0)) / (w * w) * (x * x);
         let s = x0.sqrt();
         let g = (1.0 + 2.0 * s) / (0.7f64 * 0.7);
         let dg = (1.0 / s) / (0.7f64 * 0.7) + (1.0 + 2.0 * s) * 2.0 / 0.7f64.powi(3);
-        let h = x0.powf(0.3);
-        let dh = 0.3 * x0.powf(-0.7);
+        let h = x0 * x0;
+        let dh = 2.0 * x0;
         assert!((f.v - g * h).abs() < 1e-14);
         assert!((f.d - x0 * (dg * h + g * dh)).abs() < 1e-13);
     }
