@@ -27,6 +27,10 @@ fi
 t1=$(date +%s)
 echo "python venv $VENV: $((t1 - t0)) s"
 
+# The wheel's build (softgrip-py alone) must see the workspace's features, or it recompiles
+# most of the workspace (see the workspace hack in Cargo.toml).
+python3 crates/softgrip-py/ci/features.py
+
 # `pip wheel` runs maturin's PEP 517 backend (the venv's pinned maturin: no build isolation);
 # MATURIN_PEP517_ARGS picks the dev profile, whose dependencies the workspace build compiled.
 # Without build isolation maturin is found on PATH: the venv's.

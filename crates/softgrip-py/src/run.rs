@@ -132,11 +132,12 @@ fn simulate(
     let start = Instant::now();
     let mut steps = 0;
     while steps < total {
-        if steps % SIGNAL_CHECK_STEPS == 0 && steps > 0 {
-            if let Err(e) = Python::attach(|py| py.check_signals()) {
-                *interrupted = Some(e);
-                break;
-            }
+        if steps % SIGNAL_CHECK_STEPS == 0
+            && steps > 0
+            && let Err(e) = Python::attach(|py| py.check_signals())
+        {
+            *interrupted = Some(e);
+            break;
         }
         sim.step();
         steps += 1;
