@@ -43,7 +43,14 @@ WHEEL=$(ls "$WHEELS"/softgrip-*.whl)
 t2=$(date +%s)
 echo "wheel $WHEEL (dev profile) built and installed: $((t2 - t1)) s"
 
-SOFTGRIP_WHEEL="$PWD/$WHEEL" SOFTGRIP_BIN="$PWD/target/debug/softgrip" \
-  "$VENV/bin/python" -m pytest crates/softgrip-py/tests -q -rs -p no:cacheprovider
+export SOFTGRIP_WHEEL="$PWD/$WHEEL" SOFTGRIP_BIN="$PWD/target/debug/softgrip"
+"$VENV/bin/python" -m pytest crates/softgrip-py/tests -q -rs -p no:cacheprovider \
+  --ignore crates/softgrip-py/tests/test_ray.py
+# Ray's servers listen on every interface (whatever _node_ip_address says): its test runs in a
+# private network namespace whose one interface is loopback (as the DDS tests do).
+t_ray=$(date +%s)
+unshare --net -- sh -c 'ip link set lo up && exec "$0" -m pytest crates/softgrip-py/tests/test_ray.py -q -rs -p no:cacheprovider' \
+  "$VENV/bin/python"
+echo "Ray test (private network namespace): $(( $(date +%s) - t_ray )) s"
 t3=$(date +%s)
 echo "pytest: $((t3 - t2)) s; the Python step took $((t3 - t0)) s"
