@@ -3,22 +3,26 @@
 against softgrip's own FE (tests/data/fe/{free,flat,core}/ and the reference copy).
 
 1. A trustworthy FE radius. The committed radius column (a_lin: the last surface node on the
-   plane, linearly interpolated to the next one) moves in steps of one surface node and is not
-   even monotone in x. Per FE curve it is smoothed by least squares of
+   plane, linearly interpolated to the next one) moves in node steps, is not even monotone in x,
+   and lags the edge by about half an element face. Per FE curve it is smoothed by least squares
        a / sqrt(x) = c0 + c1 s + c2 s^2 [+ c3 s^3],   s = sqrt(x),   0.05 <= x <= reach
    (Hertz's a = sqrt(R delta) times a low-order series in sqrt(x); cubic where the curve spans
-   more than 0.25 in x, else quadratic). The residual is the step noise of a_lin (printed).
-2. The radius forms are fitted to those smoothed radii (x = 0.05 .. min(reach, 0.45), every
-   0.01) on the fitted cases only; held-out cases are reported, never fitted:
-       a_free = artanh(sqrt x) (1 + g x^3) (1 - x) / (1 - x + eps x / 4)       (unchanged)
+   more than 0.25 in x, else quadratic), then the lag 0.485 R/N (half the element edge of a mesh
+   R/N) is added: a* = smooth + 0.485 R/N. The residual of a_lin is its step noise (printed);
+   fine-mesh re-runs (radius_mesh_*.csv, R/80 and R/120 against R/40) check the lag (1b, 1c).
+2. The radius forms are fitted to a* (x = 0.05 .. min(reach, 0.45) (free: 0.6), every 0.01) on
+   the fitted cases only; held-out cases are reported, never fitted:
+       a_free = artanh(sqrt x) (1 + g1 x + g3 x^3) (1 - x) / (1 - x + eps x / 4)   (reference nu 0.3, 0.49)
        a_flat = a_free (1 + (q0 + q1 eps) x + q2 x^2)
-       a_core = a_flat (1 + S(nu) rc^2 w),  S = s0 + s1 eps,  w = u / (u + c),
-                u = sqrt(x) / (tau (1 + k x / rc)),  tau = t/R, rc = 1 - tau
-3. The core's pressure shape m of p = p0 (1 - r^2/a^2)^m (force-conserving, p0 = (m+1) F/(pi a^2))
-   from the core pressure profiles: per profile the m that best matches the FE profile over
-   r <= 0.8 a with the FE's own force and the law's radius, then the form
-       m = m_flat(x, nu) + (M(nu) - m_flat) v,   v = phi u^2 / (u^2 + cm^2)
-   fitted to the profiles of the fitted cases (M: the thin bonded layer's limit, 2 at nu = 0.5).
+       a_core = a_flat (1 + S(nu) rc^2 (u / (u + c)) / (1 + k x / rc)),  S = s0 + s1 eps,
+                u = sqrt(x) / tau,  tau = t/R, rc = 1 - tau
+3. Pressure shape m of p = p0 (1 - r^2/a^2)^m (force-conserving, p0 = (m+1) F/(pi a^2)): per FE
+   profile the m that best matches it over r <= 0.8 a with the FE's own force and the law's
+   radius, then least squares of (m + 1)/(m_best + 1) - 1 (the peak is (m + 1) times the mean):
+       m_flat = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x + a3 x^2                   (refitted)
+       m_core = m_flat + (2 - b eps - m_flat) v,  v = z^n/(z^n + cm^n),  z = x^alpha/(tau - x)
+   (2: the thin bonded incompressible layer's (1 - r^2/a^2)^2; the core inside its validity
+   x <= 0.6 t/R). The free shape is unchanged (calibrated.rs) and only reported.
 Usage: target/fe-venv/bin/python tools/calibration/fit_radius_pressure.py   (numpy + scipy, ~5 s)
 """
 import glob
@@ -32,10 +36,15 @@ DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tes
 # Held out of every fit (tests/data/fe/README.md, fe_campaign.py role "heldout").
 HELD = {("flat", 0.35, None), ("flat", 0.45, None), ("core", 0.35, 0.7), ("core", 0.45, 0.5),
         ("core", 0.4, 0.3), ("core", 0.49, 0.3)}
-# The last surface node on the plane lags the contact edge by half a node spacing on average; the
-# spacing along the curved surface is 0.485 R/N (R/40) .. 0.495 R/N (R/80) for a mesh named R/N
-# (measured on the meshes, deformed = undeformed within 0.6 %): lag = 0.245 R / N.
-LAG_TIMES_N = 0.245
+# a_lin lags the contact edge by half an element face on average: contact is resolved per
+# quadratic face (on R/80 the last node on the plane is a midside node 25 times in 29, its outer
+# corner touching within the penalty's penetration). The element edge along the curved surface
+# is 0.97 R/N on a mesh named R/N (measured on R/40 and R/80, deformed = undeformed within
+# 0.6 %): lag = 0.485 R/N. The fine-mesh checks alone give 0.47 (flat) and 0.65 (core), see 1b.
+LAG_TIMES_N = 0.485
+# the core radius's saturation scale c is bounded below: a layer matters only once the patch
+# is comparable to it (c -> 0 would make a core wider than flat at x -> 0)
+C_MIN = 0.05
 G = 0.160185  # free sphere's radius excess (calibrated.rs)
 # Flat pressure shape (backed.rs SHAPE): m = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x + a3 x^2.
 FLAT_SHAPE = (-0.1943, 0.2807, -0.8658, 3.4805)
@@ -75,9 +84,13 @@ def smooth(x, a, lo=0.05):
     return lambda xx: np.sqrt(xx) * (np.vander(np.sqrt(xx), deg + 1, increasing=True) @ c)
 
 
-def a_free(x, nu):
+FREE_RADIUS = [0.0, G]  # g1, g3 of a_free; refitted in main()
+
+
+def a_free(x, nu, q=None):
+    g1, g3 = FREE_RADIUS if q is None else q
     w = 1 - x
-    return np.arctanh(np.sqrt(x)) * (1 + G * x**3) * w / (w + eps_of(nu) / 4 * x)
+    return np.arctanh(np.sqrt(x)) * (1 + g1 * x + g3 * x**3) * w / (w + eps_of(nu) / 4 * x)
 
 
 def flat_factor(q, x, nu):
@@ -92,26 +105,47 @@ def core_u(k, x, t):
 
 def core_factor(q, x, nu, t):
     s0, s1, c, k = q
-    u = core_u(k, x, t)
-    return 1 + (s0 + s1 * eps_of(nu)) * (1 - t) ** 2 * u / (u + c)
+    u = np.sqrt(x) / t
+    return 1 + (s0 + s1 * eps_of(nu)) * (1 - t) ** 2 * u / (u + c) / (1 + k * x / (1 - t))
+
+
+def mesh_files():
+    """(path, x, fine radius, N_fine, R/40 radius, fine force, R/40 force) of each fine-mesh check."""
+    out = []
+    for f in sorted(glob.glob(os.path.join(DATA, "*", "radius_mesh_*.csv"))):
+        d = load(f)
+        n = int([c for c in d.dtype.names if c.startswith("contact_radius_mm_h") and c != "contact_radius_mm_h40"][0][19:])
+        out.append((os.path.relpath(f, DATA), d["delta_over_R"], d[f"contact_radius_mm_h{n}"], n,
+                    d["contact_radius_mm_h40"], d[f"force_N_h{n}"], d["force_N_h40"]))
+    return out
+
+
+def fit_lag():
+    """The lag coefficient c (a* = smooth(a_lin) + c R/N) that makes each fine mesh agree with
+    R/40 (least squares over 0.1 <= x, every check), printed with what each check alone says."""
+    rows = []
+    for path, x, af, n, a40, _, _ in mesh_files():
+        k = x >= 0.1 - 1e-9
+        sf, s40 = smooth(x, af), smooth(x, a40)
+        c = (sf(x[k]) - s40(x[k])) / (1 / 40 - 1 / n)
+        print(f"  {path}: c = (s_R/{n} - s_R/40) / (1/40 - 1/{n}) = {c.min():.3f} .. {c.max():.3f}, mean {c.mean():.3f}")
+        rows.append(c)
+    return float(np.concatenate(rows).mean())
 
 
 def mesh_check():
-    """The FE radius's own resolution: fine-mesh (R/80) runs against the campaign's R/40."""
-    print("\n## 1b. mesh check of the radius: R/80 against R/40, same x (radius_mesh_*.csv)")
-    for f in sorted(glob.glob(os.path.join(DATA, "*", "radius_mesh_*.csv"))):
-        d = load(f)
-        x, a80, a40 = d["delta_over_R"], d["contact_radius_mm_h80"], d["contact_radius_mm_h40"]
-        s80, s40 = smooth(x, a80), smooth(x, a40)
+    """The FE radius's own resolution: fine-mesh runs against the campaign's R/40."""
+    print("\n## 1b. mesh check of the radius: fine (R/80, R/120) against R/40, same x (radius_mesh_*.csv)")
+    for path, x, af, n, a40, ff, f40 in mesh_files():
+        sf, s40 = smooth(x, af), smooth(x, a40)
         k = (x >= 0.1 - 1e-9) & (x <= 0.4 + 1e-9)
-        n80 = a80[x >= 0.05 - 1e-9] / s80(x[x >= 0.05 - 1e-9]) - 1
-        raw = s80(x[k]) / s40(x[k]) - 1
-        cor = (s80(x[k]) + LAG_TIMES_N / 80) / (s40(x[k]) + LAG_TIMES_N / 40) - 1
-        df = d["force_N_h80"][k] / d["force_N_h40"][k] - 1
-        print(f"  {os.path.relpath(f, DATA)}: R/80 step noise rms {n80.std() * 100:.2f} % (R/40: see above);"
-              f" smooth R/80 / smooth R/40 - 1 = {raw.min() * 100:+.2f} .. {raw.max() * 100:+.2f} %;"
-              f" with the half-spacing lag (a* = smooth + 0.245 R/N): {cor.min() * 100:+.2f} .. {cor.max() * 100:+.2f} %;"
-              f" force R/80 vs R/40 {abs(df).max() * 100:.2f} % (0.1 <= x <= {x[k].max():.2f})")
+        nf = af[x >= 0.05 - 1e-9] / sf(x[x >= 0.05 - 1e-9]) - 1
+        raw = sf(x[k]) / s40(x[k]) - 1
+        cor = (sf(x[k]) + LAG_TIMES_N / n) / (s40(x[k]) + LAG_TIMES_N / 40) - 1
+        df = ff[k] / f40[k] - 1
+        print(f"  {path}: R/{n} step noise rms {nf.std() * 100:.2f} %; smooth R/{n} / smooth R/40 - 1 = {raw.min() * 100:+.2f} .. {raw.max() * 100:+.2f} %;"
+              f" with the lag (a* = smooth + {LAG_TIMES_N:.3f} R/N): {cor.min() * 100:+.2f} .. {cor.max() * 100:+.2f} %;"
+              f" force {abs(df).max() * 100:.2f} % (0.1 <= x <= {x[k].max():.2f})")
 
 
 def band(x, lo=0.1, hi=0.4):
@@ -135,22 +169,43 @@ def main():
         r = c["a"][k] / c["smooth_raw"](c["x"][k]) - 1
         print(f"  {c['path']:30s} reach {c['x'].max():.2f}  rms {r.std() * 100:4.2f} %  max {abs(r).max() * 100:4.2f} %")
 
+    print("\n## 1c. the lag coefficient the fine-mesh checks select")
+    print(f"  pooled: {fit_lag():.3f} (used: {LAG_TIMES_N}, half the element edge)")
     mesh_check()
 
     def rep(label, c, model):
-        xx, kx = grid(c), band(c["x"])
+        # the core's law holds to x = 0.6 t/R (CORE_SQUEEZE): compare inside it
+        hi = min(0.4, 0.6 * c["t"]) if c["t"] else 0.4
+        xx, kx = grid(c), band(c["x"], hi=hi)
         e_s = model(xx) / c["smooth"](xx) - 1
         e_l = model(c["x"][kx]) / c["a"][kx] - 1
-        kb = band(xx)
+        kb = band(xx, hi=hi)
         kb = kb if kb.any() else xx > 0
         print(f"  {label} {c['path']:30s} {'held' if c['held'] else '    '} vs smooth max {abs(e_s[kb]).max() * 100:4.2f} %"
               f" (mean {e_s[kb].mean() * 100:+.2f} %), vs a_lin max {abs(e_l).max() * 100 if kx.any() else 0:4.2f} %")
         return abs(e_s[kb]).max()
 
-    print("\n## 2a. free: the calibrated radius (unchanged) against the smooth FE radius, 0.1 <= x <= 0.4")
-    for c in allc:
-        if c["g"] == "free":
-            rep("free", c, lambda xx, c=c: a_free(xx, c["nu"]))
+    global FREE_RADIUS
+    free = [c for c in allc if c["g"] == "free"]
+    print("\n## 2a. free: the calibrated radius before (g1 = 0, g3 = 0.160185, fitted to a_lin)")
+    for c in free:
+        rep("free", c, lambda xx, c=c: a_free(xx, c["nu"]))
+    ref = [c for c in free if "/" not in c["path"]]  # fitted on the reference copy, as the force
+
+    def gridf(c):
+        return np.round(np.arange(0.05, min(c["x"].max(), 0.6) + 1e-9, 0.01), 3)
+
+    def res_free(q):
+        return np.concatenate([a_free(gridf(c), c["nu"], q) / c["smooth"](gridf(c)) - 1 for c in ref])
+    FREE_RADIUS = list(least_squares(res_free, [0.0, G]).x)
+    print(f"  refitted on the reference (nu 0.3, 0.49), 0.05 <= x <= 0.6: a_free = artanh(sqrt x) (1 + g1 x + g3 x^3) (1 - x)/(1 - x + eps x/4),"
+          f" (g1, g3) = {np.array(FREE_RADIUS)}; softgrip's own free runs are held out")
+    for c in free:
+        rep("free", c, lambda xx, c=c: a_free(xx, c["nu"]))
+        k = (gridf(c) > 0.4 + 1e-9)
+        if k.any():
+            e = a_free(gridf(c)[k], c["nu"]) / c["smooth"](gridf(c)[k]) - 1
+            print(f"       and 0.4 < x <= {gridf(c)[k].max():.2f}: {abs(e).max() * 100:.2f} %")
 
     flat = [c for c in allc if c["g"] == "flat"]
 
@@ -170,7 +225,7 @@ def main():
     def res_core(q):
         return np.concatenate([a_flat(grid(c), c["nu"]) * core_factor(q, grid(c), c["nu"], c["t"]) / c["smooth"](grid(c)) - 1
                                for c in core if not c["held"]])
-    qc = least_squares(res_core, [1.6, -1.2, 0.5, 1.0]).x
+    qc = least_squares(res_core, [1.6, -1.2, 0.5, 1.0], bounds=([-5, -5, C_MIN, 0], [5, 5, 5, 20])).x
     print(f"\n## 2c. core: a_core = a_flat (1 + (s0 + s1 eps) rc^2 u/(u + c)), u = sqrt(x)/(tau (1 + k x/rc)), (s0, s1, c, k) = {qc}")
     worst = {False: 0, True: 0}
     for c in core:
@@ -206,11 +261,11 @@ def shape_errors(r, p, f, a, m):
     return (m + 1) * f / (np.pi * a * a) / peak - 1, np.abs(lp[k] - p[k]).max() / peak
 
 
-FREE_SHAPE = (-0.3851, 0.4510, 0.6058)  # calibrated.rs SHAPE
+FREE_SHAPE = (-0.3851, 0.4510, 0.6058)  # calibrated.rs SHAPE before; refitted in fit_free_shape
 
 
-def m_free(x, nu):
-    a0, a1, a2 = FREE_SHAPE
+def m_free(x, nu, q=None):
+    a0, a1, a2 = FREE_SHAPE if q is None else q
     return 0.5 + (a0 + a1 * eps_of(nu)) * np.sqrt(x) + a2 * x
 
 
@@ -239,6 +294,21 @@ def pressure_free_flat(allc, qf):
     return out
 
 
+def fit_free_shape(rows):
+    """Refit the free shape (same form, same four nu) to the per-profile best m with the radius above."""
+    global FREE_SHAPE
+    fr = [w for w in rows if w["g"] == "free"]
+
+    def res(q):
+        return np.array([(m_free(w["x"], w["c"]["nu"], q) + 1) / (w["best"] + 1) - 1 for w in fr])
+    FREE_SHAPE = tuple(least_squares(res, list(FREE_SHAPE)).x)
+    print(f"\n## 3b. free shape refitted: m = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x, (a0, a1, a2) = {np.array(FREE_SHAPE)}")
+    for w in fr:
+        m = m_free(w["x"], w["c"]["nu"])
+        pk, pr = shape_errors(w["r"], w["p"], w["f"], w["a"], m)
+        print(f"  free nu {w['c']['nu']:<5} x {w['x']:.1f} m {m:.3f} (best {w['best']:.3f}): peak {pk * 100:+5.1f} %, profile {pr * 100:4.1f} %")
+
+
 def fit_flat_shape(rows):
     """Refit the flat shape (same form) to the per-profile best m with the radius above."""
     global FLAT_SHAPE
@@ -247,7 +317,7 @@ def fit_flat_shape(rows):
     def res(q):
         return np.array([(m_flat(w["x"], w["c"]["nu"], q) + 1) / (w["best"] + 1) - 1 for w in fl if not w["c"]["held"]])
     FLAT_SHAPE = tuple(least_squares(res, list(FLAT_SHAPE)).x)
-    print(f"\n## 3b. flat shape refitted: m = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x + a3 x^2, (a0, a1, a2, a3) = {np.array(FLAT_SHAPE)}")
+    print(f"\n## 3c. flat shape refitted: m = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x + a3 x^2, (a0, a1, a2, a3) = {np.array(FLAT_SHAPE)}")
     for w in fl:
         m = m_flat(w["x"], w["c"]["nu"])
         pk, pr = shape_errors(w["r"], w["p"], w["f"], w["a"], m)
@@ -255,7 +325,9 @@ def fit_flat_shape(rows):
 
 
 def pressure(allc, qf, qc):
-    fit_flat_shape(pressure_free_flat(allc, qf))
+    ff = pressure_free_flat(allc, qf)
+    fit_free_shape(ff)
+    fit_flat_shape(ff)
     print("\n## 3. core pressure shape: per profile, FE force, the law's radius")
     rows = []
     for c in allc:
