@@ -606,3 +606,42 @@ fn fe_radius_estimate_agrees_between_r40_and_r80() {
         assert!(d.abs() < 0.011, "x = {x}: {d}");
     }
 }
+
+#[test]
+fn fe_radius_estimate_is_the_fine_mesh_limit() {
+    // flat nu = 0.48 on R/40, R/80 and R/120: the smoothed a_lin converges at first order in
+    // the element size (a_N = a_inf - c/N, c = 0.40-0.61), and the estimate of R/40 (smoothed +
+    // 0.485 R/40) is within 0.71 % of that limit a_inf for 0.1 <= x <= 0.32 (seen).
+    let m80 = mesh_check(include_str!(
+        "../../../tests/data/fe/flat/radius_mesh_nu0.48.csv"
+    ));
+    let m120 = mesh_check(include_str!(
+        "../../../tests/data/fe/flat/radius_mesh_nu0.48_h120.csv"
+    ));
+    let fit = |rows: &[(f64, f64, f64)], coarse: bool| {
+        let pts: Vec<(f64, f64, f64)> = rows
+            .iter()
+            .map(|r| (r.0, 0.0, if coarse { r.2 } else { r.1 }))
+            .collect();
+        Smooth::fit(&pts)
+    };
+    let (s40, s80, s120) = (fit(&m80, true), fit(&m80, false), fit(&m120, false));
+    let mut worst = 0.0_f64;
+    for i in 0..=11 {
+        let x = 0.1 + 0.02 * f64::from(i);
+        // Least squares of a_N = a_inf - c/N through the three meshes.
+        let pts = [(40.0, s40.at(x)), (80.0, s80.at(x)), (120.0, s120.at(x))];
+        let (sx, sy) = pts
+            .iter()
+            .fold((0.0, 0.0), |(a, b), p| (a - 1.0 / p.0, b + p.1));
+        let (sxx, sxy) = pts.iter().fold((0.0, 0.0), |(a, b), p| {
+            (a + 1.0 / (p.0 * p.0), b - p.1 / p.0)
+        });
+        let c = (3.0 * sxy - sx * sy) / (3.0 * sxx - sx * sx);
+        let a_inf = (sy - c * sx) / 3.0;
+        assert!((0.35..0.65).contains(&c), "x = {x}: c = {c}");
+        let star = s40.at(x) + LAG_TIMES_N / 40.0;
+        worst = worst.max((star / a_inf - 1.0).abs());
+    }
+    assert!(worst < 0.008, "a* vs the fine-mesh limit: {worst}");
+}
