@@ -7,8 +7,10 @@ use std::f64::consts::PI;
 /// `p(r) = p0 (1 - r^2/a^2)^m` for `r <= a`, with `p0 = (m + 1) p_mean` and
 /// `p_mean = F / (pi a^2)`: the integral of `p` over the patch is `F` exactly for every shape
 /// exponent `m` [-] (`0 <= m <= 2`). Hertz's ellipse is `m = 1/2` (peak/mean 1.5); the
-/// finite-element patches of a squeezed sphere are flatter (peak/mean 1.3-1.46), and the
-/// calibrated levels give `m` as a function of `x`, nu and the backing.
+/// finite-element patches of a squeezed free sphere or flat pad are flatter (peak/mean
+/// 1.3-1.5), those of a thin skin over a rigid core fuller (up to 2 at t/R = 0.2, tending to a
+/// thin bonded layer's `m = 2`), and the calibrated levels give `m` as a function of `x`, nu
+/// and the backing.
 ///
 /// ```
 /// use softgrip_law::ContactPatch;

@@ -376,11 +376,12 @@ fn pressure_follows_the_fe_profile_for_free_and_flat() {
         let fe = profile(text, nu);
         let fe_peak = fe.iter().fold(0.0_f64, |m, p| m.max(p.1));
         let a_fe = fe.last().expect("rows").0;
-        // Target 5 %. Seen: peak within 2.3 % (free) and 2.0 % (flat); the profile within
-        // 4.4 % and 3.6 % of FE's peak over r <= 0.8 a.
+        // Target 5 %. Seen (radius and shapes refitted to the FE radius without a_lin's lag;
+        // `tests/radius_pressure.rs` asserts each profile): peak within 2.6 % (free) and 3.0 %
+        // (flat; 3.4 % at nu 0.35 x 0.5, past its x_max); the profile within 2.7 % and 4.7 %.
         let peak = patch.peak_pressure / fe_peak - 1.0;
         assert!(
-            peak.abs() < 0.03,
+            peak.abs() < 0.04,
             "{g} nu {nu} x {x}: peak {:.2} %",
             peak * 100.0
         );
@@ -402,7 +403,7 @@ fn torsion_limit_comes_from_the_profile() {
     // mu F a (m + 1) B(3/2, m + 1): 3 pi/16 for Hertz's shape, larger for a flatter patch.
     let law = law(Level::Calibrated, 0.49, Backing::Flat);
     let patch = law.patch(0.1);
-    assert!(patch.shape < 0.45, "{}", patch.shape);
+    assert!(patch.shape < 0.5, "{}", patch.shape);
     let f = law.response(0.1).force;
     let t = patch.torsion_limit(0.8, f) / (0.8 * f * patch.radius);
     // Numerical integral of r p(r) 2 pi r dr / (F a).

@@ -1,0 +1,699 @@
+//! Contact radius and pressure of the calibrated level for every construction (free, flat,
+//! core) against softgrip's own finite elements (`tests/data/fe/`, embedded by `softgrip-fe` and
+//! `include_str!`), and the force conservation of every patch.
+//!
+//! The FE radius column (`a_lin`, the last surface node on the plane, interpolated to the next)
+//! moves in node steps and is not even monotone in x: 1.0-1.9 % rms about a smooth curve (up
+//! to 5 %) on the R/40 meshes; and it lags the contact edge by about half an element face. The
+//! radius the law is measured against is that column smoothed per curve (`a/sqrt(x)` least
+//! squares in powers of `sqrt(x)`) plus half the element edge, as
+//! `tools/calibration/fit_radius_pressure.py` does (it prints every number quoted here;
+//! `tools/calibration/REPORT_radius_pressure.md` says why): on flat nu = 0.48 re-run on R/80
+//! and R/120 (`tests/data/fe/flat/radius_mesh_*.csv`) it is within 0.71 % of the fine-mesh limit.
+//!
+//! Pressure: the FE's nodal profiles (`pressure_*.csv`), the two nodes nearest the axis dropped
+//! (the tied on-axis face makes them jitter), against the law's `p0 (1 - r^2/a^2)^m` with the
+//! law's radius and shape. Measured twice: with the FE's own force (the shape and radius alone,
+//! what the pressure form is fitted on) and with the law's force (what a user gets; the force
+//! law's error adds to the peak one for one). The numbers in the comments are what the current
+//! code gives; the tolerances sit just above them, so a change of form or constant fails.
+
+use softgrip_law::{Backing, ContactLaw, ContactParams, ContactPatch, Level};
+
+/// The calibrated law in normalised units (E* = 1 Pa, R = 1 m) for `backing` (t as t/R).
+fn law(nu: f64, backing: Backing) -> ContactLaw {
+    let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+        .and_then(|p| p.with_backing(backing))
+        .expect("valid params");
+    ContactLaw::try_new(p, Level::Calibrated).expect("level builds")
+}
+
+/// `(x, f, a/R)` of an embedded FE force file.
+fn fe(path: &str) -> Vec<(f64, f64, f64)> {
+    embedded(path)
+        .points()
+        .expect("parses")
+        .into_iter()
+        .map(|p| (p.x, p.force_norm, p.radius_norm))
+        .collect()
+}
+
+fn embedded(path: &str) -> &'static softgrip_fe::FeFile {
+    softgrip_fe::file(path).unwrap_or_else(|| panic!("{path} is embedded"))
+}
+
+/// `a_lin` lags the contact edge by half an element face on average: the contact is resolved per
+/// quadratic face (on R/80 the last node on the plane is a midside node 25 times in 29, its outer
+/// corner touching within the penalty's penetration). The element edge along the curved surface
+/// is 0.97 R/N on a mesh named R/N, so the lag is 0.485 R/N (R/40: 0.012 R, 1.7-3.5 % of the
+/// radius at x = 0.4-0.1); the fine-mesh checks alone select 0.47 (flat) and 0.65 (core).
+const LAG_TIMES_N: f64 = 0.485;
+
+/// `N` of the mesh `R/N` a file's provenance names (the reference copy: R/60).
+fn mesh(path: &str) -> f64 {
+    embedded(path)
+        .provenance()
+        .iter()
+        .find_map(|l| {
+            let i = l.find("element edge R/")? + "element edge R/".len();
+            let n: String = l[i..].chars().take_while(char::is_ascii_digit).collect();
+            n.parse().ok()
+        })
+        .unwrap_or(60.0)
+}
+
+/// The trustworthy FE radius of one curve: its smooth radius ([`Smooth`]) plus the lag.
+fn fe_radius(path: &str) -> impl Fn(f64) -> f64 {
+    let sm = Smooth::fit(&fe(path));
+    let lag = LAG_TIMES_N / mesh(path);
+    move |x| sm.at(x) + lag
+}
+
+/// The smooth FE radius of one curve: least squares of `a / sqrt(x)` as a polynomial in
+/// `s = sqrt(x)` over `0.05 <= x` (cubic where the curve spans more than 0.25 in x, else
+/// quadratic): Hertz's `a = sqrt(R delta)` times a low-order series in `sqrt(x)`.
+struct Smooth {
+    coef: Vec<f64>,
+}
+
+impl Smooth {
+    fn fit(points: &[(f64, f64, f64)]) -> Self {
+        let pts: Vec<(f64, f64)> = points
+            .iter()
+            .filter(|p| p.0 >= 0.05 - 1e-9)
+            .map(|p| (p.0.sqrt(), p.2 / p.0.sqrt()))
+            .collect();
+        let span = pts.last().expect("points").0.powi(2) - 0.05;
+        let n = if span > 0.25 { 4 } else { 3 };
+        // Normal equations (n <= 4 unknowns, s in [0.22, 0.9]: well enough conditioned).
+        let mut m = vec![vec![0.0; n + 1]; n];
+        for &(s, y) in &pts {
+            for (i, row) in m.iter_mut().enumerate() {
+                for (j, v) in row.iter_mut().enumerate().take(n) {
+                    *v += s.powi((i + j) as i32);
+                }
+                row[n] += s.powi(i as i32) * y;
+            }
+        }
+        for c in 0..n {
+            let p = (c..n)
+                .max_by(|&a, &b| m[a][c].abs().total_cmp(&m[b][c].abs()))
+                .expect("rows");
+            m.swap(c, p);
+            let pivot = m[c].clone();
+            for (r, row) in m.iter_mut().enumerate() {
+                if r != c {
+                    let k = row[c] / pivot[c];
+                    for (v, pv) in row.iter_mut().zip(&pivot).skip(c) {
+                        *v -= k * pv;
+                    }
+                }
+            }
+        }
+        Self {
+            coef: (0..n).map(|i| m[i][n] / m[i][i]).collect(),
+        }
+    }
+
+    fn at(&self, x: f64) -> f64 {
+        let s = x.sqrt();
+        s * self.coef.iter().rev().fold(0.0, |acc, c| acc * s + c)
+    }
+}
+
+fn backing(t: Option<f64>) -> Backing {
+    t.map_or(Backing::Flat, |thickness| Backing::Core { thickness })
+}
+
+#[test]
+fn fe_radius_column_is_step_noise_about_a_smooth_curve() {
+    // The scatter of a_lin about its smooth fit, x >= 0.05: 0.97-1.83 % rms on every curve
+    // of the campaign (one surface node of R/40 is 1.25 % of R).
+    let paths = [
+        "free/force_nu0.3.csv",
+        "free/force_nu0.49.csv",
+        "flat/force_nu0.3.csv",
+        "flat/force_nu0.48.csv",
+        "core/force_nu0.3_t0.4.csv",
+        "core/force_nu0.48_t0.8.csv",
+    ];
+    for path in paths {
+        let pts = fe(path);
+        let sm = Smooth::fit(&pts);
+        let rel: Vec<f64> = pts
+            .iter()
+            .filter(|p| p.0 >= 0.05 - 1e-9)
+            .map(|p| p.2 / sm.at(p.0) - 1.0)
+            .collect();
+        let mean = rel.iter().sum::<f64>() / rel.len() as f64;
+        let rms = (rel.iter().map(|r| (r - mean).powi(2)).sum::<f64>() / rel.len() as f64).sqrt();
+        assert!(mean.abs() < 1e-3, "{path}: mean {mean}");
+        assert!((0.008..0.019).contains(&rms), "{path}: rms {rms}");
+    }
+}
+
+/// `(path, nu, t/R (core), held out, tolerance vs the smooth FE radius, tolerance vs a_lin)`.
+type RadiusCase = (&'static str, f64, Option<f64>, bool, f64, f64);
+
+#[test]
+fn radius_within_3_percent_of_the_smoothed_fe_radius() {
+    // Largest |a_law / a_FE - 1| over the FE points with 0.1 <= x <= min(0.4, reach, x_max)
+    // against the FE radius estimate (smoothed a_lin plus the lag) and against the raw a_lin.
+    // Seen: flat 0.68-1.37 % (held out 1.15, 1.16 %), core 0.43-2.04 % (held out 0.73-1.53 %);
+    // raw: 3.3-7.5 % (step noise and lag). Tolerances: seen + 0.2-0.5 points.
+    let cases: [RadiusCase; 21] = [
+        ("flat/force_nu0.3.csv", 0.3, None, false, 0.010, 0.080),
+        ("flat/force_nu0.4.csv", 0.4, None, false, 0.017, 0.075),
+        ("flat/force_nu0.48.csv", 0.48, None, false, 0.017, 0.065),
+        ("flat/force_nu0.499.csv", 0.499, None, false, 0.015, 0.065),
+        ("flat/force_nu0.35.csv", 0.35, None, true, 0.015, 0.078),
+        ("flat/force_nu0.45.csv", 0.45, None, true, 0.015, 0.067),
+        (
+            "core/force_nu0.3_t0.2.csv",
+            0.3,
+            Some(0.2),
+            false,
+            0.024,
+            0.065,
+        ),
+        (
+            "core/force_nu0.48_t0.2.csv",
+            0.48,
+            Some(0.2),
+            false,
+            0.021,
+            0.038,
+        ),
+        (
+            "core/force_nu0.3_t0.4.csv",
+            0.3,
+            Some(0.4),
+            false,
+            0.018,
+            0.047,
+        ),
+        (
+            "core/force_nu0.48_t0.4.csv",
+            0.48,
+            Some(0.4),
+            false,
+            0.008,
+            0.052,
+        ),
+        (
+            "core/force_nu0.499_t0.4.csv",
+            0.499,
+            Some(0.4),
+            false,
+            0.012,
+            0.056,
+        ),
+        (
+            "core/force_nu0.3_t0.6.csv",
+            0.3,
+            Some(0.6),
+            false,
+            0.016,
+            0.065,
+        ),
+        (
+            "core/force_nu0.48_t0.6.csv",
+            0.48,
+            Some(0.6),
+            false,
+            0.016,
+            0.068,
+        ),
+        (
+            "core/force_nu0.499_t0.6.csv",
+            0.499,
+            Some(0.6),
+            false,
+            0.020,
+            0.072,
+        ),
+        (
+            "core/force_nu0.3_t0.8.csv",
+            0.3,
+            Some(0.8),
+            false,
+            0.012,
+            0.079,
+        ),
+        (
+            "core/force_nu0.48_t0.8.csv",
+            0.48,
+            Some(0.8),
+            false,
+            0.012,
+            0.068,
+        ),
+        (
+            "core/force_nu0.499_t0.8.csv",
+            0.499,
+            Some(0.8),
+            false,
+            0.010,
+            0.069,
+        ),
+        (
+            "core/force_nu0.4_t0.3.csv",
+            0.4,
+            Some(0.3),
+            true,
+            0.012,
+            0.069,
+        ),
+        (
+            "core/force_nu0.49_t0.3.csv",
+            0.49,
+            Some(0.3),
+            true,
+            0.018,
+            0.047,
+        ),
+        (
+            "core/force_nu0.45_t0.5.csv",
+            0.45,
+            Some(0.5),
+            true,
+            0.017,
+            0.070,
+        ),
+        (
+            "core/force_nu0.35_t0.7.csv",
+            0.35,
+            Some(0.7),
+            true,
+            0.010,
+            0.075,
+        ),
+    ];
+    for (path, nu, t, held, tol_smooth, tol_lin) in cases {
+        let pts = fe(path);
+        let a_fe = fe_radius(path);
+        let l = law(nu, backing(t));
+        let (mut ws, mut wl) = (0.0_f64, 0.0_f64);
+        // Inside the law's validity (the core's is x <= 0.6 t/R).
+        let hi = l.x_max().min(0.4) + 1e-9;
+        for &(x, _, a) in pts.iter().filter(|p| p.0 >= 0.1 - 1e-9 && p.0 <= hi) {
+            let r = l.patch(x).radius;
+            ws = ws.max((r / a_fe(x) - 1.0).abs());
+            wl = wl.max((r / a - 1.0).abs());
+        }
+        println!(
+            "{path} held {held}: {:.2} % (smooth), {:.2} % (a_lin)",
+            ws * 100.0,
+            wl * 100.0
+        );
+        assert!(tol_smooth <= 0.03, "{path}: the target is 3 %");
+        assert!(ws < tol_smooth, "{path}: {:.2} % vs smooth", ws * 100.0);
+        assert!(wl < tol_lin, "{path}: {:.2} % vs a_lin", wl * 100.0);
+    }
+}
+
+#[test]
+fn free_radius_within_3_percent_of_the_smoothed_fe_radius() {
+    // The free sphere's calibrated radius (refitted on the reference's estimate): seen 1.07 %
+    // (reference nu 0.3), 2.64 % (0.49); held out, softgrip's own FE: 0.78 % (0.3), 1.53 % (0.4),
+    // 2.00 % (0.45), 1.31 % (0.49).
+    for (path, nu, tol) in [
+        ("free/force_nu0.3.csv", 0.3, 0.011),
+        ("free/force_nu0.4.csv", 0.4, 0.018),
+        ("free/force_nu0.45.csv", 0.45, 0.023),
+        ("free/force_nu0.49.csv", 0.49, 0.016),
+        ("force_nu0.3.csv", 0.3, 0.014),
+        ("force_nu0.49.csv", 0.49, 0.029),
+    ] {
+        let pts = fe(path);
+        let a_fe = fe_radius(path);
+        let l = law(nu, Backing::Free);
+        let w = pts
+            .iter()
+            .filter(|p| p.0 >= 0.1 - 1e-9 && p.0 <= 0.4 + 1e-9)
+            .map(|p| (l.patch(p.0).radius / a_fe(p.0) - 1.0).abs())
+            .fold(0.0_f64, f64::max);
+        println!("{path}: {:.2} %", w * 100.0);
+        assert!(w < tol, "{path}: {:.2} %", w * 100.0);
+    }
+}
+
+/// `(r/R, p/E*)` of an FE pressure profile (R = 1 mm, mu = 1 MPa), the two nodes nearest the
+/// axis dropped; the last row is the contact edge a_lin (p = 0).
+fn profile(text: &str, nu: f64) -> Vec<(f64, f64)> {
+    let e_star = 2.0 * (1.0 + nu) / (1.0 - nu * nu); // MPa
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("r_mm"))
+        .skip(2)
+        .map(|l| {
+            let mut it = l
+                .split(',')
+                .map(|v| v.trim().parse::<f64>().expect("number"));
+            (it.next().expect("r"), it.next().expect("p") / e_star)
+        })
+        .collect()
+}
+
+/// Peak error and largest profile error over r <= 0.8 a_FE, both relative to FE's peak.
+fn shape_errors(patch: &ContactPatch, fe: &[(f64, f64)]) -> (f64, f64) {
+    let peak = fe.iter().fold(0.0_f64, |m, p| m.max(p.1));
+    let a_fe = fe.last().expect("rows").0;
+    let prof = fe
+        .iter()
+        .filter(|p| p.0 <= 0.8 * a_fe + 1e-12)
+        .map(|&(r, p)| (patch.pressure_at(r) - p).abs() / peak)
+        .fold(0.0_f64, f64::max);
+    (patch.peak_pressure / peak - 1.0, prof)
+}
+
+/// One FE profile: geometry, nu, t/R, x, the file, held out, and the tolerances
+/// `[peak, profile]` with the FE's force and `[peak, profile]` with the law's force.
+struct Profile {
+    geometry: &'static str,
+    nu: f64,
+    t: Option<f64>,
+    x: f64,
+    held: bool,
+    text: &'static str,
+    fe_force: [f64; 2],
+    law_force: [f64; 2],
+}
+
+macro_rules! profiles {
+    ($($g:literal, $nu:literal, $t:tt, $x:literal, $held:literal, [$p1:literal, $q1:literal], [$p2:literal, $q2:literal]);* $(;)?) => {
+        [$(Profile {
+            geometry: $g,
+            nu: $nu,
+            t: if $t > 0.0 { Some($t) } else { None },
+            x: $x,
+            held: $held,
+            text: include_str!(concat!(
+                "../../../tests/data/fe/", $g, "/pressure_nu", stringify!($nu),
+                profiles!(@t $t), "_d", stringify!($x), ".csv"
+            )),
+            fe_force: [$p1, $q1],
+            law_force: [$p2, $q2],
+        }),*]
+    };
+    (@t 0.0) => { "" };
+    (@t 0.2) => { "_t0.2" };
+    (@t 0.3) => { "_t0.3" };
+    (@t 0.4) => { "_t0.4" };
+    (@t 0.5) => { "_t0.5" };
+    (@t 0.6) => { "_t0.6" };
+    (@t 0.7) => { "_t0.7" };
+    (@t 0.8) => { "_t0.8" };
+}
+
+/// Every FE profile inside the law's validity (x <= x_max): tolerances in fractions of FE's
+/// peak, seen values just below.
+fn all_profiles() -> Vec<Profile> {
+    profiles!(
+        "free", 0.3, 0.0, 0.1, false, [0.006, 0.024], [0.013, 0.017];
+        "free", 0.3, 0.0, 0.3, false, [0.008, 0.030], [0.010, 0.031];
+        "free", 0.3, 0.0, 0.5, false, [0.032, 0.032], [0.030, 0.030];
+        "free", 0.4, 0.0, 0.1, false, [0.014, 0.018], [0.028, 0.032];
+        "free", 0.4, 0.0, 0.3, false, [0.015, 0.016], [0.029, 0.030];
+        "free", 0.4, 0.0, 0.5, false, [0.017, 0.022], [0.029, 0.029];
+        "free", 0.45, 0.0, 0.1, false, [0.015, 0.018], [0.024, 0.028];
+        "free", 0.45, 0.0, 0.3, false, [0.016, 0.017], [0.025, 0.026];
+        "free", 0.45, 0.0, 0.5, false, [0.015, 0.020], [0.024, 0.025];
+        "free", 0.49, 0.0, 0.1, false, [0.014, 0.018], [0.014, 0.018];
+        "free", 0.49, 0.0, 0.3, false, [0.013, 0.018], [0.012, 0.020];
+        "free", 0.49, 0.0, 0.5, false, [0.013, 0.019], [0.015, 0.017];
+        "flat", 0.3, 0.0, 0.1, false, [0.011, 0.018], [0.012, 0.017];
+        "flat", 0.3, 0.0, 0.3, false, [0.008, 0.030], [0.009, 0.031];
+        "flat", 0.3, 0.0, 0.5, false, [0.030, 0.052], [0.031, 0.051];
+        "flat", 0.4, 0.0, 0.1, false, [0.022, 0.025], [0.024, 0.028];
+        "flat", 0.4, 0.0, 0.3, false, [0.036, 0.037], [0.035, 0.036];
+        "flat", 0.48, 0.0, 0.1, false, [0.006, 0.023], [0.005, 0.026];
+        "flat", 0.48, 0.0, 0.3, false, [0.018, 0.019], [0.022, 0.023];
+        "flat", 0.499, 0.0, 0.1, false, [0.010, 0.030], [0.015, 0.035];
+        "flat", 0.499, 0.0, 0.3, false, [0.011, 0.035], [0.005, 0.028];
+        "flat", 0.35, 0.0, 0.1, true, [0.018, 0.021], [0.020, 0.023];
+        "flat", 0.35, 0.0, 0.3, true, [0.026, 0.027], [0.023, 0.024];
+        "flat", 0.45, 0.0, 0.1, true, [0.013, 0.017], [0.014, 0.017];
+        "flat", 0.45, 0.0, 0.3, true, [0.029, 0.031], [0.032, 0.033];
+        "core", 0.35, 0.7, 0.1, true, [0.018, 0.022], [0.025, 0.029];
+        "core", 0.35, 0.7, 0.3, true, [0.019, 0.029], [0.023, 0.026];
+        "core", 0.3, 0.2, 0.1, false, [0.046, 0.051], [0.042, 0.050];
+        "core", 0.3, 0.4, 0.1, false, [0.007, 0.031], [0.016, 0.032];
+        "core", 0.3, 0.6, 0.1, false, [0.007, 0.022], [0.021, 0.025];
+        "core", 0.3, 0.6, 0.3, false, [0.031, 0.057], [0.028, 0.059];
+        "core", 0.3, 0.8, 0.1, false, [0.008, 0.021], [0.011, 0.018];
+        "core", 0.3, 0.8, 0.3, false, [0.037, 0.059], [0.036, 0.058];
+        "core", 0.45, 0.5, 0.1, true, [0.034, 0.037], [0.041, 0.045];
+        "core", 0.45, 0.5, 0.3, true, [0.105, 0.108], [0.129, 0.132];
+        "core", 0.48, 0.2, 0.1, false, [0.013, 0.053], [0.035, 0.070];
+        "core", 0.48, 0.4, 0.1, false, [0.050, 0.054], [0.059, 0.062];
+        "core", 0.48, 0.6, 0.1, false, [0.027, 0.030], [0.022, 0.026];
+        "core", 0.48, 0.6, 0.3, false, [0.076, 0.077], [0.081, 0.083];
+        "core", 0.48, 0.8, 0.1, false, [0.010, 0.019], [0.005, 0.025];
+        "core", 0.48, 0.8, 0.3, false, [0.020, 0.043], [0.023, 0.046];
+        "core", 0.499, 0.4, 0.1, false, [0.035, 0.039], [0.037, 0.041];
+        "core", 0.499, 0.6, 0.1, false, [0.023, 0.027], [0.013, 0.017];
+        "core", 0.499, 0.6, 0.3, false, [0.057, 0.059], [0.058, 0.060];
+        "core", 0.499, 0.8, 0.1, false, [0.005, 0.025], [0.014, 0.035];
+        "core", 0.499, 0.8, 0.3, false, [0.037, 0.060], [0.041, 0.064];
+        "core", 0.49, 0.3, 0.1, true, [0.082, 0.086], [0.089, 0.093];
+        "core", 0.4, 0.3, 0.1, true, [0.087, 0.091], [0.092, 0.096];
+    )
+    .into_iter()
+    .collect()
+}
+
+#[test]
+fn pressure_follows_the_fe_profile_for_every_construction() {
+    for p in all_profiles() {
+        let backing = match (p.geometry, p.t) {
+            ("free", _) => Backing::Free,
+            (_, t) => backing(t),
+        };
+        let l = law(p.nu, backing);
+        assert!(
+            p.x <= l.x_max() + 1e-12,
+            "{} {}: past x_max",
+            p.geometry,
+            p.x
+        );
+        let fe_prof = profile(p.text, p.nu);
+        let patch = l.patch(p.x);
+        let f_fe = fe_force_at(p.geometry, p.nu, p.t, p.x);
+        let own = ContactPatch::with_shape(f_fe, patch.radius, patch.shape);
+        let (pk_fe, pr_fe) = shape_errors(&own, &fe_prof);
+        let (pk, pr) = shape_errors(&patch, &fe_prof);
+        println!(
+            "{} nu {} t {:?} x {} held {}: m {:.3}; FE force: peak {:+.2} %, profile {:.2} %; law force: peak {:+.2} %, profile {:.2} %",
+            p.geometry,
+            p.nu,
+            p.t,
+            p.x,
+            p.held,
+            patch.shape,
+            pk_fe * 100.0,
+            pr_fe * 100.0,
+            pk * 100.0,
+            pr * 100.0
+        );
+        let name = format!("{} nu {} t {:?} x {}", p.geometry, p.nu, p.t, p.x);
+        assert!(
+            pk_fe.abs() < p.fe_force[0],
+            "{name}: peak {pk_fe} (FE force)"
+        );
+        assert!(pr_fe < p.fe_force[1], "{name}: profile {pr_fe} (FE force)");
+        assert!(pk.abs() < p.law_force[0], "{name}: peak {pk} (law force)");
+        assert!(pr < p.law_force[1], "{name}: profile {pr} (law force)");
+    }
+}
+
+/// The FE force (normalised) of the construction at x.
+fn fe_force_at(geometry: &str, nu: f64, t: Option<f64>, x: f64) -> f64 {
+    let path = match t {
+        Some(t) => format!("{geometry}/force_nu{nu}_t{t}.csv"),
+        None => format!("{geometry}/force_nu{nu}.csv"),
+    };
+    fe(&path)
+        .into_iter()
+        .find(|p| (p.0 - x).abs() < 1e-9)
+        .unwrap_or_else(|| panic!("{path} has x = {x}"))
+        .1
+}
+
+/// `2 pi int_0^a p(r) r dr` of a patch, in `u = 1 - r^2/a^2 = w^4` (smooth for every m).
+fn carried(patch: &ContactPatch) -> f64 {
+    let a = patch.radius;
+    let n = 4000;
+    let h = 1.0 / f64::from(n);
+    let g = |w: f64| {
+        let r = a * (1.0 - w.powi(4)).max(0.0).sqrt();
+        patch.pressure_at(r) * 4.0 * w.powi(3)
+    };
+    // Composite Simpson on [0, 1] in w.
+    let mut s = g(0.0) + g(1.0);
+    for i in 1..n {
+        let w = f64::from(i) * h;
+        s += if i % 2 == 1 { 4.0 } else { 2.0 } * g(w);
+    }
+    std::f64::consts::PI * a * a * s * h / 3.0
+}
+
+#[test]
+fn every_patch_carries_its_force() {
+    let backings = [
+        Backing::Free,
+        Backing::Flat,
+        Backing::Core { thickness: 0.2 },
+        Backing::Core { thickness: 0.45 },
+        Backing::Core { thickness: 0.8 },
+    ];
+    for backing in backings {
+        for nu in [0.3, 0.42, 0.499] {
+            let l = law(nu, backing);
+            for i in 1..=8 {
+                let x = l.x_max() * f64::from(i) / 8.0;
+                let patch = l.patch(x);
+                let f = l.response(x).force;
+                let got = carried(&patch);
+                assert!(
+                    (got / f - 1.0).abs() < 1e-9,
+                    "{backing:?} nu {nu} x {x}: m {} carries {got} of {f}",
+                    patch.shape
+                );
+            }
+        }
+    }
+}
+
+/// `(x, a_R/80, a_R/40)` of a fine-mesh radius check (`radius_mesh_*.csv`).
+fn mesh_check(text: &str) -> Vec<(f64, f64, f64)> {
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("delta_over_R"))
+        .map(|l| {
+            let v: Vec<f64> = l
+                .split(',')
+                .map(|v| v.trim().parse().expect("number"))
+                .collect();
+            (v[0], v[2], v[4])
+        })
+        .collect()
+}
+
+#[test]
+fn fe_radius_estimate_agrees_between_r40_and_r80() {
+    // flat nu = 0.48 on R/80 (to x = 0.38) against the campaign's R/40. The smoothed a_lin of
+    // R/80 is 0.70-1.54 % above R/40's (the lag halves with the element); with the lag added both
+    // agree within 0.97 %; R/80's own step noise is 0.74 % rms (R/40: 1.68 %).
+    let rows = mesh_check(include_str!(
+        "../../../tests/data/fe/flat/radius_mesh_nu0.48.csv"
+    ));
+    let fine: Vec<(f64, f64, f64)> = rows.iter().map(|r| (r.0, 0.0, r.1)).collect();
+    let coarse: Vec<(f64, f64, f64)> = rows.iter().map(|r| (r.0, 0.0, r.2)).collect();
+    let (s80, s40) = (Smooth::fit(&fine), Smooth::fit(&coarse));
+    let (mut raw_lo, mut raw_hi, mut cor) = (f64::MAX, f64::MIN, 0.0_f64);
+    for &(x, _, _) in rows.iter().filter(|r| r.0 >= 0.1 - 1e-9) {
+        let raw = s80.at(x) / s40.at(x) - 1.0;
+        raw_lo = raw_lo.min(raw);
+        raw_hi = raw_hi.max(raw);
+        let c = (s80.at(x) + LAG_TIMES_N / 80.0) / (s40.at(x) + LAG_TIMES_N / 40.0) - 1.0;
+        cor = cor.max(c.abs());
+    }
+
+    assert!(raw_lo > 0.005 && raw_hi < 0.018, "{raw_lo} {raw_hi}");
+    assert!(cor < 0.011, "with the lag: {cor}");
+    // The same estimate (lag included) is what the radius tests compare against.
+    let a40 = fe_radius("flat/force_nu0.48.csv");
+    for &(x, _, _) in rows.iter().filter(|r| r.0 >= 0.1 - 1e-9) {
+        let d = (s80.at(x) + LAG_TIMES_N / 80.0) / a40(x) - 1.0;
+        assert!(d.abs() < 0.011, "x = {x}: {d}");
+    }
+}
+
+#[test]
+fn fe_radius_estimate_is_the_fine_mesh_limit() {
+    // flat nu = 0.48 on R/40, R/80 and R/120: the smoothed a_lin converges at first order in
+    // the element size (a_N = a_inf - c/N, c = 0.40-0.61), and the estimate of R/40 (smoothed +
+    // 0.485 R/40) is within 0.71 % of that limit a_inf for 0.1 <= x <= 0.32 (seen).
+    let m80 = mesh_check(include_str!(
+        "../../../tests/data/fe/flat/radius_mesh_nu0.48.csv"
+    ));
+    let m120 = mesh_check(include_str!(
+        "../../../tests/data/fe/flat/radius_mesh_nu0.48_h120.csv"
+    ));
+    let fit = |rows: &[(f64, f64, f64)], coarse: bool| {
+        let pts: Vec<(f64, f64, f64)> = rows
+            .iter()
+            .map(|r| (r.0, 0.0, if coarse { r.2 } else { r.1 }))
+            .collect();
+        Smooth::fit(&pts)
+    };
+    let (s40, s80, s120) = (fit(&m80, true), fit(&m80, false), fit(&m120, false));
+    let mut worst = 0.0_f64;
+    for i in 0..=11 {
+        let x = 0.1 + 0.02 * f64::from(i);
+        // Least squares of a_N = a_inf - c/N through the three meshes.
+        let pts = [(40.0, s40.at(x)), (80.0, s80.at(x)), (120.0, s120.at(x))];
+        let (sx, sy) = pts
+            .iter()
+            .fold((0.0, 0.0), |(a, b), p| (a - 1.0 / p.0, b + p.1));
+        let (sxx, sxy) = pts.iter().fold((0.0, 0.0), |(a, b), p| {
+            (a + 1.0 / (p.0 * p.0), b - p.1 / p.0)
+        });
+        let c = (3.0 * sxy - sx * sy) / (3.0 * sxx - sx * sx);
+        let a_inf = (sy - c * sx) / 3.0;
+        assert!((0.35..0.65).contains(&c), "x = {x}: c = {c}");
+        let star = s40.at(x) + LAG_TIMES_N / 40.0;
+        worst = worst.max((star / a_inf - 1.0).abs());
+    }
+    assert!(worst < 0.008, "a* vs the fine-mesh limit: {worst}");
+}
+
+#[test]
+fn radius_and_shape_have_their_limits_for_every_skin() {
+    // Hertz at x -> 0 (a = sqrt(R delta) to O(sqrt x), m = 1/2); the radius grows with x (to
+    // x = 1, past x_max too); a skin over a core widens the patch and fills it (m >= flat's),
+    // more the thinner the skin.
+    for nu in [0.3, 0.4, 0.49, 0.5] {
+        let flat = law(nu, Backing::Flat);
+        let ts = [0.99, 0.9, 0.7, 0.5, 0.35, 0.2, 0.1, 0.05];
+        let mut prev_m = flat.patch(0.02).shape;
+        for t in ts {
+            let core = law(nu, Backing::Core { thickness: t });
+            for l in [&flat, &core] {
+                let tiny = l.patch(1e-10);
+                assert!(
+                    (tiny.shape - 0.5).abs() < 1e-3,
+                    "nu {nu} t {t}: m {}",
+                    tiny.shape
+                );
+                assert!((tiny.radius / 1e-5 - 1.0).abs() < 0.02, "{}", tiny.radius);
+                let mut last = 0.0;
+                for i in 1..=400 {
+                    let x = f64::from(i) / 400.0;
+                    let p = l.patch(x);
+                    assert!(
+                        p.radius > last,
+                        "nu {nu} t {t} x {x}: radius not increasing"
+                    );
+                    assert!(
+                        (0.3..=2.0).contains(&p.shape),
+                        "nu {nu} t {t} x {x}: m {}",
+                        p.shape
+                    );
+                    last = p.radius;
+                }
+            }
+            for i in 1..=40 {
+                let x = core.x_max() * f64::from(i) / 40.0;
+                let (c, f) = (core.patch(x), flat.patch(x));
+                assert!(c.radius >= f.radius, "nu {nu} t {t} x {x}: core narrower");
+                assert!(
+                    c.shape >= f.shape - 1e-12,
+                    "nu {nu} t {t} x {x}: core flatter"
+                );
+            }
+            let m = core.patch(0.02).shape;
+            assert!(m >= prev_m - 1e-12, "nu {nu} t {t}: m {m} < {prev_m}");
+            prev_m = m;
+        }
+    }
+}
