@@ -62,7 +62,14 @@ impl ContactPatch {
         } else {
             shape.clamp(0.0, 2.0)
         };
-        let mean = force / (PI * radius * radius);
+        // a^2 underflows below a = 1.5e-154 m (a subnormal compression, 5e-324 m at level
+        // `linear`): divide by a twice then, or F / (pi a^2) is F / 0 = inf.
+        let a2 = radius * radius;
+        let mean = if a2 >= f64::MIN_POSITIVE {
+            force / (PI * a2)
+        } else {
+            force / radius / radius / PI
+        };
         Self {
             radius,
             mean_pressure: mean,

@@ -219,3 +219,58 @@ fn effective_modulus_1e308_is_an_error_not_an_infinite_stiffness() {
     let err = ContactParams::try_new(m, 0.187_528_446_568_229_15).unwrap_err();
     assert!(err.to_string().contains("effective_modulus"), "{err}");
 }
+
+/// Found by softgrip-py's hostile-input test: at a subnormal compression (5e-324 m, level
+/// `linear`) the patch radius squared underflowed to 0 and the mean pressure F / (pi a^2) was
+/// inf. The pressure now tends to 0 with the compression, at every level.
+#[test]
+fn pressure_at_a_subnormal_compression_is_finite() {
+    let m = Material::try_new(3.0e6, 0.49).unwrap();
+    let p = ContactParams::try_new(m, 0.01).unwrap();
+    for level in [
+        Level::linear(),
+        Level::Hertz,
+        Level::fit(),
+        Level::Calibrated,
+        Level::Incompressible,
+        Level::NeoHookean,
+        Level::Tatara,
+        Level::auto(),
+    ] {
+        let law = ContactLaw::try_new(p, level).unwrap();
+        let mut previous = 0.0;
+        for delta in [5e-324, 1e-320, 1e-310, 1e-300, 1e-200] {
+            let patch = law.patch(delta);
+            assert!(
+                patch.mean_pressure.is_finite() && patch.peak_pressure.is_finite(),
+                "{level:?} at {delta:e}: {patch:?}"
+            );
+            if matches!(level, Level::Linear { .. }) {
+                // A linear spring over Hertz's radius: F / (pi a^2) = k delta / (pi R delta),
+                // the same at every compression.
+                // (A subnormal force carries few significant bits: 0.6 % at 5e-324 m.)
+                let reference = law.patch(1e-9 * 0.01).mean_pressure;
+                let tolerance = if delta < f64::MIN_POSITIVE {
+                    1e-2
+                } else {
+                    1e-9
+                };
+                assert!(
+                    (patch.mean_pressure / reference - 1.0).abs() < tolerance,
+                    "{level:?} at {delta:e}: {patch:?} vs {reference}"
+                );
+            } else {
+                // p ~ E* sqrt(delta / R): below 1 Pa here, and not decreasing with delta.
+                assert!(
+                    patch.mean_pressure < 1.0,
+                    "{level:?} at {delta:e}: {patch:?}"
+                );
+                assert!(
+                    patch.mean_pressure >= previous,
+                    "{level:?} at {delta:e}: {patch:?}"
+                );
+                previous = patch.mean_pressure;
+            }
+        }
+    }
+}
