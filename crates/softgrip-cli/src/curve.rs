@@ -137,7 +137,12 @@ fn write_profile(law: &ContactLaw, x: f64, out: impl Write) -> io::Result<()> {
     writeln!(out, "{PROFILE_HEADER}")?;
     let patch = law.patch(x);
     for i in 0..PROFILE_ROWS {
-        let r = patch.radius * i as f64 / (PROFILE_ROWS - 1) as f64;
+        // The last row is the edge itself (a 49 / 49 rounds 1 ulp off a for some a).
+        let r = if i == PROFILE_ROWS - 1 {
+            patch.radius
+        } else {
+            patch.radius * i as f64 / (PROFILE_ROWS - 1) as f64
+        };
         writeln!(out, "{r:e},{:e}", patch.pressure_at(r))?;
     }
     out.flush()
