@@ -3,6 +3,9 @@
 //! `softgrip-fe`), and the law's invariants for every backing. The numbers in the comments are
 //! what the current code gives.
 
+mod common;
+
+use common::profile;
 use softgrip_law::{Backing, ContactLaw, ContactParams, Error, Level, LevelKind, Regime};
 
 /// A law in normalised units (E* = 1 Pa, R = 1 m) with `backing` (thickness as t/R).
@@ -325,23 +328,6 @@ fn combining_a_backed_body_is_a_typed_error() {
             .unwrap_err();
         assert!(e.to_string().contains("`thickness` must be"), "{t}: {e}");
     }
-}
-
-/// `(r/R, p/E*)` of an FE pressure profile (R = 1 mm, mu = 1 MPa), the two nodes nearest the
-/// axis dropped (the tied on-axis face makes them jitter by up to 20 %: see the file's
-/// provenance line).
-fn profile(text: &str, nu: f64) -> Vec<(f64, f64)> {
-    let e_star = 2.0 * (1.0 + nu) / (1.0 - nu * nu); // MPa
-    text.lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("r_mm"))
-        .skip(2)
-        .map(|l| {
-            let mut it = l
-                .split(',')
-                .map(|v| v.trim().parse::<f64>().expect("number"));
-            (it.next().expect("r"), it.next().expect("p") / e_star)
-        })
-        .collect()
 }
 
 macro_rules! pressure_files {

@@ -25,3 +25,20 @@ pub fn grid(x_max: f64, n: usize) -> Vec<f64> {
         .map(|i| x_max * (i as f64 + 0.293_7) / (n as f64 + 0.5))
         .collect()
 }
+
+/// `(r/R, p/E*)` of an FE pressure profile (R = 1 mm, mu = 1 MPa), the two nodes nearest the
+/// axis dropped (the tied on-axis face makes them jitter by up to 20 %: see the file's
+/// provenance line); the last row is the contact edge a_lin (p = 0).
+pub fn profile(text: &str, nu: f64) -> Vec<(f64, f64)> {
+    let e_star = 2.0 * (1.0 + nu) / (1.0 - nu * nu); // MPa
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("r_mm"))
+        .skip(2)
+        .map(|l| {
+            let mut it = l
+                .split(',')
+                .map(|v| v.trim().parse::<f64>().expect("number"));
+            (it.next().expect("r"), it.next().expect("p") / e_star)
+        })
+        .collect()
+}

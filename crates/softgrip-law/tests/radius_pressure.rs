@@ -18,6 +18,9 @@
 //! law's error adds to the peak one for one). The numbers in the comments are what the current
 //! code gives; the tolerances sit just above them, so a change of form or constant fails.
 
+mod common;
+
+use common::profile;
 use softgrip_law::{Backing, ContactLaw, ContactParams, ContactPatch, Level};
 
 /// The calibrated law in normalised units (E* = 1 Pa, R = 1 m) for `backing` (t as t/R).
@@ -336,22 +339,6 @@ fn free_radius_within_3_percent_of_the_smoothed_fe_radius() {
         println!("{path}: {:.2} %", w * 100.0);
         assert!(w < tol, "{path}: {:.2} %", w * 100.0);
     }
-}
-
-/// `(r/R, p/E*)` of an FE pressure profile (R = 1 mm, mu = 1 MPa), the two nodes nearest the
-/// axis dropped; the last row is the contact edge a_lin (p = 0).
-fn profile(text: &str, nu: f64) -> Vec<(f64, f64)> {
-    let e_star = 2.0 * (1.0 + nu) / (1.0 - nu * nu); // MPa
-    text.lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("r_mm"))
-        .skip(2)
-        .map(|l| {
-            let mut it = l
-                .split(',')
-                .map(|v| v.trim().parse::<f64>().expect("number"));
-            (it.next().expect("r"), it.next().expect("p") / e_star)
-        })
-        .collect()
 }
 
 /// Peak error and largest profile error over r <= 0.8 a_FE, both relative to FE's peak.
