@@ -69,13 +69,14 @@
 //! - `1 / (1 + k (chi_flat - 1))`: the large-deformation stiffening of the hemisphere (chi_flat)
 //!   and the layer excess do not multiply: near incompressibility (k = 0.54-0.59) the excess grows less
 //!   than chi_flat, for a compressible skin (k < 0 at nu = 0.3) more.
-//! - Cost: `chi = (P H Q + (l0 sqrt(x) Q + l1 x) T D^2) / (D H Q)` with chi_flat = P/D,
-//!   `H = D + k (P - D)` and `Q` the crossover's two factors: one square root and one division,
-//!   no `powf` or `exp` (`cargo bench -p softgrip-law`, `force_stiffness/calibrated-core`).
-//!   Measured on the shared 2-core machine (load average 4.7): fit 7.4 ns, flat 11.0 ns, core
-//!   27.6 ns (the previous form with its `powf`: 44.4 ns at load 5.1, fit 5.7, flat 12.2): the
-//!   target of 2x fit is missed; the dependent chain of dual products, not a transcendental,
-//!   is what is left.
+//! - Cost: neither form is evaluated on the hot path. At construction each is tabulated as a
+//!   cubic Hermite interpolant in `sqrt(x)` on 128 cells through the form's exact value and
+//!   slope (the private `ChiTable`; within 1.3e-8 of the form in force, 8.2e-7 in
+//!   stiffness), so an evaluation is the square root the force needs anyway, a cell lookup and
+//!   two short polynomials, whatever the form costs. `cargo bench -p softgrip-law --bench law
+//!   -- force_stiffness`, 2-core machine at load 0.9 (two other processes running): fit
+//!   5.1-5.6 ns, calibrated-flat 10.7-11.1 ns, calibrated-core 9.9-10.9 ns per evaluation, i.e.
+//!   1.9-2.0x fit (evaluated directly, the core form was 26.6 ns and the flat one 9.8 ns).
 //! - Thin-layer limit (t/R -> 0 at fixed delta/t, u -> infinity): for a compressible skin B grows
 //!   linearly in a/t, the oedometer's scaling; for an incompressible one (eps -> 0) as `e u^2`,
 //!   not as the thin incompressible layer's `(3 pi/8) u^3` (bonded to the core, frictionless on
@@ -181,6 +182,8 @@
 //! those patches closer). Past the core's validity the FE's profiles are 11-17 % off.
 //! Before this fit the core took flat's shape: 1-43 % off FE's peak.
 
+use std::sync::Arc;
+
 use super::NormalisedLaw;
 use super::dual::Dual;
 use crate::backing::Backing;
@@ -212,9 +215,121 @@ const SHAPE_CORE: [f64; 4] = [0.095467, 2.285182, 3.668819, 0.530249];
 /// Free sphere's radius excess `1 + g1 x + g3 x^3` (as `calibrated.rs`).
 const G: [f64; 2] = [0.042222, 0.109823];
 
-/// The calibrated level of one backed construction at one Poisson ratio.
+/// Cells of the core's tabulation over `0 <= sqrt(x) <= sqrt(x_max)` (see [`ChiTable`]).
+const CORE_CELLS: usize = 128;
+
+/// The core's `chi` tabulated at construction: a cubic Hermite interpolant in `s = sqrt(x)` on
+/// `CORE_CELLS` equal cells, through the exact form's value and `d chi/ds` at every knot. `chi`
+/// is a smooth function of `s` (the form is rational in `s`, with no pole on `[0, x_max]`), so
+/// the interpolant follows the form to 1.3e-8 in force, 8.2e-7 in stiffness and 1.1e-8 in
+/// energy (relative; worst at t/R = 0.05 near x = 0, where the compressible crossover is
+/// steepest; `cargo test -p softgrip-law --lib table_follows -- --nocapture`), and costs, per
+/// evaluation, the square root the force needs anyway, one cell lookup and a cubic: no division.
+/// The stiffness is the interpolant's exact derivative and the energy its exact integral (the
+/// integrand `(8/3) chi s^4` is a polynomial of degree 7 on a cell: 8-point Gauss-Legendre is
+/// exact).
+#[derive(Debug)]
+struct ChiTable {
+    /// `1 / h`.
+    inv_h: f64,
+    /// The cells' width in `s`, `sqrt(x_max) / CORE_CELLS`.
+    h: f64,
+    /// Per cell, `chi = c0 + t (c1 + t (c2 + t c3))` in the local `t = s/h - i`, in [0, 1].
+    cells: [[f64; 4]; CORE_CELLS],
+    /// Per cell, `x chi' / s = (1/2) d chi/ds = d0 + t (d1 + t d2)`.
+    slopes: [[f64; 3]; CORE_CELLS],
+    /// Energy `(8/3) ∫ chi s^4 ds` from 0 to the start of each cell.
+    energy0: [f64; CORE_CELLS],
+}
+
+impl ChiTable {
+    /// Tabulates `chi` (giving `chi` and `x chi'` at `x > 0`) over `[0, x_max]`.
+    fn new(x_max: f64, chi: impl Fn(f64) -> Dual) -> Self {
+        let h = x_max.sqrt() / CORE_CELLS as f64;
+        // chi and d chi/ds = 2 (x chi')/s at each knot; at s = 0 the limit, from s = 1e-9 h
+        // (chi = 1 + c s + O(s^2): the one-sided value is c to 1e-9).
+        let knot = |i: usize| {
+            let s = if i == 0 { 1e-9 * h } else { h * i as f64 };
+            let c = chi(s * s);
+            let v = if i == 0 { chi(0.0).v } else { c.v };
+            (v, 2.0 * c.d / s)
+        };
+        let mut cells = [[0.0; 4]; CORE_CELLS];
+        let mut energy0 = [0.0; CORE_CELLS];
+        let mut slopes = [[0.0; 3]; CORE_CELLS];
+        let mut energy = 0.0;
+        let mut k0 = knot(0);
+        for i in 0..CORE_CELLS {
+            let k1 = knot(i + 1);
+            let (f0, f1, d0, d1) = (k0.0, k1.0, k0.1 * h, k1.1 * h);
+            cells[i] = [
+                f0,
+                d0,
+                3.0 * (f1 - f0) - 2.0 * d0 - d1,
+                2.0 * (f0 - f1) + d0 + d1,
+            ];
+            let [_, c1, c2, c3] = cells[i];
+            let half = 0.5 / h;
+            slopes[i] = [half * c1, half * 2.0 * c2, half * 3.0 * c3];
+            energy0[i] = energy;
+            energy += cell_energy(cells[i], h, i, 1.0);
+            k0 = k1;
+        }
+        Self {
+            inv_h: 1.0 / h,
+            h,
+            cells,
+            slopes,
+            energy0,
+        }
+    }
+
+    /// The cell of `s` and the local coordinate in it (the last cell continues past its end).
+    #[inline(always)]
+    fn locate(&self, s: f64) -> (usize, f64) {
+        let t = s * self.inv_h;
+        // Through u32 (s >= 0 and t <= CORE_CELLS on the validity range): a cheaper conversion
+        // than to usize.
+        let i = (t as u32).min(CORE_CELLS as u32 - 1);
+        (i as usize, t - f64::from(i))
+    }
+
+    /// `chi` and `x chi' = (s/2) d chi/ds` at `s = sqrt(x)`.
+    #[inline(always)]
+    fn chi(&self, s: f64) -> Dual {
+        let (i, t) = self.locate(s);
+        let [c0, c1, c2, c3] = self.cells[i];
+        let [d0, d1, d2] = self.slopes[i];
+        Dual {
+            v: c0 + t * (c1 + t * (c2 + t * c3)),
+            d: s * (d0 + t * (d1 + t * d2)),
+        }
+    }
+
+    /// The normalised energy at `x`.
+    fn energy(&self, x: f64) -> f64 {
+        let (i, t) = self.locate(x.sqrt());
+        self.energy0[i] + cell_energy(self.cells[i], self.h, i, t)
+    }
+}
+
+/// `(8/3) ∫ chi s^4 ds` over cell `i` (coefficients `cell`, width `h`) from its start to the
+/// local coordinate `t`.
+fn cell_energy(cell: [f64; 4], h: f64, i: usize, t: f64) -> f64 {
+    let [c0, c1, c2, c3] = cell;
+    let s0 = h * i as f64;
+    let width = h * t;
+    integrate(0.0, 1.0, 1, |w| {
+        let tw = t * w;
+        let s = s0 + width * w;
+        8.0 / 3.0 * (c0 + tw * (c1 + tw * (c2 + tw * c3))) * s * s * s * s
+    }) * width
+}
+
+/// The force form `chi(x)` of one backed construction at one Poisson ratio (the module docs),
+/// evaluated only to build the [`ChiTable`] the hot path uses.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Backed {
+struct ChiForm {
     c: f64,
     d: f64,
     e: f64,
@@ -228,6 +343,16 @@ pub(crate) struct Backed {
     thinning: f64,
     /// `k(nu)`: the layer excess is divided by `1 + k (chi_flat - 1)`.
     k: f64,
+}
+
+/// The calibrated level of one backed construction at one Poisson ratio.
+#[derive(Debug, Clone)]
+pub(crate) struct Backed {
+    /// `chi` tabulated at construction from the form.
+    table: Arc<ChiTable>,
+    /// The form itself (the unit test checks the table against it).
+    #[cfg(test)]
+    form: ChiForm,
     /// `1 / (t/R)` (core), 0 for flat.
     inv_tau: f64,
     eps4: f64,
@@ -304,7 +429,7 @@ impl Backed {
             }
             _ => (false, [0.0; 2], [0.0; 2], 0.0, 0.0, flat_x_max(nu)),
         };
-        Ok(Self {
+        let form = ChiForm {
             c: c0 + c1 * eps,
             d,
             e: e0 + e1 * eps,
@@ -314,6 +439,11 @@ impl Backed {
             cross,
             thinning: (l0 + l1 * eps) * inv_tau,
             k: k0 + k1 * eps,
+        };
+        Ok(Self {
+            table: Arc::new(ChiTable::new(x_max, |x| form.chi(x))),
+            #[cfg(test)]
+            form,
             inv_tau,
             eps4: 0.25 * eps,
             rad_x: q0 + q1 * eps,
@@ -324,8 +454,10 @@ impl Backed {
             x_max,
         })
     }
+}
 
-    /// `chi` and `x chi'` at `x > 0`.
+impl ChiForm {
+    /// The form's `chi` and `x chi'` at `x >= 0`.
     #[inline(always)]
     fn chi(&self, x0: f64) -> Dual {
         let x = Dual::var(x0);
@@ -354,19 +486,14 @@ impl NormalisedLaw for Backed {
     #[inline]
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         // f = (4/3) chi x sqrt(x), df/dx = (4/3) sqrt(x) (3/2 chi + x chi').
-        let chi = self.chi(x);
         let s = x.sqrt();
+        let chi = self.table.chi(s);
         let h = 4.0 / 3.0 * s;
         (h * chi.v * x, h * (1.5 * chi.v + chi.d))
     }
 
     fn energy(&self, x: f64) -> f64 {
-        // In u = sqrt(x) the integrand (8/3) chi(u^2) u^4 is smooth (chi is a function of u with
-        // no pole on [0, x_max]).
-        integrate(0.0, x.sqrt(), 4, |u| {
-            let s = u * u;
-            8.0 / 3.0 * self.chi(s).v * s * s
-        })
+        self.table.energy(x)
     }
 
     fn radius(&self, x: f64) -> f64 {
@@ -404,5 +531,48 @@ impl NormalisedLaw for Backed {
             zn / (zn + 1.0)
         };
         flat + (self.shape_layer - flat) * v
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The table against the form: force, stiffness and energy over the validity range, for
+    /// flat and across the thicknesses and Poisson ratios the level accepts.
+    #[test]
+    fn table_follows_the_form() {
+        let mut worst = [0.0f64; 3];
+        for nu in [0.3, 0.37, 0.45, 0.49, 0.4999, 0.5] {
+            let mut cases = vec![Backed::try_new(Backing::Flat, None, nu).expect("flat builds")];
+            for tau in [0.05, 0.2, 0.33, 0.5, 0.71, 0.8, 0.95] {
+                let core = Backed::try_new(Backing::Core { thickness: tau }, Some(tau), nu);
+                cases.push(core.expect("core builds"));
+            }
+            for law in cases {
+                let form = law.form;
+                let exact = |x: f64| {
+                    let chi = form.chi(x);
+                    let h = 4.0 / 3.0 * x.sqrt();
+                    (h * chi.v * x, h * (1.5 * chi.v + chi.d))
+                };
+                for k in 1..=997 {
+                    let x = law.x_max * f64::from(k) / 997.0;
+                    let (a, b) = (law.force_stiffness(x), exact(x));
+                    worst[0] = worst[0].max((a.0 / b.0 - 1.0).abs());
+                    worst[1] = worst[1].max((a.1 / b.1 - 1.0).abs());
+                    // The form's energy by 64 panels of 8-point Gauss-Legendre in sqrt(x).
+                    let e = integrate(0.0, x.sqrt(), 64, |u| {
+                        8.0 / 3.0 * form.chi(u * u).v * u.powi(4)
+                    });
+                    worst[2] = worst[2].max((law.energy(x) / e - 1.0).abs());
+                }
+            }
+        }
+        eprintln!("table vs form, largest relative difference: force, stiffness, energy {worst:?}");
+        assert!(
+            worst[0] < 2e-8 && worst[1] < 1e-6 && worst[2] < 2e-8,
+            "{worst:?}"
+        );
     }
 }
