@@ -8,7 +8,7 @@ use anyhow::{Result, anyhow, bail};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use softgrip_ecs::FingertipLaw;
-use softgrip_law::{ContactLaw, Level};
+use softgrip_law::{Backing, ContactLaw, Level};
 
 use super::{contact_radius, contacts, fingertips, laws, open};
 use crate::files::check_output;
@@ -155,7 +155,15 @@ fn comparison(law: &FingertipLaw) -> Vec<(String, ContactLaw)> {
             continue;
         }
         if let Ok(l) = law.law_at(level) {
-            out.push((name.to_string(), l));
+            // With a backing, only `calibrated` is the construction's own law; the others
+            // compute the free sphere's (softgrip_law::Level's docs).
+            if law.backing.is_free() {
+                out.push((name.to_string(), l));
+            } else if level == Level::Calibrated {
+                out.push((format!("{name} ({})", construction(law.backing)), l));
+            } else {
+                out.push((format!("{name} (free sphere)"), l));
+            }
         }
     }
     out
@@ -171,8 +179,9 @@ fn force_vs_x<DB: DrawingBackend>(
     let (k, p) = prefix(y_top);
     let caption = match &col.law {
         Some(l) => format!(
-            "{}: force vs x (R = {}, E* = {}, ν = {})",
+            "{}, {}: force vs x (R = {}, E* = {}, ν = {})",
             col.name,
+            construction(l.backing),
             si(l.radius, "m"),
             si(
                 l.youngs_modulus / (1.0 - l.poisson_ratio * l.poisson_ratio),
@@ -238,14 +247,18 @@ fn vs_time<DB: DrawingBackend>(
     let t1 = if t1 > t0 { t1 } else { t0 + 1e-3 };
     let y_top = 1.1 * col.samples.iter().map(value).fold(0.0, f64::max).max(1e-15);
     let (k, p) = prefix(y_top);
+    let name = match &col.law {
+        Some(l) => format!("{}, {}", col.name, construction(l.backing)),
+        None => col.name.clone(),
+    };
     let (caption, desc) = if force {
         (
-            format!("{}: normal force vs time", col.name),
+            format!("{name}: normal force vs time"),
             format!("normal force [{p}N]"),
         )
     } else {
         (
-            format!("{}: contact radius vs time", col.name),
+            format!("{name}: contact radius vs time"),
             format!("contact radius a [{p}m]"),
         )
     };
@@ -271,6 +284,16 @@ fn vs_time<DB: DrawingBackend>(
             .map(|s| Circle::new((s.t, value(s) * k), 2, colour.filled())),
     )?;
     Ok(())
+}
+
+/// How the fingertip is built, for a caption: "free sphere", "flat-backed" or "skin t = 2 mm on
+/// a core".
+fn construction(backing: Backing) -> String {
+    match backing {
+        Backing::Free => "free sphere".into(),
+        Backing::Flat => "flat-backed".into(),
+        Backing::Core { thickness } => format!("skin t = {} on a core", si(thickness, "m")),
+    }
 }
 
 /// `value unit` with an SI prefix.
