@@ -121,6 +121,9 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
                 offset: spec.offset,
                 radius: spec.radius,
                 law: fingertip_law(tip, &spec.name),
+                // The scene's fingertip colliders have no rotation of their own: the
+                // collider's frame is the body's axes.
+                facing: tip.facing(),
             })
             .collect(),
     }

@@ -28,6 +28,7 @@ struct TipMount {
     offset: [f64; 3],
     radius: f64,
     arrow_scale: f64,
+    facing: Option<[f64; 3]>,
 }
 
 /// Turns [`StepFrame`]s into the messages of a step ([`StepRecord`]): what the MCAP recorder
@@ -81,6 +82,7 @@ impl StepConverter {
                 offset: t.offset,
                 radius: t.radius,
                 arrow_scale: arrow_scale(t),
+                facing: t.facing,
             })
             .collect();
         let header = Header::new(0, "");
@@ -165,6 +167,7 @@ impl StepConverter {
                     t.radius = state.radius;
                     t.wrench = state.wrench;
                     t.arrow_scale = state.arrow_scale;
+                    t.facing = state.facing;
                 }
                 None => step.fingertips.push(FingertipState {
                     name: w.fingertip.clone(),
@@ -223,6 +226,7 @@ impl StepConverter {
             },
             frame: m.frame.clone(),
             arrow_scale: m.arrow_scale,
+            facing: m.facing,
         }
     }
 }

@@ -75,6 +75,7 @@ impl UpAxis {
 ///         poisson_ratio: 0.49, radius: 0.01, friction: 0.8, restitution: 0.5,
 ///         backing: Default::default(),
 ///     },
+///     facing: None,
 /// };
 /// let scene = SceneInfo {
 ///     bodies: vec!["sphere".into(), "jaw".into()],

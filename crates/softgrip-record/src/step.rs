@@ -46,6 +46,9 @@ pub struct FingertipState {
     /// `radius / arrow_scale`, logarithmic and capped above it
     /// ([`visuals::arrow_length`](crate::visuals::arrow_length)); 0: no arrows.
     pub arrow_scale: f64,
+    /// A backed fingertip's facing (flat face to pole, unit), in its body's axes (the axes of
+    /// `frame`, or of `orientation` when `frame` is empty); `None`: a free fingertip.
+    pub facing: Option<[f64; 3]>,
 }
 
 /// One step's worth of recordable state.

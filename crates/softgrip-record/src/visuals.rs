@@ -1,5 +1,6 @@
 //! `/softgrip/markers`: every rigid body's shapes (in their body frames), the fingertips
-//! (spheres of radius R in their frames), the contact patches (discs of radius a on the
+//! (spheres of radius R in their frames; a backed fingertip a hemisphere, its flat face on the
+//! finger: [`hemisphere`]), the contact patches (discs of radius a on the
 //! contact plane) and the contacts' normal forces (arrows), for Foxglove's 3D panel and RViz.
 
 use crate::msgs::geometry_msgs::{Point, Pose, Quaternion, Vector3};
@@ -191,8 +192,8 @@ fn shape_marker(s: &ShapeInfo, id: i32, color: ColorRGBA, extent: f64) -> Marker
 }
 
 /// The step's markers: a `DELETEALL` (so patches of contacts that ended disappear), every body
-/// shape (ns [`NS_BODIES`], in its body frame), a sphere per fingertip (ns `fingertips`, id =
-/// index, in its frame), a disc per contact (ns `contact_patches`, id = index: a cylinder at
+/// shape (ns [`NS_BODIES`], in its body frame), a sphere per free fingertip and a
+/// [`hemisphere`] (a `TRIANGLE_LIST`) per backed one (ns `fingertips`, id = index, in its frame), a disc per contact (ns `contact_patches`, id = index: a cylinder at
 /// the contact point, axis along the normal, diameter 2a, thickness [`DISC_THICKNESS`] a) and
 /// an arrow per contact (ns [`NS_FORCES`], id = index) from the contact point along the normal
 /// (the force on the fingertip), [`arrow_length`] long: one fingertip radius at the law's force
@@ -223,6 +224,20 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
     for (i, tip) in step.fingertips.iter().enumerate() {
         let d = 2.0 * tip.radius;
         let own = !tip.frame.is_empty();
+        // A backed fingertip is a hemisphere (its flat face bonded to the finger), drawn as a
+        // triangle list in its frame; a free one a sphere.
+        let (r#type, scale, points) = match tip.facing {
+            Some(n) => (
+                Marker::TRIANGLE_LIST,
+                Vector3 {
+                    x: 1.0,
+                    y: 1.0,
+                    z: 1.0,
+                },
+                hemisphere(tip.radius, n),
+            ),
+            None => (Marker::SPHERE, Vector3 { x: d, y: d, z: d }, Vec::new()),
+        };
         let mut m = Marker {
             pose: if own {
                 Pose::default()
@@ -232,10 +247,11 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
                     orientation: Quaternion::from_xyzw(tip.orientation),
                 }
             },
-            scale: Vector3 { x: d, y: d, z: d },
+            scale,
             color: FINGERTIP,
             frame_locked: own,
-            ..base(NS_FINGERTIPS, i, Marker::SPHERE)
+            points,
+            ..base(NS_FINGERTIPS, i, r#type)
         };
         m.header.frame_id = step.frame_of(tip).to_owned();
         markers.push(m);
@@ -270,6 +286,79 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
         }
     }
     MarkerArray { markers }
+}
+
+/// Meridian segments of a drawn hemisphere, pole to equator.
+pub const HEMISPHERE_RINGS: usize = 4;
+/// Segments around a drawn hemisphere's axis.
+pub const HEMISPHERE_SEGMENTS: usize = 16;
+
+/// The triangles (a `TRIANGLE_LIST`'s points, 3 per triangle, counter-clockwise seen from
+/// outside) of a hemisphere of radius `radius` \[m\] centred at the origin whose pole is along
+/// `facing` (any non-zero length; normalised here): the dome, [`HEMISPHERE_RINGS`] x
+/// [`HEMISPHERE_SEGMENTS`] facets with its vertices on the sphere, and the flat face through
+/// the centre. 16 x (2 x 4 - 1) + 16 = 128 triangles. Empty for a zero or non-finite `facing`.
+///
+/// ```
+/// use softgrip_record::visuals::hemisphere;
+/// let pts = hemisphere(0.01, [0.0, -2.0, 0.0]);
+/// assert_eq!(pts.len(), 3 * 128);
+/// // Every vertex is on the sphere or on the flat face, none on the finger's side.
+/// for p in &pts {
+///     let r = (p.x * p.x + p.y * p.y + p.z * p.z).sqrt();
+///     assert!(p.y <= 1e-12 && (r <= 0.01 + 1e-12) && (p.y.abs() < 1e-12 || (r - 0.01).abs() < 1e-12));
+/// }
+/// assert!(hemisphere(0.01, [0.0; 3]).is_empty());
+/// ```
+pub fn hemisphere(radius: f64, facing: [f64; 3]) -> Vec<Point> {
+    let len = (facing[0] * facing[0] + facing[1] * facing[1] + facing[2] * facing[2]).sqrt();
+    if !(len > 0.0 && len.is_finite()) {
+        return Vec::new();
+    }
+    let n = facing.map(|v| v / len);
+    // Two unit vectors across the axis: u along the axis least aligned with n, made normal.
+    let k = (0..3)
+        .min_by(|&a, &b| n[a].abs().total_cmp(&n[b].abs()))
+        .unwrap_or(0);
+    let mut u = [0.0; 3];
+    u[k] = 1.0;
+    let dot = u[k] * n[k];
+    let u: [f64; 3] = std::array::from_fn(|j| u[j] - dot * n[j]);
+    let ul = (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]).sqrt();
+    let u = u.map(|v| v / ul);
+    let v = [
+        n[1] * u[2] - n[2] * u[1],
+        n[2] * u[0] - n[0] * u[2],
+        n[0] * u[1] - n[1] * u[0],
+    ];
+    // The vertex at polar angle ring * (pi/2)/RINGS from the pole, azimuth seg * 2 pi/SEGMENTS.
+    let vertex = |ring: usize, seg: usize| {
+        let theta = std::f64::consts::FRAC_PI_2 * ring as f64 / HEMISPHERE_RINGS as f64;
+        let phi =
+            std::f64::consts::TAU * (seg % HEMISPHERE_SEGMENTS) as f64 / HEMISPHERE_SEGMENTS as f64;
+        let (st, ct) = theta.sin_cos();
+        let (sp, cp) = phi.sin_cos();
+        let p: [f64; 3] =
+            std::array::from_fn(|j| radius * (ct * n[j] + st * (cp * u[j] + sp * v[j])));
+        Point::from_array(p)
+    };
+    let centre = Point::from_array([0.0; 3]);
+    let mut pts = Vec::with_capacity(3 * HEMISPHERE_SEGMENTS * (2 * HEMISPHERE_RINGS));
+    for seg in 0..HEMISPHERE_SEGMENTS {
+        pts.extend([vertex(0, 0), vertex(1, seg), vertex(1, seg + 1)]);
+        for ring in 1..HEMISPHERE_RINGS {
+            let (a, b) = (vertex(ring, seg), vertex(ring, seg + 1));
+            let (c, d) = (vertex(ring + 1, seg), vertex(ring + 1, seg + 1));
+            pts.extend([a, c, d, a, d, b]);
+        }
+        // The flat face, seen from behind (from -n).
+        let (e0, e1) = (
+            vertex(HEMISPHERE_RINGS, seg),
+            vertex(HEMISPHERE_RINGS, seg + 1),
+        );
+        pts.extend([centre, e1, e0]);
+    }
+    pts
 }
 
 /// The normal-force arrow of contact `c` (ns [`NS_FORCES`]; header and id left to the caller),

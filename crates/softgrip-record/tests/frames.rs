@@ -31,6 +31,7 @@ fn tip(name: &str, body: &str, radius: f64) -> FingertipInfo {
             restitution: 0.5,
             backing: softgrip_law::Backing::Free,
         },
+        facing: None,
     }
 }
 

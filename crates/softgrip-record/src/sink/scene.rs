@@ -17,6 +17,10 @@ pub struct FingertipInfo {
     pub radius: f64,
     /// The law's parameters (written in the recording's metadata).
     pub law: FingertipLaw,
+    /// A backed fingertip's facing: the unit direction from its flat face (through the
+    /// sphere's centre) to its pole, in its body's axes. `None`: a free fingertip (drawn as a
+    /// sphere; a backed one as a hemisphere).
+    pub facing: Option<[f64; 3]>,
 }
 
 /// The geometry of a rigid body's shape, in the shape's own frame (its body's axes, at its

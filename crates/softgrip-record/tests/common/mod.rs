@@ -59,6 +59,7 @@ pub fn step(k: u64, dt_ns: u64) -> StepRecord {
             wrench,
             frame: name.to_string(),
             arrow_scale: 1e-3,
+            facing: None,
         });
     }
     StepRecord {
