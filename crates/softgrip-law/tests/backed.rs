@@ -72,9 +72,9 @@ fn flat_calibrated_is_within_1_percent_of_its_fe_at_every_nu() {
 #[test]
 fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // nu and t/R between the fitted ones (tools/fe/fe_campaign.py role "heldout"). Seen: flat
-    // 0.35: 1.66 %, flat 0.45: 0.54 %; core (0.45, 0.5): 2.85 % (at x = 0.3), (0.35, 0.7):
-    // 0.88 %, (0.4, 0.3): 1.85 %, (0.49, 0.3): 2.85 % (at x = 0.15): the provisional core form
-    // misses the 2 % target on two of the four.
+    // 0.35: 1.66 %, flat 0.45: 0.54 %; core (0.45, 0.5): 1.91 %, (0.35, 0.7): 0.45 %, (0.4,
+    // 0.3): 1.19 %, (0.49, 0.3): 2.75 % (at x = 0.18, its x_max): the core form misses the 2 %
+    // target on one of the four.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -82,30 +82,31 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.45_t0.5.csv",
             0.45,
             Backing::Core { thickness: 0.5 },
-            0.031,
+            0.0215,
         ),
         (
             "core/force_nu0.35_t0.7.csv",
             0.35,
             Backing::Core { thickness: 0.7 },
-            0.011,
+            0.0065,
         ),
         (
             "core/force_nu0.4_t0.3.csv",
             0.4,
             Backing::Core { thickness: 0.3 },
-            0.021,
+            0.0145,
         ),
         (
             "core/force_nu0.49_t0.3.csv",
             0.49,
             Backing::Core { thickness: 0.3 },
-            0.031,
+            0.030,
         ),
     ];
     for (path, nu, backing, tol) in cases {
         let cal = law(Level::Calibrated, nu, backing);
         let (w, x) = worst(&cal, &fe(path), cal.x_max());
+        eprintln!("{path}: {:.2} % at x = {x}", w * 100.0);
         assert!(w < tol, "{path}: {:.2} % at x = {x}", w * 100.0);
     }
 }
@@ -124,24 +125,24 @@ fn flat_is_stiffer_than_the_free_sphere_as_the_issue_measured() {
 
 #[test]
 fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
-    // PROVISIONAL form (issue 10 open), fitted on these 14 curves (tools/calibration/
-    // fit_core.py). Seen, to x_max = min(flat's, 0.6 t/R), the largest |F/F_FE - 1| in %; each
-    // tolerance is the seen value plus 0.25 % (a changed constant or term breaks it).
+    // Fitted on these 14 curves (tools/calibration/fit_core.py: five constants). Seen, to x_max
+    // = min(flat's, 0.6 t/R), the largest |F/F_FE - 1| in %; each tolerance is the seen value
+    // plus 0.25 % (a changed constant or term breaks it).
     let seen = [
-        (0.3, 0.2, 1.94),
-        (0.4, 0.2, 2.13),
-        (0.48, 0.2, 2.29),
-        (0.499, 0.2, 2.24),
-        (0.3, 0.4, 2.08),
-        (0.4, 0.4, 2.37),
-        (0.48, 0.4, 0.73),
-        (0.499, 0.4, 1.92),
-        (0.3, 0.6, 1.68),
-        (0.48, 0.6, 0.81),
-        (0.499, 0.6, 1.32),
-        (0.3, 0.8, 0.60),
-        (0.48, 0.8, 1.59),
-        (0.499, 0.8, 1.40),
+        (0.3, 0.2, 1.93),
+        (0.4, 0.2, 2.11),
+        (0.48, 0.2, 2.27),
+        (0.499, 0.2, 2.44),
+        (0.3, 0.4, 1.83),
+        (0.4, 0.4, 1.69),
+        (0.48, 0.4, 1.89),
+        (0.499, 0.4, 1.86),
+        (0.3, 0.6, 1.07),
+        (0.48, 0.6, 0.92),
+        (0.499, 0.6, 1.94),
+        (0.3, 0.8, 0.82),
+        (0.48, 0.8, 2.01),
+        (0.499, 0.8, 1.76),
     ];
     for (nu, t, pct) in seen {
         let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });

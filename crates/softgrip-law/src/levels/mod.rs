@@ -4,7 +4,6 @@
 pub(crate) mod auto;
 pub(crate) mod backed;
 pub(crate) mod calibrated;
-pub(crate) mod dual;
 pub(crate) mod fit;
 pub(crate) mod hertz;
 pub(crate) mod incompressible;
