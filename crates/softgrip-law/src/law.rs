@@ -68,6 +68,7 @@ struct Edge {
     w: f64,
     radius: f64,
     shape: f64,
+    taper: f64,
 }
 
 /// One level of the contact law bound to a contact's parameters.
@@ -179,6 +180,7 @@ impl ContactLaw {
             w: finite_non_negative(c.energy(x)),
             radius: finite_non_negative(c.radius(x)),
             shape: c.pressure_shape(x),
+            taper: c.pressure_taper(x),
         };
         let (e, r) = (params.effective_modulus(), params.radius());
         Self {
@@ -315,12 +317,13 @@ impl ContactLaw {
         } else {
             e.radius * (x.min(X_FROZEN) / e.x).sqrt()
         };
-        let m = if x <= e.x {
-            self.curve.as_dyn().pressure_shape(x)
+        let (m, b) = if x <= e.x {
+            let c = self.curve.as_dyn();
+            (c.pressure_shape(x), c.pressure_taper(x))
         } else {
-            e.shape
+            (e.shape, e.taper)
         };
-        ContactPatch::with_shape(self.response(delta).force, rho * self.params.radius(), m)
+        ContactPatch::with_profile(self.response(delta).force, rho * self.params.radius(), m, b)
     }
 
     /// Checked: the whole state at compression `delta` \[m\], finite and in

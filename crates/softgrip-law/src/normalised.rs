@@ -74,4 +74,12 @@ pub trait NormalisedLaw: Send + Sync + Debug {
         let _ = x;
         0.5
     }
+
+    /// Taper `b` [-] of the pressure profile's factor `(1 + b r^2/a^2)` at `x` in
+    /// `(0, x_max]`, in `[-1, 0]` ([`ContactPatch`](crate::ContactPatch)). The default is 0 (no
+    /// taper: `p0 (1 - r^2/a^2)^m`).
+    fn pressure_taper(&self, x: f64) -> f64 {
+        let _ = x;
+        0.0
+    }
 }

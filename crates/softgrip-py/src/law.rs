@@ -100,7 +100,8 @@ impl Law {
         self.eval(delta, checked, |l, d| l.patch(d).mean_pressure)
     }
 
-    /// Peak (centre) contact pressure (m + 1) p_mean [Pa].
+    /// Peak (centre) contact pressure (m + 1)(m + 2)/(m + 2 + b) p_mean [Pa] ((m + 1) p_mean
+    /// for b = 0).
     #[pyo3(signature = (delta, *, checked = false))]
     fn peak_pressure<'py>(
         &self,
@@ -110,7 +111,8 @@ impl Law {
         self.eval(delta, checked, |l, d| l.patch(d).peak_pressure)
     }
 
-    /// Shape exponent m [-] of the pressure profile p(r) = p0 (1 - r^2/a^2)^m (1/2: Hertz).
+    /// Shape exponent m [-] of the pressure profile p(r) = p0 (1 - r^2/a^2)^m (1 + b r^2/a^2)
+    /// (1/2: Hertz), in [0, 2].
     #[pyo3(signature = (delta, *, checked = false))]
     fn pressure_shape<'py>(
         &self,
@@ -118,6 +120,17 @@ impl Law {
         checked: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
         self.eval(delta, checked, |l, d| l.patch(d).shape)
+    }
+
+    /// Taper b [-] of the pressure profile's factor (1 + b r^2/a^2), in [-1, 0]: 0 for a free
+    /// sphere and a flat pad, < 0 for a skin over a core.
+    #[pyo3(signature = (delta, *, checked = false))]
+    fn pressure_taper<'py>(
+        &self,
+        delta: &Bound<'py, PyAny>,
+        checked: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval(delta, checked, |l, d| l.patch(d).taper)
     }
 
     /// Pressure p(r) [Pa] at distance `r` [m] from the contact's centre at compression

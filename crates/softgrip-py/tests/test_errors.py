@@ -132,7 +132,7 @@ def test_hostile_inputs_never_panic():
     )
     for level in softgrip.LEVELS:
         tip = softgrip.law(level, 3e6, 0.49, 0.01)
-        for method in ("force", "stiffness", "energy", "radius", "pressure_shape"):
+        for method in ("force", "stiffness", "energy", "radius", "pressure_shape", "pressure_taper"):
             out = getattr(tip, method)(values)
             assert np.all(np.isfinite(out)), (level, method)
         for method in ("mean_pressure", "peak_pressure"):

@@ -90,6 +90,27 @@ def test_pressure_profile_equals_rust(cli, level, backing, thickness):
     assert p[-1] == 0.0  # r = a: the rim
 
 
+def test_the_core_profile_is_tapered_and_carries_the_force():
+    # p(r) = p0 (1 - r^2/a^2)^m (1 + b r^2/a^2): b = 0 for free and flat, < 0 over a core.
+    for backing, thickness in [("free", None), ("flat", None)]:
+        tip = softgrip.law("calibrated", E, 0.49, R, backing, thickness)
+        assert tip.pressure_taper(0.2 * R) == 0.0
+    tip = softgrip.law("calibrated", E, 0.49, R, "core", 0.3 * R)
+    delta = 0.15 * R
+    m, b = tip.pressure_shape(delta), tip.pressure_taper(delta)
+    assert -1.0 <= b < -0.05 and 0.0 <= m <= 2.0, (m, b)
+    a, p0 = tip.radius(delta), tip.peak_pressure(delta)
+    r = np.linspace(0.0, a, 20001)[:-1]
+    rho2 = (r / a) ** 2
+    want = p0 * (1.0 - rho2) ** m * (1.0 + b * rho2)
+    got = tip.pressure(delta, r)
+    assert np.max(np.abs(got - want)) <= 1e-12 * p0
+    # The integral of p over the patch is the force (midpoint rule in r).
+    mid = 0.5 * (r[1:] + r[:-1])
+    carried = np.sum(tip.pressure(delta, mid) * 2.0 * np.pi * mid * np.diff(r))
+    assert abs(carried / tip.force(delta) - 1.0) < 1e-4
+
+
 def test_scalars_arrays_and_shapes():
     tip = softgrip.law("calibrated", E, 0.49, R)
     f = tip.force(0.004)

@@ -130,4 +130,15 @@ impl NormalisedLaw for SeriesLaw {
             p2.shape
         }
     }
+
+    /// The taper of the same patch as [`pressure_shape`](Self::pressure_shape).
+    fn pressure_taper(&self, x: f64) -> f64 {
+        let (d1, d2) = self.split(x * self.radius);
+        let (p1, p2) = (self.first.patch(d1), self.second.patch(d2));
+        if p1.radius <= p2.radius {
+            p1.taper
+        } else {
+            p2.taper
+        }
+    }
 }

@@ -32,7 +32,10 @@ fn fingertip_marker(facing: Option<[f64; 3]>) -> Marker {
 fn a_free_fingertip_is_a_sphere_of_its_radius() {
     let m = fingertip_marker(None);
     assert_eq!(m.r#type, Marker::SPHERE);
-    assert_eq!((m.scale.x, m.scale.y, m.scale.z), (2.0 * R, 2.0 * R, 2.0 * R));
+    assert_eq!(
+        (m.scale.x, m.scale.y, m.scale.z),
+        (2.0 * R, 2.0 * R, 2.0 * R)
+    );
     assert!(m.points.is_empty());
 }
 
@@ -48,13 +51,19 @@ fn a_backed_fingertip_is_a_hemisphere_facing_its_pad() {
         let r = (p.x * p.x + p.y * p.y + p.z * p.z).sqrt();
         // On the dome (|p| = R) or on the flat face (x = 0), inside the sphere.
         assert!(r <= R * (1.0 + 1e-12), "{p:?} outside the sphere");
-        assert!(p.x.abs() < 1e-15 || (r - R).abs() < 1e-15, "{p:?} neither dome nor face");
+        assert!(
+            p.x.abs() < 1e-15 || (r - R).abs() < 1e-15,
+            "{p:?} neither dome nor face"
+        );
         pole = pole.max(-p.x);
         min_x = min_x.min(p.x);
         max_x = max_x.max(p.x);
     }
     // The pole reaches R along the facing; nothing on the finger's side (x > 0).
-    assert!((pole - R).abs() < 1e-15 && (min_x + R).abs() < 1e-15, "{min_x}");
+    assert!(
+        (pole - R).abs() < 1e-15 && (min_x + R).abs() < 1e-15,
+        "{min_x}"
+    );
     assert!(max_x <= 1e-15, "{max_x}");
     // Every triangle faces outwards: its normal points away from the centroid of the solid
     // (on the axis, 3R/8 from the face).

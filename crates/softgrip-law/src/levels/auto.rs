@@ -250,6 +250,10 @@ impl NormalisedLaw for Auto {
         self.reference.curve().pressure_shape(x)
     }
 
+    fn pressure_taper(&self, x: f64) -> f64 {
+        self.reference.curve().pressure_taper(x)
+    }
+
     fn x_max(&self) -> f64 {
         self.reference.curve().x_max()
     }

@@ -35,9 +35,11 @@ class Law:
     def mean_pressure(self, delta: _ArrayLike, *, checked: bool = ...) -> Union[float, _Array]:
         """Mean contact pressure F / (pi a^2) [Pa]."""
     def peak_pressure(self, delta: _ArrayLike, *, checked: bool = ...) -> Union[float, _Array]:
-        """Peak (centre) pressure (m + 1) p_mean [Pa]."""
+        """Peak (centre) pressure (m + 1)(m + 2)/(m + 2 + b) p_mean [Pa]."""
     def pressure_shape(self, delta: _ArrayLike, *, checked: bool = ...) -> Union[float, _Array]:
-        """Shape exponent m [-] of p(r) = p0 (1 - r^2/a^2)^m."""
+        """Shape exponent m [-] of p(r) = p0 (1 - r^2/a^2)^m (1 + b r^2/a^2), in [0, 2]."""
+    def pressure_taper(self, delta: _ArrayLike, *, checked: bool = ...) -> Union[float, _Array]:
+        """Taper b [-] of p(r)'s factor (1 + b r^2/a^2), in [-1, 0] (< 0: a skin over a core)."""
     def pressure(self, delta: float, r: _ArrayLike, *, checked: bool = ...) -> Union[float, _Array]:
         """Pressure p(r) [Pa] at distance r [m] from the centre, at compression delta [m]."""
     def valid(self, delta: _ArrayLike) -> Union[float, _Array]:
