@@ -10,7 +10,7 @@
 //! `K_1 K_2 / (K_1 + K_2)` (the exact derivative: `d delta = dF / K_1 + dF / K_2`), its
 //! energy `W_1(delta_1) + W_2(delta_2)` (the exact integral: `dW = F d delta_1 + F d delta_2`).
 
-use softgrip_law::{ContactLaw, NormalisedLaw};
+use softgrip_law::{ContactLaw, ContactPatch, NormalisedLaw};
 
 /// The series law of two fingertips' own laws, normalised by `E*_ref` \[Pa\] and `R_ref`
 /// \[m\] (the pair's `ContactLaw::custom` parameters).
@@ -86,6 +86,14 @@ impl SeriesLaw {
         }
         (d, delta - d)
     }
+
+    /// Of the two patches at the pair's normalised approach `x`, the one of smaller radius
+    /// (the one that slips first in torsion).
+    fn narrower_patch(&self, x: f64) -> ContactPatch {
+        let (d1, d2) = self.split(x * self.radius);
+        let (p1, p2) = (self.first.patch(d1), self.second.patch(d2));
+        if p1.radius <= p2.radius { p1 } else { p2 }
+    }
 }
 
 impl NormalisedLaw for SeriesLaw {
@@ -111,9 +119,7 @@ impl NormalisedLaw for SeriesLaw {
     /// The smaller of the two patches' radii (the pair's torsion is limited by the patch
     /// that slips first).
     fn radius(&self, x: f64) -> f64 {
-        let (d1, d2) = self.split(x * self.radius);
-        let (a1, a2) = (self.first.patch(d1).radius, self.second.patch(d2).radius);
-        a1.min(a2) / self.radius
+        self.narrower_patch(x).radius / self.radius
     }
 
     fn x_max(&self) -> f64 {
@@ -122,23 +128,11 @@ impl NormalisedLaw for SeriesLaw {
 
     /// The shape of the patch whose radius [`radius`](Self::radius) gives.
     fn pressure_shape(&self, x: f64) -> f64 {
-        let (d1, d2) = self.split(x * self.radius);
-        let (p1, p2) = (self.first.patch(d1), self.second.patch(d2));
-        if p1.radius <= p2.radius {
-            p1.shape
-        } else {
-            p2.shape
-        }
+        self.narrower_patch(x).shape
     }
 
     /// The taper of the same patch as [`pressure_shape`](Self::pressure_shape).
     fn pressure_taper(&self, x: f64) -> f64 {
-        let (d1, d2) = self.split(x * self.radius);
-        let (p1, p2) = (self.first.patch(d1), self.second.patch(d2));
-        if p1.radius <= p2.radius {
-            p1.taper
-        } else {
-            p2.taper
-        }
+        self.narrower_patch(x).taper
     }
 }
