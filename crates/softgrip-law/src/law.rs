@@ -173,14 +173,15 @@ impl ContactLaw {
         let c = curve.as_dyn();
         let x = c.x_max();
         let (f, k, _) = curve.force_stiffness(x);
+        let (shape, taper) = c.pressure_profile(x);
         let edge = Edge {
             x,
             f,
             k,
             w: finite_non_negative(c.energy(x)),
             radius: finite_non_negative(c.radius(x)),
-            shape: c.pressure_shape(x),
-            taper: c.pressure_taper(x),
+            shape,
+            taper,
         };
         let (e, r) = (params.effective_modulus(), params.radius());
         Self {
@@ -318,8 +319,7 @@ impl ContactLaw {
             e.radius * (x.min(X_FROZEN) / e.x).sqrt()
         };
         let (m, b) = if x <= e.x {
-            let c = self.curve.as_dyn();
-            (c.pressure_shape(x), c.pressure_taper(x))
+            self.curve.as_dyn().pressure_profile(x)
         } else {
             (e.shape, e.taper)
         };

@@ -82,4 +82,12 @@ pub trait NormalisedLaw: Send + Sync + Debug {
         let _ = x;
         0.0
     }
+
+    /// Shape and taper together, `(m, b)` at `x` in `(0, x_max]`: what
+    /// [`ContactLaw::patch`](crate::ContactLaw::patch) asks for. The default is
+    /// `(pressure_shape(x), pressure_taper(x))`; a level whose two share their work overrides
+    /// it (it must return the same pair).
+    fn pressure_profile(&self, x: f64) -> (f64, f64) {
+        (self.pressure_shape(x), self.pressure_taper(x))
+    }
 }

@@ -135,4 +135,10 @@ impl NormalisedLaw for SeriesLaw {
     fn pressure_taper(&self, x: f64) -> f64 {
         self.narrower_patch(x).taper
     }
+
+    /// Shape and taper of that patch, from one split.
+    fn pressure_profile(&self, x: f64) -> (f64, f64) {
+        let p = self.narrower_patch(x);
+        (p.shape, p.taper)
+    }
 }

@@ -254,6 +254,10 @@ impl NormalisedLaw for Auto {
         self.reference.curve().pressure_taper(x)
     }
 
+    fn pressure_profile(&self, x: f64) -> (f64, f64) {
+        self.reference.curve().pressure_profile(x)
+    }
+
     fn x_max(&self) -> f64 {
         self.reference.curve().x_max()
     }

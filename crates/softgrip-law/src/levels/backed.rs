@@ -571,20 +571,23 @@ impl NormalisedLaw for Backed {
     }
 
     fn pressure_shape(&self, x: f64) -> f64 {
-        let [a0, a1, a2, a3] = SHAPE;
-        let flat = 0.5 + (a0 + a1 * self.eps) * x.sqrt() + (a2 + a3 * x) * x;
-        if self.tau == 0.0 {
-            return flat;
-        }
-        // m leaves flat's only at the thin layer's end: (1 - rho^2)^1 (1 - rho^2) at v = 1.
-        flat + (1.0 - flat) * self.layer_share(x).powi(20)
+        self.pressure_profile(x).0
     }
 
     fn pressure_taper(&self, x: f64) -> f64 {
+        self.pressure_profile(x).1
+    }
+
+    /// `(m, b)` with the core's layer share computed once (it costs four `ln` and an `exp`).
+    fn pressure_profile(&self, x: f64) -> (f64, f64) {
+        let [a0, a1, a2, a3] = SHAPE;
+        let flat = 0.5 + (a0 + a1 * self.eps) * x.sqrt() + (a2 + a3 * x) * x;
         if self.tau == 0.0 {
-            return 0.0;
+            return (flat, 0.0);
         }
-        -self.layer_share(x)
+        // m leaves flat's only at the thin layer's end: (1 - rho^2)^1 (1 - rho^2) at v = 1.
+        let v = self.layer_share(x);
+        (flat + (1.0 - flat) * v.powi(20), -v)
     }
 }
 
