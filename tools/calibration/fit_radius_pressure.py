@@ -327,34 +327,36 @@ def pressure_free_flat(allc, qf):
     return out
 
 
+def fit_shape(rows, g, m_of, start, heading, skip_held):
+    """Refit geometry g's shape m_of(x, nu, q) (same form) to the per-profile best m with the radius
+    above (held-out profiles left out when skip_held); print each profile with it; return the constants."""
+    sel = [w for w in rows if w["g"] == g]
+
+    def res(q):
+        return np.array([(m_of(w["x"], w["c"]["nu"], q) + 1) / (w["best"] + 1) - 1
+                         for w in sel if not (skip_held and w["c"]["held"])])
+    q = tuple(least_squares(res, list(start)).x)
+    print(f"\n## {heading} = {np.array(q)}")
+    for w in sel:
+        m = m_of(w["x"], w["c"]["nu"], q)
+        pk, pr = shape_errors(w["r"], w["p"], w["f"], w["a"], m)
+        held = ("held" if w["c"]["held"] else "    ") + " " if skip_held else ""
+        print(f"  {g} nu {w['c']['nu']:<5} x {w['x']:.1f} {held}m {m:.3f} (best {w['best']:.3f}): peak {pk * 100:+5.1f} %, profile {pr * 100:4.1f} %")
+    return q
+
+
 def fit_free_shape(rows):
     """Refit the free shape (same form, same four nu) to the per-profile best m with the radius above."""
     global FREE_SHAPE
-    fr = [w for w in rows if w["g"] == "free"]
-
-    def res(q):
-        return np.array([(m_free(w["x"], w["c"]["nu"], q) + 1) / (w["best"] + 1) - 1 for w in fr])
-    FREE_SHAPE = tuple(least_squares(res, list(FREE_SHAPE)).x)
-    print(f"\n## 3b. free shape refitted: m = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x, (a0, a1, a2) = {np.array(FREE_SHAPE)}")
-    for w in fr:
-        m = m_free(w["x"], w["c"]["nu"])
-        pk, pr = shape_errors(w["r"], w["p"], w["f"], w["a"], m)
-        print(f"  free nu {w['c']['nu']:<5} x {w['x']:.1f} m {m:.3f} (best {w['best']:.3f}): peak {pk * 100:+5.1f} %, profile {pr * 100:4.1f} %")
+    FREE_SHAPE = fit_shape(rows, "free", m_free, FREE_SHAPE,
+                           "3b. free shape refitted: m = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x, (a0, a1, a2)", False)
 
 
 def fit_flat_shape(rows):
     """Refit the flat shape (same form) to the per-profile best m with the radius above."""
     global FLAT_SHAPE
-    fl = [w for w in rows if w["g"] == "flat"]
-
-    def res(q):
-        return np.array([(m_flat(w["x"], w["c"]["nu"], q) + 1) / (w["best"] + 1) - 1 for w in fl if not w["c"]["held"]])
-    FLAT_SHAPE = tuple(least_squares(res, list(FLAT_SHAPE)).x)
-    print(f"\n## 3c. flat shape refitted: m = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x + a3 x^2, (a0, a1, a2, a3) = {np.array(FLAT_SHAPE)}")
-    for w in fl:
-        m = m_flat(w["x"], w["c"]["nu"])
-        pk, pr = shape_errors(w["r"], w["p"], w["f"], w["a"], m)
-        print(f"  flat nu {w['c']['nu']:<5} x {w['x']:.1f} {'held' if w['c']['held'] else '    '} m {m:.3f} (best {w['best']:.3f}): peak {pk * 100:+5.1f} %, profile {pr * 100:4.1f} %")
+    FLAT_SHAPE = fit_shape(rows, "flat", m_flat, FLAT_SHAPE,
+                           "3c. flat shape refitted: m = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x + a3 x^2, (a0, a1, a2, a3)", True)
 
 
 def pressure(allc, qf, qc):
