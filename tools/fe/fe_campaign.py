@@ -63,6 +63,10 @@ def cases():
     # R/60), and core at nu = 0.4 for the fit: the other core runs are at nu = 0.3 and >= 0.48 only
     c += [("core", 0.48, 0.2, 60, "conv"), ("core", 0.4, 0.4, 40, "main"),
           ("core", 0.4, 0.2, 40, "main")]
+    # a second held-out set (session 6): thin skins between the fitted t/R, where the core law's
+    # residual is largest, at nu between the fitted ones
+    c += [("core", 0.46, 0.25, 40, "heldout"), ("core", 0.33, 0.25, 40, "heldout"),
+          ("core", 0.42, 0.55, 40, "heldout")]
     return c
 
 
