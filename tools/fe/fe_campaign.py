@@ -66,7 +66,8 @@ def cases():
     # a second held-out set (session 6): thin skins between the fitted t/R, where the core law's
     # residual is largest, at nu between the fitted ones
     c += [("core", 0.46, 0.25, 40, "heldout"), ("core", 0.33, 0.25, 40, "heldout"),
-          ("core", 0.42, 0.55, 40, "heldout")]
+          ("core", 0.42, 0.55, 40, "heldout"), ("core", 0.36, 0.2, 40, "heldout"),
+          ("core", 0.44, 0.8, 40, "heldout"), ("core", 0.495, 0.35, 40, "heldout")]
     return c
 
 
