@@ -76,7 +76,7 @@ FLAT = (0.681614, -0.341872, 1.754842, -2.984330, 0.791282, 0.329388)
 # The law's radius (backed.rs G, RADIUS, RADIUS_CORE), not refitted here.
 G = (0.042222, 0.109823)
 RADIUS = (0.648666, -0.706160, -0.954134)
-RADIUS_CORE = (0.791275, -0.508830, 0.351075, 2.361401)
+RADIUS_CORE = (0.958112, 0.695966, 0.679698, 2.279033)
 SQUEEZE = 0.6  # x_max = 0.6 t/R: the FE stops at delta/t = 0.65-0.8
 START = [0.73, 1.16, 1.70, 0.43, -1.42]
 NAMES = ["e0", "l0", "l1", "k0", "k1"]
@@ -116,7 +116,7 @@ def radius(x, nu, tau):
     flat = free * (1 + (q0 + q1 * eps + q2 * x) * x)
     rc = 1 - tau
     u = s / tau
-    return flat, flat * (1 + (s0 + s1 * eps) * rc * rc * u / ((u + c) * (1 + k * x / rc)))
+    return flat, flat * (1 + s0 * (1 - s1 * eps * u * u / (1 + eps * u * u)) * rc * rc * u / ((u + c) * (1 + k * x / rc)))
 
 
 def dimitriadis_d1(nu):
