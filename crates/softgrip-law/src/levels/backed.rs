@@ -237,7 +237,7 @@ use crate::quadrature::integrate;
 const FLAT: [f64; 6] = [0.681614, -0.341872, 1.754842, -2.984330, 0.791282, 0.329388];
 /// Core: e0 (the layer's second order, `e = e0 (1 - eps)`), l0, l1 (the skin's thinning),
 /// k0, k1 (the layer excess under the hemisphere's large-deformation stiffening).
-const CORE: [f64; 5] = [0.732377, 1.159739, 1.698461, 0.430042, -1.422577];
+const CORE: [f64; 5] = [0.782067, 0.757510, 1.096825, 0.235573, -1.758216];
 /// The core's validity: the skin over the core's pole squeezed by at most this fraction of t.
 const CORE_SQUEEZE: f64 = 0.6;
 /// Flat radius: q0, q1, q2 of `a_flat = a_free (1 + (q0 + q1 eps) x + q2 x^2)`.
@@ -404,8 +404,10 @@ struct CoreForce {
     d1: f64,
     /// The second order `e0 (1 - eps)`.
     e: f64,
-    /// `eps = mu/kappa`: the crossover `1 + eps v^2`.
+    /// `eps = mu/kappa`: the crossover `1 + eps x/tau^2` (skin), `1 + eps x` (hemisphere).
     eps: f64,
+    /// `1 / tau^2`.
+    inv_tau2: f64,
     /// `1 / h` and `1 / (tau h)`: the flat hemisphere's depth R and the skin's mean depth
     /// `t h`, over R.
     inv_h: f64,
@@ -417,10 +419,11 @@ struct CoreForce {
 }
 
 impl CoreForce {
-    /// `B(v) = v (d1 + e v / (1 + eps v^2))`: a contact of radius `v h` on a layer of depth h
-    /// bonded to a rigid base.
-    fn layer(&self, v: f64) -> f64 {
-        v * (self.d1 + self.e * v / (1.0 + self.eps * v * v))
+    /// `B(v, E) = v (d1 + e v / (1 + E))`: a contact of radius `v h` on a layer of depth h
+    /// bonded to a rigid base; `E = (a_H / l)^2`, Hertz's patch over the layer's confinement
+    /// length `l = h sqrt(kappa/mu)`.
+    fn layer(&self, v: f64, conf: f64) -> f64 {
+        v * (self.d1 + self.e * v / (1.0 + conf))
     }
 }
 
@@ -452,9 +455,13 @@ impl ChiForm {
         // The layer of depth t h under the patch of the core's radius, less the layer of depth
         // R under the flat hemisphere's patch that chi_flat already carries.
         let (a_flat, a) = self.radius.radii(s);
-        let excess = core.layer(a * core.inv_tau_h) - core.layer(a_flat * core.inv_h);
+        // Each confined over lengths beyond l = depth sqrt(kappa/mu): E = eps (a_H/t)^2 for
+        // the skin (the radius's E), eps (a_H/R)^2 = eps x for the hemisphere.
+        let conf = core.eps * x;
+        let excess = core.layer(a * core.inv_tau_h, conf * core.inv_tau2)
+            - core.layer(a_flat * core.inv_h, conf);
         let thinning = 1.0 + core.thinning * x;
-        flat + excess * thinning / (1.0 + core.k * (flat - 1.0))
+        flat + excess * thinning * (-core.k * (flat - 1.0)).exp()
     }
 
     /// `(chi, d chi/ds)` at `s`: the slope by the 5-point central difference with step
@@ -536,6 +543,7 @@ impl Backed {
                         / ((1.0 - nu) * std::f64::consts::PI),
                     e: ce0 * (1.0 - eps),
                     eps,
+                    inv_tau2: 1.0 / (tau * tau),
                     inv_h: 1.0 / h,
                     inv_tau_h: 1.0 / (tau * h),
                     thinning: (l0 + l1 * eps) / tau,
