@@ -72,9 +72,9 @@ fn flat_calibrated_is_within_1_percent_of_its_fe_at_every_nu() {
 #[test]
 fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // nu and t/R between the fitted ones (tools/fe/fe_campaign.py role "heldout"). Seen: flat
-    // 0.35: 1.66 %, flat 0.45: 0.54 %; core (0.45, 0.5): 1.91 %, (0.35, 0.7): 0.45 %, (0.4,
-    // 0.3): 1.19 %, (0.49, 0.3): 2.75 % (at x = 0.18, its x_max): the core form misses the 2 %
-    // target on one of the four.
+    // 0.35: 1.66 %, flat 0.45: 0.54 %; core (0.45, 0.5): 1.79 %, (0.35, 0.7): 1.95 % (at its
+    // x_max 0.42), (0.4, 0.3): 1.15 %, (0.49, 0.3): 2.21 % (at x = 0.18, its x_max): the core
+    // form misses the 2 % target on one of the four. Each tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -82,25 +82,25 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.45_t0.5.csv",
             0.45,
             Backing::Core { thickness: 0.5 },
-            0.0215,
+            0.0189,
         ),
         (
             "core/force_nu0.35_t0.7.csv",
             0.35,
             Backing::Core { thickness: 0.7 },
-            0.0065,
+            0.0205,
         ),
         (
             "core/force_nu0.4_t0.3.csv",
             0.4,
             Backing::Core { thickness: 0.3 },
-            0.0145,
+            0.0125,
         ),
         (
             "core/force_nu0.49_t0.3.csv",
             0.49,
             Backing::Core { thickness: 0.3 },
-            0.030,
+            0.0231,
         ),
     ];
     for (path, nu, backing, tol) in cases {
@@ -127,22 +127,22 @@ fn flat_is_stiffer_than_the_free_sphere_as_the_issue_measured() {
 fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
     // Fitted on these 14 curves (tools/calibration/fit_core.py: five constants). Seen, to x_max
     // = min(flat's, 0.6 t/R), the largest |F/F_FE - 1| in %; each tolerance is the seen value
-    // plus 0.25 % (a changed constant or term breaks it).
+    // plus 0.1 % above, 0.25 % below (a changed constant or term breaks it).
     let seen = [
-        (0.3, 0.2, 1.93),
-        (0.4, 0.2, 2.11),
-        (0.48, 0.2, 2.27),
-        (0.499, 0.2, 2.44),
-        (0.3, 0.4, 1.83),
-        (0.4, 0.4, 1.69),
-        (0.48, 0.4, 1.89),
-        (0.499, 0.4, 1.86),
-        (0.3, 0.6, 1.07),
-        (0.48, 0.6, 0.92),
-        (0.499, 0.6, 1.94),
-        (0.3, 0.8, 0.82),
-        (0.48, 0.8, 2.01),
-        (0.499, 0.8, 1.76),
+        (0.3, 0.2, 2.78),
+        (0.4, 0.2, 2.65),
+        (0.48, 0.2, 1.40),
+        (0.499, 0.2, 2.79),
+        (0.3, 0.4, 1.53),
+        (0.4, 0.4, 1.64),
+        (0.48, 0.4, 2.16),
+        (0.499, 0.4, 2.18),
+        (0.3, 0.6, 0.96),
+        (0.48, 0.6, 1.69),
+        (0.499, 0.6, 2.10),
+        (0.3, 0.8, 0.98),
+        (0.48, 0.8, 2.22),
+        (0.499, 0.8, 1.80),
     ];
     for (nu, t, pct) in seen {
         let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
@@ -150,7 +150,7 @@ fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
         let data = fe(&format!("core/force_nu{nu}_t{t}.csv"));
         let (w, x) = worst(&core, &data, core.x_max());
         assert!(
-            w * 100.0 < pct + 0.25,
+            w * 100.0 < pct + 0.1,
             "nu = {nu} t = {t}: {:.2} % at x = {x} (seen {pct} %)",
             w * 100.0
         );
