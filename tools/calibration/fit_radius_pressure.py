@@ -29,16 +29,24 @@ against softgrip's own FE (tests/data/fe/{free,flat,core}/ and the reference cop
 4. The core's two-parameter shape (tools/calibration/CORE_PRESSURE.md), over the law's radius with
    backed.rs's constants and scored as tests/radius_pressure.rs (FE force and the law's force):
        p = p0 (1 - rho^2)^m (1 + b rho^2),  p0 = (m + 1)(m + 2) F/(pi a^2 (m + 2 + b))
-       z = rc^k s^al/((1 - s) tau^gam),  s = x/tau,  v = (z/cb)^n/((z/cb)^n + 1),
+       w = u (rc^k/(cb (1 - s)))^n,  u = sqrt(x)/tau = a_H/t,  s = x/tau,  v = w/(w + 1),
        b = -v,  m = m_flat + (1 - m_flat) v^20                              (x >= tau: m = 1, b = -1)
-   (b = 0: today's family; v = 1: the thin layer's (1 - rho^2)^2); the per-profile table against
-   today's backed.rs, the per-profile best (m, b), the FE radius instead of the law's, the
-   variants not kept (5fe608f's form among them), the floor at t/R 0.2, leave-one-case-out, limits.
-Usage: target/fe-venv/bin/python tools/calibration/fit_radius_pressure.py   (numpy + scipy, ~1.5 min)
+   (b = 0: the free and flat family; v = 1: the thin layer's (1 - rho^2)^2; v ~ a_H/t as the patch
+   shrinks); the per-profile table against today's backed.rs, the per-profile best (m, b), the FE
+   radius instead of the law's, the variants not kept (5fe608f's and b497d00's forms among them),
+   the floor at t/R 0.2, leave-one-case-out, limits.
+   Section 4 reads backed.rs's constants from the source and takes the law's force from fit_core.py's
+   chi_core (with backed.rs's FLAT, CORE, G, RADIUS, RADIUS_CORE): a refit of the force needs no edit
+   here. With --write it writes the refitted SHAPE_CORE into backed.rs and the core profiles'
+   tolerances (seen + 0.3 %, rounded up) into tests/radius_pressure.rs; then
+   `cargo test -p softgrip-law --test radius_pressure -- --nocapture` prints the same numbers.
+Usage: target/fe-venv/bin/python tools/calibration/fit_radius_pressure.py [--write]   (numpy + scipy, ~1.5 min)
 """
 import glob
+import math
 import os
 import re
+import sys
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -467,49 +475,48 @@ def pressure(allc, qf, qc):
 # b = 0 is today's profile (free and flat keep it); -1 <= b <= 0 keeps the maximum at the centre.
 # ---------------------------------------------------------------------------------------------
 
-# backed.rs today (the Rust constants), for the comparison and the law's force
-RUST_SHAPE = (-0.399773, 0.189139, 1.031300, -0.688498)
-RUST_SHAPE_CORE = (0.095467, 2.285182, 3.668819, 0.530249)
-RUST_RADIUS = (0.648666, -0.706160, -0.954134)
-RUST_RADIUS_CORE = (0.958112, 0.695966, 0.679698, 2.279033)  # the law's (as the tests): section 2c's fit, rounded
-RUST_FLAT_FORCE = (0.681614, -0.341872, 1.754842, -2.984330, 0.791282, 0.329388)
-RUST_CORE_FORCE = (2.438510, 0.029861, 0.963584, 2.135778, -2.124863, 1.106851, 1.865438, 0.586583,
-                   -2.075281, 1.547191)
-# the form (4b): k, al, gam, n, cb (ce = 0 exactly: see CORE_PRESSURE.md). gam >= 0.05: v must reach 1
-# as tau -> 0 at a fixed squeeze (the thin layer), which t/R >= 0.2 cannot show (gam fits to its bound)
-CORE_SHAPE3_START = (0.4, 0.1, 0.07, 4.3, 1.5)
-CORE_SHAPE3_BOUNDS = ([0.01, 0.02, 0.05, 0.3, 1e-3], [8.0, 4.0, 4.0, 12.0, 1e3])
+# backed.rs's constants, read from the source (no mirror to keep in step): the law's radius (the
+# tests' patch), today's core shape for the comparison, and the force constants for the law's force
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+BACKED_RS = os.path.join(ROOT, "crates", "softgrip-law", "src", "levels", "backed.rs")
+RADIUS_PRESSURE_RS = os.path.join(ROOT, "crates", "softgrip-law", "tests", "radius_pressure.rs")
+
+
+def rust_constants(path=BACKED_RS):
+    """Every `const NAME: [f64; N] = [...]` of a Rust source, as tuples of floats."""
+    with open(path) as fh:
+        src = fh.read()
+    return {m[1]: tuple(float(v) for v in m[3].split(",") if v.strip())
+            for m in re.finditer(r"const (\w+): \[f64; (\d+)\] = \[([^\]]*)\];", src)}
+
+
+RUST = rust_constants()
+RUST_SHAPE, RUST_SHAPE_CORE = RUST["SHAPE"], RUST["SHAPE_CORE"]
+RUST_RADIUS, RUST_RADIUS_CORE = RUST["RADIUS"], RUST["RADIUS_CORE"]
+# the form (4b): k, n, cb (ce = 0 exactly: see CORE_PRESSURE.md); w ~ a_H/t as the patch -> 0 (first
+# order in a/t, as every bonded-layer correction) and w -> inf as tau -> 0 at a fixed squeeze s
+CORE_SHAPE3_START = (0.4, 4.0, 1.5)
+CORE_SHAPE3_BOUNDS = ([0.01, 0.3, 1e-3], [8.0, 12.0, 1e3])
+# the previous form's (b497d00): k, al, gam, n, cb
+CORE_SHAPE5_START = (0.4, 0.1, 0.07, 4.3, 1.5)
+CORE_SHAPE5_BOUNDS = ([0.01, 0.02, 0.05, 0.3, 1e-3], [8.0, 4.0, 4.0, 12.0, 1e3])
 # m follows v only at the thin layer's end: inside the validity the data keep m = m_flat (a free
 # power runs to its bound, 60; m's own sigmoid's scale to 4e3); v^20 < 0.003 for v <= 0.75 (the data's)
 P_LAG = 20.0
 # the previous form (5fe608f): alpha, n, cm, ce
 CORE_SHAPE2_START = (1.55, 1.3, 0.2, 0.0)
 CORE_SHAPE2_BOUNDS = ([0.1, 0.5, 0.01, -3.0], [3.0, 12.0, 50.0, 3.0])
+WRITE = "--write" in sys.argv  # write the refitted SHAPE_CORE and the core profile tolerances
 SOFT = 0.3  # 4b's objective: largest error + SOFT * rms of the per-profile largest errors
 
 
 def law_force_core(x, nu, tau):
-    """F/(E* R^2) of backed.rs's core (chi_core times Hertz's 4/3 x^(3/2)), the Rust constants."""
-    c0, c1, e0, e1, bb, d = RUST_FLAT_FORCE
-    n, c, c2, ce0, ce1, l0, l1, k0, k1, beta = RUST_CORE_FORCE
-    eps = eps_of(nu)
-    s = np.sqrt(x)
-    fl = (1 - x + x * x / 3) * (1 - d * x + (c0 + c1 * eps) * s + (e0 + e1 * eps) * x * x) / ((1 - x) ** 2 + bb * bb * eps * x * x)
-    d1 = 2 * (1.2876 - 1.4678 * nu + 1.3442 * nu * nu) / ((1 - nu) * np.pi)
-    rho = (1 - tau) / tau
-    phi = rho ** n / (rho ** n + c + c2 * rho)
-    e, g, u = ce0 + ce1 * eps, beta * eps, s / tau
-    layer = u * (d1 + e * u / (1 + g * u * u)) - s * (d1 + e * s / (1 + g * s * s))
-    chi = fl + phi * layer * (1 + (l0 + l1 * eps) * x / tau) / (1 + (k0 + k1 * eps) * (fl - 1))
-    return 4 / 3 * chi * x * s
-
-
-def m_core_today(x, nu, t):
-    b, n, cm, alpha = RUST_SHAPE_CORE
-    mf = m_flat(x, nu, RUST_SHAPE)
-    z = x ** alpha / (t - x)
-    v = z ** n / (z ** n + cm ** n) if x < t else 1.0
-    return mf + (2 - b * eps_of(nu) - mf) * v
+    """F/(E* R^2) of backed.rs's core: fit_core.py's chi_core (the force form's mirror, kept by the
+    force's fit) with backed.rs's constants FLAT, CORE, G, RADIUS, RADIUS_CORE, times 4/3 x^(3/2)."""
+    import fit_core  # same directory
+    fit_core.FLAT, fit_core.G = RUST["FLAT"], RUST["G"]
+    fit_core.RADIUS, fit_core.RADIUS_CORE = RUST["RADIUS"], RUST["RADIUS_CORE"]
+    return 4 / 3 * fit_core.chi_core(RUST["CORE"], x, nu, tau) * x ** 1.5
 
 
 def sig(z, n):
@@ -518,41 +525,59 @@ def sig(z, n):
 
 
 def core_shape3(q, x, nu, t):
-    """(m, b) of the form (4b): z = rc^k s^al / ((1 - s) tau^gam), s = x/tau, v = sig(z/cb, n),
-    m = m_flat + (1 - m_flat) v^P_LAG, b = -v."""
-    k, al, gam, n, cb = q[:5]
-    pl = q[5] if len(q) > 5 else P_LAG
+    """(m, b) of the form (4b): v = w/(w + 1), w = u (rc^k / (cb (1 - s)))^n, u = sqrt(x)/tau = a_H/t,
+    s = x/tau; m = m_flat + (1 - m_flat) v^P_LAG, b = -v. Five constants: the previous form (5fe608f..b497d00)."""
+    if len(q) == 5:
+        return core_shape_five(q, x, nu, t)
+    k, n, cb = q[:3]
+    pl = q[3] if len(q) > 3 else P_LAG
     mf = m_flat(x, nu)
     if x >= t:  # the core reaches the plane: the thin layer
         return 1.0, -1.0
-    s = x / t
-    v = sig((1 - t) ** k * s ** al / ((1 - s) * t ** gam) / cb, n)
+    v = sig(core_w(k, n, cb, x, t), 1.0)
     return mf + (1 - mf) * v ** pl, -v
 
 
-def core_shape_sep(q, x, nu, t):
-    """4e: m's own sigmoid, m = m_flat + (1 - m_flat) sig(z/cm, nm), b = -sig(z/cb, nb)."""
-    k, al, gam, nm, cm, nb, cb = q[:7]
+def core_w(k, n, cb, x, t, p=0.5):
+    """w = u^(2p) (rc^k / (cb (1 - s)))^n: the form's p = 1/2 (w ~ a_H/t as the patch -> 0)."""
+    return (np.sqrt(x) / t) ** (2 * p) * ((1 - t) ** k / (cb * (1 - x / t))) ** n
+
+
+def core_shape_five(q, x, nu, t):
+    """The previous form (b497d00): z = rc^k s^al / ((1 - s) tau^gam), v = sig(z/cb, n)."""
+    k, al, gam, n, cb = q[:5]
     mf = m_flat(x, nu)
     if x >= t:
         return 1.0, -1.0
     s = x / t
-    z = (1 - t) ** k * s ** al / ((1 - s) * t ** gam)
-    return mf + (1 - mf) * sig(z / cm, nm), -sig(z / cb, nb)
+    v = sig((1 - t) ** k * s ** al / ((1 - s) * t ** gam) / cb, n)
+    return mf + (1 - mf) * v ** P_LAG, -v
+
+
+def core_shape_sep(q, x, nu, t):
+    """4e: m's own scale and power, m = m_flat + (1 - m_flat) w_m/(w_m + 1), b = -w/(w + 1)."""
+    k, nm, cm, n, cb = q[:5]
+    mf = m_flat(x, nu)
+    if x >= t:
+        return 1.0, -1.0
+    return mf + (1 - mf) * sig(core_w(k, nm, cm, x, t), 1.0), -sig(core_w(k, n, cb, x, t), 1.0)
 
 
 def core_shape2(q, x, nu, t, variant="form"):
     """(m, b) of the core's two-parameter shape; variant "form" is the form (core_shape3), the rest 4e."""
-    if variant == "form":
+    if variant in ("form", "p_lag", "five"):
         return core_shape3(q, x, nu, t)
-    if variant == "gam_half":  # the patch/thickness scaling a/(t - delta) ~ sqrt(s/tau)/(1 - s): gam = 1/2
-        return core_shape3([q[0], q[1], 0.5, *q[2:]], x, nu, t)
     if variant == "one_v":  # m and b from one v: b = -v, m = m_flat + (1 - m_flat) v
-        return core_shape3([*q[:5], 1.0], x, nu, t)
-    if variant == "free_m":  # m's own sigmoid: k, al, gam, nm, cm, nb, cb
+        return core_shape3([*q[:3], 1.0], x, nu, t)
+    if variant == "free_m":  # m's own scale and power: k, nm, cm, n, cb
         return core_shape_sep(q, x, nu, t)
-    if variant == "p_lag":  # the power fitted too
-        return core_shape3(q, x, nu, t)
+    if variant == "small_power":  # w ~ (a_H/t)^(2p) as the patch -> 0, p fitted
+        k, n, cb, pp = q[:4]
+        if x >= t:
+            return 1.0, -1.0
+        mf = m_flat(x, nu)
+        v = sig(core_w(k, n, cb, x, t, pp), 1.0)
+        return mf + (1 - mf) * v ** P_LAG, -v
     alpha, n, cm, ce = q[:4]
     mf = m_flat(x, nu)
     if x >= t:
@@ -588,6 +613,41 @@ def shape2_errors(w, f, m, b, a=None):
     k = r <= 0.8 * r[-1] + 1e-12
     e = (profile2(r[k], f, a, m, b) - p[k]) / p.max()
     return peak2(f, a, m, b) / p.max() - 1, np.abs(e).max(), e
+
+
+def tolerance(err):
+    """A test tolerance: the seen error (a fraction) + 0.3 %, rounded up to 0.1 %."""
+    return math.ceil(round((abs(err) * 100 + 0.3) * 10, 6)) / 1000
+
+
+def write_core_shape(q, rows):
+    """--write: backed.rs's SHAPE_CORE := q (6 decimals), and tests/radius_pressure.rs's core profile
+    tolerances := what q gives (FE force and the law's force, seen + 0.3 %, rounded up)."""
+    q = tuple(round(float(v), 6) for v in q)
+    with open(BACKED_RS) as fh:
+        src = fh.read()
+    new = "const SHAPE_CORE: [f64; %d] = [%s];" % (len(q), ", ".join(f"{v:.6f}" for v in q))
+    src, n = re.subn(r"const SHAPE_CORE: \[f64; \d+\] = \[[^\]]*\];", new, src)
+    assert n == 1, "SHAPE_CORE not found in backed.rs"
+    with open(BACKED_RS, "w") as fh:
+        fh.write(src)
+    with open(RADIUS_PRESSURE_RS) as fh:
+        test = fh.read()
+    done = 0
+    for w in rows:
+        if not w["inside"]:  # the test has the profiles inside the law's validity only
+            continue
+        c = w["c"]
+        m, b = core_shape3(q, w["x"], c["nu"], c["t"])
+        tol = [tolerance(e) for e in (*shape2_errors(w, w["f"], m, b)[:2], *shape2_errors(w, w["f_law"], m, b)[:2])]
+        key = f'"core", {c["nu"]:g}, {c["t"]:g}, {w["x"]:g}, {"true" if c["held"] else "false"}, '
+        test, n = re.subn(re.escape(key) + r"\[[\d.]+, [\d.]+\], \[[\d.]+, [\d.]+\];",
+                          key + "[%.3f, %.3f], [%.3f, %.3f];" % tuple(tol), test)
+        assert n == 1, key
+        done += 1
+    with open(RADIUS_PRESSURE_RS, "w") as fh:
+        fh.write(test)
+    print(f"  --write: backed.rs {new} {done} core profile tolerances in tests/radius_pressure.rs")
 
 
 def check_closed_forms():
@@ -676,27 +736,30 @@ def core_two_parameter_shape(rows):
             q = minimize(obj, q, method="Nelder-Mead", options=dict(xatol=1e-7, fatol=1e-9, maxiter=6000)).x
         return q
     q = fit("law")
-    k, al, gam, n, cb = q
+    if WRITE:
+        write_core_shape(q, rows)
+    k, n, cb = q
     dm = max(core_shape3(q, w["x"], w["c"]["nu"], w["c"]["t"])[0] - m_flat(w["x"], w["c"]["nu"]) for w in rows if w["inside"])
-    print("  4b. z = rc^k s^al/((1 - s) tau^gam), s = x/tau; v = sig(z/cb, n) = (z/cb)^n/((z/cb)^n + 1); b = -v,"
+    print("  4b. v = w/(w + 1), w = u (rc^k/(cb (1 - s)))^n, u = sqrt(x)/tau, s = x/tau; b = -v,"
           " m = m_flat + (1 - m_flat) v^P (thin layer: (1 - rho^2)^2), P = %g:\n" % P_LAG
-          + f"      k = {k:.6f}, al = {al:.6f}, gam = {gam:.6f}, n = {n:.6f}, cb = {cb:.6f}; inside the validity m - m_flat <= {dm:.4f}")
-    print("  4c. per profile, fractions of FE's peak, peak / profile (r <= 0.8 a_FE); today = backed.rs (b = 0)")
-    print("      case                          |  today m | FE force      | law force     ||   new m      b | FE force      | law force")
+          + f"      k = {k:.6f}, n = {n:.6f}, cb = {cb:.6f}; inside the validity m - m_flat <= {dm:.4f};"
+          f" fitted rms of the per-profile largest errors {np.sqrt((per_profile(q, fitted) ** 2).mean()) * 100:.2f} %")
+    print("  4c. per profile, fractions of FE's peak, peak / profile (r <= 0.8 a_FE); today = backed.rs's SHAPE_CORE %s" % (RUST_SHAPE_CORE,))
+    print("      case                          |  today m      b | FE force      | law force     ||   new m      b | FE force      | law force")
     worst = {}
     for w in rows:
         c = w["c"]
-        m0 = m_core_today(w["x"], c["nu"], c["t"])
+        m0, b0 = core_shape3(RUST_SHAPE_CORE, w["x"], c["nu"], c["t"])
         m, b = core_shape3(q, w["x"], c["nu"], c["t"])
-        t_fe = shape2_errors(w, w["f"], m0, 0.0)[:2]
-        t_law = shape2_errors(w, w["f_law"], m0, 0.0)[:2]
+        t_fe = shape2_errors(w, w["f"], m0, b0)[:2]
+        t_law = shape2_errors(w, w["f_law"], m0, b0)[:2]
         n_fe = shape2_errors(w, w["f"], m, b)[:2]
         n_law = shape2_errors(w, w["f_law"], m, b)[:2]
         key = ("held out" if c["held"] else "fitted  ", "inside the validity" if w["inside"] else "past it (x > 0.6 t/R)")
         old = worst.get(key, np.zeros(8))
         worst[key] = np.maximum(old, np.abs([*t_fe, *t_law, *n_fe, *n_law]))
         print(f"      nu {c['nu']:<5} t {c['t']:<3} x {w['x']:.1f} {'held' if c['held'] else '    '} {'     ' if w['inside'] else 'x>0.6t'}"
-              f" |    {m0:.3f} | {t_fe[0] * 100:+5.1f} / {t_fe[1] * 100:4.1f} | {t_law[0] * 100:+5.1f} / {t_law[1] * 100:4.1f}"
+              f" |  {m0:.3f} {b0:+.3f} | {t_fe[0] * 100:+5.1f} / {t_fe[1] * 100:4.1f} | {t_law[0] * 100:+5.1f} / {t_law[1] * 100:4.1f}"
               f" ||  {m:.3f} {b:+.3f} | {n_fe[0] * 100:+5.1f} / {n_fe[1] * 100:4.1f} | {n_law[0] * 100:+5.1f} / {n_law[1] * 100:4.1f}")
     for key in sorted(worst, key=lambda k: (k[1], k[0])):
         v = worst[key] * 100
@@ -717,11 +780,12 @@ def core_two_parameter_shape(rows):
             ("previous (5fe608f): m = m_flat + (1 - ce eps - m_flat) v, b = -v, w = rc^2 x^alpha/((tau - x) cm); ce free (< 0)",
              "rc2", CORE_SHAPE2_START, (lo, hi)),
             ("previous with ce >= 0", "rc2", CORE_SHAPE2_START, ([*lo[:3], 0.0], hi)),
-            ("the form with gam = 1/2 (a/(t - delta) scaling)", "gam_half", [q[0], q[1], *q[3:]],
-             ([lo3[0], lo3[1], *lo3[3:]], [hi3[0], hi3[1], *hi3[3:]])),
-            ("m's own sigmoid, m = m_flat + (1 - m_flat) sig(z/cm, nm), b = -sig(z/cb, nb)", "free_m",
-             (q[0], q[1], q[2], 2.0, 30.0, q[3], q[4]), ([*lo3[:3], 0.3, 1e-3, 0.3, 1e-3], [*hi3[:3], 12, 1e4, 12, 1e3])),
-            ("m = m_flat + (1 - m_flat) v (P = 1)", "one_v", (1.5, 0.3, 0.1, 2.0, 1.0), (lo3[:5], hi3[:5])),
+            ("previous (b497d00): z = rc^k s^al/((1 - s) tau^gam), v = sig(z/cb, n) (al, gam free)", "five",
+             CORE_SHAPE5_START, CORE_SHAPE5_BOUNDS),
+            ("the small-patch power free, w ~ (a_H/t)^(2p)", "small_power", (*q, 0.5), ([*lo3, 0.05], [*hi3, 3.0])),
+            ("m's own scale and power, m = m_flat + (1 - m_flat) w_m/(w_m + 1)", "free_m",
+             (q[0], 2.0, 30.0, q[1], q[2]), ([lo3[0], 0.3, 1e-3, 0.3, 1e-3], [hi3[0], 12, 1e4, 12, 1e3])),
+            ("m = m_flat + (1 - m_flat) v (P = 1)", "one_v", (0.4, 2.0, 1.0), (lo3, hi3)),
             ("P fitted too", "p_lag", (*q, 40.0), ([*lo3, 1], [*hi3, 60]))):
         qv = fit("law", variant, start, bounds)
         print(f"      {label}:\n        {qv}: {worst_of(qv, fitted, 'law', variant) * 100:.1f} / {worst_of(qv, fitted, 'law', variant, 'f_law') * 100:.1f} %"
