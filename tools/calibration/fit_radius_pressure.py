@@ -54,7 +54,10 @@ from scipy.optimize import least_squares
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "data", "fe")
 # Held out of every fit (tests/data/fe/README.md, fe_campaign.py role "heldout").
 HELD = {("flat", 0.35, None), ("flat", 0.45, None), ("core", 0.35, 0.7), ("core", 0.45, 0.5),
-        ("core", 0.4, 0.3), ("core", 0.49, 0.3)}
+        ("core", 0.4, 0.3), ("core", 0.49, 0.3),
+        # the second held-out set (session 6, made after these forms were chosen: a blind test)
+        ("core", 0.46, 0.25), ("core", 0.33, 0.25), ("core", 0.42, 0.55), ("core", 0.36, 0.2),
+        ("core", 0.44, 0.8), ("core", 0.495, 0.35)}
 # a_lin lags the contact edge by half an element face on average: contact is resolved per
 # quadratic face (on R/80 the last node on the plane is a midside node 25 times in 29, its outer
 # corner touching within the penalty's penetration). The element edge along the curved surface
@@ -317,6 +320,18 @@ def main():
     return allc, qf, qc
 
 
+def usable(path):
+    """An FE profile the fits and tests use: it exists and its integral is within 5 % of the force.
+    One file fails (core nu 0.44 t/R 0.8 x 0.3: 1.076 F): a contact-edge node entering contact
+    carries a penalty spike (3.53 MPa at r = 0.661 mm, twice the centre's 1.84 MPa), which would
+    be taken as FE's peak. Every other profile integrates to 0.93-1.03 F."""
+    if not os.path.exists(path):
+        return False
+    with open(path) as fh:
+        m = re.search(r"2 pi int r p dr = ([\d.]+) N vs force ([\d.]+) N", fh.readline())
+    return m is None or float(m.group(1)) <= 1.05 * float(m.group(2))
+
+
 def profile(path, nu):
     """(r/R, p/E*) of an FE profile, the two nodes nearest the axis dropped (as the tests do)."""
     d = np.genfromtxt(path, delimiter=",", skip_header=2)
@@ -359,7 +374,7 @@ def pressure_free_flat(allc, qf):
                 continue
             for x in (0.1, 0.3, 0.5):
                 path = os.path.join(DATA, g, f"pressure_nu{c['nu']:g}_d{x:g}.csv")
-                if not os.path.exists(path):
+                if not usable(path):
                     continue
                 r, p = profile(path, c["nu"])
                 i = int(np.argmin(abs(c["x"] - x)))
@@ -418,7 +433,7 @@ def pressure(allc, qf, qc):
             continue
         for x in (0.1, 0.3, 0.5):
             path = os.path.join(DATA, "core", f"pressure_nu{c['nu']:g}_t{c['t']:g}_d{x:g}.csv")
-            if not os.path.exists(path):
+            if not usable(path):
                 continue
             r, p = profile(path, c["nu"])
             i = int(np.argmin(abs(c["x"] - x)))

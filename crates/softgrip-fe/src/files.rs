@@ -322,6 +322,54 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.7)
     ),
+    fe_file!(
+        "core/force_nu0.46_t0.25.csv",
+        Force,
+        Some(0.46),
+        "held out of every fit (the second set): skin t/R = 0.25 over a rigid core, nu = 0.46, x = 0.01..0.18",
+        "core",
+        Some(0.25)
+    ),
+    fe_file!(
+        "core/force_nu0.33_t0.25.csv",
+        Force,
+        Some(0.33),
+        "held out of every fit (the second set): skin t/R = 0.25 over a rigid core, nu = 0.33, x = 0.01..0.2",
+        "core",
+        Some(0.25)
+    ),
+    fe_file!(
+        "core/force_nu0.42_t0.55.csv",
+        Force,
+        Some(0.42),
+        "held out of every fit (the second set): skin t/R = 0.55 over a rigid core, nu = 0.42, x = 0.01..0.42",
+        "core",
+        Some(0.55)
+    ),
+    fe_file!(
+        "core/force_nu0.36_t0.2.csv",
+        Force,
+        Some(0.36),
+        "held out of every fit (the second set): skin t/R = 0.2 over a rigid core, nu = 0.36, x = 0.01..0.16",
+        "core",
+        Some(0.2)
+    ),
+    fe_file!(
+        "core/force_nu0.44_t0.8.csv",
+        Force,
+        Some(0.44),
+        "held out of every fit (the second set): skin t/R = 0.8 over a rigid core, nu = 0.44, x = 0.01..0.43",
+        "core",
+        Some(0.8)
+    ),
+    fe_file!(
+        "core/force_nu0.495_t0.35.csv",
+        Force,
+        Some(0.495),
+        "held out of every fit (the second set): skin t/R = 0.35 over a rigid core, nu = 0.495, x = 0.01..0.2",
+        "core",
+        Some(0.35)
+    ),
 ];
 
 /// The file at `path` (relative to `tests/data/fe/`), if it is embedded.

@@ -74,7 +74,10 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // nu and t/R between the fitted ones (tools/fe/fe_campaign.py role "heldout"). Seen: flat
     // 0.35: 1.66 %, flat 0.45: 0.54 %; core (0.45, 0.5): 1.79 %, (0.35, 0.7): 1.95 % (at its
     // x_max 0.42), (0.4, 0.3): 1.15 %, (0.49, 0.3): 2.21 % (at x = 0.18, its x_max): the core
-    // form misses the 2 % target on one of the four. Each tolerance: seen + 0.1 %.
+    // form misses the 2 % target on one of the four. The second set (made after the form was
+    // chosen, a blind test): (0.46, 0.25) 1.42 %, (0.33, 0.25) 1.93 %, (0.42, 0.55) 1.34 %,
+    // (0.36, 0.2) 2.67 %, (0.44, 0.8) 1.48 %, (0.495, 0.35) 2.27 %: two of six over 2 %.
+    // Each tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -101,6 +104,42 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             0.49,
             Backing::Core { thickness: 0.3 },
             0.0231,
+        ),
+        (
+            "core/force_nu0.46_t0.25.csv",
+            0.46,
+            Backing::Core { thickness: 0.25 },
+            0.0152,
+        ),
+        (
+            "core/force_nu0.33_t0.25.csv",
+            0.33,
+            Backing::Core { thickness: 0.25 },
+            0.0203,
+        ),
+        (
+            "core/force_nu0.42_t0.55.csv",
+            0.42,
+            Backing::Core { thickness: 0.55 },
+            0.0144,
+        ),
+        (
+            "core/force_nu0.36_t0.2.csv",
+            0.36,
+            Backing::Core { thickness: 0.2 },
+            0.0277,
+        ),
+        (
+            "core/force_nu0.44_t0.8.csv",
+            0.44,
+            Backing::Core { thickness: 0.8 },
+            0.0158,
+        ),
+        (
+            "core/force_nu0.495_t0.35.csv",
+            0.495,
+            Backing::Core { thickness: 0.35 },
+            0.0237,
         ),
     ];
     for (path, nu, backing, tol) in cases {

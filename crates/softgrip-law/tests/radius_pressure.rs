@@ -162,10 +162,11 @@ type RadiusCase = (&'static str, f64, Option<f64>, bool, f64, f64);
 fn radius_within_3_percent_of_the_smoothed_fe_radius() {
     // Largest |a_law / a_FE - 1| over the FE points with 0.1 <= x <= min(0.4, reach, x_max)
     // against the FE radius estimate (smoothed a_lin plus the lag) and against the raw a_lin.
-    // Seen: flat 0.68-1.37 % (held out 1.15, 1.16 %), core 0.58-1.68 % (held out 0.82-1.40 %;
+    // Seen: flat 0.68-1.37 % (held out 1.15, 1.16 %), core 0.58-1.68 % (held out 0.82-1.40 %,
+    // the second held-out set (made after the form was chosen) 0.96-1.40 %;
     // nu 0.499 t/R 0.2 reaches x = 0.09 only, below the band); raw: 3.4-7.5 % (step noise and
     // lag). Tolerances: seen + 0.2-0.5 points (core: + 0.3, rounded up).
-    let cases: [RadiusCase; 23] = [
+    let cases: [RadiusCase; 29] = [
         ("flat/force_nu0.3.csv", 0.3, None, false, 0.010, 0.080),
         ("flat/force_nu0.4.csv", 0.4, None, false, 0.017, 0.075),
         ("flat/force_nu0.48.csv", 0.48, None, false, 0.017, 0.065),
@@ -308,6 +309,54 @@ fn radius_within_3_percent_of_the_smoothed_fe_radius() {
             0.012,
             0.074,
         ),
+        (
+            "core/force_nu0.46_t0.25.csv",
+            0.46,
+            Some(0.25),
+            true,
+            0.016,
+            0.051,
+        ),
+        (
+            "core/force_nu0.33_t0.25.csv",
+            0.33,
+            Some(0.25),
+            true,
+            0.013,
+            0.055,
+        ),
+        (
+            "core/force_nu0.42_t0.55.csv",
+            0.42,
+            Some(0.55),
+            true,
+            0.017,
+            0.068,
+        ),
+        (
+            "core/force_nu0.36_t0.2.csv",
+            0.36,
+            Some(0.2),
+            true,
+            0.017,
+            0.054,
+        ),
+        (
+            "core/force_nu0.44_t0.8.csv",
+            0.44,
+            Some(0.8),
+            true,
+            0.016,
+            0.077,
+        ),
+        (
+            "core/force_nu0.495_t0.35.csv",
+            0.495,
+            Some(0.35),
+            true,
+            0.015,
+            0.045,
+        ),
     ];
     for (path, nu, t, held, tol_smooth, tol_lin) in cases {
         let pts = fe(path);
@@ -401,16 +450,22 @@ macro_rules! profiles {
     };
     (@t 0.0) => { "" };
     (@t 0.2) => { "_t0.2" };
+    (@t 0.25) => { "_t0.25" };
     (@t 0.3) => { "_t0.3" };
+    (@t 0.35) => { "_t0.35" };
     (@t 0.4) => { "_t0.4" };
     (@t 0.5) => { "_t0.5" };
+    (@t 0.55) => { "_t0.55" };
     (@t 0.6) => { "_t0.6" };
     (@t 0.7) => { "_t0.7" };
     (@t 0.8) => { "_t0.8" };
 }
 
 /// Every FE profile inside the law's validity (x <= x_max): tolerances in fractions of FE's
-/// peak, seen values just below.
+/// peak, seen values just below. Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
+/// integrates to 1.076 F (every other one to 0.93-1.03 F): a contact-edge node entering contact
+/// carries a penalty spike (3.53 MPa at r = 0.661 mm, twice the centre's), which would be taken
+/// as FE's peak (`fit_radius_pressure.py` `usable` leaves it out of the fits for the same reason).
 fn all_profiles() -> Vec<Profile> {
     profiles!(
         "free", 0.3, 0.0, 0.1, false, [0.006, 0.024], [0.013, 0.017];
@@ -438,31 +493,38 @@ fn all_profiles() -> Vec<Profile> {
         "flat", 0.35, 0.0, 0.3, true, [0.026, 0.027], [0.023, 0.024];
         "flat", 0.45, 0.0, 0.1, true, [0.013, 0.017], [0.014, 0.017];
         "flat", 0.45, 0.0, 0.3, true, [0.029, 0.031], [0.032, 0.033];
-        "core", 0.35, 0.7, 0.1, true, [0.019, 0.023], [0.019, 0.022];
-        "core", 0.35, 0.7, 0.3, true, [0.020, 0.021], [0.016, 0.020];
-        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.040, 0.047];
-        "core", 0.4, 0.4, 0.1, false, [0.030, 0.034], [0.045, 0.049];
-        "core", 0.3, 0.2, 0.1, false, [0.018, 0.048], [0.025, 0.053];
-        "core", 0.3, 0.4, 0.1, false, [0.012, 0.015], [0.016, 0.020];
-        "core", 0.3, 0.6, 0.1, false, [0.013, 0.017], [0.022, 0.025];
-        "core", 0.3, 0.6, 0.3, false, [0.008, 0.048], [0.012, 0.052];
-        "core", 0.3, 0.8, 0.1, false, [0.010, 0.017], [0.007, 0.020];
-        "core", 0.3, 0.8, 0.3, false, [0.019, 0.041], [0.026, 0.048];
-        "core", 0.45, 0.5, 0.1, true, [0.017, 0.021], [0.035, 0.039];
-        "core", 0.45, 0.5, 0.3, true, [0.042, 0.046], [0.059, 0.062];
-        "core", 0.48, 0.2, 0.1, false, [0.029, 0.046], [0.021, 0.039];
-        "core", 0.48, 0.4, 0.1, false, [0.022, 0.026], [0.045, 0.049];
-        "core", 0.48, 0.6, 0.1, false, [0.014, 0.018], [0.011, 0.017];
-        "core", 0.48, 0.6, 0.3, false, [0.046, 0.048], [0.044, 0.047];
-        "core", 0.48, 0.8, 0.1, false, [0.009, 0.018], [0.011, 0.031];
-        "core", 0.48, 0.8, 0.3, false, [0.007, 0.023], [0.009, 0.032];
-        "core", 0.499, 0.4, 0.1, false, [0.005, 0.022], [0.028, 0.032];
-        "core", 0.499, 0.6, 0.1, false, [0.009, 0.018], [0.006, 0.026];
-        "core", 0.499, 0.6, 0.3, false, [0.027, 0.029], [0.018, 0.032];
+        "core", 0.35, 0.7, 0.1, true, [0.019, 0.023], [0.018, 0.021];
+        "core", 0.35, 0.7, 0.3, true, [0.020, 0.021], [0.009, 0.025];
+        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.006, 0.037];
+        "core", 0.4, 0.4, 0.1, false, [0.030, 0.034], [0.046, 0.049];
+        "core", 0.3, 0.2, 0.1, false, [0.018, 0.048], [0.016, 0.047];
+        "core", 0.3, 0.4, 0.1, false, [0.012, 0.015], [0.025, 0.029];
+        "core", 0.3, 0.6, 0.1, false, [0.013, 0.017], [0.022, 0.026];
+        "core", 0.3, 0.6, 0.3, false, [0.008, 0.048], [0.013, 0.052];
+        "core", 0.3, 0.8, 0.1, false, [0.010, 0.017], [0.006, 0.021];
+        "core", 0.3, 0.8, 0.3, false, [0.019, 0.041], [0.029, 0.051];
+        "core", 0.45, 0.5, 0.1, true, [0.017, 0.021], [0.033, 0.036];
+        "core", 0.45, 0.5, 0.3, true, [0.042, 0.046], [0.041, 0.047];
+        "core", 0.48, 0.2, 0.1, false, [0.029, 0.046], [0.026, 0.044];
+        "core", 0.48, 0.4, 0.1, false, [0.022, 0.026], [0.043, 0.048];
+        "core", 0.48, 0.6, 0.1, false, [0.014, 0.018], [0.009, 0.019];
+        "core", 0.48, 0.6, 0.3, false, [0.046, 0.048], [0.037, 0.039];
+        "core", 0.48, 0.8, 0.1, false, [0.009, 0.018], [0.011, 0.032];
+        "core", 0.48, 0.8, 0.3, false, [0.007, 0.023], [0.010, 0.033];
+        "core", 0.499, 0.4, 0.1, false, [0.005, 0.022], [0.027, 0.031];
+        "core", 0.499, 0.6, 0.1, false, [0.009, 0.018], [0.008, 0.028];
+        "core", 0.499, 0.6, 0.3, false, [0.027, 0.029], [0.014, 0.036];
         "core", 0.499, 0.8, 0.1, false, [0.004, 0.024], [0.021, 0.041];
-        "core", 0.499, 0.8, 0.3, false, [0.016, 0.039], [0.025, 0.049];
-        "core", 0.49, 0.3, 0.1, true, [0.047, 0.053], [0.053, 0.059];
-        "core", 0.4, 0.3, 0.1, true, [0.054, 0.058], [0.052, 0.057];
+        "core", 0.499, 0.8, 0.3, false, [0.016, 0.039], [0.026, 0.049];
+        "core", 0.49, 0.3, 0.1, true, [0.047, 0.053], [0.058, 0.063];
+        "core", 0.4, 0.3, 0.1, true, [0.054, 0.058], [0.049, 0.054];
+        "core", 0.46, 0.25, 0.1, true, [0.056, 0.063], [0.052, 0.059];
+        "core", 0.33, 0.25, 0.1, true, [0.028, 0.034], [0.010, 0.032];
+        "core", 0.42, 0.55, 0.1, true, [0.020, 0.023], [0.031, 0.034];
+        "core", 0.42, 0.55, 0.3, true, [0.042, 0.045], [0.039, 0.042];
+        "core", 0.36, 0.2, 0.1, true, [0.010, 0.034], [0.015, 0.047];
+        "core", 0.44, 0.8, 0.1, true, [0.017, 0.021], [0.009, 0.018];
+        "core", 0.495, 0.35, 0.1, true, [0.031, 0.036], [0.051, 0.055];
     )
     .into_iter()
     .collect()
