@@ -17,11 +17,12 @@ use crate::timing::{ns_per_eval, sample_points};
 /// The constructions and Poisson ratios of the table: (backing, t/R for core, nu, FE file in
 /// `tests/data/fe/`). The free sphere against the reference, the backed ones against
 /// softgrip's own FE campaign (`tools/fe/`).
-const PANELS: [(&str, f64, f64, &str); 6] = [
+const PANELS: [(&str, f64, f64, &str); 7] = [
     ("free", 0.0, 0.3, "force_nu0.3.csv"),
     ("free", 0.0, 0.49, "force_nu0.49.csv"),
     ("flat", 0.0, 0.3, "flat/force_nu0.3.csv"),
     ("flat", 0.0, 0.48, "flat/force_nu0.48.csv"),
+    ("core", 0.2, 0.499, "core/force_nu0.499_t0.2.csv"),
     ("core", 0.4, 0.48, "core/force_nu0.48_t0.4.csv"),
     ("core", 0.8, 0.3, "core/force_nu0.3_t0.8.csv"),
 ];
