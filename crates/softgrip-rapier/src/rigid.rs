@@ -1,45 +1,45 @@
 //! The soft contacts of a body that rests on rapier's rigid contacts (a box on a table pressed
-//! by a fingertip): one coupled direct solve of the soft rows and of rapier's touching contacts
-//! of the bodies they move, normal and friction.
+//! by a fingertip): one coupled solve of the soft rows and of rapier's touching contacts of the
+//! bodies they move (`Step::prepare_rigid`), normal and friction.
 //!
 //! **Why.** The soft impulse over a step is implicit in the bodies' end velocity, `j = h [F -
 //! D v(end)]`, and `v(end)` depends on the bodies' mobility. A box on the table, pressed down
 //! by a fingertip, cannot move down. Seen as free, it falls away under gravity within the
 //! step, the predicted separation outweighs the law's force and the impulse is zero: the tip
 //! sank through the box with no force at all (`tests/press_on_table.rs`). With rapier's
-//! touching contacts in the solve as hard rows, the soft impulses see the constrained
-//! mobility and carry the law's force.
+//! touching contacts in the solve as rows, the soft impulses see the constrained mobility and
+//! carry the law's force.
 //!
 //! **The rows.** Every scalar unknown is a row with a Jacobian on (at most) two bodies:
-//! - a soft contact's normal: `j + h D (W j) = h (F - D v0)` (as in `solve`), its two
-//!   tangential impulses and its torsion, which target the same velocities as `solve`'s
-//!   friction sweep (zero relative tangential velocity plus the anchor correction, zero
-//!   relative spin) with the compliance `1 / (h D)` of the normal row: a box held fast by the
-//!   table and a kinematic fingertip cannot both meet a tip's anchor correction, and a hard
-//!   row would then take an unbounded impulse; with the compliance the anchor pulls with the
-//!   stiffness `beta D / h` (about `0.3 K`, a tangential stiffness of the order of the
-//!   normal one, as Mindlin's). Where the other body is free the compliance changes the
-//!   friction impulse by `1 / (1 + h D w)`, a few 1e-4;
-//! - a rigid contact's normal (`v(end) >= 0`, hard) and its two tangential impulses (`v_t(end) =
-//!   0`, hard), in rapier's friction disk `mu j_n` (`mu` the manifold's).
+//! - a soft contact's normal, `j + h D (W j) = h (F - D v0)` (as in `solve`), its two
+//!   tangential impulses and its torsion, which target what `solve`'s friction sweep targets
+//!   (zero relative tangential velocity plus the anchor correction, zero relative spin), in
+//!   the disk `mu j_n` and the torsion limit, with [`SOFT_FRICTION_COMPLIANCE`] of their own
+//!   mobility (see there);
+//! - a rigid contact's normal, `v(end) >= 0`, and its two tangential impulses, `v_t(end) = 0`,
+//!   hard ([`RIGID_COMPLIANCE`]: the four corners of a box on a table are twelve rows for six
+//!   degrees of freedom; it picks the least-impulse distribution). They all target `v(end) =
+//!   0`, not the point's sub-tolerance gap: redundant rows are consistent only if they ask for
+//!   one rigid motion.
 //!
-//! The linear system is solved by a dense LU with an active set: a normal with a negative
-//! impulse leaves, one whose end velocity is penetrating enters; a friction pair past its disk
-//! slides (its impulse fixed on the disk, opposite to its sliding velocity), until no set
-//! changes (at most [`MAX_PASSES`]). The four corners of a box on a table are redundant (twelve
-//! rows for six degrees of freedom): each hard row's diagonal carries [`RIGID_COMPLIANCE`] of
-//! its own mobility, which picks the least-impulse distribution and changes the soft impulses
-//! by that fraction at most. The hard rows all target `v(end) = 0` (not the point's
-//! sub-tolerance gap): redundant rows are consistent only if they ask for one rigid motion.
+//! **The solve** (`solve_scalars`): block Gauss-Seidel, [`OUTER`] times: a dense LU of the
+//! normals (on their active set) and of the rigid friction pairs that stick and whose normal
+//! load comes mostly from the soft contacts, then [`SWEEPS`] sweeps of the friction pairs and
+//! torsions, each in closed form on its own mobility and clamped. Rows that compete for one
+//! degree of freedom (the table's normal and a pressing fingertip's normal; a wall's friction
+//! and a fingertip's) are solved together by the LU, which alternating sweeps would take tens
+//! of iterations to do. A rigid pair that slides leaves the LU for good (the set must not
+//! cycle: it did, and a squeezed box on the ground rang at 2.5 cm/s).
 //!
-//! **Who applies what.** The rigid rows' impulses without any soft contact (the bodies'
-//! weight on the table, `rest`) are rapier's: its own solver makes them, its contact forces
-//! and events see them. The part the soft contacts add (`j - rest`) is applied by the plugin
-//! with the soft impulses: left to rapier, a kick of `h F / m` (6 m/s for a 16 g box under 6 N
-//! at 60 Hz) is only partly cancelled per solver pass by rapier's soft contact constraint, and
-//! the box sank into the table and was thrown out.
+//! **Who applies what.** The rigid rows' normal impulses without any soft contact (the
+//! bodies' weight on the table, `rest`, scaled down to the row's impulse with the soft
+//! contacts: a box lifted off the table gets none) are rapier's: its own solver makes them and
+//! their friction (the rigid friction rows' disk is `mu (j_n - rest)`). The part the soft
+//! contacts add is applied by the plugin with the soft impulses: left to rapier, a kick of `h
+//! F / m` (6 m/s for a 16 g box under 6 N at 60 Hz) is only partly cancelled per solver pass by
+//! rapier's soft contact constraint, and the box sank into the table and was thrown out.
 
-use nalgebra::{DMatrix, DVector, Vector2, Vector3};
+use nalgebra::{DMatrix, DVector, Matrix2, Vector2, Vector3};
 
 use crate::solve::{BodyState, Row};
 
@@ -66,7 +66,13 @@ pub(crate) struct RigidRow {
 }
 
 impl RigidRow {
-    pub(crate) fn new(a: usize, b: Option<usize>, p: Vector3<f64>, n: Vector3<f64>, mu: f64) -> Self {
+    pub(crate) fn new(
+        a: usize,
+        b: Option<usize>,
+        p: Vector3<f64>,
+        n: Vector3<f64>,
+        mu: f64,
+    ) -> Self {
         let t1 = if n.x.abs() < 0.9 {
             n.cross(&Vector3::x()).normalize()
         } else {
@@ -88,12 +94,16 @@ impl RigidRow {
 
 /// Relative diagonal compliance of a hard row (see the module's docs).
 const RIGID_COMPLIANCE: f64 = 1e-9;
-fn soft_compliance() -> f64 {
-    std::env::var("SG_C").ok().and_then(|s| s.parse().ok()).unwrap_or(1e-3)
-}
+/// Relative diagonal compliance of a fingertip's tangential and torsional rows: a kinematic
+/// fingertip's velocity (from `f32` poses) and its anchor correction are noise that a box held
+/// fast by the table cannot follow; hard rows would answer it with unbounded impulses. It
+/// changes the friction impulse on a free body by this fraction.
+const SOFT_FRICTION_COMPLIANCE: f64 = 1e-2;
 
-/// Most active-set passes of one coupled solve.
-const MAX_PASSES: usize = 24;
+/// Outer iterations (normals, then friction) of one coupled solve.
+const OUTER: usize = 32;
+/// Friction sweeps per outer iteration.
+const SWEEPS: usize = 4;
 
 /// What a scalar row is.
 #[derive(Debug, Clone, Copy)]
@@ -103,8 +113,14 @@ enum Kind {
     /// A hard unilateral normal.
     HardNormal,
     /// A tangential impulse of the contact whose normal is row `normal`, paired with row
-    /// `other` (its other tangent), in the disk `mu j_normal`.
-    Tangent { normal: usize, other: usize, mu: f64 },
+    /// `other` (its other tangent), in the disk `mu (j_normal - base)` (`base`: the part of a
+    /// rigid row's normal impulse that rapier makes, whose friction rapier makes too).
+    Tangent {
+        normal: usize,
+        other: usize,
+        mu: f64,
+        base: f64,
+    },
     /// A torsion about the normal of row `normal`, limited by `arm j_normal`.
     Torsion { normal: usize, arm: f64 },
 }
@@ -133,10 +149,7 @@ impl Scalar {
         d: &Vector3<f64>,
         kind: Kind,
     ) -> Self {
-        let arm = |i: Option<usize>| {
-            i.map(|i| (p - bodies[i].com).cross(d))
-                .unwrap_or_default()
-        };
+        let arm = |i: Option<usize>| i.map(|i| (p - bodies[i].com).cross(d)).unwrap_or_default();
         Self {
             a,
             b,
@@ -220,6 +233,7 @@ fn build(
     bodies: &[BodyState],
     soft: &[Row],
     rigid: &[RigidRow],
+    rest_n: &[f64],
     h: f64,
     out: &mut Vec<Scalar>,
     first: &mut Vec<usize>,
@@ -251,10 +265,11 @@ fn build(
                         normal: nrm,
                         other: nrm + 2 - k,
                         mu: r.mu,
+                        base: 0.0,
                     },
                 );
                 s.target = target.dot(t);
-                s.compliance = soft_compliance();
+                s.compliance = SOFT_FRICTION_COMPLIANCE;
                 out.push(s);
             }
             if r.torsion_arm > 0.0 {
@@ -269,12 +284,12 @@ fn build(
                         arm: r.torsion_arm,
                     },
                     target: 0.0,
-                    compliance: soft_compliance(),
+                    compliance: SOFT_FRICTION_COMPLIANCE,
                 });
             }
         }
     }
-    for r in rigid {
+    for (ri, r) in rigid.iter().enumerate() {
         let nrm = out.len();
         out.push(Scalar::point(
             bodies,
@@ -296,6 +311,7 @@ fn build(
                         normal: nrm,
                         other: nrm + 2 - k,
                         mu: r.mu,
+                        base: rest_n.get(ri).copied().unwrap_or(0.0),
                     },
                 ));
             }
@@ -303,202 +319,235 @@ fn build(
     }
 }
 
-/// Solves the scalar rows from the body velocities `bodies`, returning their impulses (`None`
-/// if not finite).
+/// Solves the scalar rows from the body velocities `bodies` (left at the velocities after the
+/// impulses), returning their impulses (`None` if not finite).
+///
+/// Block Gauss-Seidel, [`OUTER`] times: a dense LU of the normals (soft and hard) and of the
+/// friction rows that stick, on the normals' active set, the sliding friction rows held at
+/// their impulses; then [`SWEEPS`] sweeps of the friction pairs and torsions, each in closed
+/// form on its own mobility and clamped to its disk or limit. The sweeps decide which rows
+/// slide; the LU makes the rows that compete for one degree of freedom (the table's normal and
+/// a lifting fingertip's friction, the table's normal and a pressing fingertip's normal)
+/// agree at once, which alternating sweeps would take tens of iterations to do.
 fn solve_scalars(
-    bodies: &[BodyState],
+    bodies: &mut [BodyState],
     rows: &[Scalar],
     h: f64,
     state: &mut Vec<State>,
 ) -> Option<Vec<f64>> {
     let m = rows.len();
-    let v0: Vec<f64> = rows.iter().map(|r| r.velocity(bodies)).collect();
-    let w = DMatrix::from_fn(m, m, |i, k| mobility(bodies, &rows[i], &rows[k]));
-    state.clear();
-    state.extend(rows.iter().zip(&v0).map(|(r, v)| match r.kind {
-        Kind::SoftNormal { force, d } => {
-            if h * (force - d * v) > 0.0 {
-                State::Active
-            } else {
-                State::Fixed(0.0)
+    // The friction pairs' inverse 2 x 2 mobility.
+    let pair_inv: Vec<Option<Matrix2<f64>>> = (0..m)
+        .map(|i| match rows[i].kind {
+            Kind::Tangent { other, .. } if other > i => {
+                let (x, y) = (&rows[i], &rows[other]);
+                let k = Matrix2::new(
+                    mobility(bodies, x, x) * (1.0 + x.compliance),
+                    mobility(bodies, x, y),
+                    mobility(bodies, y, x),
+                    mobility(bodies, y, y) * (1.0 + y.compliance),
+                );
+                k.try_inverse().filter(|_| k.trace() > 0.0)
             }
-        }
-        _ => State::Active,
-    }));
+            _ => None,
+        })
+        .collect();
     let mut j = vec![0.0; m];
-    for _ in 0..MAX_PASSES {
-        let mut a = DMatrix::<f64>::zeros(m, m);
-        let mut b = DVector::<f64>::zeros(m);
-        for i in 0..m {
-            match (state[i], rows[i].kind) {
-                (State::Fixed(x), _) => {
-                    a[(i, i)] = 1.0;
-                    b[i] = x;
-                }
-                (State::Active, Kind::SoftNormal { force, d }) => {
-                    for k in 0..m {
-                        a[(i, k)] = h * d * w[(i, k)];
-                    }
-                    a[(i, i)] += 1.0;
-                    b[i] = h * (force - d * v0[i]);
-                }
-                (State::Active, _) if w[(i, i)] == 0.0 => {
-                    // No mobility at all: the row cannot act.
-                    a[(i, i)] = 1.0;
-                }
-                (State::Active, _) => {
-                    for k in 0..m {
-                        a[(i, k)] = w[(i, k)];
-                    }
-                    a[(i, i)] += rows[i].compliance * w[(i, i)];
-                    b[i] = rows[i].target - v0[i];
+    // A rigid friction pair is solved with the normals where the soft contacts carry most of
+    // its normal's load (`in_lu`), and stays in the sweeps for good once it slid out of the LU
+    // (the set does not cycle).
+    let mut slid = vec![false; m];
+    let in_lu = |i: usize, j: &[f64], slid: &[bool]| match rows[i].kind {
+        Kind::SoftNormal { .. } | Kind::HardNormal => true,
+        Kind::Tangent {
+            normal, base, mu, ..
+        } if matches!(rows[normal].kind, Kind::HardNormal) => {
+            // (at the start, before any normal impulse: the pairs rapier carries nothing of)
+            !slid[i] && mu > 0.0 && (j[normal] - base > base || (j[normal] == 0.0 && base == 0.0))
+        }
+        _ => false,
+    };
+    let mut lu: Vec<usize> = (0..m).filter(|&i| in_lu(i, &j, &slid)).collect();
+    state.clear();
+    state.resize(m, State::Active);
+    for _ in 0..OUTER {
+        lu_pass(bodies, rows, &mut j, &lu, h, state)?;
+        for _ in 0..SWEEPS {
+            sweep(bodies, rows, &pair_inv, &mut j)?;
+        }
+        for &i in &lu {
+            if let Kind::Tangent {
+                normal,
+                other,
+                mu,
+                base,
+            } = rows[i].kind
+            {
+                let limit = mu * (j[normal] - base).max(0.0);
+                if Vector2::new(j[i], j[other]).norm() >= limit * (1.0 - 1e-6) {
+                    slid[i] = true;
                 }
             }
         }
-        let x = a.lu().solve(&b)?;
-        if !x.iter().all(|v| v.is_finite()) {
-            return None;
-        }
-        j.copy_from_slice(x.as_slice());
-        if std::env::var("SG_DEBUG").is_ok() {
-            eprintln!("   pass j {:?}", j.iter().map(|x| format!("{x:.3e}")).collect::<Vec<_>>());
-            eprintln!("   state {:?}", state);
-        }
-        if !update(rows, &v0, &w, &j, h, state) {
-            break;
-        }
+        lu.clear();
+        lu.extend((0..m).filter(|&i| in_lu(i, &j, &slid)));
     }
     Some(j)
 }
 
-/// Updates the active set from the impulses `j`; returns whether it changed.
-fn update(
+/// One sweep of the friction pairs and torsions (see [`solve_scalars`]).
+fn sweep(
+    bodies: &mut [BodyState],
     rows: &[Scalar],
-    v0: &[f64],
-    w: &DMatrix<f64>,
-    j: &[f64],
-    h: f64,
-    state: &mut [State],
-) -> bool {
-    let m = rows.len();
-    let v_end = |i: usize| v0[i] + (0..m).map(|k| w[(i, k)] * j[k]).sum::<f64>();
-    let mut changed = false;
-    for i in 0..m {
+    pair_inv: &[Option<Matrix2<f64>>],
+    j: &mut [f64],
+) -> Option<()> {
+    for i in 0..rows.len() {
         match rows[i].kind {
-            Kind::SoftNormal { force, d } => match state[i] {
-                State::Active if j[i] < 0.0 => {
-                    state[i] = State::Fixed(0.0);
-                    changed = true;
+            Kind::Tangent {
+                normal,
+                other,
+                mu,
+                base,
+            } if other > i => {
+                let Some(k_inv) = pair_inv[i] else { continue };
+                let (x, y) = (&rows[i], &rows[other]);
+                let err =
+                    Vector2::new(x.velocity(bodies) - x.target, y.velocity(bodies) - y.target);
+                let old = Vector2::new(j[i], j[other]);
+                let mut new = old - k_inv * err;
+                let limit = mu * (j[normal] - base).max(0.0);
+                if new.norm() > limit {
+                    new *= limit / new.norm();
                 }
-                State::Fixed(_) => {
-                    let rhs = h * (force - d * v0[i]);
-                    let resid = rhs - h * d * (v_end(i) - v0[i]);
-                    if resid > 1e-12 * rhs.abs().max(1e-300) && resid > 0.0 {
-                        state[i] = State::Active;
-                        changed = true;
-                    }
+                if !(new.x.is_finite() && new.y.is_finite()) {
+                    return None;
                 }
-                _ => {}
-            },
-            Kind::HardNormal => match state[i] {
-                State::Active if j[i] < 0.0 => {
-                    state[i] = State::Fixed(0.0);
-                    changed = true;
-                }
-                State::Fixed(_) => {
-                    let v = v_end(i);
-                    if v < -1e-9 * v0[i].abs().max(1e-9) {
-                        state[i] = State::Active;
-                        changed = true;
-                    }
-                }
-                _ => {}
-            },
-            Kind::Tangent { normal, other, mu } => {
-                if other < i {
-                    continue; // the pair is handled at its first tangent
-                }
-                let limit = mu * j[normal].max(0.0);
-                let jt = Vector2::new(j[i], j[other]);
-                let fixed = match (state[i], state[other]) {
-                    (State::Fixed(x), State::Fixed(y)) => Some(Vector2::new(x, y)),
-                    _ => None,
-                };
-                let new = match fixed {
-                    None if jt.norm() > limit * (1.0 + 1e-9) => {
-                        // Sticking past the disk: slides along its trial impulse.
-                        Some(if jt.norm() > 0.0 {
-                            jt * (limit / jt.norm())
-                        } else {
-                            Vector2::zeros()
-                        })
-                    }
-                    None => None,
-                    Some(old) => {
-                        // Sliding along the direction it started to slide in, on the disk;
-                        // back to sticking where the friction would drive the sliding
-                        // instead of opposing it.
-                        let vs = Vector2::new(
-                            v_end(i) - rows[i].target,
-                            v_end(other) - rows[other].target,
-                        );
-                        if vs.dot(&old) > 0.0 || limit == 0.0 {
-                            Some(Vector2::new(f64::NAN, f64::NAN))
-                        } else {
-                            let new = old * (limit / old.norm());
-                            ((new - old).norm() > 1e-9 * limit).then_some(new)
-                        }
-                    }
-                };
-                if limit == 0.0 {
-                    // No normal impulse: no friction.
-                    if fixed != Some(Vector2::zeros()) {
-                        state[i] = State::Fixed(0.0);
-                        state[other] = State::Fixed(0.0);
-                        changed = true;
-                    }
-                } else if fixed == Some(Vector2::zeros()) || new.is_some_and(|v| v.x.is_nan()) {
-                    // Released (its normal was inactive), or sliding the wrong way: sticking.
-                    state[i] = State::Active;
-                    state[other] = State::Active;
-                    changed = true;
-                } else if let Some(v) = new {
-                    state[i] = State::Fixed(v.x);
-                    state[other] = State::Fixed(v.y);
-                    changed = true;
-                }
+                x.apply(bodies, new.x - old.x);
+                y.apply(bodies, new.y - old.y);
+                j[i] = new.x;
+                j[other] = new.y;
             }
             Kind::Torsion { normal, arm } => {
-                let limit = arm * j[normal].max(0.0);
-                match state[i] {
-                    State::Active if j[i].abs() > limit * (1.0 + 1e-9) => {
-                        state[i] = State::Fixed(j[i].clamp(-limit, limit));
-                        changed = true;
-                    }
-                    State::Fixed(old) if limit == 0.0 => {
-                        if old != 0.0 {
-                            state[i] = State::Fixed(0.0);
-                            changed = true;
-                        }
-                    }
-                    State::Fixed(old) if old == 0.0 || v_end(i) * old > 0.0 => {
-                        // Released, or twisting the wrong way: sticking.
-                        state[i] = State::Active;
-                        changed = true;
-                    }
-                    State::Fixed(old) => {
-                        let new = old.signum() * limit;
-                        if (new - old).abs() > 1e-9 * limit {
-                            state[i] = State::Fixed(new);
-                            changed = true;
-                        }
-                    }
-                    _ => {}
+                let r = &rows[i];
+                let kt = mobility(bodies, r, r) * (1.0 + r.compliance);
+                if !(kt > 0.0) {
+                    continue;
                 }
+                let limit = arm * j[normal].max(0.0);
+                let new = (j[i] - r.velocity(bodies) / kt).clamp(-limit, limit);
+                if !new.is_finite() {
+                    return None;
+                }
+                r.apply(bodies, new - j[i]);
+                j[i] = new;
+            }
+            _ => {}
+        }
+    }
+    Some(())
+}
+
+/// The normal row a row's friction belongs to (itself for a normal).
+fn normal_of(rows: &[Scalar], i: usize) -> usize {
+    match rows[i].kind {
+        Kind::Tangent { normal, .. } | Kind::Torsion { normal, .. } => normal,
+        _ => i,
+    }
+}
+
+/// The LU of the rows `lu` given the impulses `j` of the others, on the normals' active set
+/// (`state`, kept from pass to pass): a soft normal `(I + h D W) j = h (F - D v0)`, a hard
+/// normal `W j = -v0` and a sticking friction row `W j = target - v0`, each hard row with
+/// [`RIGID_COMPLIANCE`] of its own mobility on its diagonal; a friction row of an inactive
+/// normal has no impulse. Writes `j` and applies it to `bodies`.
+fn lu_pass(
+    bodies: &mut [BodyState],
+    rows: &[Scalar],
+    j: &mut [f64],
+    lu: &[usize],
+    h: f64,
+    state: &mut [State],
+) -> Option<()> {
+    let n = lu.len();
+    for &i in lu {
+        rows[i].apply(bodies, -j[i]);
+    }
+    let v0: Vec<f64> = lu.iter().map(|&i| rows[i].velocity(bodies)).collect();
+    let w = DMatrix::from_fn(n, n, |r, c| mobility(bodies, &rows[lu[r]], &rows[lu[c]]));
+    // Position in `lu` of each row's normal (usize::MAX: not in it).
+    let mut pos = vec![usize::MAX; rows.len()];
+    for (r, &i) in lu.iter().enumerate() {
+        pos[i] = r;
+    }
+    let (mut a, mut b) = (DMatrix::<f64>::zeros(n, n), DVector::<f64>::zeros(n));
+    for (r, &i) in lu.iter().enumerate() {
+        match rows[i].kind {
+            Kind::SoftNormal { force, d } => {
+                for c in 0..n {
+                    a[(r, c)] = h * d * w[(r, c)];
+                }
+                a[(r, r)] += 1.0;
+                b[r] = h * (force - d * v0[r]);
+            }
+            _ if w[(r, r)] == 0.0 => {}
+            _ => {
+                for c in 0..n {
+                    a[(r, c)] = w[(r, c)];
+                }
+                a[(r, r)] += rows[i].compliance * w[(r, r)];
+                b[r] = rows[i].target - v0[r];
             }
         }
     }
-    changed
+    let mut x = vec![0.0; n];
+    for _ in 0..(2 * n + 2) {
+        // A row acts if it is an active normal (a hard one with some mobility), or the
+        // friction of one (with some mobility; the normals are all in the LU).
+        let acts = |r: usize| {
+            let i = lu[r];
+            let soft = matches!(rows[i].kind, Kind::SoftNormal { .. });
+            (soft || w[(r, r)] != 0.0) && state[normal_of(rows, i)] == State::Active
+        };
+        let idx: Vec<usize> = (0..n).filter(|&r| acts(r)).collect();
+        x.iter_mut().for_each(|v| *v = 0.0);
+        if !idx.is_empty() {
+            let sub = DMatrix::from_fn(idx.len(), idx.len(), |p, q| a[(idx[p], idx[q])]);
+            let rhs = DVector::from_fn(idx.len(), |p, _| b[idx[p]]);
+            let sol = sub.lu().solve(&rhs)?;
+            for (p, &r) in idx.iter().enumerate() {
+                x[r] = sol[p];
+            }
+        }
+        let mut changed = false;
+        for r in 0..n {
+            let i = lu[r];
+            if !matches!(rows[i].kind, Kind::SoftNormal { .. } | Kind::HardNormal) {
+                continue;
+            }
+            if state[i] == State::Active && x[r] < 0.0 {
+                state[i] = State::Fixed(0.0);
+                changed = true;
+            } else if state[i] != State::Active && w[(r, r)] != 0.0 {
+                let resid = b[r] - (0..n).map(|c| a[(r, c)] * x[c]).sum::<f64>();
+                if resid > 1e-12 * b[r].abs().max(1e-300) && resid > 0.0 {
+                    state[i] = State::Active;
+                    changed = true;
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    if !x.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    for (r, &i) in lu.iter().enumerate() {
+        j[i] = x[r];
+        rows[i].apply(bodies, j[i]);
+    }
+    Some(())
 }
 
 /// Solves a coupled group: soft rows `soft` and the rigid rows `rigid` of their bodies, from
@@ -516,28 +565,26 @@ pub(crate) fn solve_coupled(
     let mut first = Vec::with_capacity(soft.len());
     let CoupledScratch { scalars, state } = scratch;
     // rapier's part: the rigid rows alone.
-    build(bodies, &[], rigid, h, scalars, &mut first);
+    let base: Vec<BodyState> = bodies.to_vec();
+    build(bodies, &[], rigid, &[], h, scalars, &mut first);
     let Some(rest) = solve_scalars(bodies, scalars, h, state) else {
+        bodies.copy_from_slice(&base);
         return false;
     };
+    bodies.copy_from_slice(&base);
+    // rapier's normal impulse of each rigid row (its friction goes with it: see `Kind::Tangent`).
+    let mut rest_n = Vec::with_capacity(rigid.len());
+    let mut k = 0;
+    for r in rigid.iter() {
+        rest_n.push(rest[k].max(0.0));
+        k += if r.mu > 0.0 { 3 } else { 1 };
+    }
     // Everything.
-    build(bodies, soft, rigid, h, scalars, &mut first);
+    build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
     let Some(j) = solve_scalars(bodies, scalars, h, state) else {
+        bodies.copy_from_slice(&base);
         return false;
     };
-    if std::env::var("SG_DEBUG").is_ok() {
-        eprintln!("coupled: {} soft, {} rigid", soft.len(), rigid.len());
-        for (i, (s, x)) in scalars.iter().zip(&j).enumerate() {
-            eprintln!("  {i} {:?} j {x:.3e} state {:?} target {:.3e} p {:?}", s.kind, state[i], s.target, s.lin);
-        }
-        eprintln!("  rest {rest:?}");
-        for r in rigid.iter() {
-            eprintln!("  rigid p {:?} n {:?} mu {}", r.p, r.n, r.mu);
-        }
-    }
-    for (s, x) in scalars.iter().zip(&j) {
-        s.apply(bodies, *x);
-    }
     for (k, r) in soft.iter_mut().enumerate() {
         let i = first[k];
         r.jn = j[i].max(0.0);
@@ -546,7 +593,7 @@ pub(crate) fn solve_coupled(
         r.sliding = false;
         if r.mu > 0.0 {
             r.jt = r.t1 * j[i + 1] + r.t2 * j[i + 2];
-            r.sliding = matches!(state[i + 1], State::Fixed(_)) && r.jn > 0.0;
+            r.sliding = r.jn > 0.0 && r.jt.norm() >= r.mu * r.jn * (1.0 - 1e-9);
             if r.torsion_arm > 0.0 {
                 r.jtw = j[i + 3];
             }
@@ -568,7 +615,9 @@ pub(crate) fn solve_coupled(
         i += 1;
         k += 1;
         if r.mu > 0.0 {
-            r.jt = r.t1 * (j[i] - s * rest[k]) + r.t2 * (j[i + 1] - s * rest[k + 1]);
+            // The friction the soft contacts add (the disk of `j - rest`): rapier makes the
+            // friction of its own part.
+            r.jt = r.t1 * j[i] + r.t2 * j[i + 1];
             i += 2;
             k += 2;
         }
