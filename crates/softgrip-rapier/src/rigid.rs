@@ -322,13 +322,11 @@ fn build(
 /// Solves the scalar rows from the body velocities `bodies` (left at the velocities after the
 /// impulses), returning their impulses (`None` if not finite).
 ///
-/// Block Gauss-Seidel, [`OUTER`] times: a dense LU of the normals (soft and hard) and of the
-/// friction rows that stick, on the normals' active set, the sliding friction rows held at
-/// their impulses; then [`SWEEPS`] sweeps of the friction pairs and torsions, each in closed
-/// form on its own mobility and clamped to its disk or limit. The sweeps decide which rows
-/// slide; the LU makes the rows that compete for one degree of freedom (the table's normal and
-/// a lifting fingertip's friction, the table's normal and a pressing fingertip's normal)
-/// agree at once, which alternating sweeps would take tens of iterations to do.
+/// Block Gauss-Seidel, [`OUTER`] times: a dense LU of the normals (soft and hard, on their
+/// active set) and of the rigid friction pairs that stick and carry mostly soft load, the
+/// other rows held at their impulses; then [`SWEEPS`] sweeps of the friction pairs and
+/// torsions, each in closed form on its own mobility and clamped to its disk or limit. The
+/// fingertips' friction stays in the sweeps (its targets carry a kinematic tip's noise).
 fn solve_scalars(
     bodies: &mut [BodyState],
     rows: &[Scalar],
