@@ -9,6 +9,7 @@ use rapier3d::prelude::{Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vect
 
 use crate::counters::SoftCounters;
 use crate::detect::{to_f32, to_f64};
+use crate::rigid::RigidRow;
 use crate::solve::{BodyState, Row};
 
 /// Velocity of a kinematic body over the coming (sub)step: (linear [m/s], angular [rad/s]).
@@ -175,21 +176,27 @@ pub(crate) fn apply_impulses(
     table: &[BodyState],
     handles: &[RigidBodyHandle],
     rows: &[Row],
+    rigid: &[RigidRow],
     counters: &mut SoftCounters,
     net: &mut Vec<(Vector3<f64>, Vector3<f64>)>,
 ) {
     net.clear();
     net.resize(table.len(), (Vector3::zeros(), Vector3::zeros()));
-    for row in rows {
-        let imp = row.n * row.jn + row.jt;
-        if !(imp.iter().all(|v| v.is_finite()) && row.jtw.is_finite()) {
+    let soft = rows
+        .iter()
+        .map(|r| (r.a, r.b, r.p, r.n * r.jn + r.jt, r.n * r.jtw));
+    // rapier's rigid contacts: the soft contacts' part of their impulses (`rigid`).
+    let rigid = rigid
+        .iter()
+        .map(|r| (Some(r.a), r.b, r.p, r.n * r.jn + r.jt, Vector3::zeros()));
+    for (a, b, p, imp, torque) in soft.chain(rigid) {
+        if !(imp.iter().chain(torque.iter()).all(|v| v.is_finite())) {
             counters.non_finite += 1;
             continue;
         }
-        let torque = row.n * row.jtw;
-        for (body, sign) in [(row.a, 1.0), (row.b, -1.0)] {
+        for (body, sign) in [(a, 1.0), (b, -1.0)] {
             let Some(bi) = body else { continue };
-            let arm = row.p - table[bi].com;
+            let arm = p - table[bi].com;
             net[bi].0 += imp * sign;
             net[bi].1 += (arm.cross(&imp) + torque) * sign;
         }

@@ -6,6 +6,7 @@ use std::sync::Arc;
 use nalgebra::Vector3;
 use rapier3d::prelude::{
     ActiveCollisionTypes, ActiveHooks, ColliderHandle, InteractionGroups, PhysicsWorld,
+    RigidBodyHandle,
 };
 
 use crate::bodies::BodyTable;
@@ -14,6 +15,7 @@ use crate::detect::{Geom, Model, raw};
 use crate::error::{Error, Result};
 use crate::fingertip::SoftFingertip;
 use crate::readout::{Accums, TipContact};
+use crate::rigid::RigidRow;
 use crate::solve::{Row, SolveScratch};
 use crate::substep::SoftAccuracy;
 use crate::taxels::TactileImage;
@@ -35,6 +37,13 @@ pub(crate) struct Scratch {
     pub body_table: BodyTable,
     /// The contacts prepared for the solve.
     pub rows: Vec<Row>,
+    /// rapier's touching rigid contacts of the bodies the soft contacts move (`rigid`).
+    pub rigid: Vec<RigidRow>,
+    /// The bodies visited while gathering `rigid`, and the collider pairs already taken.
+    pub rigid_visit: (
+        Vec<RigidBodyHandle>,
+        HashSet<(ColliderHandle, ColliderHandle)>,
+    ),
     /// The law and coefficients of each row.
     pub models: Vec<Arc<Model>>,
     /// Index into `SoftContacts::geoms` of each row.

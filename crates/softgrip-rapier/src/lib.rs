@@ -11,6 +11,7 @@ mod fingertip;
 mod hooks;
 mod presets;
 mod readout;
+mod rigid;
 mod series;
 mod solve;
 mod step;

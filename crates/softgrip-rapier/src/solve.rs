@@ -28,6 +28,8 @@
 
 use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, Vector2, Vector3};
 
+use crate::rigid::{self, CoupledScratch, RigidRow};
+
 /// Velocity state and inverse mass of one body as the solver sees it.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct BodyState {
@@ -378,6 +380,12 @@ pub(crate) struct SolveScratch {
     base: Vec<BodyState>,
     /// The rows of a coupled group, gathered contiguously.
     group_rows: Vec<Row>,
+    /// Group id of each rigid row (`usize::MAX`: its bodies have no soft contact).
+    rigid_group: Vec<usize>,
+    /// The rigid rows of one group, gathered contiguously.
+    group_rigid: Vec<RigidRow>,
+    /// The coupled solve's buffers (`rigid`).
+    coupled: CoupledScratch,
 }
 
 fn find(parent: &mut [usize], mut i: usize) -> usize {
@@ -409,6 +417,7 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 pub(crate) fn solve(
     bodies: &mut [BodyState],
     rows: &mut [Row],
+    rigid: &mut [RigidRow],
     h: f64,
     scratch: &mut SolveScratch,
 ) -> u64 {
@@ -422,12 +431,19 @@ pub(crate) fn solve(
         starts,
         base,
         group_rows,
+        rigid_group,
+        group_rigid,
+        coupled,
     } = scratch;
     parent.clear();
     parent.extend(0..nb);
     let dynamic = |i: Option<usize>| i.filter(|&i| bodies[i].is_dynamic());
-    for r in rows.iter() {
-        if let (Some(a), Some(b)) = (dynamic(r.a), dynamic(r.b)) {
+    let links = rows
+        .iter()
+        .map(|r| (r.a, r.b))
+        .chain(rigid.iter().map(|r| (Some(r.a), r.b)));
+    for (a, b) in links {
+        if let (Some(a), Some(b)) = (dynamic(a), dynamic(b)) {
             let (ra, rb) = (find(parent, a), find(parent, b));
             if ra != rb {
                 parent[ra.max(rb)] = ra.min(rb);
@@ -457,6 +473,18 @@ pub(crate) fn solve(
         };
         group.push(g);
     }
+    // A rigid row joins the group of its dynamic body, if a soft contact moves that body
+    // (directly or through other rigid rows).
+    rigid_group.clear();
+    for r in rigid.iter_mut() {
+        r.jn = 0.0;
+        r.jt = Vector3::zeros();
+        let g = dynamic(Some(r.a))
+            .or(dynamic(r.b))
+            .map(|b| root_group[find(parent, b)])
+            .unwrap_or(usize::MAX);
+        rigid_group.push(g);
+    }
     // Counting sort of the rows by group (stable).
     starts.clear();
     starts.resize(groups + 1, 0);
@@ -481,7 +509,41 @@ pub(crate) fn solve(
     let mut failed = 0;
     for g in 0..groups {
         let members = &order[starts[g]..starts[g + 1]];
-        let ok = if let [i] = members {
+        let ok = if rigid_group.contains(&g) {
+            // On rapier's rigid contacts: the coupled solve (`rigid`).
+            group_rows.clear();
+            group_rows.extend(members.iter().map(|&i| rows[i].clone()));
+            group_rigid.clear();
+            group_rigid.extend(
+                rigid
+                    .iter()
+                    .zip(rigid_group.iter())
+                    .filter(|(_, rg)| **rg == g)
+                    .map(|(r, _)| r.clone()),
+            );
+            let ok = rigid::solve_coupled(bodies, group_rows, group_rigid, h, coupled);
+            if ok {
+                for (&i, r) in members.iter().zip(group_rows.iter()) {
+                    rows[i] = r.clone();
+                }
+                let mut k = 0;
+                for (r, rg) in rigid.iter_mut().zip(rigid_group.iter()) {
+                    if *rg == g {
+                        *r = group_rigid[k].clone();
+                        k += 1;
+                    }
+                }
+            } else {
+                for &i in members {
+                    let r = &mut rows[i];
+                    r.jn = 0.0;
+                    r.jt = Vector3::zeros();
+                    r.jtw = 0.0;
+                    r.vn_end = normal_velocity(bodies, r);
+                }
+            }
+            ok
+        } else if let [i] = members {
             solve_group(bodies, base, std::slice::from_mut(&mut rows[*i]), h, n)
         } else {
             group_rows.clear();

@@ -26,6 +26,7 @@ use crate::contacts::{PairState, Scratch, SoftContacts};
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance, to_f32, to_f64};
 use crate::hooks::{SoftEvents, SoftHooks};
 use crate::readout;
+use crate::rigid::RigidRow;
 use crate::solve::{self, Row};
 use crate::substep::{self, theta_blend};
 
@@ -296,6 +297,96 @@ impl Step<'_> {
             s.mobility.push(w);
         }
         self.soft.geoms = geoms;
+        self.prepare_rigid(h_drift, kin_vel, s);
+    }
+
+    /// rapier's touching rigid contacts of every dynamic body a soft contact moves, and of the
+    /// dynamic bodies those touch in turn (a box on a box on the table), as rows of the
+    /// coupled solve (`rigid`, which says why), at most [`MAX_RIGID_ROWS`] of them (past it,
+    /// the remaining bodies are seen as free). Pairs with a fingertip are left out (they are
+    /// the plugin's, or, behind a backed pad's face, rapier's own with the pad), and so are
+    /// manifolds without solver contacts (a pair the user's hooks keep out of rapier's solver)
+    /// and points farther apart than rapier's allowed linear error. Joints are not rows: a
+    /// jointed body is seen as free.
+    fn prepare_rigid(&mut self, h_drift: f64, kin_vel: &KinematicVelocity, s: &mut Scratch) {
+        s.rigid.clear();
+        if s.rows.is_empty() {
+            return;
+        }
+        let (queue, pairs) = &mut s.rigid_visit;
+        queue.clear();
+        pairs.clear();
+        let tb = &mut s.body_table;
+        // The dynamic bodies of the touching soft contacts (one that does not touch has no
+        // impulse).
+        for (row, &gi) in s.rows.iter().zip(&s.geom) {
+            if !(compression_from_signed_distance(self.soft.geoms[gi].dist) > 0.0) {
+                continue;
+            }
+            for i in [row.a, row.b].into_iter().flatten() {
+                let handle = tb.handles[i];
+                if tb.table[i].inv_m != Vector3::zeros() && !queue.contains(&handle) {
+                    queue.push(handle);
+                }
+            }
+        }
+        let w = &*self.physics;
+        let slop = w.integration_parameters.allowed_linear_error() as f64;
+        let mut next = 0;
+        while next < queue.len() && s.rigid.len() < MAX_RIGID_ROWS {
+            let body = queue[next];
+            next += 1;
+            let Some(rb) = w.bodies.get(body) else {
+                continue;
+            };
+            for &ch in rb.colliders() {
+                for pair in w.narrow_phase.contact_pairs_with(ch) {
+                    let (c1, c2) = (pair.collider1, pair.collider2);
+                    if self.soft.tips.contains_key(&c1)
+                        || self.soft.tips.contains_key(&c2)
+                        || !pair.has_any_active_contact()
+                        || !pairs.insert((c1, c2))
+                    {
+                        continue;
+                    }
+                    let (Some(co1), Some(co2)) = (w.colliders.get(c1), w.colliders.get(c2)) else {
+                        continue;
+                    };
+                    // This body's side: the row's normal points from the other side to it
+                    // (rapier's manifold normal points from collider 1 to collider 2).
+                    let (sign, other) = if c1 == ch { (-1.0, co2) } else { (1.0, co1) };
+                    let Some(a) = body_index(&w.bodies, body, h_drift, w.gravity, kin_vel, tb)
+                    else {
+                        continue;
+                    };
+                    let b = other.parent().and_then(|ob| {
+                        let i = body_index(&w.bodies, ob, h_drift, w.gravity, kin_vel, tb)?;
+                        if tb.table[i].inv_m != Vector3::zeros() && !queue.contains(&ob) {
+                            queue.push(ob);
+                        }
+                        Some(i)
+                    });
+                    for m in pair.manifolds() {
+                        if m.data.solver_contacts.is_empty() {
+                            continue;
+                        }
+                        let n = to_f64(m.data.normal) * sign;
+                        let mu = m.data.friction as f64;
+                        for pt in &m.points {
+                            if !(pt.dist as f64 <= slop) || s.rigid.len() >= MAX_RIGID_ROWS {
+                                continue;
+                            }
+                            let p1 = to_f64(co1.position().transform_point(pt.local_p1));
+                            let p2 = to_f64(co2.position().transform_point(pt.local_p2));
+                            let p = 0.5 * (p1 + p2);
+                            if p.iter().chain(n.iter()).all(|v| v.is_finite()) && mu >= 0.0 {
+                                s.rigid.push(RigidRow::new(a, b, p, n, mu));
+                            }
+                        }
+                    }
+                }
+            }
+        }
     }
 
     /// The law's response of the prepared rows over a (sub)step of `h` seconds, and the
@@ -390,7 +481,13 @@ impl Step<'_> {
         s.accums.begin_substep();
 
         if !s.rows.is_empty() {
-            let failed = solve::solve(&mut s.body_table.table, &mut s.rows, h, &mut s.solve);
+            let failed = solve::solve(
+                &mut s.body_table.table,
+                &mut s.rows,
+                &mut s.rigid,
+                h,
+                &mut s.solve,
+            );
             self.soft.counters.non_finite += failed;
         }
         bodies::apply_impulses(
@@ -398,6 +495,7 @@ impl Step<'_> {
             &s.body_table.table,
             &s.body_table.handles,
             &s.rows,
+            &s.rigid,
             &mut self.soft.counters,
             &mut s.net,
         );
@@ -450,6 +548,10 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         friction_mobility: None,
     }
 }
+
+/// The most rigid contact points one (sub)step gathers (`Step::prepare_rigid`): a few boxes in
+/// a stack, four corners each.
+const MAX_RIGID_ROWS: usize = 32;
 
 /// The component of `d` along the unit normal `n`.
 #[inline]

@@ -59,15 +59,13 @@ fn box_held_10_s_slips_less_than_1_mm() {
         "grasp 5 N: slip {:.3e} m (hold only {:.3e} m), lifted {:.4} m, grip {:.4} N, turn {:.3} deg",
         o.slip, o.slip_hold_max, o.lifted, o.grip_force, o.turn_deg
     );
-    // The READMEs state "slip 62 um (all during the lift's acceleration), 0 m during the hold;
-    // grip 5.000 N". A factor 2 either way on the slip (it was asserted < 1 mm, which a 10x
-    // regression passed), 1 um on the hold (f32 poses near 0.1 m are ~1e-8 m apart), 0.5 % on
-    // the grip.
-    assert!(
-        (31e-6..=124e-6).contains(&o.slip),
-        "slip {} m, README: 62 um",
-        o.slip
-    );
+    // The READMEs state "slip 0.5 um, 0 m during the hold; grip 5.000 N". The friction limit
+    // (3 N) is well above the lift's need (m (g + a) = 2.08 N): static friction holds. The
+    // 62 um the plugin used to read came from the first steps of the lift, the box still on
+    // the ground, which the plugin's solve did not see (it predicted a free box falling under
+    // gravity; `src/rigid.rs`). Below 5 um (a return of the 62 um fails it), 1 um on the hold
+    // (f32 poses near 0.1 m are ~1e-8 m apart), 0.5 % on the grip.
+    assert!(o.slip.abs() < 5e-6, "slip {} m, README: 0.5 um", o.slip);
     assert!(
         o.slip_hold_max < 1e-6,
         "hold slip {} m, README: 0",
@@ -94,16 +92,17 @@ fn off_centre_load_turns_less_than_2_degrees_thanks_to_torsion() {
         "off-centre load: turn {:.3} deg with torsion, {:.2} deg without; slip {:.3e} m",
         with.turn_deg, without.turn_deg, with.slip
     );
-    // The READMEs state 0.095 deg with torsion and 136 deg without: a factor 2 on the first
-    // (was < 2 deg), +-25 % on the second (was > 10 deg).
+    // The READMEs state 0.042 deg with torsion and 149 deg without (0.095 and 136 before the
+    // ground was in the solve, `src/rigid.rs`): < 0.19 deg on the first (was < 2 deg), 100-170
+    // deg on the second (was > 10 deg).
     assert!(
         with.turn_deg < 0.19,
-        "turn {} deg, README: 0.095",
+        "turn {} deg, README: 0.042",
         with.turn_deg
     );
     assert!(
         (100.0..=170.0).contains(&without.turn_deg),
-        "turn {} deg without torsion, README: 136",
+        "turn {} deg without torsion, README: 149",
         without.turn_deg
     );
     assert!(with.slip.abs() < 1e-3);
@@ -143,8 +142,8 @@ fn flat_pads_hold_the_box_and_resist_twist() {
         "flat pads, grasp 5 N: slip {:.3e} m (hold only {:.3e} m), lifted {:.4} m, grip {:.4} N; off-centre load: turn {:.3} deg",
         o.slip, o.slip_hold_max, o.lifted, o.grip_force, twist.turn_deg
     );
-    // The free pads' figures (above): slip 62 um, 0 in the hold, grip 5.000 N, 0.095 deg.
-    assert!((0.0..=124e-6).contains(&o.slip), "slip {} m", o.slip);
+    // The free pads' figures (above): slip 0.5 um, 0 in the hold, grip 5.000 N, 0.04 deg.
+    assert!(o.slip.abs() < 5e-6, "slip {} m", o.slip);
     assert!(o.slip_hold_max < 1e-6, "hold slip {} m", o.slip_hold_max);
     assert!((o.lifted - 0.1).abs() < 2e-3);
     assert!((o.grip_force / 5.0 - 1.0).abs() < 0.005);

@@ -53,21 +53,20 @@ fn one_kg_box_squeezed_and_lifted_at_30_hz_stays_bounded() {
         g.object_y() - g.half,
         g.world.soft.counters().substeps_total
     );
-    // The README states 3.4e-5 J, 0.18 rad/s, 20.1 N and a slip of 0.39 mm (asserted below
-    // 1e-4 J, 0.3 rad/s, 30 N and 1 mm): a factor 2 on the energy and the slip, 10 % on the
-    // force.
+    // The README states 1.5e-5 J, 0.044 rad/s, 20.1 N and a slip of 0.3 um: a factor 2 to 5
+    // on the energy, 10 % on the force. The slip was 0.39 mm (and 3.4e-5 J, 0.18 rad/s) while
+    // the plugin's solve did not see the ground under the box at the start of the lift
+    // (`src/rigid.rs`); the friction limit, 32 N, is far above the lift's 10.4 N.
     assert!(
         ke_max < 7e-5,
-        "relative kinetic energy {ke_max} J, README: 3.4e-5"
+        "relative kinetic energy {ke_max} J, README: 1.5e-5"
     );
-    // 0.18 rad/s, during the lift's acceleration: the box rocks in the grip. Before the
+    // 0.044 rad/s (0.18 rad/s before the ground was in the solve, during the lift's
+    // acceleration: the box rocked in the grip). Before the
     // velocity-independent Hunt-Crossley alpha (e at 1 m/s), the slow grip contacts got
     // chi = zeta / (R * 1/s), 100x today's damping, and the peak was 0.05 rad/s.
-    assert!(w_max < 0.3);
+    assert!(w_max < 0.1, "max spin {w_max} rad/s, README: 0.044");
     assert!(f_max < 22.0, "max force {f_max} N, README: 20.1"); // 20 N grip plus the lift's share, no spikes
-    assert!(
-        (0.2e-3..=0.8e-3).contains(&slip.abs()),
-        "slip {slip} m, README: 0.39 mm"
-    );
+    assert!(slip.abs() < 1e-5, "slip {slip} m, README: 0.3 um");
     assert!((g.object_y() - g.half - 0.1).abs() < 2e-3);
 }

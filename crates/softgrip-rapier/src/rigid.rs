@@ -1,0 +1,628 @@
+//! The soft contacts of a body that rests on rapier's rigid contacts (a box on a table pressed
+//! by a fingertip): one coupled solve of the soft rows and of rapier's touching contacts of the
+//! bodies they move (`Step::prepare_rigid`), normal and friction.
+//!
+//! **Why.** The soft impulse over a step is implicit in the bodies' end velocity, `j = h [F -
+//! D v(end)]`, and `v(end)` depends on the bodies' mobility. A box on the table, pressed down
+//! by a fingertip, cannot move down. Seen as free, it falls away under gravity within the
+//! step, the predicted separation outweighs the law's force and the impulse is zero: the tip
+//! sank through the box with no force at all (`tests/press_on_table.rs`). With rapier's
+//! touching contacts in the solve as rows, the soft impulses see the constrained mobility and
+//! carry the law's force.
+//!
+//! **The rows.** Every scalar unknown is a row with a Jacobian on (at most) two bodies:
+//! - a soft contact's normal, `j + h D (W j) = h (F - D v0)` (as in `solve`), its two
+//!   tangential impulses and its torsion, which target what `solve`'s friction sweep targets
+//!   (zero relative tangential velocity plus the anchor correction, zero relative spin), in
+//!   the disk `mu j_n` and the torsion limit, with [`SOFT_FRICTION_COMPLIANCE`] of their own
+//!   mobility (see there);
+//! - a rigid contact's normal, `v(end) >= 0`, and its two tangential impulses, `v_t(end) = 0`,
+//!   hard ([`RIGID_COMPLIANCE`]: the four corners of a box on a table are twelve rows for six
+//!   degrees of freedom; it picks the least-impulse distribution). They all target `v(end) =
+//!   0`, not the point's sub-tolerance gap: redundant rows are consistent only if they ask for
+//!   one rigid motion.
+//!
+//! **The solve** (`solve_scalars`): block Gauss-Seidel, [`OUTER`] times: a dense LU of the
+//! normals (on their active set) and of the rigid friction pairs that stick and whose normal
+//! load comes mostly from the soft contacts, then [`SWEEPS`] sweeps of the friction pairs and
+//! torsions, each in closed form on its own mobility and clamped. Rows that compete for one
+//! degree of freedom (the table's normal and a pressing fingertip's normal; a wall's friction
+//! and a fingertip's) are solved together by the LU, which alternating sweeps would take tens
+//! of iterations to do. A rigid pair that slides leaves the LU for good (the set must not
+//! cycle: it did, and a squeezed box on the ground rang at 2.5 cm/s).
+//!
+//! **Who applies what.** The rigid rows' normal impulses without any soft contact (the
+//! bodies' weight on the table, `rest`, scaled down to the row's impulse with the soft
+//! contacts: a box lifted off the table gets none) are rapier's: its own solver makes them and
+//! their friction (the rigid friction rows' disk is `mu (j_n - rest)`). The part the soft
+//! contacts add is applied by the plugin with the soft impulses: left to rapier, a kick of `h
+//! F / m` (6 m/s for a 16 g box under 6 N at 60 Hz) is only partly cancelled per solver pass by
+//! rapier's soft contact constraint, and the box sank into the table and was thrown out.
+
+use nalgebra::{DMatrix, DVector, Matrix2, Vector2, Vector3};
+
+use crate::solve::{BodyState, Row};
+
+/// One of rapier's touching contact points between a dynamic body `a` that the soft contacts
+/// move (directly or through other rigid contacts) and another body `b` (`None`: fixed).
+#[derive(Debug, Clone)]
+pub(crate) struct RigidRow {
+    pub a: usize,
+    pub b: Option<usize>,
+    /// Contact point (world) \[m\].
+    pub p: Vector3<f64>,
+    /// Unit normal, b -> a.
+    pub n: Vector3<f64>,
+    /// Tangent basis.
+    pub t1: Vector3<f64>,
+    /// Tangent basis.
+    pub t2: Vector3<f64>,
+    /// rapier's friction coefficient of the manifold.
+    pub mu: f64,
+    /// The normal impulse the plugin applies (the soft contacts' part) \[N s\].
+    pub jn: f64,
+    /// The tangential impulse the plugin applies \[N s\].
+    pub jt: Vector3<f64>,
+}
+
+impl RigidRow {
+    pub(crate) fn new(
+        a: usize,
+        b: Option<usize>,
+        p: Vector3<f64>,
+        n: Vector3<f64>,
+        mu: f64,
+    ) -> Self {
+        let t1 = if n.x.abs() < 0.9 {
+            n.cross(&Vector3::x()).normalize()
+        } else {
+            n.cross(&Vector3::y()).normalize()
+        };
+        Self {
+            a,
+            b,
+            p,
+            n,
+            t1,
+            t2: n.cross(&t1),
+            mu,
+            jn: 0.0,
+            jt: Vector3::zeros(),
+        }
+    }
+}
+
+/// Relative diagonal compliance of a hard row (see the module's docs).
+const RIGID_COMPLIANCE: f64 = 1e-9;
+/// Relative diagonal compliance of a fingertip's tangential and torsional rows: a kinematic
+/// fingertip's velocity (from `f32` poses) and its anchor correction are noise that a box held
+/// fast by the table cannot follow; hard rows would answer it with unbounded impulses. It
+/// changes the friction impulse on a free body by this fraction.
+const SOFT_FRICTION_COMPLIANCE: f64 = 1e-2;
+
+/// Outer iterations (normals, then friction) of one coupled solve.
+const OUTER: usize = 32;
+/// Friction sweeps per outer iteration.
+const SWEEPS: usize = 4;
+
+/// What a scalar row is.
+#[derive(Debug, Clone, Copy)]
+enum Kind {
+    /// A soft normal: `force`, `d = theta K h + c`.
+    SoftNormal { force: f64, d: f64 },
+    /// A hard unilateral normal.
+    HardNormal,
+    /// A tangential impulse of the contact whose normal is row `normal`, paired with row
+    /// `other` (its other tangent), in the disk `mu (j_normal - base)` (`base`: the part of a
+    /// rigid row's normal impulse that rapier makes, whose friction rapier makes too).
+    Tangent {
+        normal: usize,
+        other: usize,
+        mu: f64,
+        base: f64,
+    },
+    /// A torsion about the normal of row `normal`, limited by `arm j_normal`.
+    Torsion { normal: usize, arm: f64 },
+}
+
+/// A scalar row: Jacobian on body a (`lin`, `ang_a`) and on body b (`-lin`, `-ang_b`).
+#[derive(Debug, Clone, Copy)]
+struct Scalar {
+    a: Option<usize>,
+    b: Option<usize>,
+    lin: Vector3<f64>,
+    ang_a: Vector3<f64>,
+    ang_b: Vector3<f64>,
+    kind: Kind,
+    /// Target end velocity [m/s or rad/s].
+    target: f64,
+    /// Diagonal compliance relative to the row's own mobility.
+    compliance: f64,
+}
+
+impl Scalar {
+    fn point(
+        bodies: &[BodyState],
+        a: Option<usize>,
+        b: Option<usize>,
+        p: &Vector3<f64>,
+        d: &Vector3<f64>,
+        kind: Kind,
+    ) -> Self {
+        let arm = |i: Option<usize>| i.map(|i| (p - bodies[i].com).cross(d)).unwrap_or_default();
+        Self {
+            a,
+            b,
+            lin: *d,
+            ang_a: arm(a),
+            ang_b: arm(b),
+            kind,
+            target: 0.0,
+            compliance: RIGID_COMPLIANCE,
+        }
+    }
+
+    /// The Jacobian of this row on body `i` (sign included), if it acts on it.
+    fn on(&self, i: usize) -> Option<(f64, Vector3<f64>, Vector3<f64>)> {
+        if self.a == Some(i) {
+            Some((1.0, self.lin, self.ang_a))
+        } else if self.b == Some(i) {
+            Some((-1.0, self.lin, self.ang_b))
+        } else {
+            None
+        }
+    }
+
+    fn velocity(&self, bodies: &[BodyState]) -> f64 {
+        let mut v = 0.0;
+        for (i, s) in [(self.a, 1.0), (self.b, -1.0)] {
+            if let Some(i) = i {
+                let (lin, ang) = if s > 0.0 {
+                    (self.lin, self.ang_a)
+                } else {
+                    (self.lin, self.ang_b)
+                };
+                v += s * (lin.dot(&bodies[i].v) + ang.dot(&bodies[i].w));
+            }
+        }
+        v
+    }
+
+    fn apply(&self, bodies: &mut [BodyState], j: f64) {
+        for (i, s, ang) in [(self.a, 1.0, self.ang_a), (self.b, -1.0, self.ang_b)] {
+            if let Some(i) = i {
+                let b = &mut bodies[i];
+                b.v += b.inv_m.component_mul(&self.lin) * (s * j);
+                b.w += b.inv_i * ang * (s * j);
+            }
+        }
+    }
+}
+
+/// Mobility between two scalar rows (sum over the bodies they share).
+fn mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
+    let mut m = 0.0;
+    for i in [x.a, x.b].into_iter().flatten() {
+        if let (Some((sx, lx, ax)), Some((sy, ly, ay))) = (x.on(i), y.on(i)) {
+            let b = &bodies[i];
+            m += sx * sy * (lx.dot(&b.inv_m.component_mul(&ly)) + ax.dot(&(b.inv_i * ay)));
+        }
+    }
+    m
+}
+
+/// A row's state in the active set.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum State {
+    /// Its equation holds.
+    Active,
+    /// Its impulse is fixed.
+    Fixed(f64),
+}
+
+/// Reusable buffers of the coupled solve.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct CoupledScratch {
+    scalars: Vec<Scalar>,
+    state: Vec<State>,
+}
+
+/// The scalar rows of soft rows `soft` and rigid rows `rigid` (`rigid` only: `soft` empty),
+/// with their index of the first scalar of each soft row.
+fn build(
+    bodies: &[BodyState],
+    soft: &[Row],
+    rigid: &[RigidRow],
+    rest_n: &[f64],
+    h: f64,
+    out: &mut Vec<Scalar>,
+    first: &mut Vec<usize>,
+) {
+    out.clear();
+    first.clear();
+    for r in soft {
+        let nrm = out.len();
+        first.push(nrm);
+        let d = r.theta * r.stiffness * h + r.damping;
+        out.push(Scalar::point(
+            bodies,
+            r.a,
+            r.b,
+            &r.p,
+            &r.n,
+            Kind::SoftNormal { force: r.force, d },
+        ));
+        if r.mu > 0.0 {
+            let target = -crate::solve::FRICTION_BETA * r.offset / h;
+            for (k, t) in [r.t1, r.t2].iter().enumerate() {
+                let mut s = Scalar::point(
+                    bodies,
+                    r.a,
+                    r.b,
+                    &r.p,
+                    t,
+                    Kind::Tangent {
+                        normal: nrm,
+                        other: nrm + 2 - k,
+                        mu: r.mu,
+                        base: 0.0,
+                    },
+                );
+                s.target = target.dot(t);
+                s.compliance = SOFT_FRICTION_COMPLIANCE;
+                out.push(s);
+            }
+            if r.torsion_arm > 0.0 {
+                out.push(Scalar {
+                    a: r.a,
+                    b: r.b,
+                    lin: Vector3::zeros(),
+                    ang_a: r.n,
+                    ang_b: r.n,
+                    kind: Kind::Torsion {
+                        normal: nrm,
+                        arm: r.torsion_arm,
+                    },
+                    target: 0.0,
+                    compliance: SOFT_FRICTION_COMPLIANCE,
+                });
+            }
+        }
+    }
+    for (ri, r) in rigid.iter().enumerate() {
+        let nrm = out.len();
+        out.push(Scalar::point(
+            bodies,
+            Some(r.a),
+            r.b,
+            &r.p,
+            &r.n,
+            Kind::HardNormal,
+        ));
+        if r.mu > 0.0 {
+            for (k, t) in [r.t1, r.t2].iter().enumerate() {
+                out.push(Scalar::point(
+                    bodies,
+                    Some(r.a),
+                    r.b,
+                    &r.p,
+                    t,
+                    Kind::Tangent {
+                        normal: nrm,
+                        other: nrm + 2 - k,
+                        mu: r.mu,
+                        base: rest_n.get(ri).copied().unwrap_or(0.0),
+                    },
+                ));
+            }
+        }
+    }
+}
+
+/// Solves the scalar rows from the body velocities `bodies` (left at the velocities after the
+/// impulses), returning their impulses (`None` if not finite).
+///
+/// Block Gauss-Seidel, [`OUTER`] times: a dense LU of the normals (soft and hard, on their
+/// active set) and of the rigid friction pairs that stick and carry mostly soft load, the
+/// other rows held at their impulses; then [`SWEEPS`] sweeps of the friction pairs and
+/// torsions, each in closed form on its own mobility and clamped to its disk or limit. The
+/// fingertips' friction stays in the sweeps (its targets carry a kinematic tip's noise).
+fn solve_scalars(
+    bodies: &mut [BodyState],
+    rows: &[Scalar],
+    h: f64,
+    state: &mut Vec<State>,
+) -> Option<Vec<f64>> {
+    let m = rows.len();
+    // The friction pairs' inverse 2 x 2 mobility.
+    let pair_inv: Vec<Option<Matrix2<f64>>> = (0..m)
+        .map(|i| match rows[i].kind {
+            Kind::Tangent { other, .. } if other > i => {
+                let (x, y) = (&rows[i], &rows[other]);
+                let k = Matrix2::new(
+                    mobility(bodies, x, x) * (1.0 + x.compliance),
+                    mobility(bodies, x, y),
+                    mobility(bodies, y, x),
+                    mobility(bodies, y, y) * (1.0 + y.compliance),
+                );
+                k.try_inverse().filter(|_| k.trace() > 0.0)
+            }
+            _ => None,
+        })
+        .collect();
+    let mut j = vec![0.0; m];
+    // A rigid friction pair is solved with the normals where the soft contacts carry most of
+    // its normal's load (`in_lu`), and stays in the sweeps for good once it slid out of the LU
+    // (the set does not cycle).
+    let mut slid = vec![false; m];
+    let in_lu = |i: usize, j: &[f64], slid: &[bool]| match rows[i].kind {
+        Kind::SoftNormal { .. } | Kind::HardNormal => true,
+        Kind::Tangent {
+            normal, base, mu, ..
+        } if matches!(rows[normal].kind, Kind::HardNormal) => {
+            // (at the start, before any normal impulse: the pairs rapier carries nothing of)
+            !slid[i] && mu > 0.0 && (j[normal] - base > base || (j[normal] == 0.0 && base == 0.0))
+        }
+        _ => false,
+    };
+    let mut lu: Vec<usize> = (0..m).filter(|&i| in_lu(i, &j, &slid)).collect();
+    state.clear();
+    state.resize(m, State::Active);
+    for _ in 0..OUTER {
+        lu_pass(bodies, rows, &mut j, &lu, h, state)?;
+        for _ in 0..SWEEPS {
+            sweep(bodies, rows, &pair_inv, &mut j)?;
+        }
+        for &i in &lu {
+            if let Kind::Tangent {
+                normal,
+                other,
+                mu,
+                base,
+            } = rows[i].kind
+            {
+                let limit = mu * (j[normal] - base).max(0.0);
+                if Vector2::new(j[i], j[other]).norm() >= limit * (1.0 - 1e-6) {
+                    slid[i] = true;
+                }
+            }
+        }
+        lu.clear();
+        lu.extend((0..m).filter(|&i| in_lu(i, &j, &slid)));
+    }
+    Some(j)
+}
+
+/// One sweep of the friction pairs and torsions (see [`solve_scalars`]).
+fn sweep(
+    bodies: &mut [BodyState],
+    rows: &[Scalar],
+    pair_inv: &[Option<Matrix2<f64>>],
+    j: &mut [f64],
+) -> Option<()> {
+    for i in 0..rows.len() {
+        match rows[i].kind {
+            Kind::Tangent {
+                normal,
+                other,
+                mu,
+                base,
+            } if other > i => {
+                let Some(k_inv) = pair_inv[i] else { continue };
+                let (x, y) = (&rows[i], &rows[other]);
+                let err =
+                    Vector2::new(x.velocity(bodies) - x.target, y.velocity(bodies) - y.target);
+                let old = Vector2::new(j[i], j[other]);
+                let mut new = old - k_inv * err;
+                let limit = mu * (j[normal] - base).max(0.0);
+                if new.norm() > limit {
+                    new *= limit / new.norm();
+                }
+                if !(new.x.is_finite() && new.y.is_finite()) {
+                    return None;
+                }
+                x.apply(bodies, new.x - old.x);
+                y.apply(bodies, new.y - old.y);
+                j[i] = new.x;
+                j[other] = new.y;
+            }
+            Kind::Torsion { normal, arm } => {
+                let r = &rows[i];
+                let kt = mobility(bodies, r, r) * (1.0 + r.compliance);
+                if !(kt > 0.0) {
+                    continue;
+                }
+                let limit = arm * j[normal].max(0.0);
+                let new = (j[i] - r.velocity(bodies) / kt).clamp(-limit, limit);
+                if !new.is_finite() {
+                    return None;
+                }
+                r.apply(bodies, new - j[i]);
+                j[i] = new;
+            }
+            _ => {}
+        }
+    }
+    Some(())
+}
+
+/// The normal row a row's friction belongs to (itself for a normal).
+fn normal_of(rows: &[Scalar], i: usize) -> usize {
+    match rows[i].kind {
+        Kind::Tangent { normal, .. } | Kind::Torsion { normal, .. } => normal,
+        _ => i,
+    }
+}
+
+/// The LU of the rows `lu` given the impulses `j` of the others, on the normals' active set
+/// (`state`, kept from pass to pass): a soft normal `(I + h D W) j = h (F - D v0)`, a hard
+/// normal `W j = -v0` and a sticking friction row `W j = target - v0`, each hard row with
+/// [`RIGID_COMPLIANCE`] of its own mobility on its diagonal; a friction row of an inactive
+/// normal has no impulse. Writes `j` and applies it to `bodies`.
+fn lu_pass(
+    bodies: &mut [BodyState],
+    rows: &[Scalar],
+    j: &mut [f64],
+    lu: &[usize],
+    h: f64,
+    state: &mut [State],
+) -> Option<()> {
+    let n = lu.len();
+    for &i in lu {
+        rows[i].apply(bodies, -j[i]);
+    }
+    let v0: Vec<f64> = lu.iter().map(|&i| rows[i].velocity(bodies)).collect();
+    let w = DMatrix::from_fn(n, n, |r, c| mobility(bodies, &rows[lu[r]], &rows[lu[c]]));
+    // Position in `lu` of each row's normal (usize::MAX: not in it).
+    let mut pos = vec![usize::MAX; rows.len()];
+    for (r, &i) in lu.iter().enumerate() {
+        pos[i] = r;
+    }
+    let (mut a, mut b) = (DMatrix::<f64>::zeros(n, n), DVector::<f64>::zeros(n));
+    for (r, &i) in lu.iter().enumerate() {
+        match rows[i].kind {
+            Kind::SoftNormal { force, d } => {
+                for c in 0..n {
+                    a[(r, c)] = h * d * w[(r, c)];
+                }
+                a[(r, r)] += 1.0;
+                b[r] = h * (force - d * v0[r]);
+            }
+            _ if w[(r, r)] == 0.0 => {}
+            _ => {
+                for c in 0..n {
+                    a[(r, c)] = w[(r, c)];
+                }
+                a[(r, r)] += rows[i].compliance * w[(r, r)];
+                b[r] = rows[i].target - v0[r];
+            }
+        }
+    }
+    let mut x = vec![0.0; n];
+    for _ in 0..(2 * n + 2) {
+        // A row acts if it is an active normal (a hard one with some mobility), or the
+        // friction of one (with some mobility; the normals are all in the LU).
+        let acts = |r: usize| {
+            let i = lu[r];
+            let soft = matches!(rows[i].kind, Kind::SoftNormal { .. });
+            (soft || w[(r, r)] != 0.0) && state[normal_of(rows, i)] == State::Active
+        };
+        let idx: Vec<usize> = (0..n).filter(|&r| acts(r)).collect();
+        x.iter_mut().for_each(|v| *v = 0.0);
+        if !idx.is_empty() {
+            let sub = DMatrix::from_fn(idx.len(), idx.len(), |p, q| a[(idx[p], idx[q])]);
+            let rhs = DVector::from_fn(idx.len(), |p, _| b[idx[p]]);
+            let sol = sub.lu().solve(&rhs)?;
+            for (p, &r) in idx.iter().enumerate() {
+                x[r] = sol[p];
+            }
+        }
+        let mut changed = false;
+        for r in 0..n {
+            let i = lu[r];
+            if !matches!(rows[i].kind, Kind::SoftNormal { .. } | Kind::HardNormal) {
+                continue;
+            }
+            if state[i] == State::Active && x[r] < 0.0 {
+                state[i] = State::Fixed(0.0);
+                changed = true;
+            } else if state[i] != State::Active && w[(r, r)] != 0.0 {
+                let resid = b[r] - (0..n).map(|c| a[(r, c)] * x[c]).sum::<f64>();
+                if resid > 1e-12 * b[r].abs().max(1e-300) && resid > 0.0 {
+                    state[i] = State::Active;
+                    changed = true;
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    if !x.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    for (r, &i) in lu.iter().enumerate() {
+        j[i] = x[r];
+        rows[i].apply(bodies, j[i]);
+    }
+    Some(())
+}
+
+/// Solves a coupled group: soft rows `soft` and the rigid rows `rigid` of their bodies, from
+/// the velocities `bodies` (at the group's base: no impulse of the step yet). On return the
+/// soft rows hold their impulses, the rigid rows the part the plugin applies (`j - rest`), and
+/// `bodies` the velocities after all impulses (rapier's `rest` included: the end of the step).
+/// Returns false if a system was not finite (nothing is then changed).
+pub(crate) fn solve_coupled(
+    bodies: &mut [BodyState],
+    soft: &mut [Row],
+    rigid: &mut [RigidRow],
+    h: f64,
+    scratch: &mut CoupledScratch,
+) -> bool {
+    let mut first = Vec::with_capacity(soft.len());
+    let CoupledScratch { scalars, state } = scratch;
+    // rapier's part: the rigid rows alone.
+    let base: Vec<BodyState> = bodies.to_vec();
+    build(bodies, &[], rigid, &[], h, scalars, &mut first);
+    let Some(rest) = solve_scalars(bodies, scalars, h, state) else {
+        bodies.copy_from_slice(&base);
+        return false;
+    };
+    bodies.copy_from_slice(&base);
+    // rapier's normal impulse of each rigid row (its friction goes with it: see `Kind::Tangent`).
+    let mut rest_n = Vec::with_capacity(rigid.len());
+    let mut k = 0;
+    for r in rigid.iter() {
+        rest_n.push(rest[k].max(0.0));
+        k += if r.mu > 0.0 { 3 } else { 1 };
+    }
+    // Everything.
+    build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
+    let Some(j) = solve_scalars(bodies, scalars, h, state) else {
+        bodies.copy_from_slice(&base);
+        return false;
+    };
+    for (k, r) in soft.iter_mut().enumerate() {
+        let i = first[k];
+        r.jn = j[i].max(0.0);
+        r.jt = Vector3::zeros();
+        r.jtw = 0.0;
+        r.sliding = false;
+        if r.mu > 0.0 {
+            r.jt = r.t1 * j[i + 1] + r.t2 * j[i + 2];
+            r.sliding = r.jn > 0.0 && r.jt.norm() >= r.mu * r.jn * (1.0 - 1e-9);
+            if r.torsion_arm > 0.0 {
+                r.jtw = j[i + 3];
+            }
+        }
+        r.vn_end = crate::solve::normal_velocity(bodies, r);
+    }
+    // rapier's part of each rigid row: its impulse without the soft contacts, scaled down to
+    // the row's impulse with them (a box lifted off the table gets none from rapier).
+    let mut i = scalars.len() - rigid_scalars(rigid);
+    let mut k = 0;
+    for r in rigid.iter_mut() {
+        let s = if rest[k] > 0.0 {
+            (j[i].max(0.0) / rest[k]).min(1.0)
+        } else {
+            0.0
+        };
+        r.jn = j[i] - s * rest[k];
+        r.jt = Vector3::zeros();
+        i += 1;
+        k += 1;
+        if r.mu > 0.0 {
+            // The friction the soft contacts add (the disk of `j - rest`): rapier makes the
+            // friction of its own part.
+            r.jt = r.t1 * j[i] + r.t2 * j[i + 1];
+            i += 2;
+            k += 2;
+        }
+    }
+    true
+}
+
+fn rigid_scalars(rigid: &[RigidRow]) -> usize {
+    rigid.iter().map(|r| if r.mu > 0.0 { 3 } else { 1 }).sum()
+}

@@ -1,0 +1,243 @@
+//! A fingertip pressing an object against rapier's rigid bodies: a box on a fixed table,
+//! pressed down by a kinematic fingertip (free and flat-backed); a box on a box on the table;
+//! a box pressed sideways against a wall. The soft contact must carry the law's force at its
+//! compression (the plugin's solve sees the box's rigid contacts, `src/rigid.rs`), the box
+//! must stay put, and nothing may be thrown. Before the rigid contacts were in the solve, the
+//! first case read 0 N while the tip sank through the box.
+//!
+//! `cargo test -p softgrip-rapier --test press_on_table -- --nocapture` prints the numbers.
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+use rapier3d::prelude::*;
+use softgrip_law::{Backing, ContactLaw, Level};
+use softgrip_rapier::SoftWorld;
+use softgrip_testkit::scenes::{RADIUS as R, fingertip};
+
+/// Half extent of the boxes \[m\].
+const HALF: f32 = 0.01;
+/// Density of the boxes [kg/m^3] (a 2 cm box of 4 g).
+const DENSITY: f32 = 500.0;
+
+struct Press {
+    world: SoftWorld,
+    tip_body: RigidBodyHandle,
+    boxes: Vec<(RigidBodyHandle, ColliderHandle)>,
+    law: ContactLaw,
+    /// Direction of the tip's travel.
+    dir: Vector,
+}
+
+/// `stack` boxes on a fixed table (top face y = 0), a kinematic fingertip 1 mm above the top
+/// box; with `wall`, the box sits against a fixed wall at x = -HALF and the tip comes from +x
+/// instead.
+fn scene(stack: usize, wall: bool, backing: Backing) -> Press {
+    let mut world = SoftWorld::new();
+    world
+        .physics
+        .colliders
+        .insert(ColliderBuilder::cuboid(0.2, 0.01, 0.2).translation(Vector::new(0.0, -0.01, 0.0)));
+    if wall {
+        world.physics.colliders.insert(
+            ColliderBuilder::cuboid(0.01, 0.1, 0.2).translation(Vector::new(
+                -HALF - 0.01,
+                0.1,
+                0.0,
+            )),
+        );
+    }
+    let mut boxes = Vec::new();
+    for k in 0..stack {
+        let b = world.physics.bodies.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(0.0, HALF * (2 * k + 1) as f32, 0.0))
+                .can_sleep(false),
+        );
+        let c = world.physics.colliders.insert_with_parent(
+            ColliderBuilder::cuboid(HALF, HALF, HALF).density(DENSITY),
+            b,
+            &mut world.physics.bodies,
+        );
+        boxes.push((b, c));
+    }
+    let top = 2.0 * HALF * stack as f32;
+    let (start, dir) = if wall {
+        (Vector::new(HALF + R as f32 + 0.001, HALF, 0.0), -Vector::X)
+    } else {
+        (Vector::new(0.0, top + R as f32 + 0.001, 0.0), -Vector::Y)
+    };
+    let tip_body = world
+        .physics
+        .bodies
+        .insert(RigidBodyBuilder::kinematic_position_based().translation(start));
+    let tip = world.physics.colliders.insert_with_parent(
+        ColliderBuilder::ball(R as f32),
+        tip_body,
+        &mut world.physics.bodies,
+    );
+    let mut b = fingertip(Level::Calibrated, 0.5).backing(backing);
+    if backing != Backing::Free {
+        // The pad faces the box (from its flat face towards its pole: the travel).
+        b = b.facing([dir.x as f64, dir.y as f64, dir.z as f64]);
+    }
+    let ft = b.build().unwrap();
+    let law = ft.law().clone();
+    world.register(tip, ft).unwrap();
+    // Let the boxes settle on the table (rapier's own resting penetration).
+    for _ in 0..30 {
+        world.step();
+    }
+    Press {
+        world,
+        tip_body,
+        boxes,
+        law,
+        dir,
+    }
+}
+
+/// What one press measured.
+#[derive(Debug)]
+struct Measured {
+    /// Worst |F / F_law(delta) - 1| over the hold.
+    worst: f64,
+    /// The soft contact's force at the end of the hold \[N\].
+    force: f64,
+    /// Largest displacement of a box from its settled position \[m\].
+    moved: f64,
+    /// Largest speed of a box (displacement per step, rotation at its corners), over the
+    /// whole run [m/s].
+    speed: f64,
+    /// Largest speed of a box over the second half of the hold [m/s].
+    speed_hold: f64,
+}
+
+/// Drives the tip `depth` \[m\] into the top box at 10 mm/s, holds it for `hold` steps (the
+/// force is read against the law over the hold), then lifts it off again at 10 mm/s.
+fn press(p: &mut Press, depth: f64, hold: usize) -> Measured {
+    let dt = p.world.physics.integration_parameters.dt as f64;
+    let start = p.world.physics.bodies[p.tip_body].translation();
+    let travel = 0.001 + depth;
+    let box0: Vec<Vector> = p
+        .boxes
+        .iter()
+        .map(|(b, _)| p.world.physics.bodies[*b].translation())
+        .collect();
+    let mut last: Vec<Pose> = p
+        .boxes
+        .iter()
+        .map(|(b, _)| *p.world.physics.bodies[*b].position())
+        .collect();
+    let top_col = p.boxes.last().unwrap().1;
+    let mut m = Measured {
+        worst: 0.0,
+        force: 0.0,
+        moved: 0.0,
+        speed: 0.0,
+        speed_hold: 0.0,
+    };
+    let steps_in = (travel / (0.01 * dt)).ceil() as usize;
+    let total = 2 * steps_in + hold;
+    for i in 0..total {
+        let s = if i < steps_in + hold {
+            ((i + 1) as f64 * 0.01 * dt).min(travel)
+        } else {
+            (travel - (i + 1 - steps_in - hold) as f64 * 0.01 * dt).max(0.0)
+        };
+        p.world.physics.bodies[p.tip_body].set_next_kinematic_translation(start + p.dir * s as f32);
+        p.world.step();
+        for (((b, _), b0), prev) in p.boxes.iter().zip(&box0).zip(last.iter_mut()) {
+            let rb = &p.world.physics.bodies[*b];
+            let d = (rb.translation() - *b0).length() as f64;
+            // The speed from the poses (rapier's stored velocity of a resting body carries the
+            // split step's gravity convention, `g (dt - h) / (2N)`, see `step.rs`).
+            let pose = *rb.position();
+            let v = ((pose.translation - prev.translation).length() as f64
+                + HALF as f64
+                    * (pose.rotation * prev.rotation.inverse())
+                        .to_axis_angle()
+                        .1
+                        .abs() as f64)
+                / dt;
+            *prev = pose;
+            assert!(d.is_finite() && v.is_finite(), "step {i}: {d} {v}");
+            m.moved = m.moved.max(d);
+            m.speed = m.speed.max(v);
+            if i >= steps_in + hold / 2 && i < steps_in + hold {
+                m.speed_hold = m.speed_hold.max(v);
+            }
+        }
+        if i >= steps_in + 10 && i < steps_in + hold {
+            let c = p
+                .world
+                .soft
+                .contacts()
+                .iter()
+                .find(|c| c.other == top_col)
+                .unwrap_or_else(|| panic!("step {i}: the tip touches the box"));
+            let f_law = p.law.response(c.delta).force;
+            m.worst = m.worst.max((c.normal_force / f_law - 1.0).abs());
+            m.force = c.normal_force;
+        }
+    }
+    m
+}
+
+// Measured (`-- --nocapture`): worst |F/F_law - 1| 3.4e-7 (free) / 4.4e-7 (flat), box moved
+// 0.04 um, speed 0.7 um/s at most, 0.06 um/s in the hold. The asserted bands leave a factor
+// of 10-30; the bug read F = 0 with the tip through the box.
+fn assert_box_on_table(m: &Measured) {
+    assert!(m.worst < 1e-5, "{m:?}");
+    assert!(m.force > 50.0, "{m:?}");
+    assert!(m.moved < 1e-6, "{m:?}");
+    assert!(m.speed < 1e-5, "{m:?}");
+    assert!(m.speed_hold < 1e-6, "{m:?}");
+}
+
+#[test]
+fn free_tip_presses_a_box_on_the_table() {
+    let mut p = scene(1, false, Backing::Free);
+    let m = press(&mut p, 0.002, 120);
+    println!("free tip, box on the table, 2 mm: {m:?}");
+    assert_box_on_table(&m);
+}
+
+#[test]
+fn flat_tip_presses_a_box_on_the_table() {
+    let mut p = scene(1, false, Backing::Flat);
+    let m = press(&mut p, 0.002, 120);
+    println!("flat-backed tip, box on the table, 2 mm: {m:?}");
+    assert_box_on_table(&m);
+}
+
+#[test]
+fn tip_presses_a_stack_of_two_boxes() {
+    for backing in [Backing::Free, Backing::Flat] {
+        let mut p = scene(2, false, backing);
+        let m = press(&mut p, 0.002, 120);
+        println!("{backing:?} tip, two boxes on the table, 2 mm: {m:?}");
+        // Measured: worst 7.1e-7 / 7.4e-7, moved 24 um (the lower box settles into the
+        // table under the load), speed 0.14 mm/s at most (on contact), 0.11 um/s in the hold.
+        assert!(m.worst < 1e-5, "{backing:?}: {m:?}");
+        assert!(m.force > 25.0, "{backing:?}: {m:?}");
+        assert!(m.moved < 5e-5, "{backing:?}: {m:?}");
+        assert!(m.speed < 5e-4, "{backing:?}: {m:?}");
+        assert!(m.speed_hold < 1e-6, "{backing:?}: {m:?}");
+    }
+}
+
+/// Known failing (see `/work/pending/RIGID-ROWS.md` and the crate README's limits): the box,
+/// on the table and pressed into the wall with 60 N, rattles in the hold at ~1.2 cm/s (its
+/// centre moves by up to 0.3 mm) and the force is 0.75 % off the law. Run it with `--ignored`.
+#[test]
+#[ignore = "known failing: a box pressed sideways against a wall rattles (README, Limits)"]
+fn tip_presses_a_box_against_a_wall() {
+    let mut p = scene(1, true, Backing::Free);
+    let m = press(&mut p, 0.002, 120);
+    println!("free tip, box against a wall, 2 mm: {m:?}");
+    assert!(m.worst < 1e-3, "{m:?}");
+    assert!(m.force > 5.0, "{m:?}");
+    assert!(m.moved < 5e-5, "{m:?}");
+    assert!(m.speed < 0.02, "{m:?}");
+    assert!(m.speed_hold < 1e-3, "{m:?}");
+}
