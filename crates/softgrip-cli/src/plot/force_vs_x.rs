@@ -17,6 +17,12 @@ use crate::fe::FePoint;
 
 /// Largest compression ratio drawn.
 const X_PLOT: f64 = 0.86;
+/// A panel's x axis ends at this many times its FE's reach (at most [`X_PLOT`], at least
+/// [`X_MIN_RIGHT`]): a thin skin's FE stops at x = 0.09, which a fixed axis to 0.86 squeezes
+/// into its first tenth.
+const X_PAST_REACH: f64 = 1.5;
+/// The shortest x axis drawn.
+const X_MIN_RIGHT: f64 = 0.2;
 /// Spacing of the points of each level's line.
 const DX: f64 = 0.0025;
 
@@ -77,6 +83,8 @@ fn chart<DB: DrawingBackend>(
     shown: Shown,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     let fe_all = || panel.fe.iter().chain(panel.fe_beyond);
+    let reach = fe_all().map(|p| p.x).fold(0.0, f64::max);
+    let x_right = (X_PAST_REACH * reach).clamp(X_MIN_RIGHT, X_PLOT);
     let y_top = 1.12
         * fe_all()
             .map(|p| shown.of(p.x, p.force_norm))
@@ -96,7 +104,7 @@ fn chart<DB: DrawingBackend>(
         .margin(12)
         .x_label_area_size(50)
         .y_label_area_size(70)
-        .build_cartesian_2d(0.0..X_PLOT, 0.0..y_top)?;
+        .build_cartesian_2d(0.0..x_right, 0.0..y_top)?;
     chart
         .configure_mesh()
         .x_desc("compression ratio x = δ / R  [-]")
@@ -140,7 +148,7 @@ fn chart<DB: DrawingBackend>(
         } else {
             2
         };
-        let x_end = law.x_max().min(X_PLOT);
+        let x_end = law.x_max().min(x_right);
         let n = (x_end / DX).floor() as usize;
         let points = (1..=n)
             .map(|k| k as f64 * DX)
