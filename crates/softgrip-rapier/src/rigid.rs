@@ -257,23 +257,15 @@ fn build(
         ));
         if r.mu > 0.0 {
             let target = -crate::solve::FRICTION_BETA * r.offset / h;
-            for (k, t) in [r.t1, r.t2].iter().enumerate() {
-                let mut s = Scalar::point(
-                    bodies,
-                    r.a,
-                    r.b,
-                    &r.p,
-                    t,
-                    Kind::Tangent {
-                        normal: nrm,
-                        other: nrm + 2 - k,
-                        mu: r.mu,
-                        base: 0.0,
-                    },
-                );
-                s.target = target.dot(t);
-                s.compliance = SOFT_FRICTION_COMPLIANCE;
-                out.push(s);
+            for (s, t) in friction_pair(bodies, (r.a, r.b), &r.p, [r.t1, r.t2], nrm, r.mu, 0.0)
+                .into_iter()
+                .zip([r.t1, r.t2])
+            {
+                out.push(Scalar {
+                    target: target.dot(&t),
+                    compliance: SOFT_FRICTION_COMPLIANCE,
+                    ..s
+                });
             }
             if r.torsion_arm > 0.0 {
                 out.push(Scalar {
@@ -303,23 +295,46 @@ fn build(
             Kind::HardNormal,
         ));
         if r.mu > 0.0 {
-            for (k, t) in [r.t1, r.t2].iter().enumerate() {
-                out.push(Scalar::point(
-                    bodies,
-                    Some(r.a),
-                    r.b,
-                    &r.p,
-                    t,
-                    Kind::Tangent {
-                        normal: nrm,
-                        other: nrm + 2 - k,
-                        mu: r.mu,
-                        base: rest_n.get(ri).copied().unwrap_or(0.0),
-                    },
-                ));
-            }
+            let base = rest_n.get(ri).copied().unwrap_or(0.0);
+            out.extend(friction_pair(
+                bodies,
+                (Some(r.a), r.b),
+                &r.p,
+                [r.t1, r.t2],
+                nrm,
+                r.mu,
+                base,
+            ));
         }
     }
+}
+
+/// The two tangential rows of the contact at `p` between bodies `ab` whose normal is row
+/// `normal` (pushed just before them), in the disk `mu (j_normal - base)`.
+fn friction_pair(
+    bodies: &[BodyState],
+    ab: (Option<usize>, Option<usize>),
+    p: &Vector3<f64>,
+    tangents: [Vector3<f64>; 2],
+    normal: usize,
+    mu: f64,
+    base: f64,
+) -> [Scalar; 2] {
+    [0, 1].map(|k| {
+        Scalar::point(
+            bodies,
+            ab.0,
+            ab.1,
+            p,
+            &tangents[k],
+            Kind::Tangent {
+                normal,
+                other: normal + 2 - k,
+                mu,
+                base,
+            },
+        )
+    })
 }
 
 /// Solves the scalar rows from the body velocities `bodies` (left at the velocities after the
