@@ -83,9 +83,14 @@ pub fn run(args: &CurveArgs) -> Result<()> {
         .context("invalid `--nu`")?
         .with_backing(backing)
         .context("invalid `--thickness`")?;
+    // The construction as the user gave it: t/R, not the law's t in metres (R = 1 m here).
+    let named = match backing {
+        Backing::Core { thickness } => format!("core (t/R = {thickness})"),
+        other => other.to_string(),
+    };
     let law = ContactLaw::try_new(params, level).with_context(|| {
         format!(
-            "cannot build level `{level}` at nu = {} for backing {backing}",
+            "cannot build level `{level}` at nu = {} for backing {named}",
             args.nu
         )
     })?;
@@ -93,7 +98,7 @@ pub fn run(args: &CurveArgs) -> Result<()> {
         (Some(x), _) => {
             if !(x > 0.0 && x <= law.x_max()) {
                 bail!(
-                    "`--profile` must be in (0, {}] (level `{level}`'s validity range for backing {backing}), got {x}",
+                    "`--profile` must be in (0, {}] (level `{level}`'s validity range for backing {named}), got {x}",
                     law.x_max()
                 );
             }

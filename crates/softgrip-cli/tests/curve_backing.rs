@@ -210,6 +210,18 @@ fn bad_combinations_are_refused_with_a_clear_message() {
     let mut args = with(&["--backing", "flat", "--profile"]);
     args.push(&past);
     fails_with(&args, "`--profile` must be in (0, ");
+    // A core's range names the construction as given: t/R, not the law's t in metres (R = 1 m).
+    fails_with(
+        &with(&[
+            "--backing",
+            "core",
+            "--thickness",
+            "0.3",
+            "--profile",
+            "0.5",
+        ]),
+        "validity range for backing core (t/R = 0.3)), got 0.5",
+    );
     // --profile is one x: a grid does not make sense with it.
     fails_with(
         &with(&["--profile", "0.1", "--x", "0.1:0.2:0.1"]),
