@@ -28,7 +28,7 @@ Why each term:
   the radius law's own E = eps u^2 (one confinement measure for the radius and the force;
   coefficient 1, not fitted), and eps x for the hemisphere's depth R. (Before: eps v^2 with
   the law's radius a_core in v; with the radius law's own crossover in a_core, that form
-  refitted is 3.39 % fitted / 3.18 % held out, this one 2.79 / 2.21 %.)
+  refitted is 3.39 % fitted / 3.18 % held out, this one with m = 1 2.79 / 2.21 %.)
 - h: the core is a sphere of radius R - t, not a plane. Under the pole the skin is t thick; at
   a distance r the core has fallen away by r^2/(2(R - t)) and the surface by r^2/(2R), so the skin
   is t (1 + (r/t)^2 tau^2/(2(1 - tau))) thick, and over the disc r <= 2t the layer feels its mean

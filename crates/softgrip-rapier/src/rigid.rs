@@ -257,12 +257,10 @@ fn build(
         ));
         if r.mu > 0.0 {
             let target = -crate::solve::FRICTION_BETA * r.offset / h;
-            for (s, t) in friction_pair(bodies, (r.a, r.b), &r.p, [r.t1, r.t2], nrm, r.mu, 0.0)
-                .into_iter()
-                .zip([r.t1, r.t2])
-            {
+            for s in friction_pair(bodies, (r.a, r.b), &r.p, [r.t1, r.t2], nrm, r.mu, 0.0) {
+                // `lin` is the row's tangent.
                 out.push(Scalar {
-                    target: target.dot(&t),
+                    target: target.dot(&s.lin),
                     compliance: SOFT_FRICTION_COMPLIANCE,
                     ..s
                 });

@@ -56,9 +56,10 @@
 //!   the material becomes compressible (`e0 exp(-m eps)`: `e0 (1 - m eps)` to first order, but
 //!   never negative; with m fixed at 1, the former `e0 (1 - eps)`, the fit is 2.79 % fitted and
 //!   2.67 % held out, against 2.31 % and 2.25 %; m = 1.56 loses the confinement faster at small
-//!   eps, as the FE's thin skins do between nu 0.499 and 0.4, `tools/calibration/CORE_FORM.md`). `1 + E`: a bonded layer acts incompressibly only over lengths below its
-//!   confinement length `l ~ depth sqrt(kappa/mu)`, beyond which it is an oedometer whose
-//!   stiffening grows only linearly in a/h; `E = (a_H / l)^2` with Hertz's `a_H = sqrt(R
+//!   eps, as the FE's thin skins do between nu 0.499 and 0.4, `tools/calibration/CORE_FORM.md`).
+//!   `1 + E`: a bonded layer acts incompressibly only over lengths below its confinement
+//!   length `l ~ depth sqrt(kappa/mu)`, beyond which it is an oedometer whose stiffening grows
+//!   only linearly in a/h; `E = (a_H / l)^2` with Hertz's `a_H = sqrt(R
 //!   delta)`: `eps (a_H/t)^2 = eps x/tau^2` for the skin, the radius' own `E = eps u^2` (one
 //!   confinement measure for the patch's width and its force; coefficient 1, not fitted), and
 //!   `eps x` for the hemisphere's depth R. (With the law's own radius in E, `eps v^2`, as
