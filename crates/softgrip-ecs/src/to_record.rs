@@ -77,25 +77,49 @@ pub fn shape_geometry(shape: &SharedShape) -> Option<ShapeGeometry> {
     })
 }
 
-/// Every rigid body's shapes of `scene`, in scene order, in their body frames.
+/// Every rigid body's shapes of `scene`, in scene order, in their body frames; then every
+/// robot link's collision shapes in its link frame (`<robot>/<link>`).
 fn shapes(scene: &Scene) -> Vec<ShapeInfo> {
     let f = scene.file();
+    let bodies = f.bodies.iter().enumerate().flat_map(|(i, body)| {
+        scene
+            .shapes(i)
+            .iter()
+            .zip(&body.shapes)
+            .filter_map(|(shape, spec)| {
+                Some(ShapeInfo {
+                    body: body.name.clone(),
+                    offset: spec.offset,
+                    rotation: [0.0, 0.0, 0.0, 1.0],
+                    geometry: shape_geometry(shape)?,
+                })
+            })
+    });
+    let links = scene.robots().iter().flat_map(|robot| {
+        (robot.rapier().links.iter().enumerate()).flat_map(move |(l, link)| {
+            link.colliders.iter().filter_map(move |c| {
+                let p = c.collider.position();
+                let (t, q) = (p.translation, p.rotation);
+                Some(ShapeInfo {
+                    body: robot.frame(l),
+                    offset: array(t),
+                    rotation: [q.x, q.y, q.z, q.w].map(f64::from),
+                    geometry: shape_geometry(c.collider.shared_shape())?,
+                })
+            })
+        })
+    });
+    bodies.chain(links).collect()
+}
+
+/// Every body's name, then every robot link's (`<robot>/<link>`), in scene order.
+fn body_names(scene: &Scene) -> Vec<String> {
+    let f = scene.file();
+    let links = (scene.robots().iter()).flat_map(|r| (0..r.links().len()).map(move |l| r.frame(l)));
     f.bodies
         .iter()
-        .enumerate()
-        .flat_map(|(i, body)| {
-            scene
-                .shapes(i)
-                .iter()
-                .zip(&body.shapes)
-                .filter_map(|(shape, spec)| {
-                    Some(ShapeInfo {
-                        body: body.name.clone(),
-                        offset: spec.offset,
-                        geometry: shape_geometry(shape)?,
-                    })
-                })
-        })
+        .map(|b| b.name.clone())
+        .chain(links)
         .collect()
 }
 
@@ -110,14 +134,15 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
         origin: scene.origin().to_owned(),
         dt: f.dt,
         steps: scene.steps(),
-        bodies: f.bodies.iter().map(|b| b.name.clone()).collect(),
+        bodies: body_names(scene),
         fingertips: scene
             .fingertips()
             .iter()
             .zip(&f.fingertips)
-            .map(|(tip, spec)| FingertipInfo {
+            .zip(scene.carriers())
+            .map(|((tip, spec), carrier)| FingertipInfo {
                 name: spec.name.clone(),
-                body: spec.body.clone(),
+                body: scene.carrier_name(*carrier),
                 offset: spec.offset,
                 radius: spec.radius,
                 law: fingertip_law(tip, &spec.name),

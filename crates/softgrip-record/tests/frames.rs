@@ -39,6 +39,7 @@ fn shape(body: &str, geometry: ShapeGeometry) -> ShapeInfo {
     ShapeInfo {
         body: body.into(),
         offset: [0.0; 3],
+        rotation: [0.0, 0.0, 0.0, 1.0],
         geometry,
     }
 }

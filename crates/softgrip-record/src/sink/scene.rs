@@ -65,6 +65,10 @@ pub struct ShapeInfo {
     pub body: String,
     /// Position of the shape's origin in its body's frame \[m\].
     pub offset: [f64; 3],
+    /// Orientation of the shape's frame in its body's frame, unit quaternion `[x, y, z, w]`
+    /// (a scene file's shapes have none: `[0, 0, 0, 1]`; a robot link's collision shapes
+    /// have their URDF `<origin>`'s).
+    pub rotation: [f64; 4],
     /// Its geometry.
     pub geometry: ShapeGeometry,
 }
