@@ -13,7 +13,7 @@ use crate::limits::{MAX_COORDINATE, MAX_MESH_BYTES, MAX_SCENE_BYTES, MAX_SIZE, M
 use crate::read::{ReadError, read_bounded, size};
 use crate::robot::spec::MeshShape;
 
-/// Largest mass of a link [kg] (rapier is f32; inertias are masses times squared lengths).
+/// Largest mass of a link \[kg\] (rapier is f32; inertias are masses times squared lengths).
 pub const MAX_LINK_MASS: f64 = 1.0e6;
 
 /// A URDF read and checked: the robot with every collision mesh's `filename` replaced by the
