@@ -10,10 +10,12 @@ use softgrip_law::ContactPatch;
 use softgrip_rapier::rapier3d::prelude::{SharedShape, Vector};
 use softgrip_rapier::{SoftFingertip, TipContact};
 use softgrip_record::{
-    ContactReading, FingertipInfo, FingertipLaw, McapReport, McapSinkError, RecorderOptions,
-    RecordingStats, RunSummary, SceneInfo, ShapeGeometry, ShapeInfo, SinkError, StepFrame,
-    StepSink, TactileSample, TipRunSummary, UpAxis,
+    BodyFrame, ContactReading, FingertipInfo, FingertipLaw, JointSample, McapReport, McapSinkError,
+    RecorderOptions, RecordingStats, RobotInfo, RunSummary, SceneInfo, ShapeGeometry, ShapeInfo,
+    SinkError, StepFrame, StepSink, TactileSample, TipRunSummary, UpAxis,
 };
+use softgrip_scene::ControlSet;
+use softgrip_scene::robot::{JointKind, joint_state, joint_target};
 
 use crate::resources::Physics;
 
@@ -123,6 +125,70 @@ fn body_names(scene: &Scene) -> Vec<String> {
         .collect()
 }
 
+/// Each robot's links under their parent links (fixed joints' children marked fixed).
+fn frames(scene: &Scene) -> Vec<BodyFrame> {
+    let mut out = Vec::new();
+    for robot in scene.robots() {
+        for j in robot.joints() {
+            out.push(BodyFrame {
+                body: robot.frame(j.child),
+                parent: robot.frame(j.parent),
+                fixed: j.kind == JointKind::Fixed,
+            });
+        }
+    }
+    out
+}
+
+/// The name a joint is recorded and commanded by: its URDF name in a scene with one robot,
+/// `<robot>/<joint>` with several.
+pub fn joint_name(scene_robots: usize, robot: &str, joint: &str) -> String {
+    if scene_robots == 1 {
+        joint.to_owned()
+    } else {
+        format!("{robot}/{joint}")
+    }
+}
+
+/// Every robot's moving joints' states after the last step into `joints`, and their motor
+/// targets into `commands` (cleared first), robot by robot, in joint order.
+pub fn joint_samples(
+    control: &ControlSet,
+    physics: &Physics,
+    joints: &mut Vec<JointSample>,
+    commands: &mut Vec<JointSample>,
+) {
+    joints.clear();
+    commands.clear();
+    let world = &physics.world;
+    let n = world.soft.counters().substeps_last.max(1) as f64;
+    let substep = world.physics.integration_parameters.dt as f64 / n;
+    let robots = control.robots();
+    for (robot, (_, h)) in robots.iter().zip(&control.handles().robots) {
+        for (j, joint) in robot.joints().iter().enumerate() {
+            if !joint.kind.moves() {
+                continue;
+            }
+            let name = joint_name(robots.len(), robot.name(), &joint.name);
+            let s = joint_state(robot, &world.physics, h, j, substep);
+            if let Some((p, v, e)) = joint_target(robot, &world.physics, h, j) {
+                commands.push(JointSample {
+                    name: name.clone(),
+                    position: p,
+                    velocity: v,
+                    effort: e,
+                });
+            }
+            joints.push(JointSample {
+                name,
+                position: s.position,
+                velocity: s.velocity,
+                effort: s.effort,
+            });
+        }
+    }
+}
+
 /// What the sinks learn of a scene before its first step (scene files are y-up: recordings
 /// turn them z-up, [`UpAxis::Y`]).
 pub fn scene_info(scene: &Scene) -> SceneInfo {
@@ -135,6 +201,13 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
         dt: f.dt,
         steps: scene.steps(),
         bodies: body_names(scene),
+        robots: (scene.robots().iter())
+            .map(|r| RobotInfo {
+                name: r.name().to_owned(),
+                urdf: r.urdf_text().to_owned(),
+            })
+            .collect(),
+        frames: frames(scene),
         fingertips: scene
             .fingertips()
             .iter()

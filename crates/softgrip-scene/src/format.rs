@@ -85,6 +85,10 @@ pub struct RecordSpec {
     /// Contact radius and pressure of every contact (default false: not computed at all).
     #[serde(default)]
     pub pressure: bool,
+    /// Every robot joint's state and its targets (`/joint_states`, `/joint_commands`; default
+    /// true; nothing without robots).
+    #[serde(default = "yes")]
+    pub joints: bool,
     /// The MCAP recorder writes every n-th step (steps n, 2n, ...), >= 1 (default
     /// [`DEFAULT_EVERY_N_STEPS`]). Publishers still receive every step.
     #[serde(default = "default_every_n_steps")]
@@ -108,6 +112,7 @@ impl Default for RecordSpec {
             wrenches: true,
             contacts: true,
             pressure: false,
+            joints: true,
             every_n_steps: DEFAULT_EVERY_N_STEPS,
         }
     }

@@ -4,6 +4,7 @@
 use bevy_ecs::prelude::{Entity, Name, Query, Res, ResMut, With};
 
 use crate::components::{BodyPose, Fingertip, FingertipWrench, RigidBody};
+use crate::controller::Controllers;
 use crate::resources::{
     CurrentFrame, Physics, Publisher, RecordSelection, Recorder, SceneInfoResource, SimClock,
 };
@@ -19,6 +20,7 @@ pub fn assemble_frame(
     physics: Res<Physics>,
     clock: Res<SimClock>,
     selection: Res<RecordSelection>,
+    controllers: Option<Res<Controllers>>,
     mut frame: ResMut<CurrentFrame>,
     bodies: Query<(Entity, &Name, &BodyPose), With<RigidBody>>,
     tips: Query<(Entity, &Name, &FingertipWrench), With<Fingertip>>,
@@ -31,6 +33,15 @@ pub fn assemble_frame(
     f.bodies.clear();
     f.wrenches.clear();
     f.contacts.clear();
+    match (&controllers, sel.joints) {
+        (Some(c), true) => {
+            crate::to_record::joint_samples(&c.0, &physics, &mut f.joints, &mut f.commands)
+        }
+        _ => {
+            f.joints.clear();
+            f.commands.clear();
+        }
+    }
     // Tactile images whenever a fingertip has a pad (the plugin computes them only then).
     tactile_samples(&physics, &names, &mut f.tactile);
     if sel.poses {

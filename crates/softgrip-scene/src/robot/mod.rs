@@ -10,5 +10,5 @@ mod urdf;
 pub use build::{FALLBACK_DENSITY, RobotHandles, RobotJointHandle};
 pub use model::{JointKind, Mimic, Robot, RobotJoint, RobotLink};
 pub use spec::{BaseKind, JointModel, MeshShape, RobotSpec};
-pub use state::{JointState, joint_state, set_joint_target};
+pub use state::{JointState, joint_state, joint_target, set_joint_target};
 pub use urdf::MAX_LINK_MASS;

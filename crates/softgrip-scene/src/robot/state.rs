@@ -160,6 +160,43 @@ fn set_motor_target(
     }
 }
 
+/// Joint `j`'s motor target: `(position [m or rad], velocity [m/s or rad/s], largest force
+/// [N or N m], 0 without a limit)`; `None` for a fixed joint. A multibody mimic joint (driven by
+/// its coupling) reads its joint's target through the mimic's multiplier and offset.
+pub fn joint_target(
+    robot: &Robot,
+    world: &PhysicsWorld,
+    h: &RobotHandles,
+    j: usize,
+) -> Option<(f64, f64, f64)> {
+    let joint = &robot.joints()[j];
+    if !joint.kind.moves() {
+        return None;
+    }
+    if let (Some(m), RobotJointHandle::Multibody(_)) = (joint.mimic, h.joints[j]) {
+        let (p, v, _) = joint_target(robot, world, h, m.joint)?;
+        return Some((
+            m.multiplier * p + m.offset,
+            m.multiplier * v,
+            joint.effort.unwrap_or(0.0),
+        ));
+    }
+    let axis = motor_axis(joint.kind);
+    let motor = match h.joints[j] {
+        RobotJointHandle::Multibody(handle) => {
+            let (mb, link) = world.multibody_joints.get(handle)?;
+            *mb.link(link)?.joint.data.motor(axis)?
+        }
+        RobotJointHandle::Impulse(handle) => *world.impulse_joints.get(handle)?.data.motor(axis)?,
+        RobotJointHandle::None => return None,
+    };
+    Some((
+        motor.target_pos as f64,
+        motor.target_vel as f64,
+        joint.effort.unwrap_or(0.0),
+    ))
+}
+
 /// The pose of a joint's child frame relative to its parent frame at position `q`.
 fn motion(kind: JointKind, q: f64) -> Pose {
     match kind {
