@@ -21,13 +21,14 @@ pub(crate) fn check_fingertips(
     base: &Path,
 ) -> Result<Vec<SoftFingertip>, SceneError> {
     let mut names = HashSet::new();
+    let bodies: HashSet<&str> = file.bodies.iter().map(|b| b.name.as_str()).collect();
     let mut tips = Vec::new();
     for (i, t) in file.fingertips.iter().enumerate() {
         let f = |s: &str| format!("fingertip[{i}].{s}");
         if t.name.is_empty() || !names.insert(t.name.as_str()) {
             return Err(c.name(f("name"), format!("`{}` is empty or used twice", t.name)));
         }
-        if !file.bodies.iter().any(|b| b.name == t.body) {
+        if !bodies.contains(t.body.as_str()) {
             return Err(c.name(f("body"), format!("no body is named `{}`", t.body)));
         }
         c.coords(f("offset"), t.offset)?;

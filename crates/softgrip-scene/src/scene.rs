@@ -1,6 +1,7 @@
 //! [`Scene`]: a whole experiment in TOML (format in SCENES.md). [`Scene::parse`] reads and
 //! checks a file once; a [`Scene`] that exists is valid.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use softgrip_rapier::SoftFingertip;
@@ -28,6 +29,8 @@ pub struct Scene {
     shapes: Vec<Vec<SharedShape>>,
     fingertips: Vec<SoftFingertip>,
     gripper: Option<GripperProgram>,
+    /// The index of each body's name in `file.bodies` (names are unique: checked).
+    body_index: HashMap<String, usize>,
 }
 
 impl Scene {
@@ -54,12 +57,19 @@ impl Scene {
             Some(g) => Some(GripperProgram::from_spec(&c, &file, &fingertips, g)?),
             None => None,
         };
+        let body_index = file
+            .bodies
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (b.name.clone(), i))
+            .collect();
         let scene = Self {
             origin: origin.to_string(),
             file,
             shapes,
             fingertips,
             gripper,
+            body_index,
         };
         start::check_start(&c, &scene)?;
         Ok(scene)
@@ -124,7 +134,7 @@ impl Scene {
 
     /// Index of the body named `name`.
     pub fn body_index(&self, name: &str) -> Option<usize> {
-        self.file.bodies.iter().position(|b| b.name == name)
+        self.body_index.get(name).copied()
     }
 }
 
