@@ -225,3 +225,26 @@ def test_a_sweeps_trial_recordings_open(tmp_path: Path, data: Path):
         rec = softgrip.open_recording(f)
         peak = max(s["peak_force"] for s in rec.summary.values())
         assert math.isclose(peak, row[cols.index("peak_force")], rel_tol=1e-12)
+
+
+def test_every_returned_field_is_documented_with_its_unit(data: Path, tmp_path: Path):
+    # The tables of units are the documentation (RunResult's and Recording's docstrings are
+    # made from them): every key a run or a recording returns is in one, with a unit.
+    run = softgrip.run(softgrip.scenes.path("default"), mcap=tmp_path / "d.mcap")
+    rec = softgrip.open_recording(tmp_path / "d.mcap")
+    for r in (run, rec):
+        for arrays in r.fingertips.values():
+            assert set(arrays) == set(softgrip.FINGERTIP_ARRAYS)
+        for arrays in r.bodies.values():
+            assert set(arrays) == set(softgrip.BODY_ARRAYS)
+        for s in r.summary.values():
+            assert set(s) <= set(softgrip.SUMMARY_FIELDS)
+    assert set(run.summary["left_tip"]) == set(softgrip.SUMMARY_FIELDS)
+    assert set(rec.contact_rows) == set(softgrip.CONTACT_ROW_FIELDS)
+    tables = (softgrip.FINGERTIP_ARRAYS, softgrip.BODY_ARRAYS, softgrip.SUMMARY_FIELDS, softgrip.CONTACT_ROW_FIELDS)
+    for table in tables:
+        for key, (unit, what) in table.items():
+            assert unit and what, key
+    for key in softgrip.FINGERTIP_ARRAYS:
+        assert f"``{key}`` [{softgrip.FINGERTIP_ARRAYS[key][0]}]" in softgrip.RunResult.__doc__
+        assert f"``{key}``" in softgrip.Recording.__doc__
