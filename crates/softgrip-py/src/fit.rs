@@ -9,7 +9,7 @@ use softgrip_law::fitting::{Sample, fit_material as fit};
 use crate::args;
 use crate::array::Input;
 use crate::errors::{law_error, parameter};
-use crate::law::Settings;
+use crate::make_law::Settings;
 
 /// The paper's largest x of the fit (Hertz's range).
 const DEFAULT_X_FIT: f64 = 0.1;
@@ -37,7 +37,7 @@ pub fn fit_material<'py>(
     let settings = Settings::read(k, tolerance, match_x)?;
     let hertz = PyString::new(py, "hertz").into_any();
     let level = level.filter(|l| !l.is_none()).unwrap_or(&hertz);
-    let fit_level = crate::law::level(level, &settings)?;
+    let fit_level = crate::make_law::level(level, &settings)?;
     let radius = args::float(radius, "radius")?;
     let poisson_ratio = args::float(poisson_ratio, "poisson_ratio")?;
     let x_fit = args::opt_float(x_fit, "x_fit")?.unwrap_or(DEFAULT_X_FIT);

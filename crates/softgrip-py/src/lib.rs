@@ -7,6 +7,7 @@ mod array;
 mod errors;
 mod fit;
 mod law;
+mod make_law;
 mod readout;
 mod recorded;
 mod recording;
@@ -20,8 +21,8 @@ use pyo3::prelude::*;
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<law::Law>()?;
     m.add_class::<sweep::Sweep>()?;
-    m.add_function(wrap_pyfunction!(law::law, m)?)?;
-    m.add_function(wrap_pyfunction!(law::_law_from_state, m)?)?;
+    m.add_function(wrap_pyfunction!(make_law::law, m)?)?;
+    m.add_function(wrap_pyfunction!(make_law::_law_from_state, m)?)?;
     m.add_function(wrap_pyfunction!(recording::open_recording, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit_material, m)?)?;
     m.add_function(wrap_pyfunction!(run::run_scene, m)?)?;

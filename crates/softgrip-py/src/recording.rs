@@ -85,13 +85,7 @@ fn laws<'py>(py: Python<'py>, info: Option<&RecordingInfo>) -> PyResult<Bound<'p
     for l in info.map(|i| i.law.as_slice()).unwrap_or_default() {
         let d = PyDict::new(py);
         d.set_item("level", l.level.name())?;
-        let setting = match l.level {
-            softgrip_law::Level::Fit { k } => Some(k),
-            softgrip_law::Level::Auto { tolerance } => Some(tolerance),
-            softgrip_law::Level::Linear { match_x } => Some(match_x),
-            _ => None,
-        };
-        d.set_item("setting", setting)?;
+        d.set_item("setting", crate::law::setting(l.level))?;
         d.set_item("youngs_modulus", l.youngs_modulus)?;
         d.set_item("poisson_ratio", l.poisson_ratio)?;
         d.set_item("radius", l.radius)?;
