@@ -82,7 +82,10 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
                 continue;
             };
             // Behind a backed fingertip's flat face is its rigid finger: rapier's contact,
-            // which pushes out from any depth.
+            // which pushes out of a shallow overlap. But a fingertip whose centre is inside the
+            // other shape (depth > R) is buried, whichever face the nearest surface is behind:
+            // refused (a pad buried 3R in a box ran, its normal being behind, while 2.5R was
+            // refused).
             let n = contact.normal1;
             let behind = |t: &softgrip_rapier::SoftFingertip, co: &Collider, sign: f32| {
                 t.facing().is_some_and(|[x, y, z]| {
@@ -90,12 +93,33 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
                     sign * f.dot(n) < 0.0
                 })
             };
-            if behind(tip, tip_co, -1.0)
-                || other_tip.is_some_and(|j| behind(&scene.fingertips()[j], other_co, 1.0))
-            {
+            let depth = -(contact.dist as f64);
+            let backs = [
+                behind(tip, tip_co, -1.0).then_some((i, tip)),
+                other_tip
+                    .map(|j| (j, &scene.fingertips()[j]))
+                    .filter(|(_, t)| behind(t, other_co, 1.0)),
+            ];
+            if backs.iter().any(Option::is_some) {
+                if let Some((k, t)) = backs
+                    .into_iter()
+                    .flatten()
+                    .find(|(_, t)| depth > t.radius())
+                {
+                    return Err(SceneError::StartBuried {
+                        origin: c.origin.to_string(),
+                        fingertip: format!("fingertip[{k}] (`{}`)", t.name()),
+                        other: if k == i {
+                            other_label.clone()
+                        } else {
+                            format!("fingertip[{i}] (`{}`)", tip.name())
+                        },
+                        depth,
+                        radius: t.radius(),
+                    });
+                }
                 continue;
             }
-            let depth = -(contact.dist as f64);
             let (x, x_max) = range(depth);
             if x > x_max {
                 return Err(SceneError::StartPenetration {
