@@ -22,6 +22,6 @@ pub use level::{DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, L
 pub use levels::neo_hookean::neo_hookean_limit_point;
 pub use material::{ContactParams, Material};
 pub use normalised::NormalisedLaw;
-pub use number::Shortest;
+pub use number::{MAX_SHORTEST_DIGITS, Shortest, shorten_numbers};
 pub use pressure::ContactPatch;
 pub use tabulated::{MIN_TABULATED_SAMPLES, TabulatedCurve};

@@ -37,6 +37,53 @@ impl fmt::Display for Shortest {
     }
 }
 
+/// Digits a number in [`Shortest`] form can have at most: 17 significant digits, 4 leading
+/// zeros of a positional fraction, and the integer digits below 1e16.
+pub const MAX_SHORTEST_DIGITS: usize = 24;
+
+/// `text` with every decimal number longer than [`MAX_SHORTEST_DIGITS`] digits rewritten in
+/// [`Shortest`] form: for messages that quote numbers formatted by other crates (serde's
+/// "invalid type: floating point `1000...0.0`" of a TOML value of 1e300).
+///
+/// ```
+/// use softgrip_law::shorten_numbers;
+/// let long = format!("floating point `{}`, expected a sequence", 1e300);
+/// assert_eq!(shorten_numbers(&long), "floating point `1e300`, expected a sequence");
+/// assert_eq!(shorten_numbers("x = 0.25 at line 12"), "x = 0.25 at line 12");
+/// ```
+pub fn shorten_numbers(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut out = String::with_capacity(text.len());
+    let (mut i, mut copied) = (0, 0);
+    while i < b.len() {
+        if !b[i].is_ascii_digit() {
+            i += 1;
+            continue;
+        }
+        // A run of digits, optionally `.` and more digits.
+        let start = i;
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+        if i + 1 < b.len() && b[i] == b'.' && b[i + 1].is_ascii_digit() {
+            i += 1;
+            while i < b.len() && b[i].is_ascii_digit() {
+                i += 1;
+            }
+        }
+        let digits = text[start..i].bytes().filter(u8::is_ascii_digit).count();
+        if digits > MAX_SHORTEST_DIGITS
+            && let Ok(v) = text[start..i].parse::<f64>()
+        {
+            out.push_str(&text[copied..start]);
+            out.push_str(&Shortest(v).to_string());
+            copied = i;
+        }
+    }
+    out.push_str(&text[copied..]);
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -74,6 +121,12 @@ mod tests {
             assert!(s.len() <= 24, "{v:e} -> {s}");
         }
         assert_eq!(Shortest(f64::NAN).to_string(), "NaN");
+        let tiny = format!("{}", 1.5e-300);
+        assert_eq!(shorten_numbers(&format!("got -{tiny}!")), "got -1.5e-300!");
+        assert_eq!(
+            shorten_numbers("12345678901234567890123"),
+            "12345678901234567890123"
+        );
         assert_eq!(Shortest(f64::INFINITY).to_string(), "inf");
     }
 }

@@ -11,6 +11,8 @@ use crate::error::SceneError;
 use crate::fingertips;
 use crate::format::SceneFile;
 use crate::gripper::GripperProgram;
+use softgrip_law::shorten_numbers;
+
 use crate::level::LevelSpec;
 use crate::limits::MAX_SCENE_BYTES;
 use crate::read::{ReadError, read_bounded, read_limited, strip_bom_str};
@@ -48,7 +50,7 @@ impl Scene {
                 origin: origin.to_string(),
                 line,
                 column,
-                message: e.message().trim().to_string(),
+                message: shorten_numbers(e.message().trim()),
             }
         })?;
         let c = Checker { origin };

@@ -12,6 +12,7 @@ use std::time::Instant;
 use rayon::prelude::*;
 use softgrip_ecs::{BodyKind, Scene, SceneError};
 use softgrip_scene::same_file;
+use softgrip_scene::softgrip_rapier::softgrip_law::shorten_numbers;
 
 use crate::axis::{Axis, grid_indices, trial_count};
 use crate::error::SweepError;
@@ -128,7 +129,7 @@ impl Sweep {
                 origin: origin.to_string(),
                 line,
                 column,
-                message: e.message().trim().to_string(),
+                message: shorten_numbers(e.message().trim()),
             }
         })?;
         let scene_err = |message: String| SweepError::Scene {
