@@ -138,9 +138,14 @@ impl Output {
             if !keep {
                 return anyhow!("{why}; nothing written");
             }
-            match tmp.keep() {
-                Ok((_, at)) => anyhow!("{why}; the output is kept in {}", at.display()),
-                Err(e) => anyhow!("{why}; the output is lost: {}", e.error),
+            // Beside the target, under a name of its own: NAME.kept-PID.EXT.
+            let at = kept_name(&path);
+            match tmp.persist_noclobber(&at) {
+                Ok(_) => anyhow!("{why}; the output is kept in {}", at.display()),
+                Err(e) => match e.file.keep() {
+                    Ok((_, at)) => anyhow!("{why}; the output is kept in {}", at.display()),
+                    Err(e) => anyhow!("{why}; the output is lost: {}", e.error),
+                },
             }
         };
         if force
@@ -181,6 +186,20 @@ impl Output {
             }
         }
     }
+}
+
+/// `NAME.kept-PID.EXT` beside `path` (`results.kept-4242.csv`): where an output that could not
+/// be put in place is kept.
+fn kept_name(path: &Path) -> PathBuf {
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let ext = path
+        .extension()
+        .map(|e| format!(".{}", e.to_string_lossy()))
+        .unwrap_or_default();
+    path.with_file_name(format!("{stem}.kept-{}{ext}", std::process::id()))
 }
 
 /// The OS error of `e` without the path tempfile appends to it (the message names the target).
