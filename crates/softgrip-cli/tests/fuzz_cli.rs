@@ -146,7 +146,7 @@ fn sweep_in(dir: &Path) -> (PathBuf, String) {
     let data = common::root().join("crates/softgrip-sweep/tests/data");
     let scene = std::fs::read_to_string(data.join("grasp.toml")).unwrap();
     std::fs::write(dir.join("grasp.toml"), &scene).unwrap();
-    let holds: Vec<String> = (0..200)
+    let holds: Vec<String> = (0..24)
         .map(|k| format!("{}", 0.1 + 0.001 * k as f64))
         .collect();
     let text = format!(
