@@ -276,7 +276,11 @@ fn messages_print_1e300_in_shortest_form() {
         ("friction = 0.8", "friction = -1e300", "-1e300"),
         ("approach_speed = 0.01 ", "approach_speed = 1e300 ", "1e300"),
         // serde's message of a value of the wrong type quoted it with 301 digits.
-        ("gravity = [0.0, -9.81, 0.0]", "gravity = 1e300", "floating point `1e300`"),
+        (
+            "gravity = [0.0, -9.81, 0.0]",
+            "gravity = 1e300",
+            "floating point `1e300`",
+        ),
         // The law's message inside the scene's: x = delta/R printed 302 digits.
         ("depth = 0.002", "depth = 1e300", "x = delta/R = 1e302"),
     ] {
