@@ -150,7 +150,8 @@ fn write_csv(law: &ContactLaw, xs: &XRange, out: impl Write) -> io::Result<()> {
         // `{:e}` is the shortest representation that parses back to the same double.
         writeln!(
             out,
-            "{x},{:e},{:e},{:e},{:e},{:e},{}",
+            "{},{:e},{:e},{:e},{:e},{:e},{}",
+            Shortest(x),
             r.force,
             r.stiffness,
             law.energy(x),

@@ -201,8 +201,12 @@ fn sweep_case(rng: &mut Rng, dir: &Path) -> Result<String, String> {
         if std::fs::read_to_string(&out).unwrap_or_default() != "theirs\n" {
             return Err(format!("replaced: {err}"));
         }
-        let kept = err.split("kept in ").nth(1).ok_or(err.clone())?.trim();
-        read(Path::new(kept)).map_err(|e| format!("kept file: {e}"))?;
+        // It appeared before `--out` was checked (refused at once) or during the trials (the
+        // results kept beside it, whole).
+        if !err.contains("exists; pass --force") {
+            let kept = err.split("kept in ").nth(1).ok_or(err.clone())?.trim();
+            read(Path::new(kept)).map_err(|e| format!("kept file: {e}"))?;
+        }
     } else if code == -1 {
         if out.exists() {
             return Err("killed before its handler, yet an output exists".into());

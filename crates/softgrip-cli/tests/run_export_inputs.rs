@@ -310,6 +310,39 @@ fn digit_run(s: &str) -> usize {
         .unwrap_or(0)
 }
 
+/// Found by the CLI fuzz target: `curve`'s x column printed 5e-324 as a 325-digit decimal.
+#[test]
+fn curve_x_column_is_in_shortest_form() {
+    let o = common::softgrip(&[
+        "curve",
+        "--level",
+        "hertz",
+        "--nu",
+        "0.3",
+        "--x",
+        "5e-324:1e-300:1e-300",
+    ]);
+    let (stdout, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    let xs: Vec<&str> = (stdout.lines().skip(1))
+        .map(|l| l.split(',').next().unwrap())
+        .collect();
+    assert_eq!(xs, ["5e-324", "1e-300"]);
+    let o = common::softgrip(&[
+        "curve",
+        "--level",
+        "hertz",
+        "--nu",
+        "0.3",
+        "--x",
+        "0.01:0.03:0.01",
+    ]);
+    let xs: Vec<String> = (text(&o).0.lines().skip(1))
+        .map(|l| l.split(',').next().unwrap().to_string())
+        .collect();
+    assert_eq!(xs, ["0.01", "0.02", "0.03"], "ordinary values as before");
+}
+
 #[test]
 fn messages_print_1e300_in_shortest_form() {
     for args in [

@@ -94,7 +94,7 @@ fn mutated_sweep_files_never_panic() {
                     let at = at.min(bytes.len());
                     bytes.splice(at..at, format!("\n{line}\n").into_bytes());
                 }
-                3 if next(&mut state) % 2 == 0 => {
+                3 if next(&mut state).is_multiple_of(2) => {
                     let axis = HOSTILE[(next(&mut state) % HOSTILE.len() as u64) as usize];
                     if axis.starts_with('\u{feff}') {
                         bytes.splice(0..0, axis.bytes());
