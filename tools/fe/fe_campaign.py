@@ -6,6 +6,7 @@ reproduction of the reference.
   fe_campaign.py run [--only NAME ...] [--runs DIR] [-j 2] [--deadline HH:MM] [--timeout S]
   fe_campaign.py export [--runs DIR]      # writes tests/data/fe/<geometry>/*.csv
   fe_campaign.py reproduce [--runs DIR]   # free vs tests/data/fe/force_nu{0.3,0.49}.csv
+  fe_campaign.py table [--runs DIR] [--counterpart ball ...]  # the README's results table
 
 Case names are fe_model.Case.name: free_nu0.49_h60, flat_nu0.48_h60, core_nu0.48_t0.4_h60, ...
 Runs live outside the repo (default /tmp/softgrip-fe, or $SOFTGRIP_FE_RUNS); at most two ccx at a
@@ -555,9 +556,32 @@ def cmd_reproduce(a):
     return 0 if ok else 1
 
 
+def cmd_table(a):
+    """The README's results table (markdown) of the selected cases: case, mesh, role, reached x,
+    wall time and why it stopped, from the runs (or "not run" / "running")."""
+    print("| case | mesh | role | reached x | wall s | why it stopped |")
+    print("|---|---|---|---|---|---|")
+    for g, nu, t, h, role, cp, k in selected(a):
+        case = make(g, nu, t, h, role, cp, k)
+        d = os.path.join(a.runs, case.name)
+        three_d = getattr(case, "dim", 2) == 3
+        what = (("3D " if three_d and cp == "plane" else "") + cp +
+                (f" k={k:g}" if cp in ("ball", "cylinder") else "") + f" {g} nu={nu:g}")
+        if role == "facets":
+            what += f" (facet sag {case.cp.sag():.2g} mm)"
+        mesh = f"R/{h:g}" + (" (pole)" if three_d else "")
+        if not os.path.exists(os.path.join(d, "meta.json")):
+            state = "running" if os.path.isdir(d) else "not run"
+            print(f"| {what} | {mesh} | {role} | - | - | {state} |")
+            continue
+        res = fe_run.analyse(d)
+        print(f"| {what} | {mesh} | {role} | {res['reached']:g} | {res['meta']['wall_s']:.0f} | "
+              f"{res['why']} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("cmd", choices=["list", "run", "export", "reproduce"])
+    ap.add_argument("cmd", choices=["list", "run", "export", "reproduce", "table"])
     ap.add_argument("--runs", default=os.environ.get("SOFTGRIP_FE_RUNS", "/tmp/softgrip-fe"))
     ap.add_argument("--only", nargs="*")
     ap.add_argument("-j", type=int, default=2)
@@ -576,6 +600,8 @@ def main():
         cmd_export(a)
     elif a.cmd == "reproduce":
         sys.exit(cmd_reproduce(a))
+    elif a.cmd == "table":
+        cmd_table(a)
 
 
 if __name__ == "__main__":
