@@ -16,7 +16,7 @@ cd "$(dirname "$0")/../.."
 # (free instead of flat: -14 % at x = 0.1) or a wrong force scale (x 180) is far outside it.
 TOL_PCT="${SOFTGRIP_FE_SMOKE_TOL_PCT:-1.0}"
 # the 3D case: see README (the measured R/12-vs-R/20 difference and what the tolerance catches)
-TOL3D_PCT="${SOFTGRIP_FE_SMOKE3D_TOL_PCT:-3.0}"
+TOL3D_PCT="${SOFTGRIP_FE_SMOKE3D_TOL_PCT:-2.0}"
 SMOKE3D_X=0.06
 t0=$(date +%s)
 fail() { echo "smoke: $*"; echo "0 passed, 2 failed"; exit 1; }
