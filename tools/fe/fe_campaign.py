@@ -96,14 +96,15 @@ def curved_cases():
 
 def cases_3d():
     """The 3D quarter models (fe_model3d), nu = 0.48, element edge R/20 at the pole: the
-    cylinder k = 1 (flat first: the smoke test compares with it), the plane in 3D against the
-    axisymmetric flat run (role "check3d": how good the 3D mesh is), the edge, the cylinder
-    k = 3, then mesh convergence against R/14 (role "conv")."""
+    cylinder k = 1 flat (the smoke test compares with it), the plane in 3D against the
+    axisymmetric flat run (role "check3d": how good the 3D mesh is), its mesh convergence
+    against R/14 (role "conv", to x = 0.3), the edge flat and its convergence, then the free
+    cylinder and edge, and the cylinder k = 3."""
     c = [("flat", 0.48, 0, 20, "main", "cylinder", 1), ("flat", 0.48, 0, 20, "check3d", "plane", 0),
-         ("free", 0.48, 0, 20, "main", "cylinder", 1),
-         ("flat", 0.48, 0, 20, "main", "edge", 0), ("free", 0.48, 0, 20, "main", "edge", 0),
-         ("flat", 0.48, 0, 20, "main", "cylinder", 3), ("free", 0.48, 0, 20, "main", "cylinder", 3),
-         ("flat", 0.48, 0, 14, "conv", "cylinder", 1), ("flat", 0.48, 0, 14, "conv", "edge", 0)]
+         ("flat", 0.48, 0, 14, "conv", "cylinder", 1),
+         ("flat", 0.48, 0, 20, "main", "edge", 0), ("flat", 0.48, 0, 14, "conv", "edge", 0),
+         ("free", 0.48, 0, 20, "main", "cylinder", 1), ("free", 0.48, 0, 20, "main", "edge", 0),
+         ("flat", 0.48, 0, 20, "main", "cylinder", 3), ("free", 0.48, 0, 20, "main", "cylinder", 3)]
     return c
 
 

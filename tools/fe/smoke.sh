@@ -9,6 +9,7 @@
 #     edge R/12 at the pole, increments <= 0.005, to x = SMOKE3D_X, against
 #     tests/data/fe/cylinder/flat/force_nu0.48_k1.csv (R/20, the same increments) there.
 # Fails if any |F_smoke / F_committed - 1| exceeds its tolerance (see README for the values).
+# SOFTGRIP_FE_SMOKE_SERIAL=1 runs the two cases one after the other (one ccx at a time).
 # Last line: "2 passed, 0 failed" (or how many failed).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
@@ -25,15 +26,26 @@ PY="$(bash tools/fe/setup.sh)" || fail "setup.sh failed"
 t1=$(date +%s)
 D="$(mktemp -d /tmp/softgrip-fe-smoke.XXXXXX)"
 TIMEFORMAT="smoke: %R s wall, %U s CPU (user)"
-( time "$PY" tools/fe/fe_run.py flat --nu 0.48 --h 30 --tend 0.3 --dt-small 0.005 \
-    --dir "$D/axi" --timeout 900 > "$D/axi.csv" ) 2> "$D/axi.time" &
-p1=$!
-( time "$PY" tools/fe/fe_run.py flat --counterpart cylinder --k 1 --nu 0.48 --h 12 \
-    --tend "$SMOKE3D_X" --dt-small 0.005 --dir "$D/cyl" --timeout 900 > "$D/cyl.csv" ) \
-    2> "$D/cyl.time" &
-p2=$!
-wait $p1 || fail "fe_run.py (axisymmetric) failed (see $D/axi/log)"
-wait $p2 || fail "fe_run.py (3D cylinder) failed (see $D/cyl/log)"
+axi() {
+  ( time "$PY" tools/fe/fe_run.py flat --nu 0.48 --h 30 --tend 0.3 --dt-small 0.005 \
+      --dir "$D/axi" --timeout 900 > "$D/axi.csv" ) 2> "$D/axi.time"
+}
+cyl() {
+  ( time "$PY" tools/fe/fe_run.py flat --counterpart cylinder --k 1 --nu 0.48 --h 12 \
+      --tend "$SMOKE3D_X" --dt-small 0.005 --dir "$D/cyl" --timeout 900 > "$D/cyl.csv" ) \
+      2> "$D/cyl.time"
+}
+if [ "${SOFTGRIP_FE_SMOKE_SERIAL:-0}" = 1 ]; then  # one ccx at a time (one free core)
+  axi || fail "fe_run.py (axisymmetric) failed (see $D/axi/log)"
+  cyl || fail "fe_run.py (3D cylinder) failed (see $D/cyl/log)"
+else
+  axi &
+  p1=$!
+  cyl &
+  p2=$!
+  wait $p1 || fail "fe_run.py (axisymmetric) failed (see $D/axi/log)"
+  wait $p2 || fail "fe_run.py (3D cylinder) failed (see $D/cyl/log)"
+fi
 t2=$(date +%s)
 failed=0
 compare() {  # name, smoke csv, committed csv, tolerance [%], x...
