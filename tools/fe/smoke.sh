@@ -82,7 +82,9 @@ cat "$D/axi.time"
 compare "3D cylinder" "$D/cyl.csv" tests/data/fe/cylinder/flat/force_nu0.48_k1.csv "$TOL3D_PCT" \
   0.03 "$SMOKE3D_X"
 cat "$D/cyl.time"
-echo "smoke: setup $((t1 - t0)) s, FE runs $((t2 - t1)) s (side by side), total $(( $(date +%s) - t0 )) s"
+mode="side by side"
+[ "${SOFTGRIP_FE_SMOKE_SERIAL:-0}" = 1 ] && mode="one after the other"
+echo "smoke: setup $((t1 - t0)) s, FE runs $((t2 - t1)) s ($mode), total $(( $(date +%s) - t0 )) s"
 if [ $failed -eq 0 ]; then
   rm -rf "$D"
 fi
