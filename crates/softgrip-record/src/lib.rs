@@ -35,7 +35,7 @@ pub use recorder::{
     RecordingStats,
 };
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
-pub use recover::{RecoverReport, recover};
+pub use recover::{RecoverReport, recover, recover_into};
 pub use sink::{
     BodyFrame, BodySample, ContactReading, ContactSample, FingertipInfo, JointSample, RobotInfo,
     SceneInfo, ShapeGeometry, ShapeInfo, SinkError, StepFrame, StepSink, TactileSample,

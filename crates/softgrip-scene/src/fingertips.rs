@@ -1,10 +1,13 @@
 //! Fingertip checks: every `[[fingertip]]` built into the plugin's [`SoftFingertip`], its
 //! material from a preset or constants, its law from a level name or a measured curve.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
-use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material, TabulatedCurve};
+use softgrip_law::{
+    Backing, ContactLaw, ContactParams, Level, MIN_CORE_THICKNESS_RATIO, Material, Shortest,
+    TabulatedCurve,
+};
 use softgrip_rapier::{Preset, SoftFingertip, SoftFingertipBuilder};
 
 use crate::control::Carrier;
@@ -25,6 +28,10 @@ pub(crate) fn check_fingertips(
     base: &Path,
 ) -> Result<(Vec<SoftFingertip>, Vec<Carrier>), SceneError> {
     let mut names = HashSet::new();
+    // By name, so that N fingertips on N bodies check in O(N).
+    let bodies: HashMap<&str, usize> = (file.bodies.iter().enumerate())
+        .map(|(i, b)| (b.name.as_str(), i))
+        .collect();
     let mut tips = Vec::new();
     let mut carriers = Vec::new();
     for (i, t) in file.fingertips.iter().enumerate() {
@@ -32,7 +39,7 @@ pub(crate) fn check_fingertips(
         if t.name.is_empty() || !names.insert(t.name.as_str()) {
             return Err(c.name(f("name"), format!("`{}` is empty or used twice", t.name)));
         }
-        carriers.push(carrier(c, t, file, robots, &f)?);
+        carriers.push(carrier(c, t, &bodies, robots, &f)?);
         c.coords(f("offset"), t.offset)?;
         c.range(
             f("density"),
@@ -43,6 +50,7 @@ pub(crate) fn check_fingertips(
         let material = material(c, t, &f)?;
         let law = law(c, t, &f, base)?;
         let backing = backing(c, t, &f)?;
+        check_core_ratio(c, t, &f, backing, &law)?;
         let builder = SoftFingertip::builder(t.radius)
             .name(t.name.clone())
             .material(material)
@@ -86,14 +94,13 @@ pub(crate) fn check_fingertips(
 fn carrier(
     c: &Checker,
     t: &FingertipSpec,
-    file: &SceneFile,
+    bodies: &HashMap<&str, usize>,
     robots: &[Robot],
     f: &dyn Fn(&str) -> String,
 ) -> Result<Carrier, SceneError> {
     match (&t.body, &t.link) {
-        (Some(body), None) => (file.bodies.iter())
-            .position(|b| &b.name == body)
-            .map(Carrier::Body)
+        (Some(body), None) => (bodies.get(body.as_str()))
+            .map(|&i| Carrier::Body(i))
             .ok_or_else(|| c.name(f("body"), format!("no body is named `{body}`"))),
         (None, Some(link)) => {
             let (robot, name) = link
@@ -178,6 +185,35 @@ fn backing(
             .parse()
             .map_err(|_: String| c.invalid(f("backing"), name, &expected)),
     }
+}
+
+/// A `core` skin thinner than the calibrated level's form holds
+/// ([`MIN_CORE_THICKNESS_RATIO`] R): an error naming `core_thickness` for the levels that use
+/// the form (`calibrated`, `auto`); a measured curve holds any thickness.
+fn check_core_ratio(
+    c: &Checker,
+    t: &FingertipSpec,
+    f: &dyn Fn(&str) -> String,
+    backing: Backing,
+    law: &TipLaw,
+) -> Result<(), SceneError> {
+    let (Backing::Core { thickness }, TipLaw::Level(level)) = (backing, law) else {
+        return Ok(());
+    };
+    if !matches!(level, Level::Calibrated | Level::Auto { .. }) {
+        return Ok(());
+    }
+    let min = MIN_CORE_THICKNESS_RATIO * t.radius;
+    if thickness >= min {
+        return Ok(());
+    }
+    let range = format!(
+        "in [{} m, radius) for level `{}` (t/R >= {MIN_CORE_THICKNESS_RATIO}, radius = {} m: the calibrated core form is validated down to there; a thinner skin needs `level = {{ tabulated = \"curve.csv\" }}`)",
+        Shortest(min),
+        level.name(),
+        Shortest(t.radius)
+    );
+    Err(c.invalid(f("core_thickness"), thickness, &range))
 }
 
 /// What a fingertip's `level` (and `tolerance`) ask for.

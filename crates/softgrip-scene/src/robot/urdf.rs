@@ -10,7 +10,7 @@ use rapier3d_urdf::urdf_rs::{Geometry, JointType, Pose, Robot};
 use softgrip_rapier::rapier3d::prelude::{MeshConverter, TriMeshFlags, Vector};
 
 use crate::limits::{MAX_COORDINATE, MAX_MESH_BYTES, MAX_SCENE_BYTES, MAX_SIZE, MIN_SIZE};
-use crate::read::{ReadError, read_bounded, size};
+use crate::read::{ReadError, read_regular, size, strip_bom};
 use crate::robot::spec::MeshShape;
 
 /// Largest mass of a link \[kg\] (rapier is f32; inertias are masses times squared lengths).
@@ -39,18 +39,21 @@ pub(crate) fn converter(mesh: MeshShape) -> MeshConverter {
     }
 }
 
-/// Reads `path` (at most [`MAX_SCENE_BYTES`]), parses it and checks it; mesh files are
+/// Reads `path` (a regular file of at most [`MAX_SCENE_BYTES`]; a leading byte-order mark is
+/// skipped), parses it and checks it; mesh files are
 /// resolved with `packages` (name -> folder) and loaded once with `mesh`'s converter.
 pub(crate) fn read_urdf(
     path: &Path,
     packages: &BTreeMap<String, PathBuf>,
     mesh: MeshShape,
 ) -> Result<CheckedUrdf, UrdfProblem> {
-    let bytes = read_bounded(path, MAX_SCENE_BYTES).map_err(|e| match e {
-        ReadError::Io(e) => format!("cannot read: {e}"),
+    // A regular file (a FIFO would block the read forever), at most the scene size limit.
+    let bytes = read_regular(path, MAX_SCENE_BYTES).map_err(|e| match e {
         ReadError::TooLarge { limit } => format!("larger than the {} limit", size(limit)),
+        other => other.message(),
     })?;
-    let text = String::from_utf8(bytes).map_err(|e| format!("not UTF-8: {e}"))?;
+    let text =
+        String::from_utf8(strip_bom(&bytes).to_vec()).map_err(|e| format!("not UTF-8: {e}"))?;
     let mut robot = rapier3d_urdf::urdf_rs::read_from_string(&sanitize(&text))
         .map_err(|e| format!("not a URDF robot: {e}"))?;
     check_structure(&robot)?;
