@@ -91,7 +91,9 @@ pub struct StepFrame {
     pub contacts: Vec<ContactSample>,
     /// Tactile images of the fingertips with a pad (always, when a fingertip has one).
     pub tactile: Vec<TactileSample>,
-    /// Every robot's moving joints after the step (`record.joints`).
+    /// Every robot's moving joints after the step (`record.joints`); the ECS gives as velocity
+    /// the rate of motion since its previous frame (rapier's own joint velocity lacks the
+    /// position correction of its solve).
     pub joints: Vec<JointSample>,
     /// Their targets for the step: position and velocity targets, effort = the motor's force
     /// limit (0 without one) (`record.joints`).
