@@ -6,6 +6,7 @@ mod cli;
 mod curve;
 mod fe;
 mod files;
+mod joint_commands;
 mod level_arg;
 mod out;
 mod plot;
