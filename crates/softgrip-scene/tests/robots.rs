@@ -294,3 +294,43 @@ fn start_positions_place_the_links_in_both_joint_models() {
         assert!((s.position - 0.5).abs() < 1e-5, "{model}: {}", s.position);
     }
 }
+
+/// A position command from outside moves a joint no faster than its URDF `velocity`: the
+/// shipped gripper (0.1 m/s) commanded from 28 mm to 40 mm moves at 0.1 m/s, not 13 mm in one
+/// 16.7 ms step as before, and holds the command (after a 1.3 mm overshoot when the ramp's
+/// velocity target drops to 0).
+#[test]
+fn outside_commands_move_joints_at_most_at_their_urdf_velocity() {
+    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let (head, _grasp) = text.split_once("[[controller]]").unwrap();
+    let scene = Scene::parse(head, "gripper.toml", path.parent().unwrap()).unwrap();
+    let mut run = PlainRun::new(&scene);
+    let robot = &scene.robots()[0];
+    let h = run.handles.robots[0].1.clone();
+    let j = robot.joint_index("finger_joint").unwrap();
+    let inbox = run.control.inbox(0).unwrap();
+    inbox
+        .lock()
+        .unwrap()
+        .commands
+        .push(softgrip_scene::control::JointCommand {
+            name: "finger_joint".into(),
+            position: Some(0.04),
+            velocity: None,
+        });
+    let dt = scene.file().dt;
+    let mut q = Vec::new();
+    for _ in 0..30 {
+        run.step();
+        q.push(softgrip_scene::robot::joint_state(robot, &run.world.physics, &h, j, dt).position);
+    }
+    // The ramp's target after k steps is 28 mm + k · 0.1 m/s · dt; rapier's motor ends a step
+    // at about its position target + velocity target · dt (one step ahead, as the grasp's).
+    let step = 0.1 * dt;
+    assert!(q[0] - 0.028 < 2.0 * step + 1e-4, "first step to {} m", q[0]);
+    let speed = (q[5] - q[1]) / (4.0 * dt);
+    assert!((speed - 0.1).abs() < 0.005, "{speed} m/s");
+    let last = q[29];
+    assert!((last - 0.04).abs() < 2e-4, "held at {last} m");
+}

@@ -71,6 +71,9 @@ pub struct JointCommands {
     inbox: SharedInbox,
     /// Each joint's commanded (position, velocity), once commanded.
     targets: Vec<Option<(f64, f64)>>,
+    /// The position target each joint's motor was given at the last step: it moves toward the
+    /// commanded position at most the URDF `velocity` per second.
+    applied: Vec<Option<f64>>,
     running: Option<Running>,
 }
 
@@ -82,6 +85,7 @@ impl JointCommands {
             robot,
             inbox: SharedInbox::default(),
             targets: vec![None; model.joints().len()],
+            applied: vec![None; model.joints().len()],
             running: None,
         }
     }
@@ -170,6 +174,20 @@ impl JointCommands {
     }
 }
 
+/// The motor target for a step of `dt` \[s\] from position target `from` toward the
+/// commanded `(target, velocity)`: the command itself when it is within `limit · dt` (or
+/// without a limit), else `limit · dt` toward it with the velocity target `±limit` (a position
+/// command moves the joint no faster than its URDF `velocity`).
+fn ramp(from: f64, target: f64, velocity: f64, limit: Option<f64>, dt: f64) -> (f64, f64) {
+    match limit {
+        Some(vmax) if vmax > 0.0 && (target - from).abs() > vmax * dt => {
+            let s = (target - from).signum();
+            (from + s * vmax * dt, s * vmax)
+        }
+        _ => (target, velocity),
+    }
+}
+
 impl Controller for JointCommands {
     fn name(&self) -> &str {
         &self.name
@@ -216,10 +234,17 @@ impl Controller for JointCommands {
                 still: 0.0,
             });
         }
-        for (j, t) in self.targets.iter().enumerate() {
-            if let Some((p, v)) = *t {
-                io.set_joint(self.robot, j, p, v);
-            }
+        let limits: Vec<Option<f64>> = (io.robots()[self.robot].joints().iter())
+            .map(|j| j.velocity)
+            .collect();
+        for (j, limit) in limits.into_iter().enumerate() {
+            let Some((p, v)) = self.targets[j] else {
+                continue;
+            };
+            let from = self.applied[j].unwrap_or_else(|| io.joint(self.robot, j).position);
+            let (p, v) = ramp(from, p, v, limit, io.dt);
+            self.applied[j] = Some(p);
+            io.set_joint(self.robot, j, p, v);
         }
         event.or_else(|| self.watch(io))
     }
