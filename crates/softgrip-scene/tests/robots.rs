@@ -334,3 +334,46 @@ fn outside_commands_move_joints_at_most_at_their_urdf_velocity() {
     let last = q[29];
     assert!((last - 0.04).abs() < 2e-4, "held at {last} m");
 }
+
+/// The shipped three-finger hand closes on the ball symmetrically: the three fingers' joint
+/// frames are 120 degrees apart, so the three pads touch the ball in the same step with the
+/// same force (to 1e-3 relative) and the ball is not pushed off the hand's axis (< 1 um). What
+/// the pads press is the solver's business (issue 23: the links are solved as free bodies, and
+/// a multibody link loses the soft impulse), so the force itself is not asserted here.
+#[test]
+fn three_finger_hand_closes_on_the_ball_symmetrically() {
+    let path = repo().join("scenes/robots/three_finger_hand_ball.toml");
+    let scene = Scene::from_file(&path).unwrap();
+    assert_eq!(scene.robots()[0].joints().len(), 6);
+    let mut run = PlainRun::new(&scene);
+    let ball = run.handles.body("ball").unwrap();
+    let pads: Vec<_> = (0..3)
+        .map(|f| run.handles.fingertip(&format!("f{f}_pad")).unwrap())
+        .collect();
+    let mut touched = 0;
+    for _ in 0..60 {
+        run.step();
+        let force = |h| -> f64 {
+            (run.world.soft.contacts_of(h))
+                .map(|c| c.normal_force)
+                .sum()
+        };
+        let f: Vec<f64> = pads.iter().map(|&h| force(h)).collect();
+        let touching = f.iter().filter(|&&x| x > 0.0).count();
+        assert!(touching == 0 || touching == 3, "pads touching alone: {f:?}");
+        if touching == 3 {
+            touched += 1;
+            let mean = f.iter().sum::<f64>() / 3.0;
+            for x in &f {
+                assert!((x - mean).abs() <= 1e-3 * mean, "pad forces {f:?}");
+            }
+        }
+        let p = run.world.physics.bodies[ball].translation();
+        let off = ((p.x as f64).powi(2) + (p.z as f64).powi(2)).sqrt();
+        assert!(off < 1e-6, "ball pushed {off} m off the axis");
+    }
+    assert!(
+        touched > 10,
+        "the pads touched the ball in {touched} of 60 steps"
+    );
+}
