@@ -8,7 +8,7 @@ use crate::error::{Error, Result};
 use crate::level::{Level, LevelKind};
 use crate::levels::NormalisedLaw;
 use crate::levels::tabulated::Tabulated;
-use crate::mapping::CounterpartMap;
+use crate::mapping::{CounterpartMap, reach};
 use crate::material::ContactParams;
 use crate::pressure::ContactPatch;
 use crate::root::{Probe, Stop, newton_bracketed};
@@ -135,6 +135,9 @@ pub struct ContactLaw {
     stiffness_scale: f64,
     /// `R/rho` \[m\]: the energy is `w force_scale R/rho`.
     energy_length: f64,
+    /// The counterpart's own finite size (`mapping`): `tau E* R^2` \[N\], the force
+    /// `tail x^(5/2)` subtracted from the mapped plane law (0 on a plane and an edge).
+    tail: f64,
     /// The counterpart and its map ([`with_counterpart`](Self::with_counterpart)).
     counterpart: Counterpart,
     map: CounterpartMap,
@@ -211,6 +214,7 @@ impl ContactLaw {
             force_scale: e * r * r,
             stiffness_scale: e * r,
             energy_length: r,
+            tail: 0.0,
             counterpart: Counterpart::PLANE,
             map: CounterpartMap::IDENTITY,
             edge,
@@ -226,8 +230,9 @@ impl ContactLaw {
     /// ([`Error::IncompatibleCounterpart`], [`crate::MIN_RELATIVE_CURVATURE`],
     /// [`crate::MAX_RELATIVE_CURVATURE`]).
     ///
-    /// Validity: in `x = delta/R`, the plane's `x_max` on a convex counterpart, and on a
-    /// concave one the `x` at which the plane law reaches its own `x_max` (`rho x`).
+    /// Validity: in `x = delta/R`, where the FE of curved counterparts stops for the
+    /// construction (0.70 free, 0.66 flat, and for a core also `0.6 t/R`), or where the plane
+    /// law reaches its own `x_max` (at `rho x`), whichever comes first.
     ///
     /// ```
     /// use softgrip_law::{ContactLaw, ContactParams, Counterpart, Level, Material};
@@ -242,16 +247,28 @@ impl ContactLaw {
     /// ```
     pub fn with_counterpart(&self, counterpart: Counterpart) -> Result<Self> {
         let p = &self.params;
-        let map =
-            CounterpartMap::try_new(&counterpart, p.radius(), p.poisson_ratio(), p.backing())?;
+        // The fingertip's own law takes the calibrated map; the published levels (baselines)
+        // the patch argument alone.
+        let calibrated = matches!(
+            self.level,
+            Level::Calibrated | Level::Auto { .. } | Level::Tabulated | Level::Custom
+        );
+        let map = CounterpartMap::try_new(
+            &counterpart,
+            p.radius(),
+            p.poisson_ratio(),
+            p.backing(),
+            calibrated,
+        )?;
         let (e, r) = (p.effective_modulus(), p.radius());
         let x_max = self.curve.as_dyn().x_max();
-        // A convex counterpart ends where the plane does, in x = delta/R; a concave one where
-        // the curve does, in rho x.
-        let edge_x = if map.rho < 1.0 {
-            map.rho * x_max
-        } else {
+        // The curve's own range, in rho x, or the counterpart's reach in x, whichever ends
+        // first; a plane keeps its own.
+        let edge_x = if counterpart.is_plane() {
             x_max
+        } else {
+            let reach = reach(p.backing(), p.thickness_ratio()).min(map.reach);
+            x_max.min(map.rho * reach)
         };
         let edge = if edge_x == self.edge.x {
             self.edge
@@ -259,7 +276,7 @@ impl ContactLaw {
             Edge::at(&self.curve, edge_x)
         };
         let s = map.force;
-        Ok(Self {
+        let law = Self {
             params: self.params,
             level: self.level,
             curve: self.curve.clone(),
@@ -268,10 +285,47 @@ impl ContactLaw {
             force_scale: s * e * r * r,
             stiffness_scale: s * map.rho * e * r,
             energy_length: r / map.rho,
+            tail: map.tail * e * r * r,
             counterpart,
             map,
             edge,
-        })
+        };
+        Ok(law.without_softening())
+    }
+
+    /// The law with its range ended before its stiffness could vanish: the counterpart's
+    /// finite-size term grows as `x^(5/2)` and, on a counterpart far smaller than the
+    /// fingertip, overtakes the plane law's stiffening (no contact law may soften). 64 samples
+    /// of the range, then bisection on the first sign change (to 1e-9 of the range).
+    fn without_softening(mut self) -> Self {
+        if self.tail <= 0.0 {
+            return self;
+        }
+        const SAMPLES: u32 = 64;
+        let top = self.delta_max();
+        let soft = |d: f64| {
+            let k = self.response(d).stiffness;
+            k.is_nan() || k <= 0.0
+        };
+        let Some(i) = (1..=SAMPLES).find(|&i| soft(top * f64::from(i) / f64::from(SAMPLES))) else {
+            return self;
+        };
+        let (mut lo, mut hi) = (
+            top * f64::from(i - 1) / f64::from(SAMPLES),
+            top * f64::from(i) / f64::from(SAMPLES),
+        );
+        while hi - lo > 1e-9 * top {
+            let mid = 0.5 * (lo + hi);
+            if soft(mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        // 5 % short of where it vanishes: the extension needs a positive stiffness.
+        let edge_x = lo * self.x_scale;
+        self.edge = Edge::at(&self.curve, 0.95 * edge_x);
+        self
     }
 
     /// The counterpart this law is bound to ([`Counterpart::PLANE`] unless set by
@@ -310,7 +364,11 @@ impl ContactLaw {
 
     /// Force at the end of the validity range \[N\].
     pub fn force_max(&self) -> f64 {
-        self.edge.f * self.force_scale
+        let f = self.edge.f * self.force_scale;
+        if self.tail == 0.0 {
+            return f;
+        }
+        f - self.tail_at(self.edge.x / self.map.rho).0
     }
 
     /// The level that serves compression ratio `x` (differs from the chosen level for `Auto`).
@@ -346,14 +404,31 @@ impl ContactLaw {
         // NaN fails both comparisons and goes to the cold path.
         if x > 0.0 && x <= self.edge.x {
             let (f, k, level) = self.curve.force_stiffness(x);
+            let (mut force, mut stiffness) = (f * self.force_scale, k * self.stiffness_scale);
+            if self.tail != 0.0 {
+                let (tf, tk) = self.tail_at(delta * self.inv_radius);
+                force -= tf;
+                stiffness -= tk;
+            }
             return NormalResponse {
-                force: f * self.force_scale,
-                stiffness: k * self.stiffness_scale,
+                force,
+                stiffness,
                 regime: Regime::Valid,
                 level,
             };
         }
         self.response_outside(x)
+    }
+
+    /// The counterpart's finite-size term at `x = delta/R`: its force `tail x^(5/2)` \[N\] and
+    /// stiffness `(5/2) tail x^(3/2) / R` \[N/m\].
+    #[inline(always)]
+    fn tail_at(&self, x: f64) -> (f64, f64) {
+        let s = x.sqrt();
+        (
+            self.tail * x * x * s,
+            2.5 * self.tail * x * s * self.inv_radius,
+        )
     }
 
     /// Separated, extended or non-finite: off the hot path.
@@ -369,9 +444,20 @@ impl ContactLaw {
         } else {
             (e.f + e.k * (X_FROZEN - e.x), 0.0, Regime::Extended)
         };
+        let (mut force, mut stiffness) = (f * self.force_scale, k * self.stiffness_scale);
+        if self.tail != 0.0 && regime == Regime::Extended {
+            // The tail extended by its tangent at the edge, frozen with the rest.
+            let (xe, xc) = (e.x / self.map.rho, x.min(X_FROZEN) / self.map.rho);
+            let (tf, tk) = self.tail_at(xe);
+            let r = self.params.radius();
+            force -= tf + tk * r * (xc - xe);
+            if x <= X_FROZEN {
+                stiffness -= tk;
+            }
+        }
         NormalResponse {
-            force: f * self.force_scale,
-            stiffness: k * self.stiffness_scale,
+            force,
+            stiffness,
             regime,
             level: self.kind_at_curve(if x.is_finite() { x } else { 0.0 }),
         }
@@ -391,7 +477,21 @@ impl ContactLaw {
             let dx = x.min(X_FROZEN) - e.x;
             e.w + e.f * dx + 0.5 * e.k * dx * dx
         };
-        w * self.force_scale * self.energy_length
+        let energy = w * self.force_scale * self.energy_length;
+        if self.tail == 0.0 {
+            return energy;
+        }
+        // The tail's integral, tail R x^(7/2)/(7/2), and past the edge its tangent's.
+        let r = self.params.radius();
+        let (xp, xe) = (x.min(X_FROZEN) / self.map.rho, e.x / self.map.rho);
+        let inside = xp.min(xe);
+        let mut w_tail = self.tail * r * inside.powi(3) * inside.sqrt() / 3.5;
+        if xp > xe {
+            let (tf, tk) = self.tail_at(xe);
+            let d = xp - xe;
+            w_tail += r * (tf * d + 0.5 * tk * r * d * d);
+        }
+        energy - w_tail
     }
 
     /// Contact radius and pressure at compression `delta` \[m\] (extension included; an empty
@@ -488,7 +588,12 @@ impl ContactLaw {
             });
         }
         let f_target = force / self.force_scale;
-        if f_target > self.edge.f {
+        let beyond = if self.tail == 0.0 {
+            f_target > self.edge.f
+        } else {
+            force > self.force_max()
+        };
+        if beyond {
             return Err(Error::ForceOutOfRange {
                 level: self.kind_at_curve(self.edge.x),
                 force,
@@ -498,6 +603,9 @@ impl ContactLaw {
         }
         if f_target == 0.0 {
             return Ok(0.0);
+        }
+        if self.tail != 0.0 {
+            return Ok(self.compression_with_tail(force));
         }
         let x = match &self.curve {
             Curve::Tatara(t) => t.x_of_force(f_target),
@@ -520,6 +628,28 @@ impl ContactLaw {
             }
         };
         Ok(x * self.params.radius() / self.map.rho)
+    }
+
+    /// The inverse with the counterpart's tail: safeguarded Newton in delta on the total
+    /// force (non-decreasing on the range: `with_counterpart` ends the range before the
+    /// stiffness could vanish), `0 < force <= force_max`.
+    fn compression_with_tail(&self, force: f64) -> f64 {
+        let hi = self.delta_max();
+        let r = self.params.radius();
+        // Hertz's compression of the force, for a start.
+        let hertz = (0.75 * force / (self.force_scale * self.map.force)).powf(2.0 / 3.0) * r;
+        let stop = Stop {
+            step: 1e-14,
+            width: Some(1e-15),
+            max_iterations: 200,
+        };
+        newton_bracketed(0.0, hi, hertz.min(hi), stop, |d| {
+            let resp = self.response(d);
+            Probe {
+                below_root: resp.force < force,
+                step: (resp.force - force) / resp.stiffness,
+            }
+        })
     }
 }
 

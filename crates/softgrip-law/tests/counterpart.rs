@@ -63,7 +63,7 @@ fn a_ball_is_hertz_with_the_effective_radius_at_small_x() {
             let level = law.level();
             // Hertz: exact everywhere in its range.
             if level == Level::Hertz {
-                for x in [1e-6, 0.01, 0.3, 0.9] {
+                for x in [1e-6, 0.01, 0.3, 0.65] {
                     let want = 4.0 / 3.0 * rho_h.sqrt() * x * x.sqrt();
                     let got = on.response(x).force;
                     assert!(
