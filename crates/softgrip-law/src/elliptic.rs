@@ -171,8 +171,9 @@ pub(crate) const MAX_CURVATURE_RATIO: f64 = 1e8;
 
 /// `m' = 1 - e²` of Hertz's ellipse for the half-curvature ratio `ratio = B/A` in
 /// `[1, MAX_CURVATURE_RATIO]`: the root of `R_D(0, 1, m')/R_D(0, m', 1) = ratio`, by Newton in
-/// `t = ln m'` (the ratio is smooth and decreasing in m'), started from Hamrock and Brewe's
-/// `b/a ~ ratio^(-2/pi)` and kept in its bracket; to 1e-13 relative in the ratio.
+/// `t = ln m'` (the ratio is smooth and decreasing in m') by secant steps, started from
+/// Hamrock and Brewe's `b/a ~ ratio^(-2/pi)` and kept in its bracket; to 1e-13 relative in
+/// the ratio.
 pub(crate) fn eccentricity_complement(ratio: f64) -> f64 {
     if ratio.is_nan() || ratio <= 1.0 {
         return 1.0;
@@ -191,11 +192,16 @@ pub(crate) fn eccentricity_complement(ratio: f64) -> f64 {
         width: Some(1e-15),
         max_iterations: 100,
     };
+    // Secant steps (one evaluation each), started with Hamrock and Brewe's slope
+    // d ln(ratio)/dt = -pi/4, inside the bracket.
+    let mut prev: Option<(f64, f64)> = None;
     let t = newton_bracketed(lo, hi, start.clamp(lo, hi), stop, |t| {
         let v = g(t);
-        // Central difference of g in t: its error (1e-10) only slows Newton's last step.
-        let h = 1e-5;
-        let slope = (g(t + h) - g(t - h)) / (2.0 * h);
+        let slope = match prev {
+            Some((tp, vp)) if tp != t && vp != v => (v - vp) / (t - tp),
+            _ => -0.25 * PI,
+        };
+        prev = Some((t, v));
         Probe {
             below_root: v > 0.0,
             step: v / slope,
