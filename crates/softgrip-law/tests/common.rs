@@ -51,6 +51,7 @@ pub struct Smooth {
 }
 
 impl Smooth {
+    /// The fit to the points `(x, f, a/R)` (their `a/R` column).
     pub fn fit(points: &[(f64, f64, f64)]) -> Self {
         let pts: Vec<(f64, f64)> = points
             .iter()
@@ -89,6 +90,7 @@ impl Smooth {
         }
     }
 
+    /// The smooth radius at `x`.
     pub fn at(&self, x: f64) -> f64 {
         let s = x.sqrt();
         s * self.coef.iter().rev().fold(0.0, |acc, c| acc * s + c)
