@@ -182,7 +182,7 @@ impl Form {
 /// Free sphere: r0, r1, g0, g1 of `r = r0 + r1 eps`, `g = g0 + g1 eps`.
 const FREE: [f64; 4] = [0.671731, 0.0, 0.235768, 0.0];
 /// Flat and core (a bonded pad): r0, r1, g0, g1.
-const BONDED: [f64; 4] = [0.778474, 0.0, 0.316433, 0.0];
+const BONDED: [f64; 4] = [0.778514, 0.0, 0.316399, 0.0];
 
 /// The map of a sharp edge.
 fn edge_map(_nu: f64, _backing: Backing) -> CounterpartMap {
