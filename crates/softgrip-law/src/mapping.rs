@@ -180,9 +180,9 @@ impl Form {
 }
 
 /// Free sphere: r0, r1, g0, g1 of `r = r0 + r1 eps`, `g = g0 + g1 eps`.
-const FREE: [f64; 4] = [0.671731, 0.0, 0.235768, 0.0];
+const FREE: [f64; 4] = [0.680677, 0.0, 0.230026, 0.0];
 /// Flat and core (a bonded pad): r0, r1, g0, g1.
-const BONDED: [f64; 4] = [0.778514, 0.0, 0.316399, 0.0];
+const BONDED: [f64; 4] = [0.778433, 0.0, 0.316469, 0.0];
 
 /// The map of a sharp edge.
 fn edge_map(_nu: f64, _backing: Backing) -> CounterpartMap {
