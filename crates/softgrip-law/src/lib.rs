@@ -12,12 +12,13 @@ mod levels;
 mod mapping;
 mod material;
 mod normalised;
+mod number;
 mod pressure;
 mod quadrature;
 mod root;
 mod tabulated;
 
-pub use backing::Backing;
+pub use backing::{Backing, MIN_CORE_THICKNESS_RATIO};
 pub use counterpart::{
     Counterpart, CounterpartKind, MAX_RELATIVE_CURVATURE, MIN_RELATIVE_CURVATURE,
 };
@@ -27,5 +28,6 @@ pub use level::{DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, L
 pub use levels::neo_hookean::neo_hookean_limit_point;
 pub use material::{ContactParams, Material};
 pub use normalised::NormalisedLaw;
+pub use number::{MAX_SHORTEST_DIGITS, Shortest, shorten_numbers};
 pub use pressure::ContactPatch;
 pub use tabulated::{MIN_TABULATED_SAMPLES, TabulatedCurve};

@@ -5,7 +5,9 @@
 use numpy::ndarray::{ArrayD, IxDyn};
 use numpy::{AllowTypeChange, IntoPyArray, PyArrayLikeDyn, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyFloat, PyInt};
+use pyo3::types::{PyBytes, PyFloat, PyInt, PyList, PyString, PyTuple};
+
+use crate::args::type_error;
 
 /// The input: one number, or an array's values (row-major) and shape.
 pub enum Input {
@@ -16,26 +18,40 @@ pub enum Input {
 }
 
 impl Input {
-    /// Reads `value` (named `field` in the error if it is neither a number nor array-like).
+    /// Reads `value`: a number (a Python int, float or bool, a numpy scalar, anything with
+    /// `__float__`) or an array-like whose numpy dtype is bool, integer or floating. None, a
+    /// string, bytes, or an array of objects, strings or complex numbers is an
+    /// `ArgumentTypeError` (a `TypeError`) naming `field`, as numpy's ufuncs refuse them.
     pub fn read(value: &Bound<'_, PyAny>, field: &str) -> PyResult<Self> {
-        let py = value.py();
+        let expected = "a number or an array-like of numbers";
+        let text = value.is_instance_of::<PyString>() || value.is_instance_of::<PyBytes>();
+        if value.is_none() || text {
+            return Err(type_error(value, field, expected));
+        }
         let is_array = value.cast::<PyUntypedArray>().is_ok();
         if !is_array && (value.is_instance_of::<PyFloat>() || value.is_instance_of::<PyInt>()) {
             return Ok(Input::Scalar(value.extract()?));
         }
-        if !is_array && let Ok(v) = value.extract::<f64>() {
+        if !is_array
+            && !value.is_instance_of::<PyList>()
+            && !value.is_instance_of::<PyTuple>()
+            && let Ok(v) = value.extract::<f64>()
+        {
             return Ok(Input::Scalar(v));
         }
-        let array: PyArrayLikeDyn<'_, f64, AllowTypeChange> = value.extract().map_err(|_| {
-            crate::errors::parameter(
-                py,
-                field,
-                value
-                    .repr()
-                    .map_or_else(|_| "?".to_string(), |r| r.to_string()),
-                "a number or an array-like of numbers",
-            )
-        })?;
+        // Lists, tuples, arrays: numpy decides the dtype, which must be numeric.
+        let py = value.py();
+        let array = py
+            .import("numpy")?
+            .call_method1("asarray", (value,))
+            .map_err(|_| type_error(value, field, expected))?;
+        let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
+        if !matches!(kind.as_str(), "b" | "i" | "u" | "f") {
+            return Err(type_error(value, field, expected));
+        }
+        let array: PyArrayLikeDyn<'_, f64, AllowTypeChange> = array
+            .extract()
+            .map_err(|_| type_error(value, field, expected))?;
         let shape = array.shape().to_vec();
         let values = array.as_array().iter().copied().collect();
         Ok(Input::Array(values, shape))

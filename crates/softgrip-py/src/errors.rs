@@ -1,8 +1,11 @@
-//! The Rust errors as the package's Python exceptions (defined in `softgrip/errors.py`):
-//! `ParameterError` (also a `ValueError`) and its `OutOfRangeError` for the law, `SceneError`
-//! for scenes, `SweepError` for sweeps, `RecordingError` for the MCAP recorder, all subclasses
-//! of `SoftgripError`. Each carries the Rust error's message and, where the error names one,
-//! the field (`.field`) and the value (`.value`).
+//! The Rust errors as the package's Python exceptions (defined in `softgrip/errors.py`, all
+//! subclasses of `SoftgripError` and of the built-in a Python user catches):
+//! `ParameterError` (a `ValueError`) and its `OutOfRangeError` for the law,
+//! `ArgumentTypeError` (a `TypeError`, raised by `args`), `SceneError` for scenes,
+//! `SweepError` and `TrialIndexError` (an `IndexError`) for sweeps, `RecordingError` and its
+//! `RecordingExistsError` / `RecordingFormatError` for MCAP files. Each carries the Rust
+//! error's message and, where the error names one, the field (`.field`) and the value
+//! (`.value`).
 
 use pyo3::prelude::*;
 use softgrip_ecs::SceneError;
@@ -80,9 +83,15 @@ pub fn sweep_error(py: Python<'_>, e: &SweepError) -> PyErr {
         SweepError::Invalid { field, value, .. } => (Some(field.as_str()), Some(value.clone())),
         SweepError::Scene { .. } => (Some("scene"), None),
         SweepError::Shard { value, .. } => (Some("shard"), Some(value.clone())),
+        SweepError::Options { option, value, .. } => (Some(*option), Some(value.clone())),
         _ => (None, None),
     };
-    raise(py, "SweepError", e.to_string(), field, value)
+    let class = if field == Some("trial") {
+        "TrialIndexError"
+    } else {
+        "SweepError"
+    };
+    raise(py, class, e.to_string(), field, value)
 }
 
 /// An argument of a Python function that is wrong before any Rust type sees it.

@@ -3,31 +3,44 @@
 
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyString};
 use softgrip_law::fitting::{Sample, fit_material as fit};
 
+use crate::args;
 use crate::array::Input;
 use crate::errors::{law_error, parameter};
+use crate::make_law::Settings;
+
+/// The paper's largest x of the fit (Hertz's range).
+const DEFAULT_X_FIT: f64 = 0.1;
 
 /// Fits E* (so E, with the given nu) by least squares of `F = E* R^2 f_level(delta / R)` on the
 /// samples with `x = delta / R <= x_fit`, and reports each level's relative errors on the
 /// samples past `x_fit`. Returns a dict (see the package's `MaterialFit`).
+///
+/// NaN samples are refused (`ParameterError` naming `samples`): a fit has no NaN answer.
 #[pyfunction]
-#[pyo3(signature = (delta, force, radius, poisson_ratio, x_fit = 0.1, level = "hertz", *, k = None, tolerance = None, match_x = None))]
+#[pyo3(signature = (delta, force, radius, poisson_ratio, x_fit = None, level = None, *, k = None, tolerance = None, match_x = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_material<'py>(
     py: Python<'py>,
     delta: &Bound<'py, PyAny>,
     force: &Bound<'py, PyAny>,
-    radius: f64,
-    poisson_ratio: f64,
-    x_fit: f64,
-    level: &str,
-    k: Option<f64>,
-    tolerance: Option<f64>,
-    match_x: Option<f64>,
+    radius: &Bound<'py, PyAny>,
+    poisson_ratio: &Bound<'py, PyAny>,
+    x_fit: Option<&Bound<'py, PyAny>>,
+    level: Option<&Bound<'py, PyAny>>,
+    k: Option<&Bound<'py, PyAny>>,
+    tolerance: Option<&Bound<'py, PyAny>>,
+    match_x: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let fit_level = crate::law::level(py, level, k, tolerance, match_x)?;
+    let settings = Settings::read(k, tolerance, match_x)?;
+    let hertz = PyString::new(py, "hertz").into_any();
+    let level = level.filter(|l| !l.is_none()).unwrap_or(&hertz);
+    let fit_level = crate::make_law::level(level, &settings)?;
+    let radius = args::float(radius, "radius")?;
+    let poisson_ratio = args::float(poisson_ratio, "poisson_ratio")?;
+    let x_fit = args::opt_float(x_fit, "x_fit")?.unwrap_or(DEFAULT_X_FIT);
     let d = Input::read(delta, "delta")?;
     let f = Input::read(force, "force")?;
     let (d, f) = (d.values(), f.values());

@@ -6,13 +6,15 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use numpy::IntoPyArray;
-use numpy::ndarray::Array2;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+use softgrip_ecs::bevy_ecs::entity::Entity;
 use softgrip_ecs::{McapSink, Physics, Scene, SceneError, Simulation, Summary, TipSummary};
 use softgrip_scene::{ContactDigest, DEFAULT_SCENE};
 
+use crate::args;
 use crate::errors::{parameter, raise, scene_error};
+use crate::readout::{BodySeries, ContactRow, TactileSeries, TipSeries};
 
 /// Steps between two checks for a pending Python signal (Ctrl-C) during a run.
 const SIGNAL_CHECK_STEPS: u64 = 512;
@@ -25,29 +27,6 @@ enum Source {
     Text(String, PathBuf),
     /// The embedded default grasp.
     Default,
-}
-
-/// One fingertip's readout, one entry per step.
-#[derive(Default)]
-struct TipSeries {
-    force: Vec<f64>,
-    friction_force: Vec<f64>,
-    torsional_moment: Vec<f64>,
-    delta: Vec<f64>,
-    x: Vec<f64>,
-    radius: Vec<f64>,
-    stiffness: Vec<f64>,
-    peak_force: Vec<f64>,
-    contacts: Vec<i64>,
-    sliding: Vec<bool>,
-    validity_exceeded: Vec<bool>,
-}
-
-/// One body's pose, one entry per step.
-#[derive(Default)]
-struct BodySeries {
-    position: Vec<f64>,
-    rotation: Vec<f64>,
 }
 
 /// What the recorder wrote.
@@ -68,6 +47,7 @@ struct RunData {
     steps: u64,
     tip_names: Vec<String>,
     tips: Vec<TipSeries>,
+    tactile: Vec<Option<TactileSeries>>,
     body_names: Vec<String>,
     bodies: Vec<BodySeries>,
     summary: Vec<TipSummary>,
@@ -80,17 +60,12 @@ struct RunData {
 enum Failure {
     Scene(SceneError),
     Recording(String),
-    Io(String),
 }
 
 fn load(source: &Source) -> Result<(Scene, String), Failure> {
     match source {
-        Source::File(path) => {
-            let scene = Scene::from_file(path).map_err(Failure::Scene)?;
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| Failure::Io(format!("reading {}: {e}", path.display())))?;
-            Ok((scene, text))
-        }
+        // Read once: a pipe gives its text only once (it was read twice, the text empty).
+        Source::File(path) => Scene::from_file_with_text(path).map_err(Failure::Scene),
         Source::Text(text, base) => Scene::parse(text, "<toml>", base)
             .map(|s| (s, text.clone()))
             .map_err(Failure::Scene),
@@ -128,6 +103,7 @@ fn simulate(
         .iter()
         .map(|_| BodySeries::default())
         .collect();
+    let mut tactile: Vec<Option<TactileSeries>> = tip_entities.iter().map(|_| None).collect();
     let mut digest = ContactDigest::new();
     let start = Instant::now();
     let mut steps = 0;
@@ -145,6 +121,7 @@ fn simulate(
         let contacts = physics.world.soft.contacts();
         digest.add_step(contacts.iter());
         read_tips(physics, &tip_entities, &mut tips);
+        read_tactile(physics, &tip_entities, &mut tactile);
         read_bodies(physics, &body_entities, &mut bodies);
     }
     let wall = start.elapsed().as_secs_f64();
@@ -178,6 +155,7 @@ fn simulate(
         steps,
         tip_names: f.fingertips.iter().map(|t| t.name.clone()).collect(),
         tips,
+        tactile,
         body_names: f.bodies.iter().map(|b| b.name.clone()).collect(),
         bodies,
         summary: summary.tips.iter().map(|(_, t)| t.clone()).collect(),
@@ -187,23 +165,9 @@ fn simulate(
     })
 }
 
-/// Appends each fingertip's readout of the last step: forces and stiffness summed over its
-/// contacts, the deepest contact's compression and contact radius.
-fn read_tips(
-    physics: &Physics,
-    entities: &[softgrip_ecs::bevy_ecs::entity::Entity],
-    tips: &mut [TipSeries],
-) {
-    let n = tips.len();
-    let mut force = vec![0.0; n];
-    let mut friction = vec![[0.0; 3]; n];
-    let mut moment = vec![0.0; n];
-    let mut deepest: Vec<Option<&softgrip_ecs::softgrip_rapier::TipContact>> = vec![None; n];
-    let mut stiffness = vec![0.0; n];
-    let mut peak = vec![0.0f64; n];
-    let mut count = vec![0i64; n];
-    let mut sliding = vec![false; n];
-    let mut exceeded = vec![false; n];
+/// Appends each fingertip's readout of the last step (its contacts, [`TipSeries::push_step`]).
+fn read_tips(physics: &Physics, entities: &[Entity], tips: &mut [TipSeries]) {
+    let mut rows: Vec<Vec<ContactRow>> = tips.iter().map(|_| Vec::new()).collect();
     for c in physics.world.soft.contacts() {
         let Some(k) = physics
             .collider_entity(c.fingertip)
@@ -211,43 +175,44 @@ fn read_tips(
         else {
             continue;
         };
-        force[k] += c.normal_force;
-        for (f, cf) in friction[k].iter_mut().zip(c.friction_force) {
-            *f += cf;
-        }
-        moment[k] += c.torsional_moment;
-        stiffness[k] += c.stiffness;
-        peak[k] = peak[k].max(c.peak_normal_force);
-        count[k] += 1;
-        sliding[k] |= c.sliding;
-        exceeded[k] |= c.validity_exceeded;
-        if deepest[k].is_none_or(|d| c.delta > d.delta) {
-            deepest[k] = Some(c);
-        }
+        rows[k].push(ContactRow {
+            force: c.normal_force,
+            friction: c.friction_force,
+            moment: c.torsional_moment,
+            stiffness: c.stiffness,
+            peak: c.peak_normal_force,
+            sliding: c.sliding,
+            exceeded: c.validity_exceeded,
+            delta: c.delta,
+            x: c.x,
+            radius: c.patch().radius,
+        });
     }
-    for (k, t) in tips.iter_mut().enumerate() {
-        t.force.push(force[k]);
-        t.friction_force.extend_from_slice(&friction[k]);
-        t.torsional_moment.push(moment[k]);
-        let (delta, x, radius) =
-            deepest[k].map_or((0.0, 0.0, 0.0), |c| (c.delta, c.x, c.patch().radius));
-        t.delta.push(delta);
-        t.x.push(x);
-        t.radius.push(radius);
-        t.stiffness.push(stiffness[k]);
-        t.peak_force.push(peak[k]);
-        t.contacts.push(count[k]);
-        t.sliding.push(sliding[k]);
-        t.validity_exceeded.push(exceeded[k]);
+    for (t, r) in tips.iter_mut().zip(rows) {
+        t.push_step(r);
+    }
+}
+
+/// Appends each tactile pad's image of the last step (pressures as `f32`, as recorded).
+fn read_tactile(physics: &Physics, entities: &[Entity], tactile: &mut [Option<TactileSeries>]) {
+    for (handle, image) in physics.world.soft.tactile_images() {
+        let Some(k) = physics
+            .collider_entity(handle)
+            .and_then(|e| entities.iter().position(|&t| t == e))
+        else {
+            continue;
+        };
+        let (rows, columns) = (
+            image.grid().rows() as usize,
+            image.grid().columns() as usize,
+        );
+        let series = tactile[k].get_or_insert_with(|| TactileSeries::new(rows, columns));
+        series.push(image.pressure().iter().map(|&p| p as f32));
     }
 }
 
 /// Appends each body's pose after the last step (NaN for a body rapier does not have).
-fn read_bodies(
-    physics: &Physics,
-    entities: &[softgrip_ecs::bevy_ecs::entity::Entity],
-    bodies: &mut [BodySeries],
-) {
+fn read_bodies(physics: &Physics, entities: &[Entity], bodies: &mut [BodySeries]) {
     for (b, &e) in bodies.iter_mut().zip(entities) {
         let rb = physics
             .body_handle(e)
@@ -256,30 +221,19 @@ fn read_bodies(
             Some(rb) => {
                 let t = rb.translation();
                 let q = rb.rotation();
-                b.position
-                    .extend([f64::from(t.x), f64::from(t.y), f64::from(t.z)]);
-                b.rotation.extend([
-                    f64::from(q.x),
-                    f64::from(q.y),
-                    f64::from(q.z),
-                    f64::from(q.w),
-                ]);
+                b.push(
+                    [f64::from(t.x), f64::from(t.y), f64::from(t.z)],
+                    [
+                        f64::from(q.x),
+                        f64::from(q.y),
+                        f64::from(q.z),
+                        f64::from(q.w),
+                    ],
+                );
             }
-            None => {
-                b.position.extend([f64::NAN; 3]);
-                b.rotation.extend([f64::NAN; 4]);
-            }
+            None => b.push([f64::NAN; 3], [f64::NAN; 4]),
         }
     }
-}
-
-/// `values` as an (n, width) float64 array.
-fn matrix<'py>(py: Python<'py>, values: Vec<f64>, width: usize) -> Bound<'py, PyAny> {
-    let rows = values.len() / width;
-    Array2::from_shape_vec((rows, width), values)
-        .expect("invariant: width values per step")
-        .into_pyarray(py)
-        .into_any()
 }
 
 fn tip_summary<'py>(py: Python<'py>, t: &TipSummary) -> PyResult<Bound<'py, PyDict>> {
@@ -304,28 +258,18 @@ fn to_python<'py>(py: Python<'py>, r: RunData) -> PyResult<Bound<'py, PyDict>> {
     out.set_item("total_steps", r.total)?;
     out.set_item("time", time.into_pyarray(py))?;
     let tips = PyDict::new(py);
-    for (name, t) in r.tip_names.iter().zip(r.tips) {
-        let d = PyDict::new(py);
-        d.set_item("force", t.force.into_pyarray(py))?;
-        d.set_item("friction_force", matrix(py, t.friction_force, 3))?;
-        d.set_item("torsional_moment", t.torsional_moment.into_pyarray(py))?;
-        d.set_item("delta", t.delta.into_pyarray(py))?;
-        d.set_item("x", t.x.into_pyarray(py))?;
-        d.set_item("radius", t.radius.into_pyarray(py))?;
-        d.set_item("stiffness", t.stiffness.into_pyarray(py))?;
-        d.set_item("peak_force", t.peak_force.into_pyarray(py))?;
-        d.set_item("contacts", t.contacts.into_pyarray(py))?;
-        d.set_item("sliding", t.sliding.into_pyarray(py))?;
-        d.set_item("validity_exceeded", t.validity_exceeded.into_pyarray(py))?;
-        tips.set_item(name, d)?;
+    let tactile = PyDict::new(py);
+    for ((name, t), image) in r.tip_names.iter().zip(r.tips).zip(r.tactile) {
+        tips.set_item(name, t.into_py(py)?)?;
+        if let Some(image) = image {
+            tactile.set_item(name, image.into_py(py))?;
+        }
     }
     out.set_item("fingertips", tips)?;
+    out.set_item("tactile", tactile)?;
     let bodies = PyDict::new(py);
     for (name, b) in r.body_names.iter().zip(r.bodies) {
-        let d = PyDict::new(py);
-        d.set_item("position", matrix(py, b.position, 3))?;
-        d.set_item("rotation", matrix(py, b.rotation, 4))?;
-        bodies.set_item(name, d)?;
+        bodies.set_item(name, b.into_py(py)?)?;
     }
     out.set_item("bodies", bodies)?;
     let summary = PyDict::new(py);
@@ -364,16 +308,35 @@ fn to_python<'py>(py: Python<'py>, r: RunData) -> PyResult<Bound<'py, PyDict>> {
 /// `record.every_n_steps`); an existing file is replaced only with `overwrite`. Returns a
 /// dict: the per-step readout, the summary, the contact digest.
 #[pyfunction]
-#[pyo3(signature = (path = None, *, toml = None, base_dir = None, mcap = None, every = None, overwrite = false))]
+#[pyo3(signature = (path = None, *, toml = None, base_dir = None, mcap = None, every = None, overwrite = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn run_scene<'py>(
     py: Python<'py>,
-    path: Option<PathBuf>,
-    toml: Option<String>,
-    base_dir: Option<PathBuf>,
-    mcap: Option<PathBuf>,
-    every: Option<i64>,
-    overwrite: bool,
+    path: Option<&Bound<'py, PyAny>>,
+    toml: Option<&Bound<'py, PyAny>>,
+    base_dir: Option<&Bound<'py, PyAny>>,
+    mcap: Option<&Bound<'py, PyAny>>,
+    every: Option<&Bound<'py, PyAny>>,
+    overwrite: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let path = args::opt_path(path, "scene")?;
+    let toml = match toml.filter(|t| !t.is_none()) {
+        Some(t) => Some(args::text(t, "toml", "scene TOML text (a str)")?),
+        None => None,
+    };
+    let base_dir = args::opt_path(base_dir, "base_dir")?;
+    let mcap = args::opt_path(mcap, "mcap")?;
+    let overwrite = args::opt_flag(overwrite, "overwrite")?;
+    let every = match every.filter(|e| !e.is_none()) {
+        Some(e) => Some(args::bounded(
+            e,
+            "every",
+            1..=u64::MAX,
+            "ParameterError",
+            "an integer >= 1 (1 = every step)",
+        )?),
+        None => None,
+    };
     let source = match (path, toml) {
         (Some(_), Some(_)) => {
             return Err(parameter(
@@ -386,18 +349,6 @@ pub fn run_scene<'py>(
         (Some(p), None) => Source::File(p),
         (None, Some(t)) => Source::Text(t, base_dir.unwrap_or_else(|| PathBuf::from("."))),
         (None, None) => Source::Default,
-    };
-    let every = match every {
-        None => None,
-        Some(n) if n >= 1 => Some(n as u64),
-        Some(n) => {
-            return Err(parameter(
-                py,
-                "every",
-                n,
-                "an integer >= 1 (1 = every step)",
-            ));
-        }
     };
     if let Some(out) = &mcap {
         if let Source::File(scene) = &source
@@ -412,10 +363,14 @@ pub fn run_scene<'py>(
             ));
         }
         if out.exists() && !overwrite {
-            return Err(pyo3::exceptions::PyFileExistsError::new_err(format!(
-                "{}: exists; pass overwrite=True to replace it",
-                out.display()
-            )));
+            let shown = out.display().to_string();
+            return Err(raise(
+                py,
+                "RecordingExistsError",
+                format!("{shown}: exists; pass overwrite=True to replace it"),
+                Some("mcap"),
+                Some(shown),
+            ));
         }
     }
     let mut interrupted = None;
@@ -426,7 +381,6 @@ pub fn run_scene<'py>(
         Err(Failure::Recording(m)) => {
             return Err(raise(py, "RecordingError", m, Some("mcap"), None));
         }
-        Err(Failure::Io(m)) => return Err(raise(py, "SceneError", m, None, None)),
     };
     if let Some(e) = interrupted {
         // The recording is finished; the interrupt goes on to the caller.

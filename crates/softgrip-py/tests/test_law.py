@@ -125,9 +125,11 @@ def test_scalars_arrays_and_shapes():
     f32 = tip.force(np.array([0.004], dtype=np.float32))
     assert f32[0] == tip.force(float(np.float32(0.004)))
     assert tip.force(np.array(0.004)).shape == ()
-    # hot path: no contact and non-finite input give 0, never NaN
-    assert tip.force([-1e-3, 0.0, math.nan]).tolist() == [0.0, 0.0, 0.0]
-    assert math.isfinite(tip.force(math.inf)) and tip.force(math.inf) == 0.0
+    # hot path: no contact gives 0; a non-finite compression gives NaN as in numpy (it gave
+    # 0 N silently before issue 26)
+    out = tip.force([-1e-3, 0.0, math.nan])
+    assert out[:2].tolist() == [0.0, 0.0] and math.isnan(out[2])
+    assert math.isnan(tip.force(math.inf)) and math.isnan(tip.force(-math.inf))
     # stiffness is the derivative of the force (central difference)
     d, h = 0.004, 1e-8
     fd = (tip.force(d + h) - tip.force(d - h)) / (2 * h)

@@ -79,3 +79,43 @@ def test_ray_equals_local(root, local_ray, tmp_path):
     assert back.drop_columns(["wall_time"]).equals(
         softgrip.sweep(root / SWEEP, table="arrow").drop_columns(["wall_time"])
     )
+
+
+def test_laws_sweeps_and_runs_go_through_ray(root, local_ray, tmp_path):
+    # Ray pickles a task's arguments and results: a Law and a Sweep go to the workers, a
+    # RunResult and a Recording come back, equal to the local ones.
+    import numpy as np
+
+    law = softgrip.law("auto", 3e6, 0.45, 0.01, "core", 0.004, tolerance=0.02)
+    delta = np.linspace(0.0, 0.004, 41)
+
+    @ray.remote(num_cpus=1)
+    def forces(l, d):
+        return l, l.force(d)
+
+    back, f = ray.get(forces.remote(law, delta))
+    assert back == law
+    np.testing.assert_array_equal(f, law.force(delta))
+
+    sweep = softgrip.Sweep.open(root / SWEEP)
+
+    @ray.remote(num_cpus=1)
+    def trial(s, i):
+        return s.run_trial(i)
+
+    columns = sweep.columns()
+    rows = ray.get([trial.remote(sweep, i) for i in (0, 5)])
+    assert drop_wall_time(rows, columns) == drop_wall_time([sweep.run_trial(0), sweep.run_trial(5)], columns)
+
+    scene = root / "crates/softgrip-py/tests/data/grasp.toml"
+
+    @ray.remote(num_cpus=1)
+    def run(path, out):
+        r = softgrip.run(path, mcap=out)
+        return r, softgrip.open_recording(out)
+
+    remote, rec = ray.get(run.remote(str(scene), str(tmp_path / "r.mcap")))
+    local = softgrip.run(scene)
+    assert remote.digest == local.digest and remote.summary_lines == local.summary_lines
+    np.testing.assert_array_equal(remote.fingertips["left_tip"]["force"], local.fingertips["left_tip"]["force"])
+    np.testing.assert_array_equal(rec.fingertips["left_tip"]["force"], local.fingertips["left_tip"]["force"][rec.step - 1])

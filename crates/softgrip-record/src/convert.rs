@@ -1,12 +1,13 @@
 //! [`StepConverter`]: a sink's [`StepFrame`] to the messages of a step ([`StepRecord`]),
 //! converted by one function for the MCAP recorder and the ROS 2 publisher alike.
 
+use std::collections::HashMap;
 use std::sync::Arc;
 
 use softgrip_law::ContactPatch;
 
 pub use crate::frames::WORLD_FRAME;
-use crate::frames::{UpAxis, fingertip_frame, rotate, rotate_inverse};
+use crate::frames::{FrameNames, UpAxis, rotate, rotate_inverse};
 use crate::msgs::geometry_msgs::{Point, Quaternion, Transform, TransformStamped, Vector3, Wrench};
 use crate::msgs::sensor_msgs::Image;
 use crate::msgs::softgrip_msgs::SoftContactMsg;
@@ -25,6 +26,8 @@ struct TipMount {
     name: String,
     frame: String,
     body: String,
+    /// The index of `body` in the scene's bodies (where a frame's poses normally list it).
+    body_hint: usize,
     offset: [f64; 3],
     radius: f64,
     arrow_scale: f64,
@@ -37,12 +40,14 @@ struct TipMount {
 /// What is recorded is z-up under the fixed root [`WORLD_FRAME`] (REP 103): every position,
 /// orientation and vector of the frame (scene axes, [`SceneInfo::up`]) is rotated into world
 /// axes here, once. Bodies are children of the world on `/tf`; each fingertip is a child of its
-/// body ([`fingertip_frame`]), its constant offset on `/tf_static`, which the first converted
+/// body ([`fingertip_frame`](crate::frames::fingertip_frame)), its constant offset on `/tf_static`, which the first converted
 /// step carries. Wrenches are in the fingertip's frame. Stamps are `round(step · dt · 1e9)` ns
 /// from the f64 step index and `dt` (the frame's `time` only when `dt` is unknown).
 #[derive(Debug, Clone, Default)]
 pub struct StepConverter {
     tips: Vec<TipMount>,
+    /// The index in `tips` of each fingertip's name (the first, if two had one name).
+    tip_index: HashMap<String, usize>,
     up: UpAxis,
     dt: f64,
     shapes: Arc<[Marker]>,
@@ -72,13 +77,19 @@ impl StepConverter {
     /// The converter of a scene (it needs where each fingertip is mounted, the up axis, `dt`
     /// and the bodies' shapes).
     pub fn new(info: &SceneInfo) -> Self {
+        let names = FrameNames::new(info);
+        let mut bodies: HashMap<&str, usize> = HashMap::new();
+        for (i, b) in info.bodies.iter().enumerate() {
+            bodies.entry(b.as_str()).or_insert(i);
+        }
         let tips: Vec<TipMount> = info
             .fingertips
             .iter()
             .map(|t| TipMount {
                 name: t.name.clone(),
-                frame: fingertip_frame(info, &t.name),
+                frame: names.fingertip_frame(&t.name),
                 body: t.body.clone(),
+                body_hint: bodies.get(t.body.as_str()).copied().unwrap_or(usize::MAX),
                 offset: t.offset,
                 radius: t.radius,
                 arrow_scale: arrow_scale(t),
@@ -102,8 +113,13 @@ impl StepConverter {
                 })
                 .collect(),
         });
+        let mut tip_index = HashMap::new();
+        for (i, t) in tips.iter().enumerate() {
+            tip_index.entry(t.name.clone()).or_insert(i);
+        }
         Self {
             tips,
+            tip_index,
             up: info.up,
             dt: info.dt,
             shapes: visuals::shape_markers(info).into(),
@@ -181,22 +197,21 @@ impl StepConverter {
         step.tactile.clear();
         step.tactile.extend(frame.tactile.iter().map(|s| {
             let frame = self
-                .tips
-                .iter()
-                .find(|t| t.name == s.fingertip)
+                .mount(&s.fingertip)
                 .map_or(s.fingertip.as_str(), |t| t.frame.as_str());
             (s.fingertip.clone(), tactile_image(s, frame, step.time_ns))
         }));
     }
 
+    /// The mount of the fingertip named `name`.
+    fn mount(&self, name: &str) -> Option<&TipMount> {
+        self.tip_index.get(name).map(|&i| &self.tips[i])
+    }
+
     /// The `i`-th fingertip's pose (world, from its body's and its mount), radius, frame and
     /// wrench in that frame (its name is left empty: the caller reuses its own string).
     fn fingertip_state(&self, i: usize, w: &WrenchSample, frame: &StepFrame) -> FingertipState {
-        let mount = self
-            .tips
-            .iter()
-            .find(|t| t.name == w.fingertip)
-            .or_else(|| self.tips.get(i));
+        let mount = self.mount(&w.fingertip).or_else(|| self.tips.get(i));
         let Some(m) = mount else {
             // Not in the scene info: a world-axes wrench on a world-fixed frame.
             return FingertipState {
@@ -208,7 +223,12 @@ impl StepConverter {
                 ..FingertipState::default()
             };
         };
-        let body = frame.bodies.iter().find(|b| b.name == m.body);
+        // The frame lists the scene's bodies in order: the hint finds it at once.
+        let body = frame
+            .bodies
+            .get(m.body_hint)
+            .filter(|b| b.name == m.body)
+            .or_else(|| frame.bodies.iter().find(|b| b.name == m.body));
         let (p, q) = body.map_or(([0.0; 3], [0.0, 0.0, 0.0, 1.0]), |b| {
             (b.translation, b.rotation)
         });
@@ -289,7 +309,7 @@ fn soft_contact_msg_in(c: &ContactSample, up: UpAxis) -> SoftContactMsg {
 
 /// A fingertip's tactile image as a `sensor_msgs/Image` (`32FC1`, pressure \[Pa\],
 /// little-endian, row-major, `step = 4 columns`) stamped `time_ns` \[ns\], in the
-/// fingertip's tf frame `frame` ([`fingertip_frame`]).
+/// fingertip's tf frame `frame` ([`fingertip_frame`](crate::frames::fingertip_frame)).
 pub fn tactile_image(s: &TactileSample, frame: &str, time_ns: u64) -> Image {
     Image::tactile(Header::new(time_ns, frame), s.rows, s.columns, &s.pressure)
 }

@@ -3,6 +3,8 @@
 //! frame per fingertip (child of the body that carries it, its constant offset on
 //! `/tf_static`), each name unique ([`fingertip_frame`]).
 
+use std::collections::HashSet;
+
 use crate::sink::SceneInfo;
 
 /// Name of the world frame (the `/tf` root, z-up) in softgrip's recordings.
@@ -86,19 +88,40 @@ impl UpAxis {
 /// assert_eq!(fingertip_frame(&scene, "thumb"), "thumb");
 /// ```
 pub fn fingertip_frame(scene: &SceneInfo, fingertip: &str) -> String {
-    let taken = |name: &str| {
-        name == WORLD_FRAME
-            || scene.bodies.iter().any(|b| b == name)
-            || scene
-                .fingertips
-                .iter()
-                .any(|t| t.name == name && name != fingertip)
-    };
-    let mut frame = fingertip.to_owned();
-    while taken(&frame) {
-        frame.push_str(FINGERTIP_FRAME_SUFFIX);
+    FrameNames::new(scene).fingertip_frame(fingertip)
+}
+
+/// The names a scene's frames are made from, indexed once: [`fingertip_frame`] of every
+/// fingertip of a scene in time linear in its size (each call of [`fingertip_frame`] reads
+/// the whole scene).
+pub(crate) struct FrameNames<'a> {
+    bodies: HashSet<&'a str>,
+    fingertips: HashSet<&'a str>,
+}
+
+impl<'a> FrameNames<'a> {
+    /// The names of `scene`.
+    pub(crate) fn new(scene: &'a SceneInfo) -> Self {
+        Self {
+            bodies: scene.bodies.iter().map(String::as_str).collect(),
+            fingertips: scene.fingertips.iter().map(|t| t.name.as_str()).collect(),
+        }
     }
-    frame
+
+    /// [`fingertip_frame`] of the fingertip named `fingertip`.
+    pub(crate) fn fingertip_frame(&self, fingertip: &str) -> String {
+        // `name` is another fingertip's (this one's own name is not taken by itself).
+        let taken = |name: &str| {
+            name == WORLD_FRAME
+                || self.bodies.contains(name)
+                || (name != fingertip && self.fingertips.contains(name))
+        };
+        let mut frame = fingertip.to_owned();
+        while taken(&frame) {
+            frame.push_str(FINGERTIP_FRAME_SUFFIX);
+        }
+        frame
+    }
 }
 
 /// `q v q*` for a unit quaternion `q = [x, y, z, w]`.

@@ -3,12 +3,14 @@
 //! finger: [`hemisphere`]), the contact patches (discs of radius a on the
 //! contact plane) and the contacts' normal forces (arrows), for Foxglove's 3D panel and RViz.
 
+use std::collections::HashMap;
+
 use crate::msgs::geometry_msgs::{Point, Pose, Quaternion, Vector3};
 use crate::msgs::softgrip_msgs::SoftContactMsg;
 use crate::msgs::std_msgs::{ColorRGBA, Header};
 use crate::msgs::visualization_msgs::{Marker, MarkerArray};
 use crate::sink::{SceneInfo, ShapeGeometry, ShapeInfo};
-use crate::step::StepRecord;
+use crate::step::{FingertipState, StepRecord};
 
 /// Marker namespace of the contact patches.
 pub const NS_PATCHES: &str = "contact_patches";
@@ -90,11 +92,18 @@ pub fn shape_markers(info: &SceneInfo) -> Vec<Marker> {
     } else {
         1.0
     };
+    let bodies: HashMap<&str, usize> = info
+        .bodies
+        .iter()
+        .enumerate()
+        .rev()
+        .map(|(i, b)| (b.as_str(), i))
+        .collect();
     info.shapes
         .iter()
         .enumerate()
         .map(|(i, s)| {
-            let body = info.bodies.iter().position(|b| *b == s.body).unwrap_or(i);
+            let body = bodies.get(s.body.as_str()).copied().unwrap_or(i);
             shape_marker(s, id(i), BODY[body % BODY.len()], extent)
         })
         .collect()
@@ -276,8 +285,19 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
             ..base(NS_PATCHES, i, Marker::CYLINDER)
         });
     }
+    // Each contact's fingertip by name, indexed once (a lookup per contact was quadratic in the
+    // number of fingertips).
+    let tips: HashMap<&str, &FingertipState> = step
+        .fingertips
+        .iter()
+        .rev()
+        .map(|t| (t.name.as_str(), t))
+        .collect();
     for (i, c) in step.contacts.iter().enumerate() {
-        if let Some(arrow) = force_arrow(step, c) {
+        if let Some(arrow) = tips
+            .get(c.fingertip.as_str())
+            .and_then(|tip| force_arrow(tip, c))
+        {
             markers.push(Marker {
                 header: header.clone(),
                 id: id(i),
@@ -434,9 +454,8 @@ pub fn hemisphere(radius: f64, facing: [f64; 3]) -> Vec<Point> {
 }
 
 /// The normal-force arrow of contact `c` (ns [`NS_FORCES`]; header and id left to the caller),
-/// `None` if its fingertip is not in the step.
-fn force_arrow(step: &StepRecord, c: &SoftContactMsg) -> Option<Marker> {
-    let tip = step.fingertips.iter().find(|t| t.name == c.fingertip)?;
+/// drawn at fingertip `tip`'s scale.
+fn force_arrow(tip: &FingertipState, c: &SoftContactMsg) -> Option<Marker> {
     let len = arrow_length(c.normal_force, tip.radius, tip.arrow_scale);
     let (p, n) = (c.point.to_array(), c.normal.to_array());
     let end: [f64; 3] = std::array::from_fn(|k| p[k] + len * n[k]);

@@ -149,8 +149,9 @@ impl Scene {
             }
         }
         for (t, tip) in f.fingertips.iter().zip(self.fingertips()) {
-            let body = out
-                .body(&t.body)
+            let body = self
+                .body_index(&t.body)
+                .map(|i| out.bodies[i].1)
                 .expect("invariant: checked by Scene::parse");
             let c = fingertip_builder(tip, t.offset, t.density);
             let h = world

@@ -3,20 +3,80 @@
 //! fingertip starting inside the box gave 44 kN at x = 1.52). That is an error naming the
 //! pair and the depth ([`SceneError::StartPenetration`]), checked on the built world.
 
+use std::collections::HashMap;
+
+use softgrip_rapier::rapier3d::parry::bounding_volume::Aabb;
+use softgrip_rapier::rapier3d::parry::partitioning::{Bvh, BvhBuildStrategy};
 use softgrip_rapier::rapier3d::parry::query;
 use softgrip_rapier::rapier3d::prelude::{Collider, ColliderHandle, Vector};
 use softgrip_rapier::softgrip_law::{ContactLaw, ContactParams};
 
+use crate::build::SceneHandles;
 use crate::error::SceneError;
 use crate::scene::Scene;
 use crate::validate::Checker;
 
-/// Every fingertip against every other collider of the built scene at its start poses.
+/// Every fingertip against every other collider of the built scene at its start poses that its
+/// bounding box touches (a BVH of the colliders' boxes: the check is linear in the scene's size,
+/// not quadratic; 1000 resting fingertips spent seconds here), in file order, so the first
+/// error is the one a check of every pair would find first.
 pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> {
     let built = scene.build();
     let (world, h) = (&built.world, &built.handles);
+    let labels = labels(scene, h);
+    let tip_of: HashMap<ColliderHandle, usize> = h
+        .fingertips
+        .iter()
+        .enumerate()
+        .map(|(i, (_, t))| (*t, i))
+        .collect();
+    let colliders = &world.physics.colliders;
+    // Bounded boxes go into the BVH; an unbounded shape (a plane) is a candidate of every tip.
+    let boxes: Vec<Aabb> = labels
+        .iter()
+        .map(|(ch, _)| colliders[*ch].compute_aabb())
+        .collect();
+    let bounded = |b: &Aabb| b.mins.is_finite() && b.maxs.is_finite() && b.volume().is_finite();
+    let (mut finite, mut unbounded) = (Vec::new(), Vec::new());
+    for (k, b) in boxes.iter().enumerate() {
+        if bounded(b) {
+            finite.push(k)
+        } else {
+            unbounded.push(k)
+        }
+    }
+    let leaves: Vec<Aabb> = finite.iter().map(|&k| boxes[k]).collect();
+    let bvh = Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves);
+    let mut candidates = Vec::new();
+    for (i, (_, tip_h)) in h.fingertips.iter().enumerate() {
+        let tip_box = colliders[*tip_h].compute_aabb();
+        candidates.clear();
+        candidates.extend(
+            bvh.intersect_aabb(&tip_box)
+                .map(|leaf| finite[leaf as usize]),
+        );
+        candidates.extend_from_slice(&unbounded);
+        candidates.sort_unstable();
+        for &k in &candidates {
+            let (other_h, other_label) = &labels[k];
+            check_pair(
+                c,
+                scene,
+                &built.world,
+                i,
+                *tip_h,
+                *other_h,
+                other_label,
+                &tip_of,
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// A label for every collider: `body[j].shape[k]` (`name`), then `fingertip[i]` (`name`).
+fn labels(scene: &Scene, h: &SceneHandles) -> Vec<(ColliderHandle, String)> {
     let f = scene.file();
-    // A label for every collider: `body[j].shape[k]` (`name`) or `fingertip[i]` (`name`).
     let mut labels: Vec<(ColliderHandle, String)> = Vec::new();
     let mut shapes = h.shapes.iter();
     for (j, b) in f.bodies.iter().enumerate() {
@@ -29,85 +89,112 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
     for (i, (name, handle)) in h.fingertips.iter().enumerate() {
         labels.push((*handle, format!("fingertip[{i}] (`{name}`)")));
     }
-    for (i, (_, tip_h)) in h.fingertips.iter().enumerate() {
-        let tip = &scene.fingertips()[i];
-        let tip_co = &world.physics.colliders[*tip_h];
-        for (other_h, other_label) in &labels {
-            let other_co = &world.physics.colliders[*other_h];
-            if other_h == tip_h || other_co.parent() == tip_co.parent() {
-                continue;
-            }
-            let other_tip = h.fingertips.iter().position(|(_, t)| t == other_h);
-            // (x, x_max) of a depth [m]: the law's compression ratio and validity range.
-            let range: Box<dyn Fn(f64) -> (f64, f64)> = match other_tip {
-                // Each soft pair once.
-                Some(j) if j < i => continue,
-                // A backed fingertip in the pair: the two in series on their mid-surface, valid
-                // while the depth is within the sum of their own ranges (in x of the larger R).
-                Some(j)
-                    if !(tip.backing().is_free() && scene.fingertips()[j].backing().is_free()) =>
-                {
-                    let o = &scene.fingertips()[j];
-                    let r = tip.radius().max(o.radius());
-                    let x_max = (tip.law().delta_max() + o.law().delta_max()) / r;
-                    Box::new(move |depth| (depth / r, x_max))
-                }
-                Some(j) => {
-                    let o = &scene.fingertips()[j];
-                    let p = ContactParams::try_combine(
-                        tip.material(),
-                        tip.radius(),
-                        o.material(),
-                        o.radius(),
-                    );
-                    match p.and_then(|p| ContactLaw::try_new(p, tip.level())) {
-                        Ok(law) => {
-                            Box::new(move |depth| (depth / law.params().radius(), law.x_max()))
-                        }
-                        Err(_) => continue,
-                    }
-                }
-                None => {
-                    let law = tip.law().clone();
-                    Box::new(move |depth| (depth / law.params().radius(), law.x_max()))
-                }
-            };
-            let Ok(Some(contact)) = query::contact(
-                other_co.position(),
-                other_co.shape(),
-                tip_co.position(),
-                tip_co.shape(),
-                0.0,
-            ) else {
-                continue;
-            };
-            // Behind a backed fingertip's flat face is its rigid finger: rapier's contact,
-            // which pushes out from any depth.
-            let n = contact.normal1;
-            let behind = |t: &softgrip_rapier::SoftFingertip, co: &Collider, sign: f32| {
-                t.facing().is_some_and(|[x, y, z]| {
-                    let f = co.position().rotation * Vector::new(x as f32, y as f32, z as f32);
-                    sign * f.dot(n) < 0.0
-                })
-            };
-            if behind(tip, tip_co, -1.0)
-                || other_tip.is_some_and(|j| behind(&scene.fingertips()[j], other_co, 1.0))
-            {
-                continue;
-            }
-            let depth = -(contact.dist as f64);
-            let (x, x_max) = range(depth);
-            if x > x_max {
-                return Err(SceneError::StartPenetration {
-                    origin: c.origin.to_string(),
-                    fingertip: format!("fingertip[{i}] (`{}`)", tip.name()),
-                    other: other_label.clone(),
-                    depth,
-                    x,
-                    x_max,
-                });
+    labels
+}
+
+/// Fingertip `i` (collider `tip_h`) against collider `other_h`: an error if it starts deeper
+/// than its law's validity range. The contact is found first; the law of the pair is built only
+/// for a pair in contact.
+#[allow(clippy::too_many_arguments)]
+fn check_pair(
+    c: &Checker,
+    scene: &Scene,
+    world: &softgrip_rapier::SoftWorld,
+    i: usize,
+    tip_h: ColliderHandle,
+    other_h: ColliderHandle,
+    other_label: &str,
+    tip_of: &HashMap<ColliderHandle, usize>,
+) -> Result<(), SceneError> {
+    let colliders = &world.physics.colliders;
+    let tip = &scene.fingertips()[i];
+    let tip_co = &colliders[tip_h];
+    let other_co = &colliders[other_h];
+    if other_h == tip_h || other_co.parent() == tip_co.parent() {
+        return Ok(());
+    }
+    let other_tip = tip_of.get(&other_h).copied();
+    // Each soft pair once.
+    if other_tip.is_some_and(|j| j < i) {
+        return Ok(());
+    }
+    let Ok(Some(contact)) = query::contact(
+        other_co.position(),
+        other_co.shape(),
+        tip_co.position(),
+        tip_co.shape(),
+        0.0,
+    ) else {
+        return Ok(());
+    };
+    // Behind a backed fingertip's flat face is its rigid finger: rapier's contact, which
+    // pushes out from any depth.
+    let n = contact.normal1;
+    let behind = |t: &softgrip_rapier::SoftFingertip, co: &Collider, sign: f32| {
+        t.facing().is_some_and(|[x, y, z]| {
+            let f = co.position().rotation * Vector::new(x as f32, y as f32, z as f32);
+            sign * f.dot(n) < 0.0
+        })
+    };
+    // But a fingertip whose centre is inside the other shape (depth > R) is buried, whichever
+    // face the nearest surface is behind: refused (a pad buried 3R in a box ran, its normal
+    // being behind, while 2.5R was refused).
+    let depth = -(contact.dist as f64);
+    let backs = [
+        behind(tip, tip_co, -1.0).then_some((i, tip)),
+        other_tip
+            .map(|j| (j, &scene.fingertips()[j]))
+            .filter(|(_, t)| behind(t, other_co, 1.0)),
+    ];
+    if backs.iter().any(Option::is_some) {
+        if let Some((k, t)) = backs
+            .into_iter()
+            .flatten()
+            .find(|(_, t)| depth > t.radius())
+        {
+            return Err(SceneError::StartBuried {
+                origin: c.origin.to_string(),
+                fingertip: format!("fingertip[{k}] (`{}`)", t.name()),
+                other: if k == i {
+                    other_label.to_string()
+                } else {
+                    format!("fingertip[{i}] (`{}`)", tip.name())
+                },
+                depth,
+                radius: t.radius(),
+            });
+        }
+        return Ok(());
+    }
+    // The law's compression ratio and validity range of the pair at this depth.
+    let (x, x_max) = match other_tip {
+        // A backed fingertip in the pair: the two in series on their mid-surface, valid while
+        // the depth is within the sum of their own ranges (in x of the larger R).
+        Some(j) if !(tip.backing().is_free() && scene.fingertips()[j].backing().is_free()) => {
+            let o = &scene.fingertips()[j];
+            let r = tip.radius().max(o.radius());
+            (depth / r, (tip.law().delta_max() + o.law().delta_max()) / r)
+        }
+        Some(j) => {
+            let o = &scene.fingertips()[j];
+            let p =
+                ContactParams::try_combine(tip.material(), tip.radius(), o.material(), o.radius());
+            match p.and_then(|p| ContactLaw::try_new(p, tip.level())) {
+                Ok(law) => (depth / law.params().radius(), law.x_max()),
+                Err(_) => return Ok(()),
             }
         }
+        None => (depth / tip.law().params().radius(), tip.law().x_max()),
+    };
+    if x > x_max {
+        return Err(SceneError::StartPenetration {
+            origin: c.origin.to_string(),
+            fingertip: format!("fingertip[{i}] (`{}`)", tip.name()),
+            other: other_label.to_string(),
+            depth,
+            x,
+            x_max,
+        });
     }
     Ok(())
 }

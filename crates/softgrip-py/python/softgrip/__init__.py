@@ -1,9 +1,13 @@
 """softgrip from Python: the large-deformation soft-fingertip contact law over numpy arrays,
 material fitting from a squeeze, scene runs (the same schedule as ``softgrip run``) with their
-per-step readout and MCAP recording, and grasp sweeps run on local cores or as Ray tasks.
+per-step readout and MCAP recording, recordings opened as the same arrays, and grasp sweeps run
+on local cores or as Ray tasks. The example scenes and sweeps ship with the package
+(``softgrip.scenes``, ``softgrip.sweeps``).
 
 SI units throughout: m, N, Pa, J, s. The compression ``delta`` [m] is >= 0 in contact,
-``x = delta / R``.
+``x = delta / R``. Errors are :class:`SoftgripError` subclasses that are also the built-in a
+Python user catches (``ValueError``, ``TypeError``, ``IndexError``, ``FileExistsError``; see
+:mod:`softgrip.errors`).
 
 >>> import softgrip
 >>> tip = softgrip.law("calibrated", 3.0e6, 0.49, 0.010)
@@ -14,41 +18,67 @@ True
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
-from typing import Any, Dict, List, Optional, Union
+from typing import Any, Optional, Union
 
-import numpy as np
-
-from . import _native
+from . import _native, scenes, sweeps
 from ._native import Law, Sweep
+from ._results import (
+    BODY_ARRAYS,
+    CONTACT_ROW_FIELDS,
+    FINGERTIP_ARRAYS,
+    SUMMARY_FIELDS,
+    TACTILE_ARRAY,
+    MaterialFit,
+    Recording,
+    RunResult,
+)
 from ._sweep import sweep
 from .errors import (
+    ArgumentTypeError,
     OutOfRangeError,
     ParameterError,
     RecordingError,
+    RecordingExistsError,
+    RecordingFormatError,
     SceneError,
     SoftgripError,
     SweepError,
+    TrialIndexError,
 )
 
 __version__: str = _native.__version__
 
 __all__ = [
+    "ArgumentTypeError",
+    "BACKINGS",
+    "BODY_ARRAYS",
+    "CONTACT_ROW_FIELDS",
+    "FINGERTIP_ARRAYS",
+    "LEVELS",
     "Law",
     "MaterialFit",
     "OutOfRangeError",
     "ParameterError",
+    "Recording",
     "RecordingError",
+    "RecordingExistsError",
+    "RecordingFormatError",
     "RunResult",
+    "SUMMARY_FIELDS",
     "SceneError",
     "SoftgripError",
     "Sweep",
     "SweepError",
+    "TACTILE_ARRAY",
+    "TrialIndexError",
     "fit_material",
     "law",
+    "open_recording",
     "run",
     "run_toml",
+    "scenes",
     "sweep",
+    "sweeps",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -98,8 +128,14 @@ def law(
         tolerance: relative force tolerance of ``"auto"`` (default 0.01), in (0, 0.5].
         match_x: compression ratio where ``"linear"`` matches Hertz (default 0.05), in (0, 1].
 
+    Returns:
+        A :class:`Law`; its methods take a compression ``delta`` [m] (a number gives a float,
+        an array-like a float64 array of its shape). A NaN or infinite ``delta`` gives NaN.
+        The law pickles (``pickle``, ``copy``, Ray).
+
     Raises:
         ParameterError: an argument out of range; ``e.field`` names it.
+        ArgumentTypeError: an argument of the wrong type (None or a string for a number).
     """
     return _native.law(
         level,
@@ -114,25 +150,6 @@ def law(
     )
 
 
-@dataclass(frozen=True)
-class MaterialFit:
-    """The result of :func:`fit_material`."""
-
-    youngs_modulus: float
-    """Fitted Young's modulus E [Pa] (from E* and the given nu)."""
-    effective_modulus: float
-    """Fitted E* = E / (1 - nu^2) [Pa]."""
-    poisson_ratio: float
-    """The given nu [-]."""
-    fitted: int
-    """Samples with x <= x_fit used for the fit."""
-    predicted: np.ndarray
-    """Compressions [m] of the samples past x_fit, where the levels are compared."""
-    residuals: Dict[str, Dict[str, Any]]
-    """Per level name: ``relative_errors`` (array over ``predicted``, (F_level - F) / F, NaN
-    past the level's validity range), ``max_abs_error`` and ``rms_error`` [-]."""
-
-
 def fit_material(
     delta: Any,
     force: Any,
@@ -140,6 +157,10 @@ def fit_material(
     poisson_ratio: float,
     x_fit: float = 0.1,
     level: str = "hertz",
+    *,
+    k: Optional[float] = None,
+    tolerance: Optional[float] = None,
+    match_x: Optional[float] = None,
 ) -> MaterialFit:
     """Fits the material of a squeeze from its samples (softgrip-law's ``fit_material``).
 
@@ -154,59 +175,18 @@ def fit_material(
         poisson_ratio: nu [-], in (-1, 0.5].
         x_fit: largest x used for the fit [-], > 0.
         level: the level that fits (any of ``LEVELS``).
+        k, tolerance, match_x: that level's setting, as in :func:`law` (``k`` for ``"fit"``,
+            ``tolerance`` for ``"auto"``, ``match_x`` for ``"linear"``).
 
     Raises:
-        ParameterError: bad samples (``field == "samples"``), radius, nu or level.
+        ParameterError: bad samples (``field == "samples"``: fewer than 2 in the fit range,
+            NaN or negative values), radius, nu, level or a setting.
+        ArgumentTypeError: an argument of the wrong type.
     """
-    r = _native.fit_material(delta, force, radius, poisson_ratio, x_fit, level)
+    r = _native.fit_material(
+        delta, force, radius, poisson_ratio, x_fit, level, k=k, tolerance=tolerance, match_x=match_x
+    )
     return MaterialFit(**r)
-
-
-@dataclass(frozen=True)
-class RunResult:
-    """A scene run: the per-step readout, the summary ``softgrip run`` prints, the digest.
-
-    Arrays have one entry per step taken (``steps``), after each step; ``time[i] = (i + 1) dt``.
-    """
-
-    origin: str
-    """The scene file as given (``<toml>`` for text, ``<default scene>`` for the default)."""
-    dt: float
-    """Time step [s]."""
-    steps: int
-    """Steps taken."""
-    total_steps: int
-    """Steps of the scene's duration."""
-    time: np.ndarray
-    """Simulated time at the end of each step [s], shape (steps,)."""
-    fingertips: Dict[str, Dict[str, np.ndarray]]
-    """Per fingertip name (scene order), arrays over the steps: ``force`` (normal force summed
-    over its contacts [N]), ``friction_force`` ((steps, 3), summed, world [N]),
-    ``torsional_moment`` [N m], ``stiffness`` (summed law stiffness [N/m]), ``delta`` and ``x``
-    (compression [m] and ratio [-] of its deepest contact), ``radius`` (that contact's radius
-    [m]), ``peak_force`` (largest substep normal force [N]), ``contacts`` (int), ``sliding`` and
-    ``validity_exceeded`` (bool)."""
-    bodies: Dict[str, Dict[str, np.ndarray]]
-    """Per body name: ``position`` ((steps, 3) [m]) and ``rotation`` ((steps, 4), x, y, z, w)."""
-    summary: Dict[str, Dict[str, Any]]
-    """Per fingertip: ``peak_force`` [N], ``peak_x`` [-], ``peak_radius`` [m], ``slips``,
-    ``validity_excursions``, ``commanded_depth`` [m], ``squeeze_force`` [N], ``squeeze_delta``
-    [m] (the last three None off a gripper) -- the figures of ``softgrip run``'s summary."""
-    summary_lines: List[str]
-    """The lines ``softgrip run`` prints that do not depend on the wall clock: the scene line
-    and one ``fingertip ...`` line per fingertip, character for character."""
-    digest: str
-    """``digest <hex> steps <n> contacts <m>``: every contact value of every step, bit for bit
-    (what ``softgrip run --digest`` prints)."""
-    wall_time: float
-    """Wall-clock time of the steps [s]."""
-    recording: Optional[Dict[str, Any]] = field(default=None)
-    """With ``mcap``: ``path``, ``frames``, ``messages``, ``chunks``, ``bytes``, ``every``."""
-
-    @property
-    def summary_text(self) -> str:
-        """``summary_lines`` joined by newlines."""
-        return "\n".join(self.summary_lines)
 
 
 def run(
@@ -223,20 +203,21 @@ def run(
         scene: the scene file (TOML, crates/softgrip-scene/SCENES.md); None for the default.
         mcap: write an MCAP recording there (ROS 2 messages, as ``softgrip run --out``).
         every: record every N-th step (default the scene's ``record.every_n_steps``).
-        overwrite: replace an existing ``mcap`` file (else FileExistsError).
+        overwrite: replace an existing ``mcap`` file (else RecordingExistsError, a
+            FileExistsError).
+
+    Returns:
+        A :class:`RunResult`: per fingertip and per body the arrays of
+        :data:`FINGERTIP_ARRAYS` and :data:`BODY_ARRAYS` over every step, the tactile images,
+        the summary and the digest. Open its ``mcap`` with :func:`open_recording`.
 
     Raises:
         SceneError: the scene does not load (``e.field`` names the field).
         RecordingError: the recording could not be written.
+        ArgumentTypeError: an argument of the wrong type.
         KeyboardInterrupt: Ctrl-C during the run (the recording is finished first).
     """
-    path = None if scene is None else os.fspath(scene)
-    r = _native.run_scene(
-        path,
-        mcap=None if mcap is None else os.fspath(mcap),
-        every=every,
-        overwrite=overwrite,
-    )
+    r = _native.run_scene(scene, mcap=mcap, every=every, overwrite=overwrite)
     return RunResult(**r)
 
 
@@ -251,12 +232,36 @@ def run_toml(
     """Runs a scene given as TOML text; its relative paths (meshes, curves) are relative to
     ``base_dir`` (default: the current directory). Otherwise as :func:`run`; errors name the
     scene ``<toml>``."""
+    if not isinstance(text, str):
+        err = ArgumentTypeError(
+            f"`toml` must be scene TOML text (a str), got {text!r} ({type(text).__name__})"
+        )
+        err.field, err.value = "toml", repr(text)
+        raise err
     r = _native.run_scene(
-        None,
-        toml=text,
-        base_dir=None if base_dir is None else os.fspath(base_dir),
-        mcap=None if mcap is None else os.fspath(mcap),
-        every=every,
-        overwrite=overwrite,
+        None, toml=text, base_dir=base_dir, mcap=mcap, every=every, overwrite=overwrite
     )
     return RunResult(**r)
+
+
+def open_recording(path: PathLike, *, frame: str = "scene") -> Recording:
+    """Opens an MCAP recording made by any softgrip version (``softgrip run --out``,
+    ``softgrip.run(mcap=...)``, a sweep's ``mcap_dir``) as the arrays a run returns, without
+    re-running anything: per fingertip the arrays of :data:`FINGERTIP_ARRAYS`, per body
+    :data:`BODY_ARRAYS`, the tactile images, at the recorded steps (``Recording.step``); the
+    run's summary and each fingertip's law (``Recording.law(name)`` builds it); every contact
+    row. A killed writer's file is read up to its last complete chunk (``Recording.recovery``).
+
+    Args:
+        path: the ``.mcap`` file.
+        frame: ``"scene"`` (vectors and poses in the scene's axes, as :func:`run` returns
+            them) or ``"world"`` (the recording's z-up world frame, REP 103, as ROS tools
+            and Foxglove show it).
+
+    Raises:
+        FileNotFoundError: no such file.
+        RecordingFormatError: not an MCAP file, damaged (the message names the part), or a
+            message that does not decode.
+        ArgumentTypeError, ParameterError: a bad ``path`` or ``frame``.
+    """
+    return Recording(**_native.open_recording(path, frame=frame))

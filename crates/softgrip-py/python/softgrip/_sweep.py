@@ -10,7 +10,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _native
-from .errors import ParameterError
+from .errors import ArgumentTypeError, ParameterError
 
 PathLike = Union[str, "os.PathLike[str]"]
 Row = Tuple[Any, ...]
@@ -46,28 +46,41 @@ _KIND_TYPES = {
 }
 
 
+def _error(cls, field: str, value: Any, expected: str):
+    """``cls`` (a softgrip error) saying ``field`` must be ``expected``, naming the value."""
+    kind = f" ({type(value).__name__})" if cls is ArgumentTypeError else ""
+    err = cls(f"`{field}` must be {expected}, got {value!r}{kind}")
+    err.field, err.value = field, repr(value)
+    return err
+
+
 def _open(sweep_path: Optional[PathLike], toml: Optional[str], base_dir: Optional[PathLike]):
     if (sweep_path is None) == (toml is None):
-        raise ParameterError(
-            "give exactly one of `sweep_path` (a sweep file) and `toml` (sweep text)"
+        raise _error(
+            ParameterError,
+            "toml",
+            toml,
+            "given exactly when `sweep_path` is not (a sweep file or sweep text, one of the two)",
         )
     if sweep_path is not None:
-        return _native.Sweep.open(os.fspath(sweep_path))
-    return _native.Sweep.from_toml(toml, os.fspath(base_dir) if base_dir is not None else ".")
+        return _native.Sweep.open(sweep_path)
+    return _native.Sweep.from_toml(toml, base_dir if base_dir is not None else ".")
 
 
 def _shard(shard: Union[None, str, Tuple[int, int]]) -> Tuple[int, int]:
     if shard is None:
         return (0, 1)
+    expected = "\"i/n\" or (i, n) with 0 <= i < n"
     if isinstance(shard, str):
         i, sep, n = shard.partition("/")
         if sep and i.strip().isdigit() and n.strip().isdigit():
             return (int(i), int(n))
-    elif isinstance(shard, tuple) and len(shard) == 2:
-        return (int(shard[0]), int(shard[1]))
-    err = ParameterError(f"`shard` must be \"i/n\" or (i, n) with 0 <= i < n, got {shard!r}")
-    err.field, err.value = "shard", repr(shard)
-    raise err
+        raise _error(ParameterError, "shard", shard, expected)
+    if isinstance(shard, tuple) and len(shard) == 2:
+        ints = all(isinstance(v, int) and not isinstance(v, bool) for v in shard)
+        if ints:
+            return (shard[0], shard[1])
+    raise _error(ArgumentTypeError, "shard", shard, expected)
 
 
 def _shard_range(trials: int, index: int, count: int) -> range:
@@ -196,11 +209,7 @@ def _table(s, rows: Sequence[Row], table: str):
                 raise
             return _to_numpy(s, rows)
         return _to_arrow(s, rows)
-    err = ParameterError(
-        f"`table` must be \"auto\", \"arrow\", \"numpy\" or \"rows\", got {table!r}"
-    )
-    err.field, err.value = "table", repr(table)
-    raise err
+    raise _error(ParameterError, "table", table, "\"auto\", \"arrow\", \"numpy\" or \"rows\"")
 
 
 def sweep(
@@ -242,15 +251,23 @@ def sweep(
         SweepError: the sweep file does not load (``e.field`` names the sweep field), a bad
             shard.
     """
+    s = _open(sweep_path, toml, base_dir)
+    # Ray tasks get the paths as text (made absolute unless a working_dir ships them).
     path = None if sweep_path is None else os.fspath(sweep_path)
     base = None if base_dir is None else os.fspath(base_dir)
-    s = _open(path, toml, base)
     index, count = _shard(shard)
+    if not isinstance(backend, str):
+        raise _error(ArgumentTypeError, "backend", backend, "\"local\" or \"ray\"")
+    if not isinstance(table, str):
+        raise _error(ArgumentTypeError, "table", table, "\"auto\", \"arrow\", \"numpy\" or \"rows\"")
+    if table not in ("auto", "arrow", "numpy", "rows"):
+        raise _error(ParameterError, "table", table, "\"auto\", \"arrow\", \"numpy\" or \"rows\"")
     if backend == "local":
-        if threads is not None and (not isinstance(threads, int) or threads < 1):
-            err = ParameterError(f"`threads` must be an integer >= 1 or None, got {threads!r}")
-            err.field, err.value = "threads", repr(threads)
-            raise err
+        if threads is not None:
+            if not isinstance(threads, int) or isinstance(threads, bool):
+                raise _error(ArgumentTypeError, "threads", threads, "an integer >= 1 or None")
+            if threads < 1:
+                raise _error(ParameterError, "threads", threads, "an integer >= 1 or None")
         rows = [tuple(r) for r in s.run(threads or 0, index, count)]
     elif backend == "ray":
         if not (0 <= index < count):
@@ -258,9 +275,7 @@ def sweep(
             s.run(1, index, count)
         rows = _run_ray(path, toml, base, _shard_range(s.trials, index, count), ray_options)
     else:
-        err = ParameterError(f"`backend` must be \"local\" or \"ray\", got {backend!r}")
-        err.field, err.value = "backend", repr(backend)
-        raise err
+        raise _error(ParameterError, "backend", backend, "\"local\" or \"ray\"")
     if out is not None:
-        s.write(rows, os.fspath(out))
+        s.write(rows, out)
     return _table(s, rows, table)

@@ -9,6 +9,7 @@
 
 mod json_text;
 mod law;
+pub mod legacy;
 mod records;
 
 pub use law::FingertipLaw;

@@ -1,0 +1,179 @@
+//! Building a [`Law`] from Python's arguments: `softgrip.law(...)`, the level's optional
+//! settings ([`Settings`], shared with `fit_material`), the construction's name and thickness,
+//! and the unpickling constructor `_law_from_state`.
+
+use pyo3::prelude::*;
+use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material};
+
+use crate::args;
+use crate::errors::{law_error, parameter};
+use crate::law::Law;
+
+/// A level's optional settings as given from Python (each only for the level that takes it).
+#[derive(Default)]
+pub struct Settings {
+    /// `k` of `fit`.
+    pub k: Option<f64>,
+    /// `tolerance` of `auto`.
+    pub tolerance: Option<f64>,
+    /// `match_x` of `linear`.
+    pub match_x: Option<f64>,
+}
+
+impl Settings {
+    /// Reads the three keyword arguments (None: not given).
+    pub fn read(
+        k: Option<&Bound<'_, PyAny>>,
+        tolerance: Option<&Bound<'_, PyAny>>,
+        match_x: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            k: args::opt_float(k, "k")?,
+            tolerance: args::opt_float(tolerance, "tolerance")?,
+            match_x: args::opt_float(match_x, "match_x")?,
+        })
+    }
+}
+
+/// The level named `name` (a string) with its optional settings.
+pub fn level(name: &Bound<'_, PyAny>, settings: &Settings) -> PyResult<Level> {
+    let py = name.py();
+    let name = args::text(
+        name,
+        "level",
+        "a level name (a str, one of softgrip.LEVELS)",
+    )?;
+    let mut level: Level = name.parse().map_err(|e: String| {
+        crate::errors::raise(py, "ParameterError", e, Some("level"), Some(name.clone()))
+    })?;
+    let only = |field: &str, value: f64, level: &str| {
+        parameter(
+            py,
+            field,
+            value,
+            &format!("given only with level \"{level}\""),
+        )
+    };
+    if let Some(k) = settings.k {
+        match level {
+            Level::Fit { .. } => level = Level::Fit { k },
+            _ => return Err(only("k", k, "fit")),
+        }
+    }
+    if let Some(tolerance) = settings.tolerance {
+        match level {
+            Level::Auto { .. } => level = Level::Auto { tolerance },
+            _ => return Err(only("tolerance", tolerance, "auto")),
+        }
+    }
+    if let Some(match_x) = settings.match_x {
+        match level {
+            Level::Linear { .. } => level = Level::Linear { match_x },
+            _ => return Err(only("match_x", match_x, "linear")),
+        }
+    }
+    Ok(level)
+}
+
+/// The construction named `name` (`free`, `flat`, `core`) with the core's skin thickness [m].
+pub fn backing(name: &Bound<'_, PyAny>, thickness: Option<f64>) -> PyResult<Backing> {
+    let py = name.py();
+    let name = args::text(
+        name,
+        "backing",
+        "a construction name (\"free\", \"flat\" or \"core\")",
+    )?;
+    match (name.as_str(), thickness) {
+        ("core", Some(t)) => Ok(Backing::Core { thickness: t }),
+        ("core", None) => Err(crate::errors::raise(
+            py,
+            "ParameterError",
+            "`thickness` must be given for backing \"core\" (the skin thickness t in (0, R) m), got None",
+            Some("thickness"),
+            None,
+        )),
+        ("free" | "flat", Some(t)) => Err(parameter(
+            py,
+            "thickness",
+            t,
+            &format!("None for backing \"{name}\" (only \"core\" has a skin thickness)"),
+        )),
+        (other, _) => other.parse().map_err(|e: String| {
+            crate::errors::raise(py, "ParameterError", e, Some("backing"), Some(name.clone()))
+        }),
+    }
+}
+
+/// The law of `level` for a fingertip of E [Pa], nu [-], R [m] and construction `backing`.
+fn build(
+    py: Python<'_>,
+    level: Level,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    radius: f64,
+    backing: Backing,
+) -> PyResult<Law> {
+    let e = |e: softgrip_law::Error| law_error(py, &e);
+    let material = Material::try_new(youngs_modulus, poisson_ratio).map_err(e)?;
+    let params = ContactParams::try_new(material, radius)
+        .and_then(|p| p.with_backing(backing))
+        .map_err(e)?;
+    let law = ContactLaw::try_new(params, level).map_err(e)?;
+    Ok(Law {
+        law,
+        youngs_modulus,
+    })
+}
+
+/// `softgrip.law(level, youngs_modulus, poisson_ratio, radius, backing="free",
+/// thickness=None, *, k=None, tolerance=None, match_x=None)`.
+#[pyfunction]
+#[pyo3(signature = (level, youngs_modulus, poisson_ratio, radius, backing = None, thickness = None, *, k = None, tolerance = None, match_x = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn law(
+    py: Python<'_>,
+    level: &Bound<'_, PyAny>,
+    youngs_modulus: &Bound<'_, PyAny>,
+    poisson_ratio: &Bound<'_, PyAny>,
+    radius: &Bound<'_, PyAny>,
+    backing: Option<&Bound<'_, PyAny>>,
+    thickness: Option<&Bound<'_, PyAny>>,
+    k: Option<&Bound<'_, PyAny>>,
+    tolerance: Option<&Bound<'_, PyAny>>,
+    match_x: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Law> {
+    let level = self::level(level, &Settings::read(k, tolerance, match_x)?)?;
+    let youngs_modulus = args::float(youngs_modulus, "youngs_modulus")?;
+    let poisson_ratio = args::float(poisson_ratio, "poisson_ratio")?;
+    let radius = args::float(radius, "radius")?;
+    let thickness = args::opt_float(thickness, "thickness")?;
+    let free = pyo3::types::PyString::new(py, "free").into_any();
+    let backing = self::backing(backing.filter(|b| !b.is_none()).unwrap_or(&free), thickness)?;
+    build(py, level, youngs_modulus, poisson_ratio, radius, backing)
+}
+
+/// Unpickles a [`Law`] from its state (`Law.__reduce__`): `(level, setting, E, nu, R,
+/// backing, thickness)`.
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+pub fn _law_from_state(
+    py: Python<'_>,
+    level: &Bound<'_, PyAny>,
+    setting: Option<f64>,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    radius: f64,
+    backing: &Bound<'_, PyAny>,
+    thickness: Option<f64>,
+) -> PyResult<Law> {
+    let mut lvl = self::level(level, &Settings::default())?;
+    if let (
+        Level::Fit { k: v } | Level::Auto { tolerance: v } | Level::Linear { match_x: v },
+        Some(s),
+    ) = (&mut lvl, setting)
+    {
+        *v = s;
+    }
+    let backing = self::backing(backing, thickness)?;
+    build(py, lvl, youngs_modulus, poisson_ratio, radius, backing)
+}

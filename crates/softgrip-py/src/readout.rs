@@ -1,0 +1,185 @@
+//! The per-step arrays a run returns and a recording opens as, filled the same way from both:
+//! a fingertip's contacts of a step ([`ContactRow`]s) become one entry of each of its arrays
+//! ([`TipSeries`]), a body's pose one row ([`BodySeries`]), a tactile pad's image one slice
+//! ([`TactileSeries`]). `softgrip.run` fills them from the plugin's readout, and
+//! `softgrip.open_recording` from the recorded messages, so both give the same keys, shapes,
+//! dtypes and values.
+
+use numpy::IntoPyArray;
+use numpy::ndarray::{Array2, Array3};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// One contact of a fingertip in one step, in the scene's axes.
+#[derive(Debug, Clone, Copy)]
+pub struct ContactRow {
+    /// Normal force on the fingertip [N] (step average).
+    pub force: f64,
+    /// Friction force on the fingertip [N] (step average, scene axes).
+    pub friction: [f64; 3],
+    /// Torsional friction moment [N m].
+    pub moment: f64,
+    /// Law stiffness dF/d delta [N/m].
+    pub stiffness: f64,
+    /// Largest substep normal force [N].
+    pub peak: f64,
+    /// Friction saturated in some substep.
+    pub sliding: bool,
+    /// Past the level's validity range.
+    pub exceeded: bool,
+    /// Compression delta [m].
+    pub delta: f64,
+    /// Compression ratio x = delta / R [-].
+    pub x: f64,
+    /// Contact radius a [m].
+    pub radius: f64,
+}
+
+/// One fingertip's arrays, one entry per step: forces and stiffness summed over its
+/// contacts, the deepest contact's compression and contact radius.
+#[derive(Default)]
+pub struct TipSeries {
+    force: Vec<f64>,
+    friction_force: Vec<f64>,
+    torsional_moment: Vec<f64>,
+    delta: Vec<f64>,
+    x: Vec<f64>,
+    radius: Vec<f64>,
+    stiffness: Vec<f64>,
+    peak_force: Vec<f64>,
+    contacts: Vec<i64>,
+    sliding: Vec<bool>,
+    validity_exceeded: Vec<bool>,
+}
+
+impl TipSeries {
+    /// Appends one step made of `rows` (the fingertip's contacts in that step, maybe none).
+    pub fn push_step(&mut self, rows: impl IntoIterator<Item = ContactRow>) {
+        let mut force = 0.0;
+        let mut friction = [0.0; 3];
+        let mut moment = 0.0;
+        let mut stiffness = 0.0;
+        let mut peak = 0.0f64;
+        let mut count = 0i64;
+        let (mut sliding, mut exceeded) = (false, false);
+        let mut deepest: Option<ContactRow> = None;
+        for c in rows {
+            force += c.force;
+            for (f, cf) in friction.iter_mut().zip(c.friction) {
+                *f += cf;
+            }
+            moment += c.moment;
+            stiffness += c.stiffness;
+            peak = peak.max(c.peak);
+            count += 1;
+            sliding |= c.sliding;
+            exceeded |= c.exceeded;
+            if deepest.is_none_or(|d| c.delta > d.delta) {
+                deepest = Some(c);
+            }
+        }
+        self.force.push(force);
+        self.friction_force.extend_from_slice(&friction);
+        self.torsional_moment.push(moment);
+        let (delta, x, radius) = deepest.map_or((0.0, 0.0, 0.0), |c| (c.delta, c.x, c.radius));
+        self.delta.push(delta);
+        self.x.push(x);
+        self.radius.push(radius);
+        self.stiffness.push(stiffness);
+        self.peak_force.push(peak);
+        self.contacts.push(count);
+        self.sliding.push(sliding);
+        self.validity_exceeded.push(exceeded);
+    }
+
+    /// The arrays as a dict of numpy arrays (the keys of `RunResult.fingertips[name]`).
+    pub fn into_py(self, py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("force", self.force.into_pyarray(py))?;
+        d.set_item("friction_force", matrix(py, self.friction_force, 3))?;
+        d.set_item("torsional_moment", self.torsional_moment.into_pyarray(py))?;
+        d.set_item("delta", self.delta.into_pyarray(py))?;
+        d.set_item("x", self.x.into_pyarray(py))?;
+        d.set_item("radius", self.radius.into_pyarray(py))?;
+        d.set_item("stiffness", self.stiffness.into_pyarray(py))?;
+        d.set_item("peak_force", self.peak_force.into_pyarray(py))?;
+        d.set_item("contacts", self.contacts.into_pyarray(py))?;
+        d.set_item("sliding", self.sliding.into_pyarray(py))?;
+        d.set_item("validity_exceeded", self.validity_exceeded.into_pyarray(py))?;
+        Ok(d)
+    }
+}
+
+/// One body's pose, one row per step (scene axes; NaN where the body was not there).
+#[derive(Default)]
+pub struct BodySeries {
+    position: Vec<f64>,
+    rotation: Vec<f64>,
+}
+
+impl BodySeries {
+    /// Appends a pose: position [m] and unit quaternion `[x, y, z, w]`.
+    pub fn push(&mut self, position: [f64; 3], rotation: [f64; 4]) {
+        self.position.extend(position);
+        self.rotation.extend(rotation);
+    }
+
+    /// The arrays as a dict: `position` (n, 3) and `rotation` (n, 4).
+    pub fn into_py(self, py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("position", matrix(py, self.position, 3))?;
+        d.set_item("rotation", matrix(py, self.rotation, 4))?;
+        Ok(d)
+    }
+}
+
+/// One tactile pad's images, one per step: taxel pressures [Pa] as `f32` (as recorded),
+/// row-major from the pad's top-left taxel.
+pub struct TactileSeries {
+    rows: usize,
+    columns: usize,
+    pressure: Vec<f32>,
+}
+
+impl TactileSeries {
+    /// An empty series of a `rows` x `columns` pad.
+    pub fn new(rows: usize, columns: usize) -> Self {
+        Self {
+            rows,
+            columns,
+            pressure: Vec::new(),
+        }
+    }
+
+    /// Whether an image of `rows` x `columns` fits this pad.
+    pub fn fits(&self, rows: usize, columns: usize) -> bool {
+        (self.rows, self.columns) == (rows, columns)
+    }
+
+    /// Appends one image (`rows * columns` pressures, row-major).
+    pub fn push(&mut self, pressure: impl IntoIterator<Item = f32>) {
+        let before = self.pressure.len();
+        self.pressure.extend(pressure);
+        // A short or long image (another writer's) is padded or cut to the pad's size.
+        self.pressure
+            .resize(before + self.rows * self.columns, f32::NAN);
+    }
+
+    /// The images as a float32 array (steps, rows, columns).
+    pub fn into_py(self, py: Python<'_>) -> Bound<'_, PyAny> {
+        let steps = self.pressure.len() / (self.rows * self.columns).max(1);
+        Array3::from_shape_vec((steps, self.rows, self.columns), self.pressure)
+            .expect("invariant: rows x columns values per image")
+            .into_pyarray(py)
+            .into_any()
+    }
+}
+
+/// `values` as an (n, width) float64 array.
+pub fn matrix(py: Python<'_>, values: Vec<f64>, width: usize) -> Bound<'_, PyAny> {
+    let rows = values.len() / width;
+    Array2::from_shape_vec((rows, width), values)
+        .expect("invariant: width values per step")
+        .into_pyarray(py)
+        .into_any()
+}
