@@ -28,6 +28,7 @@ macro_rules! counterpart_file {
 #[rustfmt::skip]
 pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("ball/free/force_nu0.3_k1.csv", Force, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, x = 0.01..0.7"),
+    counterpart_file!("ball/free/force_nu0.3_k2.csv", Force, 0.3, "free", Counterpart::Ball { k: 2.0 }, "ball k = 2, free, nu = 0.3, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.48_k0.5.csv", Force, 0.48, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.48, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.48_k1.csv", Force, 0.48, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.48, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.48_k2.csv", Force, 0.48, "free", Counterpart::Ball { k: 2.0 }, "ball k = 2, free, nu = 0.48, x = 0.01..0.7"),
@@ -37,6 +38,9 @@ pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("ball/free/pressure_nu0.3_k1_d0.1.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, pressure at x = 0.1"),
     counterpart_file!("ball/free/pressure_nu0.3_k1_d0.3.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, pressure at x = 0.3"),
     counterpart_file!("ball/free/pressure_nu0.3_k1_d0.5.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, pressure at x = 0.5"),
+    counterpart_file!("ball/free/pressure_nu0.3_k2_d0.1.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 2.0 }, "ball k = 2, free, nu = 0.3, pressure at x = 0.1"),
+    counterpart_file!("ball/free/pressure_nu0.3_k2_d0.3.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 2.0 }, "ball k = 2, free, nu = 0.3, pressure at x = 0.3"),
+    counterpart_file!("ball/free/pressure_nu0.3_k2_d0.5.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 2.0 }, "ball k = 2, free, nu = 0.3, pressure at x = 0.5"),
     counterpart_file!("ball/free/pressure_nu0.48_k0.5_d0.1.csv", Pressure, 0.48, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.48, pressure at x = 0.1"),
     counterpart_file!("ball/free/pressure_nu0.48_k0.5_d0.3.csv", Pressure, 0.48, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.48, pressure at x = 0.3"),
     counterpart_file!("ball/free/pressure_nu0.48_k0.5_d0.5.csv", Pressure, 0.48, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.48, pressure at x = 0.5"),

@@ -62,7 +62,8 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
 /// (`r+g, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
-/// every fit: `ball/*/force_nu0.4_k0.7.csv` and the cylinders.
+/// every fit: `ball/*/force_nu0.4_k0.7.csv`, `ball/*/force_nu0.3_k2.csv` (landed after the
+/// constants were fixed) and the cylinders.
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/free/force_nu0.3_k1.csv" => 1.30,
@@ -72,6 +73,7 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/free/force_nu0.48_k4.csv" => 1.66,
         "ball/free/force_nu0.499_k1.csv" => 1.70,
         "ball/free/force_nu0.4_k0.7.csv" => 2.46,
+        "ball/free/force_nu0.3_k2.csv" => 4.61,
         "ball/flat/force_nu0.3_k1.csv" => 6.80,
         "ball/flat/force_nu0.48_k0.5.csv" => 1.91,
         "ball/flat/force_nu0.48_k1.csv" => 1.17,
@@ -90,8 +92,13 @@ fn stated_force_error(path: &str) -> f64 {
 /// The curves the law misses the 3 % on, each with its reason (COUNTERPART.md): the
 /// bonded pad at nu = 0.3 on a ball of R, +5.7 % at x = 0.36 and -10 % at its reach (0.68),
 /// where the compressible material under the contact collapses (smallest element volume ratio
-/// 0.30 at x = 0.5, cut at 0.2); one (r, g) per nu cannot follow both.
-const KNOWN_MISSES: &[&str] = &["ball/flat/force_nu0.3_k1.csv"];
+/// 0.30 at x = 0.5, cut at 0.2); one (r, g) per nu cannot follow both. The free sphere at
+/// nu = 0.3 on a ball of 2R (blind): within 1.4 % to x = 0.6, then -4.6 % at x = 0.7, where
+/// the same collapse begins (smallest element volume ratio 0.25).
+const KNOWN_MISSES: &[&str] = &[
+    "ball/flat/force_nu0.3_k1.csv",
+    "ball/free/force_nu0.3_k2.csv",
+];
 
 #[test]
 fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
