@@ -97,6 +97,10 @@ def x_max_plane(nu, construction):
 
 REACH = {"free": 0.70, "flat": 0.66}
 
+# Curves that landed after the law's constants were fixed (mapping.rs): blind tests, kept out of
+# the fit so that the constants printed stay the law's.
+LANDED_AFTER_FIT = {"ball/free/force_nu0.3_k2.csv", "ball/flat/force_nu0.3_k2.csv"}
+
 
 # ---------------------------------------------------------------- data
 class Curve:
@@ -108,7 +112,9 @@ class Curve:
         first = open(path).readline()
         # Held out of every fit: the campaign's held-out runs, and every cylinder (the ellipse
         # is the balls' form generalised by Hertz's theory, not fitted: a blind test of it).
-        self.held_out = "held-out" in first or "held out" in first or self.kind == "cylinder"
+        self.held_out = ("held-out" in first or "held out" in first or self.kind == "cylinder"
+                         or os.path.relpath(path, os.path.join(ROOT, "tests", "data", "fe"))
+                         in LANDED_AFTER_FIT)
         r = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
         es = 2 * (1 + self.nu) / (1 - self.nu ** 2)  # E* [MPa], mu = 1 MPa, R = 1 mm
         self.x = r["delta_over_R"]
@@ -294,6 +300,39 @@ def radius_errors(c, coef, lo=0.1, hi=0.4):
     return out
 
 
+def plane_bias_3d(data):
+    """The 3D mesh's own radius error, measured on a plane: the 3D quarter model on a plane at
+    R/20 (cylinder/convergence.csv, check "3d": its contact radius, the last node in contact,
+    against the axisymmetric R/40 run's, smoothed plus half an element) as a function of what
+    the 3D mesh reads, fitted by a quadratic over 0.05 <= x <= 0.44. Returns a -> true a."""
+    rows = [line.strip().split(",") for line in open(os.path.join(data, "cylinder", "convergence.csv"))
+            if ",3d," in line]
+    rows = [r for r in rows if r[4] == "20"]
+    x = np.array([float(r[6]) for r in rows])
+    a3 = np.array([float(r[10]) for r in rows])
+    axi = np.array([float(r[11]) for r in rows])
+    sel = (x >= 0.05) & (x <= 0.44)
+    bias = (smooth(x, axi)(x[sel]) + 0.485 / 40) / a3[sel]
+    cb = np.polyfit(a3[sel], bias, 2)
+    lo, hi = a3[sel].min(), a3[sel].max()
+    print(f"  the 3D mesh on a plane reads the radius {100 * (1 - 1 / bias.min()):.0f}-"
+          f"{100 * (1 - 1 / bias.max()):.0f} % low (mean {100 * (1 - np.mean(1 / bias)):.0f} %)")
+    return lambda a: a * np.polyval(cb, np.clip(a, lo, hi))
+
+
+def cylinder_axes(c, coef, correct, lo=0.1, hi=0.4):
+    """The law's semi-axes over the 3D FE's (the last-node columns, smoothed), raw and with the
+    3D mesh's plane bias removed: (name, raw errors, corrected errors) per semi-axis."""
+    r = np.genfromtxt(os.path.join(ROOT, c.path), delimiter=",", names=True, skip_header=1)
+    _, axes, _, top = law(c, c.x, coef)
+    sel = (c.x >= lo) & (c.x <= min(hi, top))
+    out = []
+    for name, mine, col in zip(("along", "across"), axes, ("semi_axis_along_mm", "semi_axis_across_mm")):
+        fe = smooth(c.x, r[col])(c.x[sel])
+        out.append((name, mine[sel] / fe - 1, mine[sel] / correct(fe) - 1))
+    return out
+
+
 def sneddon_coefficient():
     """-(F/F_H - 1)/(a_H/R)^2 of Sneddon's exact rigid sphere on an elastic half-space
     (F = (E*/2)((a^2 + R^2) ln((R + a)/(R - a)) - 2 a R), delta = (a/2) ln((R + a)/(R - a)))
@@ -362,6 +401,16 @@ def main():
             if not len(e):
                 continue
             print(f"  {c.name():32s} {which}: {100 * np.max(np.abs(e)):6.2f} % (mean {100 * np.mean(e):+.2f} %)")
+    print("\n## cylinder semi-axes (law `r+g, eps`) against the 3D FE (last node in contact, smoothed), "
+          "0.1 <= x <= 0.4, raw and with the 3D mesh's bias on a plane removed")
+    correct = plane_bias_3d(args.data)
+    for c in curves:
+        if c.kind != "cylinder":
+            continue
+        for name, raw, cor in cylinder_axes(c, best, correct):
+            print(f"  {c.name():32s} {name:6s}: raw mean {100 * raw.mean():+5.1f} % (worst "
+                  f"{100 * np.max(np.abs(raw)):4.1f} %), corrected mean {100 * cor.mean():+5.1f} % "
+                  f"(worst {100 * np.max(np.abs(cor)):4.1f} %)")
     print("\nconstants (mapping.rs):",
           {k: tuple(round(float(v), 6) for v in p) for k, p in best.items()})
 
