@@ -88,6 +88,9 @@ pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("cylinder/free/pressure_nu0.48_k1_d0.1.csv", PressureMap, 0.48, "free", Counterpart::Cylinder { k: 1.0 }, "cylinder k = 1, free, nu = 0.48, pressure at x = 0.1"),
     counterpart_file!("cylinder/free/pressure_nu0.48_k1_d0.3.csv", PressureMap, 0.48, "free", Counterpart::Cylinder { k: 1.0 }, "cylinder k = 1, free, nu = 0.48, pressure at x = 0.3"),
     counterpart_file!("cylinder/flat/force_nu0.48_k1.csv", Force3d, 0.48, "flat", Counterpart::Cylinder { k: 1.0 }, "cylinder k = 1, flat, nu = 0.48, x = 0.01..0.44"),
+    counterpart_file!("cylinder/flat/force_nu0.48_k3.csv", Force3d, 0.48, "flat", Counterpart::Cylinder { k: 3.0 }, "cylinder k = 3, flat, nu = 0.48, x = 0.01..0.5"),
     counterpart_file!("cylinder/flat/pressure_nu0.48_k1_d0.1.csv", PressureMap, 0.48, "flat", Counterpart::Cylinder { k: 1.0 }, "cylinder k = 1, flat, nu = 0.48, pressure at x = 0.1"),
     counterpart_file!("cylinder/flat/pressure_nu0.48_k1_d0.3.csv", PressureMap, 0.48, "flat", Counterpart::Cylinder { k: 1.0 }, "cylinder k = 1, flat, nu = 0.48, pressure at x = 0.3"),
+    counterpart_file!("cylinder/flat/pressure_nu0.48_k3_d0.1.csv", PressureMap, 0.48, "flat", Counterpart::Cylinder { k: 3.0 }, "cylinder k = 3, flat, nu = 0.48, pressure at x = 0.1"),
+    counterpart_file!("cylinder/flat/pressure_nu0.48_k3_d0.3.csv", PressureMap, 0.48, "flat", Counterpart::Cylinder { k: 3.0 }, "cylinder k = 3, flat, nu = 0.48, pressure at x = 0.3"),
 ];

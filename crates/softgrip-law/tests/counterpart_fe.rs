@@ -63,7 +63,7 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 /// (`r+g, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
 /// every fit: `ball/*/force_nu0.4_k0.7.csv`, `ball/*/force_nu0.3_k2.csv` (landed after the
-/// constants were fixed) and the cylinders.
+/// constants were fixed) and the cylinders (R2/R = 3 landed after them too).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/free/force_nu0.3_k1.csv" => 1.30,
@@ -83,15 +83,24 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/flat/force_nu0.4_k0.7.csv" => 0.62,
         "cylinder/flat/force_nu0.48_k1.csv" => 1.11,
         "cylinder/free/force_nu0.48_k1.csv" => 1.50,
+        "cylinder/flat/force_nu0.48_k3.csv" => 0.93,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
     (pct + 0.2) / 100.0
 }
 
+/// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the ball of R
+/// (the law ends at x = 0.655, where the plane law does at rho x, of the FE's 0.68), and the
+/// flat pad on the ball of 0.7 R at nu = 0.4 (0.66, the bonded reach constant, of 0.69).
+const RANGE_SHORT: &[&str] = &[
+    "ball/flat/force_nu0.3_k1.csv",
+    "ball/flat/force_nu0.4_k0.7.csv",
+];
+
 /// The curves the law misses the 3 % on, each with its reason (COUNTERPART.md): the
-/// bonded pad at nu = 0.3 on a ball of R, +5.7 % at x = 0.36 and -10 % at its reach (0.68),
-/// where the compressible material under the contact collapses (smallest element volume ratio
+/// bonded pad at nu = 0.3 on a ball of R, +5.7 % at x = 0.36 and -6.8 % where the law ends
+/// (0.655; -10 % at the FE's reach, 0.68), where the compressible material under the contact collapses (smallest element volume ratio
 /// 0.30 at x = 0.5, cut at 0.2); one (r, g) per nu cannot follow both. The free sphere at
 /// nu = 0.3 on a ball of 2R (blind): within 1.4 % to x = 0.6, then -4.6 % at x = 0.7, where
 /// the same collapse begins (smallest element volume ratio 0.25).
@@ -119,16 +128,19 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
             file.path,
             100.0 * err
         );
-        // Compared to the FE's reach (or the law's end: 0.66 bonded, 0.70 free).
+        // The law's range reaches the FE's (within one FE step, 0.02 at the end of a 3D run),
+        // except where it is stated short.
         let fe_end = file.points().expect("parses").last().expect("points").x;
         assert!(
-            top >= fe_end.min(law.x_max()) - 0.011,
-            "{}: compared only to x = {top} of {fe_end}",
-            file.path
+            law.x_max() >= fe_end - 0.021 || RANGE_SHORT.contains(&file.path),
+            "{}: the law ends at x = {} of the FE's {fe_end}",
+            file.path,
+            law.x_max()
         );
+        assert!(top > 0.0, "{}: nothing compared", file.path);
         seen += 1;
     }
-    assert!(seen >= 16, "{seen} curves");
+    assert!(seen >= 17, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
