@@ -93,4 +93,7 @@ pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("cylinder/flat/pressure_nu0.48_k1_d0.3.csv", PressureMap, 0.48, "flat", Counterpart::Cylinder { k: 1.0 }, "cylinder k = 1, flat, nu = 0.48, pressure at x = 0.3"),
     counterpart_file!("cylinder/flat/pressure_nu0.48_k3_d0.1.csv", PressureMap, 0.48, "flat", Counterpart::Cylinder { k: 3.0 }, "cylinder k = 3, flat, nu = 0.48, pressure at x = 0.1"),
     counterpart_file!("cylinder/flat/pressure_nu0.48_k3_d0.3.csv", PressureMap, 0.48, "flat", Counterpart::Cylinder { k: 3.0 }, "cylinder k = 3, flat, nu = 0.48, pressure at x = 0.3"),
+    counterpart_file!("edge/flat/force_nu0.48.csv", Force3d, 0.48, "flat", Counterpart::Edge, "edge, flat, nu = 0.48, x = 0.01..0.4"),
+    counterpart_file!("edge/flat/pressure_nu0.48_d0.1.csv", PressureMap, 0.48, "flat", Counterpart::Edge, "edge, flat, nu = 0.48, pressure at x = 0.1"),
+    counterpart_file!("edge/flat/pressure_nu0.48_d0.3.csv", PressureMap, 0.48, "flat", Counterpart::Edge, "edge, flat, nu = 0.48, pressure at x = 0.3"),
 ];
