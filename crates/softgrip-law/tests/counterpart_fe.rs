@@ -202,7 +202,7 @@ fn force_on_an_edge_is_within_its_stated_error_of_the_fe() {
     {
         let law = law_of(file);
         let (err, top) = force_error(file, &law);
-        let plane = ContactLaw::try_new(law.params().clone(), Level::Calibrated).expect("binds");
+        let plane = ContactLaw::try_new(*law.params(), Level::Calibrated).expect("binds");
         let (plane_err, _) = force_error(file, &plane);
         println!(
             "{:38} force within {:5.2} % for 0.01 <= x <= {top:.2} (as a plane: {:.0} %)",
@@ -211,7 +211,7 @@ fn force_on_an_edge_is_within_its_stated_error_of_the_fe() {
             100.0 * plane_err
         );
         assert!(
-            err <= 0.0445 && err < 0.10,
+            err <= 0.0445, // the stated 4.25 % + 0.2 %, inside the 10 %
             "{}: {:.2} %",
             file.path,
             100.0 * err
