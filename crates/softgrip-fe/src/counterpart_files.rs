@@ -27,6 +27,7 @@ macro_rules! counterpart_file {
 /// 4.15.2; each file's provenance line says how it was made).
 #[rustfmt::skip]
 pub const COUNTERPART_FILES: &[FeFile] = &[
+    counterpart_file!("ball/free/force_nu0.3_k0.5.csv", Force, 0.3, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.3, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.3_k1.csv", Force, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.3_k2.csv", Force, 0.3, "free", Counterpart::Ball { k: 2.0 }, "ball k = 2, free, nu = 0.3, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.48_k0.5.csv", Force, 0.48, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.48, x = 0.01..0.7"),
@@ -35,6 +36,9 @@ pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("ball/free/force_nu0.48_k4.csv", Force, 0.48, "free", Counterpart::Ball { k: 4.0 }, "ball k = 4, free, nu = 0.48, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.499_k1.csv", Force, 0.499, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.499, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.4_k0.7.csv", Force, 0.4, "free", Counterpart::Ball { k: 0.7 }, "held out of every fit: ball k = 0.7, free, nu = 0.4, x = 0.01..0.7"),
+    counterpart_file!("ball/free/pressure_nu0.3_k0.5_d0.1.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.3, pressure at x = 0.1"),
+    counterpart_file!("ball/free/pressure_nu0.3_k0.5_d0.3.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.3, pressure at x = 0.3"),
+    counterpart_file!("ball/free/pressure_nu0.3_k0.5_d0.5.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.3, pressure at x = 0.5"),
     counterpart_file!("ball/free/pressure_nu0.3_k1_d0.1.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, pressure at x = 0.1"),
     counterpart_file!("ball/free/pressure_nu0.3_k1_d0.3.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, pressure at x = 0.3"),
     counterpart_file!("ball/free/pressure_nu0.3_k1_d0.5.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, pressure at x = 0.5"),
@@ -60,6 +64,7 @@ pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("ball/free/pressure_nu0.4_k0.7_d0.3.csv", Pressure, 0.4, "free", Counterpart::Ball { k: 0.7 }, "held out of every fit: ball k = 0.7, free, nu = 0.4, pressure at x = 0.3"),
     counterpart_file!("ball/free/pressure_nu0.4_k0.7_d0.5.csv", Pressure, 0.4, "free", Counterpart::Ball { k: 0.7 }, "held out of every fit: ball k = 0.7, free, nu = 0.4, pressure at x = 0.5"),
     counterpart_file!("ball/flat/force_nu0.3_k1.csv", Force, 0.3, "flat", Counterpart::Ball { k: 1.0 }, "ball k = 1, flat, nu = 0.3, x = 0.01..0.68"),
+    counterpart_file!("ball/flat/force_nu0.3_k2.csv", Force, 0.3, "flat", Counterpart::Ball { k: 2.0 }, "ball k = 2, flat, nu = 0.3, x = 0.01..0.59"),
     counterpart_file!("ball/flat/force_nu0.48_k0.5.csv", Force, 0.48, "flat", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, flat, nu = 0.48, x = 0.01..0.59"),
     counterpart_file!("ball/flat/force_nu0.48_k1.csv", Force, 0.48, "flat", Counterpart::Ball { k: 1.0 }, "ball k = 1, flat, nu = 0.48, x = 0.01..0.66"),
     counterpart_file!("ball/flat/force_nu0.48_k2.csv", Force, 0.48, "flat", Counterpart::Ball { k: 2.0 }, "ball k = 2, flat, nu = 0.48, x = 0.01..0.56"),
@@ -69,6 +74,9 @@ pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("ball/flat/pressure_nu0.3_k1_d0.1.csv", Pressure, 0.3, "flat", Counterpart::Ball { k: 1.0 }, "ball k = 1, flat, nu = 0.3, pressure at x = 0.1"),
     counterpart_file!("ball/flat/pressure_nu0.3_k1_d0.3.csv", Pressure, 0.3, "flat", Counterpart::Ball { k: 1.0 }, "ball k = 1, flat, nu = 0.3, pressure at x = 0.3"),
     counterpart_file!("ball/flat/pressure_nu0.3_k1_d0.5.csv", Pressure, 0.3, "flat", Counterpart::Ball { k: 1.0 }, "ball k = 1, flat, nu = 0.3, pressure at x = 0.5"),
+    counterpart_file!("ball/flat/pressure_nu0.3_k2_d0.1.csv", Pressure, 0.3, "flat", Counterpart::Ball { k: 2.0 }, "ball k = 2, flat, nu = 0.3, pressure at x = 0.1"),
+    counterpart_file!("ball/flat/pressure_nu0.3_k2_d0.3.csv", Pressure, 0.3, "flat", Counterpart::Ball { k: 2.0 }, "ball k = 2, flat, nu = 0.3, pressure at x = 0.3"),
+    counterpart_file!("ball/flat/pressure_nu0.3_k2_d0.5.csv", Pressure, 0.3, "flat", Counterpart::Ball { k: 2.0 }, "ball k = 2, flat, nu = 0.3, pressure at x = 0.5"),
     counterpart_file!("ball/flat/pressure_nu0.48_k0.5_d0.1.csv", Pressure, 0.48, "flat", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, flat, nu = 0.48, pressure at x = 0.1"),
     counterpart_file!("ball/flat/pressure_nu0.48_k0.5_d0.3.csv", Pressure, 0.48, "flat", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, flat, nu = 0.48, pressure at x = 0.3"),
     counterpart_file!("ball/flat/pressure_nu0.48_k0.5_d0.5.csv", Pressure, 0.48, "flat", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, flat, nu = 0.48, pressure at x = 0.5"),
