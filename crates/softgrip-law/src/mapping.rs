@@ -30,7 +30,7 @@
 //!   `F_p(rho_H x)/rho_H`), the map sits between the patch's (`r = 1`) and the plane's
 //!   (`r = 0`). At small x any `(s, rho)` with `s rho^(3/2) = h` is Hertz's law: `r` only acts
 //!   at large x. `r` falls with the compressibility `eps = mu/kappa = 3(1 - 2nu)/(2(1 + nu))`
-//!   (`r = r0 + r1 eps`; free 0.71 at nu -> 1/2, 0.34 at nu = 0.3): in a compressible
+//!   (`r = r0 + r1 eps`; free 0.72 at nu -> 1/2, 0.32 at nu = 0.3): in a compressible
 //!   fingertip the material under the contact loses volume (the FE's smallest element volume
 //!   ratio at x = 0.1, nu = 0.3: 0.68 on a ball of R, 0.74 on the plane; 0.96-0.97 at
 //!   nu = 0.48) and stiffens with the local strain `delta/a`, which a curved counterpart
@@ -42,8 +42,8 @@
 //!   `a_i` its quartic excess, relative, is `(a_i kappa_i)²`, and the patch and force are
 //!   smaller: Sneddon's exact rigid sphere on a half-space carries `1 - 0.1 (a/R2)²` of Hertz's
 //!   force (`tools/calibration/COUNTERPART.md`); on the finite fingertip the FE says `g`
-//!   (0.25 free, 0.35 bonded at nu -> 1/2, falling with the compressibility, `g = g0 + g1
-//!   eps`, to 0.04 and 0.00 at nu = 0.3, where the compressed material's stiffening makes up
+//!   (0.24 free, 0.35 bonded at nu -> 1/2, falling with the compressibility, `g = g0 + g1
+//!   eps`, to 0.13 and 0.00 at nu = 0.3, where the compressed material's stiffening makes up
 //!   for the sphere's quartic). Signed by the curvature (a bowl's quartic narrows the gap:
 //!   stiffer). It is what makes a ball half the fingertip's size softer than the patch
 //!   argument at large x while a ball twice its size is stiffer. It ends the law where the
@@ -51,7 +51,7 @@
 //!
 //! Constants `r0, r1, g0, g1` per construction (free; flat and core: a bonded pad),
 //! `tools/calibration/fit_counterpart.py` (ball curves at nu 0.3, 0.48, 0.499; held out: the
-//! ball of 0.7 R at nu = 0.4, 2.46 % free and 0.62 % bonded, and the cylinders). They act on
+//! ball of 0.7 R at nu = 0.4, 3.16 % free and 0.62 % bonded, and the cylinders). They act on
 //! the fingertip's own law (`calibrated`, `auto`, `tabulated`, `custom`); the published levels
 //! (baselines) take the patch argument alone (`r = 1`, `g = 0`): on a ball `hertz` is Hertz's
 //! law with the effective radius at every x.
@@ -196,10 +196,10 @@ impl Form {
 const EPS_VALIDATED: f64 = 3.0 * (1.0 - 0.6) / (2.0 * 1.3);
 
 /// Free sphere: r0, r1, g0, g1 of `r = r0 + r1 eps`, `g = g0 + g1 eps`
-/// (`eps = mu/kappa`; fitted on balls at nu = 0.3, 0.48 and 0.499).
-const FREE: [f64; 4] = [0.713046, -0.80279, 0.252087, -0.462999];
+/// (`eps = mu/kappa`; fitted on fifteen ball curves at nu = 0.3, 0.48 and 0.499).
+const FREE: [f64; 4] = [0.715605, -0.866304, 0.24444, -0.257074];
 /// Flat and core (a bonded pad): r0, r1, g0, g1.
-const BONDED: [f64; 4] = [0.83065, -1.287116, 0.346698, -0.746285];
+const BONDED: [f64; 4] = [0.83065, -1.28711, 0.346681, -0.74587];
 
 /// The map of a sharp edge: the plane law at `rho x`, scaled by `s` (module docs).
 ///
