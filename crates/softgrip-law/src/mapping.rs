@@ -42,16 +42,16 @@
 //!   `a_i` its quartic excess, relative, is `(a_i kappa_i)²`, and the patch and force are
 //!   smaller: Sneddon's exact rigid sphere on a half-space carries `1 - 0.1 (a/R2)²` of Hertz's
 //!   force (`tools/calibration/COUNTERPART.md`); on the finite fingertip the FE says `g`
-//!   (0.24 free, 0.35 bonded at nu -> 1/2, falling with the compressibility, `g = g0 + g1
-//!   eps`, to 0.13 and 0.00 at nu = 0.3, where the compressed material's stiffening makes up
-//!   for the sphere's quartic). Signed by the curvature (a bowl's quartic narrows the gap:
+//!   (0.24 free, 0.34 bonded at nu -> 1/2, falling with the compressibility, `g = g0 + g1
+//!   eps`, to 0.13 and 0.11 at nu = 0.3, where the compressed material's stiffening makes up
+//!   for part of the sphere's quartic). Signed by the curvature (a bowl's quartic narrows the gap:
 //!   stiffer). It is what makes a ball half the fingertip's size softer than the patch
 //!   argument at large x while a ball twice its size is stiffer. It ends the law where the
 //!   Hertz patch reaches the counterpart's radius (`mu x <= 1`, [`CounterpartMap::reach`]).
 //!
 //! Constants `r0, r1, g0, g1` per construction (free; flat and core: a bonded pad),
 //! `tools/calibration/fit_counterpart.py` (ball curves at nu 0.3, 0.48, 0.499; held out: the
-//! ball of 0.7 R at nu = 0.4, 3.16 % free and 0.62 % bonded, and the cylinders). They act on
+//! ball of 0.7 R at nu = 0.4, 3.16 % free and 1.31 % bonded, and the cylinders). They act on
 //! the fingertip's own law (`calibrated`, `auto`, `tabulated`, `custom`); the published levels
 //! (baselines) take the patch argument alone (`r = 1`, `g = 0`): on a ball `hertz` is Hertz's
 //! law with the effective radius at every x.
@@ -196,10 +196,10 @@ impl Form {
 const EPS_VALIDATED: f64 = 3.0 * (1.0 - 0.6) / (2.0 * 1.3);
 
 /// Free sphere: r0, r1, g0, g1 of `r = r0 + r1 eps`, `g = g0 + g1 eps`
-/// (`eps = mu/kappa`; fitted on fifteen ball curves at nu = 0.3, 0.48 and 0.499).
+/// (`eps = mu/kappa`; fitted on sixteen ball curves at nu = 0.3, 0.48 and 0.499).
 const FREE: [f64; 4] = [0.715605, -0.866304, 0.24444, -0.257074];
 /// Flat and core (a bonded pad): r0, r1, g0, g1.
-const BONDED: [f64; 4] = [0.83065, -1.28711, 0.346681, -0.74587];
+const BONDED: [f64; 4] = [0.830973, -1.294969, 0.335914, -0.480372];
 
 /// The map of a sharp edge: the plane law at `rho x`, scaled by `s` (module docs).
 ///

@@ -63,7 +63,7 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 /// (`r+g, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
 /// every fit: `ball/*/force_nu0.4_k0.7.csv` and the cylinders (R2/R = 3 landed after the
-/// constants were fixed).
+/// constants were fixed: 0.93 % flat, 0.72 % free, blind).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/free/force_nu0.3_k0.5.csv" => 3.04,
@@ -75,38 +75,43 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/free/force_nu0.48_k4.csv" => 1.66,
         "ball/free/force_nu0.499_k1.csv" => 1.72,
         "ball/free/force_nu0.4_k0.7.csv" => 3.16,
-        "ball/flat/force_nu0.3_k1.csv" => 6.80,
-        "ball/flat/force_nu0.3_k2.csv" => 4.70,
+        "ball/flat/force_nu0.3_k1.csv" => 8.02,
+        "ball/flat/force_nu0.3_k2.csv" => 5.03,
+        "ball/flat/force_nu0.3_k0.5.csv" => 5.34,
         "ball/flat/force_nu0.48_k0.5.csv" => 1.91,
         "ball/flat/force_nu0.48_k1.csv" => 1.17,
         "ball/flat/force_nu0.48_k2.csv" => 1.21,
         "ball/flat/force_nu0.48_k4.csv" => 0.84,
-        "ball/flat/force_nu0.499_k1.csv" => 1.26,
-        "ball/flat/force_nu0.4_k0.7.csv" => 0.62,
+        "ball/flat/force_nu0.499_k1.csv" => 1.28,
+        "ball/flat/force_nu0.4_k0.7.csv" => 1.31,
         "cylinder/flat/force_nu0.48_k1.csv" => 1.11,
         "cylinder/flat/force_nu0.48_k3.csv" => 0.93,
         "cylinder/free/force_nu0.48_k1.csv" => 1.50,
+        "cylinder/free/force_nu0.48_k3.csv" => 0.72,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
     (pct + 0.2) / 100.0
 }
 
-/// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the ball of R
-/// (the law ends at x = 0.655, where the plane law does at rho x, of the FE's 0.68), and the
-/// flat pad on the ball of 0.7 R at nu = 0.4 (0.66, the bonded reach constant, of 0.69).
+/// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the balls of R/2
+/// (0.66, the bonded reach constant, of 0.68) and R (0.654, where the plane law ends at rho x,
+/// of 0.68), and on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69).
 const RANGE_SHORT: &[&str] = &[
+    "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.4_k0.7.csv",
 ];
 
 /// The curves the law misses the 3 % on (COUNTERPART.md), all at nu <= 0.4: the bonded
-/// pad at nu = 0.3 on balls of R (+5.6 % at x = 0.3, -6.8 % where the law ends, 0.655) and 2R
-/// (4.70 %); the free sphere at nu = 0.3 on balls of R/2 (3.04 %) and 2R (3.12 %), both at
-/// x = 0.7, where the compressible material under the contact collapses (smallest element
-/// volume ratio 0.25-0.35, cut at 0.2); the held-out free ball of 0.7 R at nu = 0.4 (-3.2 % at
-/// x = 0.5: r and g linear in eps between nu 0.3 and 0.48).
+/// pad at nu = 0.3 on balls of R/2, R and 2R (5.34, 8.02, 5.03 %: too stiff at moderate x,
+/// too soft at the end, which one (r, g) per nu cannot follow); the free sphere at nu = 0.3 on
+/// balls of R/2 (3.04 %) and 2R (3.12 %), both at x = 0.7, where the compressible material
+/// under the contact collapses (smallest element volume ratio 0.25-0.35, cut at 0.2); the
+/// held-out free ball of 0.7 R at nu = 0.4 (-3.2 % at x = 0.5: r and g linear in eps between
+/// nu 0.3 and 0.48).
 const KNOWN_MISSES: &[&str] = &[
+    "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.3_k2.csv",
     "ball/free/force_nu0.3_k0.5.csv",
@@ -145,7 +150,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         assert!(top > 0.0, "{}: nothing compared", file.path);
         seen += 1;
     }
-    assert!(seen >= 20, "{seen} curves");
+    assert!(seen >= 22, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
@@ -191,10 +196,10 @@ fn contact_radius_on_a_ball_is_within_six_percent_of_the_fe() {
             worst = worst.max((p.radius / (fe.at(x) + lag) - 1.0).abs());
         }
         println!("{:38} radius within {:5.2} %", file.path, 100.0 * worst);
-        // The free sphere at nu = 0.3 on a ball of R/2: 8.85 % (the law wider by 5 % on
+        // The ball of R/2 at nu = 0.3: 8.85 % free, 9.00 % flat (the law wider by about 5 % on
         // average), a stated miss of the 5 % target (COUNTERPART.md).
-        let limit = if file.path == "ball/free/force_nu0.3_k0.5.csv" {
-            0.09
+        let limit = if file.path.ends_with("force_nu0.3_k0.5.csv") {
+            0.095
         } else {
             0.06
         };
