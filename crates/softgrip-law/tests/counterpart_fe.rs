@@ -62,8 +62,8 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
 /// (`r+g, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
-/// every fit: `ball/*/force_nu0.4_k0.7.csv` and the cylinders (R2/R = 3 landed after the
-/// constants were fixed: 0.93 % flat, 0.72 % free, blind).
+/// every fit: `ball/*/force_nu0.4_k0.7.csv`, `ball/free/force_nu0.499_k2.csv` and the cylinders
+/// (R2/R = 3 and the ball of 2R at nu 0.499 landed after the constants were fixed: blind).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/free/force_nu0.3_k0.5.csv" => 3.04,
@@ -74,6 +74,7 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/free/force_nu0.48_k2.csv" => 0.85,
         "ball/free/force_nu0.48_k4.csv" => 1.66,
         "ball/free/force_nu0.499_k1.csv" => 1.72,
+        "ball/free/force_nu0.499_k2.csv" => 1.43,
         "ball/free/force_nu0.4_k0.7.csv" => 3.16,
         "ball/flat/force_nu0.3_k1.csv" => 8.02,
         "ball/flat/force_nu0.3_k2.csv" => 5.03,
@@ -150,7 +151,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         assert!(top > 0.0, "{}: nothing compared", file.path);
         seen += 1;
     }
-    assert!(seen >= 22, "{seen} curves");
+    assert!(seen >= 23, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
