@@ -4,8 +4,9 @@ use crate::cdr::CdrError;
 use crate::message::RosMessage;
 use crate::msgs::geometry_msgs::WrenchStamped;
 use crate::msgs::rosgraph_msgs::Clock;
-use crate::msgs::sensor_msgs::Image;
+use crate::msgs::sensor_msgs::{Image, JointState};
 use crate::msgs::softgrip_msgs::SoftContactArrayMsg;
+use crate::msgs::std_msgs::StringMsg;
 use crate::msgs::tf2_msgs::TFMessage;
 use crate::msgs::visualization_msgs::MarkerArray;
 
@@ -24,6 +25,10 @@ pub enum Message {
     Clock(Clock),
     /// `sensor_msgs/msg/Image` (a fingertip's tactile image).
     Image(Image),
+    /// `sensor_msgs/msg/JointState` (`/joint_states`, `/joint_commands`).
+    JointState(JointState),
+    /// `std_msgs/msg/String` (`/robot_description`).
+    String(StringMsg),
     /// Any other schema or encoding: kept as bytes.
     Other {
         /// Schema name (empty without a schema).
@@ -50,6 +55,8 @@ impl Message {
             MarkerArray::TYPE_NAME => Self::Markers(MarkerArray::from_cdr(data)?),
             Clock::TYPE_NAME => Self::Clock(Clock::from_cdr(data)?),
             Image::TYPE_NAME => Self::Image(Image::from_cdr(data)?),
+            JointState::TYPE_NAME => Self::JointState(JointState::from_cdr(data)?),
+            StringMsg::TYPE_NAME => Self::String(StringMsg::from_cdr(data)?),
             _ => Self::other(schema_name, data),
         })
     }

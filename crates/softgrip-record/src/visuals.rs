@@ -111,9 +111,13 @@ pub fn shape_markers(info: &SceneInfo) -> Vec<Marker> {
 
 /// One shape's marker (see [`shape_markers`]).
 fn shape_marker(s: &ShapeInfo, id: i32, color: ColorRGBA, extent: f64) -> Marker {
+    // The shape's own orientation in its body's frame, then the marker's in the shape's.
     let at = |offset: [f64; 3], orientation: Quaternion| Pose {
         position: Point::from_array(offset),
-        orientation,
+        orientation: Quaternion::from_xyzw(crate::frames::mul(
+            s.rotation,
+            [orientation.x, orientation.y, orientation.z, orientation.w],
+        )),
     };
     let (r#type, pose, scale, color, points) = match &s.geometry {
         ShapeGeometry::Plane { normal: n } => {

@@ -39,6 +39,7 @@ fn shape(body: &str, geometry: ShapeGeometry) -> ShapeInfo {
     ShapeInfo {
         body: body.into(),
         offset: [0.0; 3],
+        rotation: [0.0, 0.0, 0.0, 1.0],
         geometry,
     }
 }
@@ -81,6 +82,8 @@ fn scene() -> SceneInfo {
         ],
         up: UpAxis::Y,
         gravity: [0.0, -9.81, 0.0],
+        robots: Vec::new(),
+        frames: Vec::new(),
     }
 }
 
@@ -123,6 +126,8 @@ fn frame(step: u64, pressure: bool) -> StepFrame {
     StepFrame {
         step,
         tactile: Vec::new(),
+        joints: Vec::new(),
+        commands: Vec::new(),
         time: step as f64 * (1.0 / 60.0) as f32 as f64, // an f32-rounded time: not used
         bodies: vec![
             BodySample {

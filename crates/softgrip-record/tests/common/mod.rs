@@ -79,6 +79,7 @@ pub fn step(k: u64, dt_ns: u64) -> StepRecord {
         fingertips: tips,
         bodies: vec![BodyPose {
             name: "box".into(),
+            parent: String::new(),
             position: [0.0, 0.001 * t, 0.05],
             orientation: [0.0, 0.0, 0.0, 1.0],
         }],

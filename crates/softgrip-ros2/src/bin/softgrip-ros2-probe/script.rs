@@ -92,6 +92,7 @@ pub fn step(k: u64) -> StepRecord {
         fingertips: tips,
         bodies: vec![BodyPose {
             name: "box".into(),
+            parent: String::new(),
             position: [0.0, 1e-3 * kf / 7.0, 0.05],
             orientation: [0.0, 0.0, 0.0, 1.0],
         }],
