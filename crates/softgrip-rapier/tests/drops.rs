@@ -16,7 +16,7 @@
 
 use proptest::prelude::*;
 use rapier3d::prelude::*;
-use softgrip_law::{Level, Material};
+use softgrip_law::Material;
 use softgrip_rapier::{Preset, SoftFingertip, SoftWorld};
 
 /// What one drop did.
