@@ -14,6 +14,9 @@
 //! 4. Per substep: contacts, impulses (`solve`), `apply_impulse_at_point`, then rapier's
 //!    pipeline with `dt / n`, the user's hooks and events passed through (`hooks`).
 //! 5. The readout is assembled (`SoftContacts::contacts`).
+//!
+//! When a step is split and what it carries over from an unsplit one: [`split`]; a contact that
+//! begins within a (sub)step: [`onset`].
 
 use std::time::Instant;
 
@@ -23,12 +26,16 @@ use softgrip_law::Regime;
 
 use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
 use crate::contacts::{PairState, Scratch, SoftContacts};
-use crate::detect::{self, Geom, Model, Scene, compression_from_signed_distance, to_f32, to_f64};
+use crate::detect::{self, Geom, Scene, compression_from_signed_distance, to_f32, to_f64};
 use crate::hooks::{SoftEvents, SoftHooks};
 use crate::readout;
 use crate::rigid::RigidRow;
 use crate::solve::{self, Row};
-use crate::substep::{self, theta_blend};
+use crate::substep;
+use onset::update_blend;
+
+mod onset;
+mod split;
 
 impl SoftContacts {
     /// Advances `world` by `world.integration_parameters.dt` with the soft contacts: the law's
@@ -157,6 +164,7 @@ impl Step<'_> {
                 .integration_parameters
                 .num_solver_iterations
                 .max(1) as f64;
+        self.carry_unsplit(n, dt, &mut scratch);
         if n > 1 {
             let gravity = self.physics.gravity;
             bodies::gravity_kick(&mut self.physics.bodies, gravity, lag * (dt - h));
@@ -175,41 +183,6 @@ impl Step<'_> {
         if !self.soft.tactile.is_empty() {
             self.soft.update_tactile(&self.physics.colliders);
         }
-    }
-
-    /// The substep count of a step of `dt` \[s\] from its prepared rows (the largest any contact
-    /// needs), counted in the diagnostics.
-    fn substep_count(&mut self, dt: f64, scratch: &Scratch) -> u32 {
-        let theta = self.soft.accuracy.theta();
-        let mut n = 1u32;
-        let table = &scratch.body_table.table;
-        for ((row, model), gi) in scratch.rows.iter().zip(&scratch.models).zip(&scratch.geom) {
-            let delta = compression_from_signed_distance(self.soft.geoms[*gi].dist);
-            let mut vn = solve::normal_velocity(table, row);
-            if delta > 0.0 {
-                // A touching contact's velocity is known only up to the external velocity
-                // increment of one step (rapier's stored velocity lags or leads the true one
-                // by up to |a| dt): only the excess counts as dynamic.
-                let a = solve::normal_external_acceleration(table, row).abs();
-                vn = vn.signum() * (vn.abs() - a * dt).max(0.0);
-            }
-            let w = solve::normal_mobility(table, row);
-            n = n.max(substep::substeps_for(
-                &model.law,
-                model.radius,
-                delta,
-                vn,
-                w,
-                dt,
-                theta,
-            ));
-        }
-        if n >= substep::MAX_SUBSTEPS {
-            self.soft.counters.substep_cap_hits += 1;
-        }
-        self.soft.counters.substeps_last = n;
-        self.soft.counters.substeps_total += n as u64;
-        n
     }
 
     /// `n` substeps of `h` \[s\]: fresh contacts (the first substep's are the prepared ones),
@@ -394,6 +367,7 @@ impl Step<'_> {
     /// contacts' memory (friction anchors): started for new contacts, ended for pairs that are
     /// no longer in contact.
     fn prepare_state(&mut self, h: f64, s: &mut Scratch) {
+        let capped = self.soft.counters.substeps_last >= substep::MAX_SUBSTEPS;
         s.stamp = s.stamp.wrapping_add(1);
         let stamp = s.stamp;
         let soft = &mut self.soft;
@@ -438,11 +412,7 @@ impl Step<'_> {
             row.force = resp.force;
             row.stiffness = resp.stiffness;
             row.damping = model.alpha * resp.force;
-            row.theta = if w > 0.0 {
-                theta_blend((resp.stiffness * w).sqrt() * h)
-            } else {
-                1.0
-            };
+            row.theta = update_blend(resp.stiffness, w, h, capped);
             if model.friction > 0.0 {
                 if model.torsion {
                     // Only the torsion limit needs the patch: the integral of mu p r dA over
@@ -493,6 +463,9 @@ impl Step<'_> {
             &mut self.soft.counters,
             &mut s.net,
         );
+        if fresh {
+            bodies::unsplit_carry(&s.body_table, &s.net, &mut s.unsplit_carry);
+        }
         for ((row, model), gi) in s.rows.iter().zip(s.models.drain(..)).zip(&s.geom) {
             let g = &self.soft.geoms[*gi];
             let key = (g.tip, g.other);
@@ -512,98 +485,6 @@ impl Step<'_> {
         }
         self.soft.counters.solve_time += t.elapsed();
     }
-}
-
-impl Step<'_> {
-    /// The solve of a (sub)step, and again while a contact that does not touch at the start
-    /// but would by the end is not yet linearised where it ends (see [`onset`]): Newton on the
-    /// implicit law from the predicted compression, at most [`MAX_ONSET_PASSES`] solves. The
-    /// body table is restored before each solve again.
-    fn solve_with_onsets(&mut self, h: f64, s: &mut Scratch) {
-        let base = s.body_table.table.clone();
-        for pass in 0..MAX_ONSET_PASSES {
-            if pass > 0 {
-                s.body_table.table.copy_from_slice(&base);
-                self.soft.counters.onset_solves += 1;
-            }
-            let failed = solve::solve(
-                &mut s.body_table.table,
-                &mut s.rows,
-                &mut s.rigid,
-                h,
-                &mut s.solve,
-            );
-            let mut again = false;
-            for ((row, model), (&gi, &w)) in s
-                .rows
-                .iter_mut()
-                .zip(&s.models)
-                .zip(s.geom.iter().zip(&s.mobility))
-            {
-                let delta0 = compression_from_signed_distance(self.soft.geoms[gi].dist);
-                again |= onset(row, model, delta0, w, h);
-            }
-            if !again || pass + 1 == MAX_ONSET_PASSES {
-                self.soft.counters.non_finite += failed;
-                break;
-            }
-        }
-    }
-}
-
-/// The most solves of one (sub)step while contacts begin within it.
-const MAX_ONSET_PASSES: usize = 12;
-
-/// A contact that begins within the (sub)step: it does not touch at the start (`delta0 <= 0`,
-/// \[m\]) but its solved end velocity brings it to `delta_end = delta0 - h v_n(end) > 0`. Its
-/// row is linearised at the predicted compression instead of the start (where the law is
-/// zero): `F(δ) ≈ F(δ_L) + K(δ_L)(δ - δ_L)`, evaluated at `δ0 - θ h v(end)` with `θ` blended by
-/// the stiffness there. Unresolved (`θ = 1`), the contact is backward Euler on the law from
-/// the moment it would touch, and never gains energy; before, it penetrated a whole step's
-/// travel with no force and released the elastic energy of that penetration on the way out
-/// (the default fingertip dropped 0.5 mm at dt = 1/60 s rebounded to 13 times its height, a
-/// stiff 1 mm tip dropped 10 cm at dt = 1/30 s to 317 m). Resolved (`θ = 0`, a fine substep)
-/// it changes nothing. Returns whether the row was linearised anew (the solve must run again).
-fn onset(row: &mut Row, model: &Model, delta0: f64, w: f64, h: f64) -> bool {
-    if delta0 > 0.0 {
-        return false;
-    }
-    let d = if row.lin > 0.0 {
-        delta0 - row.theta * h * row.vn_end
-    } else {
-        delta0 - h * row.vn_end
-    };
-    if !(d > 0.0 && d.is_finite()) {
-        return false;
-    }
-    let resp = model.law.response(d);
-    if row.lin > 0.0 {
-        // Converged: the law at the prediction is the linear model's.
-        let linear = row.force + row.stiffness * (d - delta0);
-        if (resp.force - linear).abs() <= 1e-6 * resp.force.abs().max(linear.abs())
-            || (d - row.lin).abs() <= 1e-12 * model.radius
-        {
-            return false;
-        }
-    }
-    row.lin = d;
-    row.theta = if w > 0.0 {
-        theta_blend((resp.stiffness * w).sqrt() * h)
-    } else {
-        1.0
-    };
-    if row.theta == 0.0 {
-        // Resolved: the law at the start (zero) is the explicit update's.
-        row.force = 0.0;
-        row.stiffness = 0.0;
-        row.damping = 0.0;
-        return row.lin != d;
-    }
-    // The linear model at the start: F(δ_L) + K(δ_L)(δ0 - δ_L).
-    row.force = resp.force + resp.stiffness * (delta0 - d);
-    row.stiffness = resp.stiffness;
-    row.damping = model.alpha * resp.force;
-    true
 }
 
 /// A contact's row before the law's response: bodies `a` (the fingertip's) and `b` (the
