@@ -3,6 +3,7 @@
 mod accuracy;
 mod bench_law;
 mod cli;
+mod counterpart_arg;
 mod curve;
 mod fe;
 mod files;

@@ -150,6 +150,8 @@ pub fn contact_reading(c: &TipContact, patch: Option<ContactPatch>) -> ContactRe
         contact_duration: c.contact_duration,
         patch,
         backing: c.backing,
+        counterpart: c.counterpart(),
+        patch_direction: c.patch_direction(),
     }
 }
 

@@ -1,12 +1,15 @@
 #![doc = include_str!("../README.md")]
 
 mod backing;
+mod counterpart;
 mod curve;
+mod elliptic;
 mod error;
 pub mod fitting;
 mod law;
 mod level;
 mod levels;
+mod mapping;
 mod material;
 mod normalised;
 mod number;
@@ -16,6 +19,9 @@ mod root;
 mod tabulated;
 
 pub use backing::{Backing, MIN_CORE_THICKNESS_RATIO};
+pub use counterpart::{
+    Counterpart, CounterpartKind, MAX_RELATIVE_CURVATURE, MIN_RELATIVE_CURVATURE,
+};
 pub use error::{Error, Result};
 pub use law::{ContactLaw, ContactState, NormalResponse, Regime};
 pub use level::{DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, Level, LevelKind};

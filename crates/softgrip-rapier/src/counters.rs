@@ -25,6 +25,9 @@ pub struct SoftCounters {
     /// Extra solves for contacts that begin within a (sub)step (linearised where they end:
     /// Newton on the implicit law; 0 when every contact is resolved or already touching).
     pub onset_solves: u64,
+    /// Contacts on a counterpart the fingertip's law cannot take (a groove or bowl tighter
+    /// than the fingertip), computed as on a plane instead (one per contact per substep).
+    pub counterpart_fallbacks: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the impulse solve.

@@ -254,10 +254,11 @@ impl StepConverter {
 /// A contact of the frame as a `softgrip_msgs/SoftContact`, its vectors as they are (a z-up
 /// frame; its header is set per step, by [`StepRecord::take_contact_array`]).
 ///
-/// `contact_radius` is the law's radius a at the end-of-step compression (whenever the patch
-/// is given). `mean_pressure` is `normal_force / (π a²)` (the step-average force over that
-/// patch), so `mean_pressure · π a² = normal_force`; `peak_pressure` keeps the law's ratio of
-/// peak to mean pressure (3/2 for Hertz). Both are 0 when the patch carries no pressure.
+/// `contact_radius` and `contact_radius2` are the law's semi-axes a, b at the end-of-step
+/// compression (whenever the patch is given; a = b for a disc). `mean_pressure` is
+/// `normal_force / (π a b)` (the step-average force over that patch), so
+/// `mean_pressure · π a b = normal_force`; `peak_pressure` keeps the law's ratio of peak to
+/// mean pressure (3/2 for Hertz). Both are 0 when the patch carries no pressure.
 pub fn soft_contact_msg(c: &ContactSample) -> SoftContactMsg {
     soft_contact_msg_in(c, UpAxis::Z)
 }
@@ -265,7 +266,7 @@ pub fn soft_contact_msg(c: &ContactSample) -> SoftContactMsg {
 /// `(mean, peak)` pressure \[Pa\] of `patch` carrying `normal_force` \[N\]: 0 without a patch
 /// or when the patch carries no pressure (the scene does not record pressure).
 fn pressures(patch: &ContactPatch, normal_force: f64) -> (f64, f64) {
-    let area = std::f64::consts::PI * patch.radius * patch.radius;
+    let area = std::f64::consts::PI * patch.radius * patch.radius2;
     if !(area > 0.0 && normal_force > 0.0 && patch.mean_pressure > 0.0) {
         return (0.0, 0.0);
     }
@@ -301,6 +302,8 @@ fn soft_contact_msg_in(c: &ContactSample, up: UpAxis) -> SoftContactMsg {
     };
     m.set_level(k.level);
     m.set_backing(k.backing);
+    m.set_counterpart(k.counterpart, up.vector(k.patch_direction));
+    m.contact_radius2 = patch.radius2;
     m
 }
 

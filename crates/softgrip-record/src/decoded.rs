@@ -57,23 +57,30 @@ impl Message {
     /// Like [`decode`](Self::decode), with the schema text the recording embeds: a message in
     /// a layout of an earlier softgrip version (told by its schema) is decoded into today's
     /// type. A `SoftContactArray` recorded before fingertips had a construction (no `backing`
-    /// field in its schema) reads as free fingertips (`backing = 0`, `core_thickness = 0`).
+    /// field in its schema) reads as free fingertips (`backing = 0`, `core_thickness = 0`); one
+    /// recorded before the counterpart (no `counterpart` field) as discs on a plane
+    /// (`contact_radius2 = contact_radius`, `counterpart = 0`).
     pub fn decode_with_schema(
         schema_name: &str,
         schema_text: &[u8],
         message_encoding: &str,
         data: &[u8],
     ) -> Result<Self, CdrError> {
-        let before_backing =
-            || !String::from_utf8_lossy(schema_text).contains(crate::msgs::legacy::BACKING_FIELD);
         if message_encoding == "cdr"
             && schema_name == SoftContactArrayMsg::TYPE_NAME
             && !schema_text.is_empty()
-            && before_backing()
         {
-            return Ok(Self::Contacts(
-                crate::msgs::legacy::contacts_before_backing(data)?,
-            ));
+            let text = String::from_utf8_lossy(schema_text);
+            if !text.contains(crate::msgs::legacy::BACKING_FIELD) {
+                return Ok(Self::Contacts(
+                    crate::msgs::legacy::contacts_before_backing(data)?,
+                ));
+            }
+            if !text.contains(crate::msgs::legacy::COUNTERPART_FIELD) {
+                return Ok(Self::Contacts(
+                    crate::msgs::legacy::contacts_before_counterpart(data)?,
+                ));
+            }
         }
         Self::decode(schema_name, message_encoding, data)
     }

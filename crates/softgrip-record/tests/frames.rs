@@ -103,11 +103,14 @@ fn reading(force: f64, radius: f64, pressure: bool) -> ContactReading {
         max_delta: 1e-3,
         contact_duration: 1.0 / 60.0,
         backing: softgrip_law::Backing::Core { thickness: 0.004 },
+        counterpart: softgrip_law::Counterpart::PLANE,
+        patch_direction: [0.0, 0.0, 1.0],
         patch: Some(if pressure {
             patch
         } else {
             ContactPatch {
                 radius: patch.radius,
+                radius2: patch.radius2,
                 ..ContactPatch::EMPTY
             }
         }),

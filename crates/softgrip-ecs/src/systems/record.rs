@@ -80,7 +80,7 @@ pub fn assemble_frame(
     }
 }
 
-/// A contact's patch as recorded: its radius always (cheap, and what a 3D view draws), its
+/// A contact's patch as recorded: its semi-axes always (cheap, and what a 3D view draws), its
 /// pressures only when the scene records pressure.
 fn recorded_patch(c: &softgrip_rapier::TipContact, pressure: bool) -> ContactPatch {
     let patch = c.patch();
@@ -89,6 +89,7 @@ fn recorded_patch(c: &softgrip_rapier::TipContact, pressure: bool) -> ContactPat
     } else {
         ContactPatch {
             radius: patch.radius,
+            radius2: patch.radius2,
             ..ContactPatch::EMPTY
         }
     }

@@ -1,7 +1,7 @@
 //! `softgrip_msgs` (the interface package in `ros2/softgrip_msgs/`): [`SoftContactMsg`] and
 //! [`SoftContactArrayMsg`].
 
-use softgrip_law::{Backing, LevelKind, Regime};
+use softgrip_law::{Backing, Counterpart, CounterpartKind, LevelKind, Regime};
 
 use super::geometry_msgs::{Point, Vector3};
 use super::std_msgs::Header;
@@ -34,9 +34,10 @@ ros_message! {
         pub friction_force: Vector3,
         /// Torsional friction moment about the normal [N m] (step average).
         pub torsional_moment: f64,
-        /// Contact radius a \[m\], >= 0.
+        /// Contact radius a \[m\], >= 0 (of an elliptical patch, its semi-axis along
+        /// `patch_direction`).
         pub contact_radius: f64,
-        /// Mean pressure F / (pi a^2) \[Pa\].
+        /// Mean pressure F / (pi a b) \[Pa\].
         pub mean_pressure: f64,
         /// Peak pressure at the patch centre: (m + 1) times the mean for the law's pressure
         /// shape m (3/2 for Hertz's) \[Pa\].
@@ -61,6 +62,18 @@ ros_message! {
         pub backing: u8,
         /// Skin thickness t of a `core` fingertip \[m\]; 0 for the others.
         pub core_thickness: f64,
+        /// The patch's second semi-axis b \[m\] (`contact_radius` for a disc; recordings made
+        /// before patches were ellipses read as discs).
+        pub contact_radius2: f64,
+        /// Unit vector, world, along the patch's first semi-axis [-] (zero in recordings made
+        /// before it was recorded).
+        pub patch_direction: Vector3,
+        /// What the fingertip touched ([`CounterpartKind::code`]: 0 plane, 1 curved, 2 edge).
+        pub counterpart: u8,
+        /// The counterpart's principal curvature along `patch_direction` \[1/m\].
+        pub counterpart_curvature1: f64,
+        /// The counterpart's principal curvature across `patch_direction` \[1/m\].
+        pub counterpart_curvature2: f64,
     }
 }
 
@@ -141,6 +154,34 @@ impl SoftContactMsg {
             }),
             _ => None,
         }
+    }
+
+    /// Sets `counterpart`, its curvatures and `patch_direction` (world, unit).
+    pub fn set_counterpart(&mut self, counterpart: Counterpart, patch_direction: [f64; 3]) {
+        self.counterpart = counterpart.kind().code();
+        [self.counterpart_curvature1, self.counterpart_curvature2] = counterpart.curvatures();
+        self.patch_direction = Vector3::from_array(patch_direction);
+    }
+
+    /// What the fingertip touched, if `counterpart` is a known code and its curvatures are
+    /// finite.
+    ///
+    /// ```
+    /// use softgrip_law::Counterpart;
+    /// use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+    /// let mut m = SoftContactMsg::default();
+    /// assert_eq!(m.counterpart(), Some(Counterpart::PLANE)); // and every old recording
+    /// m.set_counterpart(Counterpart::try_cylinder(0.02).unwrap(), [0.0, 0.0, 1.0]);
+    /// assert_eq!((m.counterpart, m.counterpart_curvature2), (1, 50.0));
+    /// assert_eq!(m.counterpart(), Some(Counterpart::try_cylinder(0.02).unwrap()));
+    /// ```
+    pub fn counterpart(&self) -> Option<Counterpart> {
+        let kind = CounterpartKind::from_code(self.counterpart)?;
+        Counterpart::try_from_parts(
+            kind,
+            [self.counterpart_curvature1, self.counterpart_curvature2],
+        )
+        .ok()
     }
 
     /// The law level, if `level` is a known code.

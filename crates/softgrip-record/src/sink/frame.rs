@@ -1,6 +1,6 @@
 //! [`StepFrame`]: one step's data, as plain numbers.
 
-use softgrip_law::{Backing, ContactPatch, LevelKind, Regime};
+use softgrip_law::{Backing, ContactPatch, Counterpart, LevelKind, Regime};
 
 /// A body's pose.
 #[derive(Debug, Clone, PartialEq)]
@@ -62,6 +62,10 @@ pub struct ContactReading {
     pub patch: Option<ContactPatch>,
     /// The construction of the fingertip whose law computed the contact.
     pub backing: Backing,
+    /// What the fingertip touched (a plane for two fingertips).
+    pub counterpart: Counterpart,
+    /// Unit vector, world, along the patch's first semi-axis (`patch.radius`) [-].
+    pub patch_direction: [f64; 3],
 }
 
 /// One soft contact with both sides named.
