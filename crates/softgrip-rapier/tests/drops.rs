@@ -292,3 +292,21 @@ fn soft_ball_through_its_equilibrium_at_a_large_step() {
     );
     assert_no_rise(&d, h0, r, &what);
 }
+
+/// Known to fail (found by `DROPS_SEED=2 DROPS_CASES=100`, session 8): a 4.6 mm ball of
+/// E = 194 kPa dropped 1.7 um at dt = 0.8 ms rises 65 % above its start (1.1 um, about 3 % of
+/// its 39 um resting compression). Not understood yet; kept as the next case to fix.
+#[test]
+#[ignore = "known failure: rises 65 % above a 1.7 um drop (issue 23, item 5)"]
+fn soft_ball_dropped_less_than_its_resting_compression_at_a_fine_step() {
+    let (r, h0) = (0.004587784200690864, 1.6663639745840468e-6);
+    let (d, _, what) = random_drop(
+        r,
+        193844.09039897323,
+        0.0,
+        0.7164047288826273,
+        0.0008003256727893792,
+        h0,
+    );
+    assert_no_rise(&d, h0, r, &what);
+}
