@@ -217,3 +217,35 @@ pub(crate) fn apply_impulses(
         }
     }
 }
+
+/// What the soft impulses of an unsplit step did to a dynamic body, for the next step if it is
+/// split (`step::split`, `carry_unsplit`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct UnsplitCarry {
+    /// The body.
+    pub body: RigidBodyHandle,
+    /// Its velocity change from the soft impulses \[m/s\].
+    pub dv: Vector3<f64>,
+    /// Its external acceleration \[m/s^2\].
+    pub a_ext: Vector3<f64>,
+}
+
+/// The velocity changes of the dynamic bodies of `table` from the net impulses `net` (as
+/// [`apply_impulses`] applied them), written to `carry`.
+pub(crate) fn unsplit_carry(
+    table: &BodyTable,
+    net: &[(Vector3<f64>, Vector3<f64>)],
+    carry: &mut Vec<UnsplitCarry>,
+) {
+    carry.clear();
+    for ((b, (lin, _)), body) in table.table.iter().zip(net).zip(&table.handles) {
+        let dv = b.inv_m.component_mul(lin);
+        if b.inv_m != Vector3::zeros() && dv.iter().all(|v| v.is_finite()) {
+            carry.push(UnsplitCarry {
+                body: *body,
+                dv,
+                a_ext: b.a_ext,
+            });
+        }
+    }
+}

@@ -9,7 +9,7 @@ use rapier3d::prelude::{
     RigidBodyHandle,
 };
 
-use crate::bodies::BodyTable;
+use crate::bodies::{BodyTable, UnsplitCarry};
 use crate::counters::SoftCounters;
 use crate::curved_models::CurvedModels;
 use crate::detect::{Geom, Model, raw};
@@ -63,6 +63,9 @@ pub(crate) struct Scratch {
     pub candidates: Vec<ColliderHandle>,
     /// Per-contact sums over the substeps of a step.
     pub accums: Accums,
+    /// What the soft impulses did to each dynamic body in the last step when it was not split
+    /// (`step::split`); empty after a split step.
+    pub unsplit_carry: Vec<UnsplitCarry>,
 }
 
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.

@@ -14,6 +14,9 @@
 //! 4. Per substep: contacts, impulses (`solve`), `apply_impulse_at_point`, then rapier's
 //!    pipeline with `dt / n`, the user's hooks and events passed through (`hooks`).
 //! 5. The readout is assembled (`SoftContacts::contacts`).
+//!
+//! When a step is split and what it carries over from an unsplit one: [`split`]; a contact that
+//! begins within a (sub)step: [`onset`].
 
 use std::time::Instant;
 
@@ -28,7 +31,11 @@ use crate::hooks::{SoftEvents, SoftHooks};
 use crate::readout;
 use crate::rigid::RigidRow;
 use crate::solve::{self, Row};
-use crate::substep::{self, theta_blend};
+use crate::substep;
+use onset::update_blend;
+
+mod onset;
+mod split;
 
 impl SoftContacts {
     /// Advances `world` by `world.integration_parameters.dt` with the soft contacts: the law's
@@ -110,6 +117,7 @@ impl Step<'_> {
             broad_phase: &self.physics.broad_phase,
             groups: &soft.groups,
             tip_order: &soft.tip_order,
+            gravity: self.physics.gravity.length(),
         };
         detect::detect(
             &scene,
@@ -156,6 +164,7 @@ impl Step<'_> {
                 .integration_parameters
                 .num_solver_iterations
                 .max(1) as f64;
+        self.carry_unsplit(n, dt, &mut scratch);
         if n > 1 {
             let gravity = self.physics.gravity;
             bodies::gravity_kick(&mut self.physics.bodies, gravity, lag * (dt - h));
@@ -174,41 +183,6 @@ impl Step<'_> {
         if !self.soft.tactile.is_empty() {
             self.soft.update_tactile(&self.physics.colliders);
         }
-    }
-
-    /// The substep count of a step of `dt` \[s\] from its prepared rows (the largest any contact
-    /// needs), counted in the diagnostics.
-    fn substep_count(&mut self, dt: f64, scratch: &Scratch) -> u32 {
-        let theta = self.soft.accuracy.theta();
-        let mut n = 1u32;
-        let table = &scratch.body_table.table;
-        for ((row, model), gi) in scratch.rows.iter().zip(&scratch.models).zip(&scratch.geom) {
-            let delta = compression_from_signed_distance(self.soft.geoms[*gi].dist);
-            let mut vn = solve::normal_velocity(table, row);
-            if delta > 0.0 {
-                // A touching contact's velocity is known only up to the external velocity
-                // increment of one step (rapier's stored velocity lags or leads the true one
-                // by up to |a| dt): only the excess counts as dynamic.
-                let a = solve::normal_external_acceleration(table, row).abs();
-                vn = vn.signum() * (vn.abs() - a * dt).max(0.0);
-            }
-            let w = solve::normal_mobility(table, row);
-            n = n.max(substep::substeps_for(
-                &model.law,
-                model.radius,
-                delta,
-                vn,
-                w,
-                dt,
-                theta,
-            ));
-        }
-        if n >= substep::MAX_SUBSTEPS {
-            self.soft.counters.substep_cap_hits += 1;
-        }
-        self.soft.counters.substeps_last = n;
-        self.soft.counters.substeps_total += n as u64;
-        n
     }
 
     /// `n` substeps of `h` \[s\]: fresh contacts (the first substep's are the prepared ones),
@@ -393,6 +367,7 @@ impl Step<'_> {
     /// contacts' memory (friction anchors): started for new contacts, ended for pairs that are
     /// no longer in contact.
     fn prepare_state(&mut self, h: f64, s: &mut Scratch) {
+        let capped = self.soft.counters.substeps_last >= substep::MAX_SUBSTEPS;
         s.stamp = s.stamp.wrapping_add(1);
         let stamp = s.stamp;
         let soft = &mut self.soft;
@@ -437,11 +412,7 @@ impl Step<'_> {
             row.force = resp.force;
             row.stiffness = resp.stiffness;
             row.damping = model.alpha * resp.force;
-            row.theta = if w > 0.0 {
-                theta_blend((resp.stiffness * w).sqrt() * h)
-            } else {
-                1.0
-            };
+            row.theta = update_blend(resp.stiffness, w, h, capped);
             if model.friction > 0.0 {
                 if model.torsion {
                     // Only the torsion limit needs the patch: the integral of mu p r dA over
@@ -481,14 +452,7 @@ impl Step<'_> {
         s.accums.begin_substep();
 
         if !s.rows.is_empty() {
-            let failed = solve::solve(
-                &mut s.body_table.table,
-                &mut s.rows,
-                &mut s.rigid,
-                h,
-                &mut s.solve,
-            );
-            self.soft.counters.non_finite += failed;
+            self.solve_with_onsets(h, s);
         }
         bodies::apply_impulses(
             &mut self.physics.bodies,
@@ -499,6 +463,9 @@ impl Step<'_> {
             &mut self.soft.counters,
             &mut s.net,
         );
+        if fresh {
+            bodies::unsplit_carry(&s.body_table, &s.net, &mut s.unsplit_carry);
+        }
         for ((row, model), gi) in s.rows.iter().zip(s.models.drain(..)).zip(&s.geom) {
             let g = &self.soft.geoms[*gi];
             let key = (g.tip, g.other);
@@ -546,6 +513,7 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         vn_end: 0.0,
         extended: false,
         friction_mobility: None,
+        lin: 0.0,
     }
 }
 
