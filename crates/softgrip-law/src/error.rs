@@ -91,6 +91,47 @@ pub enum Error {
         /// How to build it.
         hint: &'static str,
     },
+    /// A name that is not in its table: a level ([`crate::LEVELS`]), a construction
+    /// ([`crate::BACKINGS`]) or a level's setting.
+    #[error("`{field}` must be one of {expected}, got `{value}`")]
+    UnknownName {
+        /// What was named: `level`, `backing` or `setting`.
+        field: &'static str,
+        /// The name that was given.
+        value: String,
+        /// The names of the table, comma-separated.
+        expected: String,
+    },
+    /// A setting given to a kind that does not take it (`k` to level `hertz`, `core_thickness`
+    /// to backing `flat`).
+    #[error(
+        "`{field}` applies only to {kind} `{}`, not to {kind} `{name}` (got {value})",
+        .takes.join("`, `")
+    )]
+    UnexpectedSetting {
+        /// The setting's key.
+        field: &'static str,
+        /// Its value.
+        value: f64,
+        /// What takes settings: `level` or `backing`.
+        kind: &'static str,
+        /// The name of the level or backing it was given to.
+        name: &'static str,
+        /// The names of those that take it.
+        takes: Vec<&'static str>,
+    },
+    /// A setting that a kind requires and was not given (`core_thickness` of backing `core`).
+    #[error("`{field}` is required with {kind} `{name}`: {range}")]
+    MissingSetting {
+        /// The setting's key.
+        field: &'static str,
+        /// `level` or `backing`.
+        kind: &'static str,
+        /// The level or backing that requires it.
+        name: &'static str,
+        /// What it must be, with its unit.
+        range: &'static str,
+    },
     /// A user's [`crate::NormalisedLaw`] failed the checks of [`crate::ContactLaw::custom`].
     #[error("custom law: {quantity} at x = {x} must be {range}, got {value}")]
     InvalidCustomLaw {

@@ -1,25 +1,37 @@
 #![doc = include_str!("../README.md")]
 
 mod backing;
+mod backing_table;
 mod curve;
 mod error;
 pub mod fitting;
 mod law;
 mod level;
+mod level_table;
 mod levels;
 mod material;
 mod normalised;
 mod pressure;
 mod quadrature;
+mod reading;
+mod recorded_curve;
 mod root;
+mod setting;
 mod tabulated;
 
 pub use backing::Backing;
+pub use backing_table::{BACKINGS, BackingInfo, BackingKind, BackingParameter};
 pub use error::{Error, Result};
 pub use law::{ContactLaw, ContactState, NormalResponse, Regime};
-pub use level::{DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, Level, LevelKind};
+pub use level::{
+    DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, Level, LevelKind, setting_keys,
+};
+pub use level_table::{LEVELS, LevelData, LevelInfo};
 pub use levels::neo_hookean::neo_hookean_limit_point;
 pub use material::{ContactParams, Material};
 pub use normalised::NormalisedLaw;
 pub use pressure::ContactPatch;
+pub use reading::ContactReading;
+pub use recorded_curve::CUSTOM_CURVE_SAMPLES;
+pub use setting::{Interval, LevelSetting};
 pub use tabulated::{MIN_TABULATED_SAMPLES, TabulatedCurve};
