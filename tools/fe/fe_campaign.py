@@ -6,6 +6,7 @@ reproduction of the reference.
   fe_campaign.py run [--only NAME ...] [--runs DIR] [-j 2] [--deadline HH:MM] [--timeout S]
   fe_campaign.py export [--runs DIR]      # writes tests/data/fe/<geometry>/*.csv
   fe_campaign.py reproduce [--runs DIR]   # free vs tests/data/fe/force_nu{0.3,0.49}.csv
+  fe_campaign.py table [--runs DIR] [--counterpart ball ...]  # the README's results table
 
 Case names are fe_model.Case.name: free_nu0.49_h60, flat_nu0.48_h60, core_nu0.48_t0.4_h60, ...
 Runs live outside the repo (default /tmp/softgrip-fe, or $SOFTGRIP_FE_RUNS); at most two ccx at a
@@ -26,6 +27,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 import fe_run  # noqa: E402
+import fe_table  # noqa: E402
 
 OUT = os.path.join(REPO, "tests", "data", "fe")
 PRESSURE_X = (0.1, 0.3, 0.5)
@@ -72,10 +74,43 @@ def cases():
     # incompressibility (nu = 0.499, K/mu = 500) a reduced-integration mesh can lock, and nu =
     # 0.4 is where the core law's residual at t/R = 0.2 has the other sign
     c += [("core", 0.499, 0.2, 60, "conv"), ("core", 0.4, 0.2, 60, "conv")]
+    return [e + ("plane", 0.0) for e in c] + curved_cases()
+
+
+def curved_cases():
+    """Issue 24: the fingertip on curved rigid counterparts, (geometry, nu, t/R, R/h, role,
+    counterpart, k = R2/R). Axisymmetric balls first (cheap, and the law's calibration needs them
+    first): nu = 0.48, then the mesh and faceting checks of the most curved ball (k = 0.5: R/60
+    against R/40, and a master with 1/16 of the facet sag), then nu = 0.499 and 0.3, then
+    held-out runs at k and nu that no fit sees (role "heldout")."""
+    ks = (1, 2, 0.5, 4, 10)
+    c = [(g, 0.48, 0, 40, "main", "ball", k) for k in ks for g in ("free", "flat")]
+    c += [("flat", 0.48, 0, 60, "conv", "ball", 0.5), ("flat", 0.48, 0, 40, "facets", "ball", 0.5)]
+    c += [(g, nu, 0, 40, "main", "ball", k) for nu in (0.499, 0.3) for k in ks
+          for g in ("free", "flat")]
+    held = [("free", 0.4, 0.7), ("flat", 0.4, 0.7), ("free", 0.4, 6), ("flat", 0.4, 6),
+            ("flat", 0.45, 1.5), ("free", 0.35, 3)]
+    c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held]
+    return c + cases_3d()
+
+
+def cases_3d():
+    """The 3D quarter models (fe_model3d), nu = 0.48, element edge R/20 at the pole: the
+    cylinder k = 1 flat (the smoke test compares with it), the plane in 3D against the
+    axisymmetric flat run (role "check3d": how good the 3D mesh is), its mesh convergence
+    against R/14 (role "conv", to x = 0.3), the edge flat and its convergence, then the free
+    cylinder and edge, and the cylinder k = 3."""
+    c = [("flat", 0.48, 0, 20, "main", "cylinder", 1), ("flat", 0.48, 0, 20, "check3d", "plane", 0),
+         ("flat", 0.48, 0, 14, "conv", "cylinder", 1),
+         ("flat", 0.48, 0, 20, "main", "edge", 0), ("flat", 0.48, 0, 14, "conv", "edge", 0),
+         ("free", 0.48, 0, 20, "main", "cylinder", 1), ("free", 0.48, 0, 20, "main", "edge", 0),
+         ("flat", 0.48, 0, 20, "main", "cylinder", 3), ("free", 0.48, 0, 20, "main", "cylinder", 3)]
     return c
 
 
-def make(geometry, nu, t, h, role="main"):
+def make(geometry, nu, t, h, role="main", cp="plane", k=0.0):
+    if cp != "plane" or role == "check3d":
+        return make_curved(geometry, nu, t, h, role, cp, k)
     if role == "smoke":  # exactly what smoke.sh runs
         return fe_run.make_case(geometry, nu, t, h, 0.3, dt_small=0.005)
     # free only validates the pipeline against the reference (to x = 0.5, nu = 0.3 is cut at
@@ -94,8 +129,37 @@ def make(geometry, nu, t, h, role="main"):
     return fe_run.make_case(geometry, nu, t, h, tend, dt_small=dt_small, late_dt=late_dt)
 
 
+def make_curved(geometry, nu, t, h, role, cp, k):
+    """A curved counterpart's case. Axisymmetric (ball): the plane's increments (free <= 0.0025
+    to x = 0.1, flat <= 0.005; nu = 0.499 <= 0.005 beyond 0.2), to x = 0.7 (checks to 0.5);
+    role "facets" is the same case on a master with 1/16 of the facet sag (facets 4x shorter).
+    3D (cylinder, edge; role "check3d": the plane in 3D, checked against the axisymmetric
+    model): h is n, the element edge at the pole R/n; increments <= 0.005 to x = 0.1, 0.01 to
+    0.2, 0.02 beyond (output at each), to x = 0.6 (checks to 0.3)."""
+    if cp in ("cylinder", "edge") or role == "check3d":
+        tend = 0.6 if role in ("main", "heldout") else 0.3
+        return fe_run.make_case(geometry, nu, t, h, tend, dt_small=0.005, late_dt=0.02,
+                                counterpart=cp, k=k, dim=3)
+    tend = TEND if role in ("main", "heldout") else 0.5
+    dt_small = 0.0025 if geometry == "free" else 0.005
+    late_dt = 0.005 if nu >= 0.499 else 0.01
+    case = fe_run.make_case(geometry, nu, t, h, tend, dt_small=dt_small, late_dt=late_dt,
+                            counterpart=cp, k=k)
+    if role == "facets":
+        case.facet_sag = fe_run.fe_model.SAG_MAX / 16
+    return case
+
+
+def selected(a):
+    """The campaign's cases, filtered by --counterpart (the 3D plane check goes with the
+    cylinder)."""
+    def kind(c):
+        return "cylinder" if c[4] == "check3d" else c[5]
+    return [c for c in cases() if not a.counterpart or kind(c) in a.counterpart]
+
+
 def cmd_run(a):
-    todo = [make(*c) for c in cases()]
+    todo = [make(*c) for c in selected(a)]
     names = [c.name for c in todo]
     todo = [c for i, c in enumerate(todo) if c.name not in names[:i]]
     if a.only:
@@ -144,10 +208,16 @@ def cmd_run(a):
         t.join()
 
 
-def fname(geometry, nu, t, kind="force", x=None):
+def fname(geometry, nu, t, kind="force", x=None, cp="plane", k=0.0):
+    """tests/data/fe/<geometry>/force_nu{NU}[_t{T}].csv for the plane,
+    tests/data/fe/<counterpart>/<geometry>/force_nu{NU}[_k{K}].csv for the others."""
     s = f"{kind}_nu{nu:g}" + (f"_t{t:g}" if geometry == "core" else "")
+    if cp in ("ball", "cylinder"):
+        s += f"_k{k:g}"
     if x is not None:
         s += f"_d{x:g}"
+    if cp != "plane":
+        return os.path.join(OUT, cp, geometry, s + ".csv")
     return os.path.join(OUT, geometry, s + ".csv")
 
 
@@ -160,26 +230,60 @@ def provenance(res, extra=""):
             f"geometry {c['geometry']} nu = {c['nu']:g}" +
             (f" t/R = {c['t']:g}" if c["geometry"] == "core" else "") +
             f"; compressible neo-Hookean mu = {c['mu']:g} MPa (C10 = mu/2, D1 = 2/K), R = 1 mm, "
-            f"NLGEOM; CAX8R, element edge R/{1 / c['h']:.0f} at the contact surface "
-            f"({m['mesh']['elements']} elements); frictionless linear penalty {c['kpen']:g} MPa/mm "
-            f"against a rigid plane; load increments {steps}; run {m['date']}, {m['wall_s']:.0f} s; "
-            f"reached x = {res['reached']:g}: {res['why']}{extra}; "
+            f"NLGEOM; {mesh_words(m)}; frictionless linear penalty {c['kpen']:g} MPa/mm "
+            f"against {against(m)}; load increments {steps}; run {m['date']}, {m['wall_s']:.0f} s; "
+            f"reached x = {res['reached']:g}: {res['why']}{extra}; " +
+            ("held out of every fit (a blind test of the law: its calibration must not see this "
+             "run); " if res.get("role") == "heldout" else "") +
             f"regenerate: PY=$(bash tools/fe/setup.sh); $PY tools/fe/fe_campaign.py run "
             f"--runs DIR --only {name} && $PY tools/fe/fe_campaign.py export --runs DIR")
 
 
-def load(runs, geometry, nu, t, h, role="main"):
-    case = make(geometry, nu, t, h, role)
+def mesh_words(meta):
+    """The mesh in a provenance line."""
+    c, n = meta["case"], meta["mesh"]["elements"]
+    if c.get("dim", 2) == 3:
+        s = (f"3D quarter model (symmetry planes x = 0 and z = 0, force = 4 x the quarter's), "
+             f"C3D10, element edge R/{c['n']:g} at the pole growing as (1 + {c['beta']:g} d/R) "
+             f"with the distance d from it, at most {c['hmax']:g} mm")
+        if c["counterpart"] == "edge":
+            s += (f", R/{c['ridge'] * c['n']:g} along the ridge line growing by "
+                  f"{c['g_ridge']:g} per mm away from it")
+        return s + f" ({n} elements)"
+    return f"CAX8R, element edge R/{1 / c['h']:.0f} at the contact surface ({n} elements)"
+
+
+def against(meta):
+    """The counterpart in a provenance line: kind, size, master mesh and facet sag."""
+    c = meta["case"]
+    cp = fe_run.fe_model.Counterpart(c.get("counterpart", "plane"), c.get("k", 0.0),
+                                     c.get("facet_sag", fe_run.fe_model.SAG_MAX))
+    if cp.kind == "plane":
+        return "a rigid plane"
+    s = f"{cp.describe()} ({meta['mesh']['master']}"
+    if cp.sag() > 0:
+        s += f"; facet sag {cp.sag():.3g} mm = {cp.sag() / 0.01:.2g} of delta at x = 0.01"
+    s += ")"
+    if c["geometry"] == "free":
+        s += " (free: the sphere squeezed between two such counterparts, each contact compressed by delta)"
+    return s
+
+
+def load(runs, geometry, nu, t, h, role="main", cp="plane", k=0.0):
+    case = make(geometry, nu, t, h, role, cp, k)
     d = os.path.join(runs, case.name)
     if not os.path.exists(os.path.join(d, "meta.json")):
         return None
     res = fe_run.analyse(d)
     res["dir"] = d
+    res["role"] = role
     return res
 
 
 def write_force(path, res):
     os.makedirs(os.path.dirname(path), exist_ok=True)
+    if res["rows"] and "b" in res["rows"][0]:
+        return write_force3d(path, res)
     with open(path, "w") as f:
         f.write(provenance(res) + "\n")
         f.write("delta_over_R,force_N,contact_radius_mm,min_element_J,V_over_V0,"
@@ -189,7 +293,69 @@ def write_force(path, res):
                     f"{r['copen']:.3g},{r['lift']:.3g}\n")
 
 
+def write_force3d(path, res):
+    """A 3D run's force and the patch's two semi-axes (fe_post3d)."""
+    with open(path, "w") as f:
+        f.write(provenance(res, "; semi-axes: the patch's extent along x (across the counterpart) "
+                                "and z (along it) from the surface nodes on the two symmetry "
+                                "planes: *_mm from the last node in contact (resolved to one node "
+                                "spacing), *_32_mm from the gap's Hertzian edge shape through the "
+                                "first two nodes outside") + "\n")
+        f.write("delta_over_R,force_N,semi_axis_across_mm,semi_axis_along_mm,"
+                "semi_axis_across_32_mm,semi_axis_along_32_mm,min_element_J,V_over_V0,"
+                "max_copen_over_delta\n")
+        for r in res["rows"]:
+            f.write(f"{r['x']:g},{r['F']:.6g},{r['a']:.6g},{r['b']:.6g},{r['a32']:.6g},"
+                    f"{r['b32']:.6g},{r['minJ']:.4f},{r['VV0']:.5f},{r['copen']:.3g}\n")
+
+
+def write_pressure3d(path, res, x):
+    """A 3D run's pressure map at x: every surface node with CPRESS > 0, deformed x and z."""
+    pr = res["run"].pressure(round(x, 6))
+    if pr is None or res["reached"] < x - 1e-9:
+        return False
+    px, pz, p, g = pr
+    F = [q["F"] for q in res["rows"] if abs(q["x"] - x) < 1e-9][0]
+    integ = map_integral(px, pz, p, g <= MAP_GAP)
+    with open(path, "w") as f:
+        f.write(provenance(res, f"; pressure map at x = {x:g}: nodal CPRESS of every surface node "
+                                f"with CPRESS > 0, against its deformed x (across) and z (along), "
+                                f"quarter model x >= 0, z >= 0; the nodal value is extrapolated "
+                                f"from the faces' integration points and is large (up to 4x the "
+                                f"peak) at nodes a face beyond the contact edge: keep gap_mm <= "
+                                f"{MAP_GAP:g} (the facet sag and the penalty's penetration); those "
+                                f"nodes, mirrored to the whole patch and integrated linearly over "
+                                f"their Delaunay triangles, give {integ:.5g} N against the force "
+                                f"{F:.5g} N (the triangulation's hull carries the edge nodes' "
+                                f"pressure instead of 0: an overestimate)") + "\n")
+        f.write("x_mm,z_mm,pressure_MPa,gap_mm\n")
+        for row in sorted(zip(px, pz, p, g)):
+            f.write("{:.6g},{:.6g},{:.6g},{:.3g}\n".format(*row))
+    return True
+
+
+MAP_GAP = 2e-5  # mm: nodes of a 3D pressure map in contact (twice the facet sag)
+
+
+def map_integral(px, pz, p, keep):
+    """int p dA over the whole patch from a quarter's nodes: mirrored, Delaunay, linear."""
+    from scipy.spatial import Delaunay
+    P = np.c_[px[keep], pz[keep]]
+    q = p[keep]
+    if len(P) < 3:
+        return float("nan")
+    Q = np.r_[P, P * [-1, 1], P * [1, -1], P * [-1, -1]]
+    q = np.r_[q, q, q, q]
+    total = 0.0
+    for s in Delaunay(Q).simplices:
+        a, b, c = Q[s]
+        total += abs((b - a)[0] * (c - a)[1] - (b - a)[1] * (c - a)[0]) / 2 * q[s].mean()
+    return total
+
+
 def write_pressure(path, res, x):
+    if res["rows"] and "b" in res["rows"][0]:
+        return write_pressure3d(path, res, x) if x < 0.5 else False
     pr = res["run"].pressure(round(x, 6))
     if pr is None or res["reached"] < x - 1e-9:
         return False
@@ -208,25 +374,37 @@ def write_pressure(path, res, x):
 
 def cmd_export(a):
     done = {}
-    for g, nu, t, h, role in cases():
+    for g, nu, t, h, role, cp, k in selected(a):
         if role not in ("main", "reach", "heldout"):
             continue
-        res = load(a.runs, g, nu, t, h, role)
+        res = load(a.runs, g, nu, t, h, role, cp, k)
         if res is None or not res["rows"]:
             continue
-        write_force(fname(g, nu, t), res)
+        write_force(fname(g, nu, t, cp=cp, k=k), res)
         for x in PRESSURE_X:
-            write_pressure(fname(g, nu, t, "pressure", x), res, x)
-        done[(g, nu, t)] = (h, res)
-        print(f"{g} nu={nu:g} t={t:g}: reached x = {res['reached']:g}: {res['why']}")
-    checks = {}
-    for g, nu, t, h, role in cases():
-        if role not in ("conv", "smoke"):
+            write_pressure(fname(g, nu, t, "pressure", x, cp, k), res, x)
+        done[(g, nu, t, cp, k)] = (h, res)
+        print(f"{cp} k={k:g} {g} nu={nu:g} t={t:g}: reached x = {res['reached']:g}: {res['why']}")
+    checks, curved = {}, {}
+    for g, nu, t, h, role, cp, k in selected(a):
+        if role == "check3d":
+            res = load(a.runs, g, nu, t, h, role, cp, k)
+            if res is not None and res["rows"]:
+                key, prov, rows, worst = check_3d(g, nu, h, res)
+                curved.setdefault("cylinder", {})[key] = (prov, rows)
+                print(f"3D vs axisymmetric {g} nu={nu:g}: max |dF| / F = {worst:.3f} %")
             continue
-        other = load(a.runs, g, nu, t, h, role)
-        if other is None or (g, nu, t) not in done:
+        if role not in ("conv", "smoke", "facets"):
             continue
-        hb, base = done[(g, nu, t)]
+        other = load(a.runs, g, nu, t, h, role, cp, k)
+        if other is None or (g, nu, t, cp, k) not in done:
+            continue
+        hb, base = done[(g, nu, t, cp, k)]
+        if cp != "plane":
+            key, prov, rows, worst = curved_check(g, nu, k, hb, base, h, other, role)
+            curved.setdefault(cp, {})[key] = (prov, rows)
+            print(f"{role} {cp} k={k:g} {g} nu={nu:g}: max |dF| / F = {worst:.3f} %")
+            continue
         Fb = {r["x"]: r for r in base["rows"]}
         prov = provenance(other, f"; mesh convergence of {g} nu = {nu:g}" +
                           (f" t/R = {t:g}" if g == "core" else "") +
@@ -245,6 +423,97 @@ def cmd_export(a):
         print(f"convergence {g} nu={nu:g} t={t:g}: max |F_h{hb:g} - F_h{h:g}| / F = {worst:.3f} %")
     for g, new in checks.items():
         write_convergence(os.path.join(OUT, g, "convergence.csv"), new)
+    for cp, new in curved.items():
+        write_curved_checks(os.path.join(OUT, cp, "convergence.csv"), new)
+    print(f"loader table: {fe_table.write()}")
+
+
+# the checks of a curved counterpart (tests/data/fe/<counterpart>/convergence.csv): mesh (R/h of
+# the campaign run against another mesh), facets (the campaign master's facet sag [mm] against a
+# finer master's) and, in cylinder/, 3d (the 3D model on a plane, R/n, against the
+# axisymmetric run, R/h); reldiff = (F_campaign - F_other) / F_other
+CURVED_CHECK_HEADER = ("geometry,nu,k,check,campaign,other,delta_over_R,force_N_campaign,"
+                       "force_N_other,reldiff_pct,contact_radius_mm_campaign,"
+                       "contact_radius_mm_other")
+
+
+def curved_check(g, nu, k, hb, base, h, other, role):
+    """One check's key, provenance line, table rows and largest |reldiff| [%]."""
+    cb, co = base["meta"]["case"], other["meta"]["case"]
+    if role == "facets":
+        sb = fe_run.fe_model.Counterpart(cb["counterpart"], cb["k"], cb["facet_sag"]).sag()
+        so = fe_run.fe_model.Counterpart(co["counterpart"], co["k"], co["facet_sag"]).sag()
+        check, vb, vo = "facets", sb, so
+        what = (f"faceting check of {g} nu = {nu:g} k = {k:g}: the campaign master (facet sag "
+                f"{sb:.3g} mm) against a finer one ({so:.3g} mm), both R/{hb:g}")
+    else:
+        check, vb, vo = "mesh", hb, h
+        what = (f"mesh convergence of {g} nu = {nu:g} k = {k:g}: R/{hb:g} (the campaign mesh) "
+                f"against R/{h:g}")
+    prov = provenance(other, f"; {what}; reldiff = (F_campaign - F_other) / F_other")
+    Fb = {r["x"]: r for r in base["rows"]}
+    rows, worst = [], 0.0
+    for r in other["rows"]:
+        b = Fb.get(r["x"])
+        if b is None:
+            continue
+        d = 100 * (b["F"] - r["F"]) / r["F"]
+        worst = max(worst, abs(d))
+        rows.append(f"{g},{nu:g},{k:g},{check},{vb:.6g},{vo:.6g},{r['x']:g},{b['F']:.6g},"
+                    f"{r['F']:.6g},{d:.3f},{b['a']:.5g},{r['a']:.5g}")
+    return (g, nu, k, check, vb, vo), prov, rows, worst
+
+
+def check_3d(g, nu, n, res):
+    """The 3D model on a plane (R/n at the pole) against the committed axisymmetric run of the
+    same case (tests/data/fe/<g>/force_nu<nu>.csv, R/40): how good the 3D mesh the cylinder and
+    the edge use is. A row of cylinder/convergence.csv with check "3d", k = 0 (the plane)."""
+    path = os.path.join(OUT, g, f"force_nu{nu:g}.csv")
+    ref = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+    hb = float(open(path).readline().split("element edge R/")[1].split()[0])
+    Fr = {round(float(x), 6): (float(F), float(a)) for x, F, a in
+          zip(ref["delta_over_R"], ref["force_N"], ref["contact_radius_mm"])}
+    prov = provenance(res, f"; 3D check of {g} nu = {nu:g} k = 0: the 3D quarter model on a "
+                           f"plane (R/{n:g} at the pole) against the axisymmetric run "
+                           f"tests/data/fe/{g}/force_nu{nu:g}.csv (R/{hb:g}); reldiff = "
+                           f"(F_3D - F_axisymmetric) / F_axisymmetric")
+    rows, worst = [], 0.0
+    for r in res["rows"]:
+        o = Fr.get(round(r["x"], 6))
+        if o is None:
+            continue
+        d = 100 * (r["F"] - o[0]) / o[0]
+        worst = max(worst, abs(d))
+        rows.append(f"{g},{nu:g},0,3d,{n:g},{hb:g},{r['x']:g},{r['F']:.6g},{o[0]:.6g},{d:.3f},"
+                    f"{r['a']:.5g},{o[1]:.5g}")
+    return (g, nu, 0.0, "3d", float(n), hb), prov, rows, worst
+
+
+def write_curved_checks(path, new):
+    """Every check of one counterpart: one provenance line each, then one table; checks made
+    now replace their earlier rows, the others are kept."""
+    checks = {}
+    if os.path.exists(path):
+        lines = open(path).read().splitlines()
+        provs = [ln for ln in lines if ln.startswith("# provenance:")]
+        data = [ln for ln in lines if ln and not ln.startswith("#")][1:]
+        for ln in data:
+            v = ln.split(",")
+            key = (v[0], float(v[1]), float(v[2]), v[3], float(v[4]), float(v[5]))
+            checks.setdefault(key, [None, []])[1].append(ln)
+        for key, val in checks.items():
+            tag = f" of {key[0]} nu = {key[1]:g} k = {key[2]:g}:"
+            kind = {"facets": "faceting check", "3d": "3D check"}.get(key[3], "mesh convergence")
+            val[0] = next(pv for pv in provs if kind + tag in pv)
+    checks.update({k: list(v) for k, v in new.items()})
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        for key in sorted(checks):
+            f.write(checks[key][0] + "\n")
+        f.write(CURVED_CHECK_HEADER + "\n")
+        for key in sorted(checks):
+            for ln in checks[key][1]:
+                f.write(ln + "\n")
 
 
 CONV_HEADER = ("nu,t_over_R,h_campaign,h_other,delta_over_R,force_N_campaign,force_N_other,"
@@ -297,7 +566,7 @@ def write_convergence(path, new):
 def cmd_reproduce(a):
     ok = True
     for nu in (0.3, 0.49):
-        res = load(a.runs, "free", nu, 0, 60, "main")
+        res = load(a.runs, "free", nu, 0, 60, "main", "plane", 0.0)
         if res is None:
             print(f"nu = {nu}: not run")
             ok = False
@@ -313,18 +582,43 @@ def cmd_reproduce(a):
     return 0 if ok else 1
 
 
+def cmd_table(a):
+    """The README's results table (markdown) of the selected cases: case, mesh, role, reached x,
+    wall time and why it stopped, from the runs (or "not run" / "running")."""
+    print("| case | mesh | role | reached x | wall s | why it stopped |")
+    print("|---|---|---|---|---|---|")
+    for g, nu, t, h, role, cp, k in selected(a):
+        case = make(g, nu, t, h, role, cp, k)
+        d = os.path.join(a.runs, case.name)
+        three_d = getattr(case, "dim", 2) == 3
+        what = (("3D " if three_d and cp == "plane" else "") + cp +
+                (f" k={k:g}" if cp in ("ball", "cylinder") else "") + f" {g} nu={nu:g}")
+        if role == "facets":
+            what += f" (facet sag {case.cp.sag():.2g} mm)"
+        mesh = f"R/{h:g}" + (" (pole)" if three_d else "")
+        if not os.path.exists(os.path.join(d, "meta.json")):
+            state = "running" if os.path.isdir(d) else "not run"
+            print(f"| {what} | {mesh} | {role} | - | - | {state} |")
+            continue
+        res = fe_run.analyse(d)
+        print(f"| {what} | {mesh} | {role} | {res['reached']:g} | {res['meta']['wall_s']:.0f} | "
+              f"{res['why']} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("cmd", choices=["list", "run", "export", "reproduce"])
+    ap.add_argument("cmd", choices=["list", "run", "export", "reproduce", "table"])
     ap.add_argument("--runs", default=os.environ.get("SOFTGRIP_FE_RUNS", "/tmp/softgrip-fe"))
     ap.add_argument("--only", nargs="*")
     ap.add_argument("-j", type=int, default=2)
     ap.add_argument("--deadline", help="HH:MM UTC: no run is started or allowed to run past it")
     ap.add_argument("--timeout", type=float, default=3600)
     ap.add_argument("--force", action="store_true", help="rerun cases that have a meta.json")
+    ap.add_argument("--counterpart", nargs="*", choices=["plane", "ball", "cylinder", "edge"],
+                    help="only the cases on these counterparts (list, run, export)")
     a = ap.parse_args()
     if a.cmd == "list":
-        for c in cases():
+        for c in selected(a):
             print(make(*c).name, c[4])
     elif a.cmd == "run":
         cmd_run(a)
@@ -332,6 +626,8 @@ def main():
         cmd_export(a)
     elif a.cmd == "reproduce":
         sys.exit(cmd_reproduce(a))
+    elif a.cmd == "table":
+        cmd_table(a)
 
 
 if __name__ == "__main__":

@@ -26,6 +26,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from fe_counterpart import SAG_MAX, Counterpart
+
 R = 1.0  # mm
 GEOMETRIES = ("free", "flat", "core")
 
@@ -47,10 +49,17 @@ class Case:
     tp: float = 0.01  # output every tp in x
     dtmin: float = 1e-7
     tie: bool = True  # tie the on-axis slave face (see README)
+    counterpart: str = "plane"  # plane | ball (axisymmetric); see fe_counterpart
+    k: float = 0.0  # counterpart radius over R (ball)
+    facet_sag: float = SAG_MAX  # largest faceting sag of a curved counterpart [mm]
+
+    @property
+    def cp(self) -> Counterpart:
+        return Counterpart(self.counterpart, self.k, self.facet_sag)
 
     @property
     def name(self) -> str:
-        s = f"{self.geometry}_nu{self.nu:g}"
+        s = f"{self.cp.tag}{self.geometry}_nu{self.nu:g}"
         if self.geometry == "core":
             s += f"_t{self.t:g}"
         return s + f"_h{1 / self.h:.0f}"
@@ -133,6 +142,7 @@ def mesh(case: Case):
     return X, E, version
 
 
+ELSETS = {"C3D8": "EPLATE", "C3D6": "EPLATE6"}  # the counterpart's element sets
 EDGES = [(0, 1, 4), (1, 2, 5), (2, 3, 6), (3, 0, 7)]  # corner, corner, midside (CAX8 faces S1..S4)
 
 
@@ -154,25 +164,18 @@ def deck(case: Case, path: str) -> dict:
     th = np.sort(np.arctan2(X[arcn, 0], R - X[arcn, 1]))
     h_surf = float(np.diff(th[:40]).max() * 2 * R)  # element edge near the pole region
 
-    # rigid slab: fixed C3D8 elements, y in [-0.1, 0], x in [-0.1, 2.6], z in [-0.1, 0.1]
-    xs = np.linspace(-0.1, 2.6, 55)
+    # the rigid counterpart: fixed 3D elements whose outer faces are the master surface
+    master = case.cp.master_axisym()
     base = 10 ** (len(str(nn)) + 1)
-    pid, pn = {}, []
-    for ix, x in enumerate(xs):
-        for iy, y in enumerate((-0.1, 0.0)):
-            for iz, z in enumerate((-0.1, 0.1)):
-                pid[(ix, iy, iz)] = base + len(pn) + 1
-                pn.append((x, y, z))
-    pel = [[pid[(ix, 0, 0)], pid[(ix, 0, 1)], pid[(ix + 1, 0, 1)], pid[(ix + 1, 0, 0)],
-            pid[(ix, 1, 0)], pid[(ix, 1, 1)], pid[(ix + 1, 1, 1)], pid[(ix + 1, 1, 0)]]
-           for ix in range(len(xs) - 1)]
+    pn = master.nodes
 
     c10, d1 = case.material()
     o = []
     w = o.append
     w("*HEADING")
     w(f"softgrip FE {case.name}: geometry={case.geometry} nu={case.nu} t/R={case.t} mu={case.mu} "
-      f"C10={c10:.8g} D1={d1:.8g} h={case.h:.5g} kpen={case.kpen:g} CAX8R gmsh {gmsh_version}")
+      f"C10={c10:.8g} D1={d1:.8g} h={case.h:.5g} kpen={case.kpen:g} CAX8R gmsh {gmsh_version}"
+      + (f" counterpart={case.counterpart} k={case.k:g}" if case.counterpart != "plane" else ""))
     w("*NODE, NSET=NBODY")
     for i, (x, y) in enumerate(X):
         w(f"{i + 1}, {x:.15g}, {y:.15g}, 0")
@@ -182,9 +185,12 @@ def deck(case: Case, path: str) -> dict:
     w("*ELEMENT, TYPE=CAX8R, ELSET=EBODY")
     for k, c in enumerate(E):
         w(f"{k + 1}, " + ", ".join(str(int(v)) for v in c))
-    w("*ELEMENT, TYPE=C3D8, ELSET=EPLATE")
-    for k, c in enumerate(pel):
-        w(f"{base + k + 1}, " + ", ".join(str(v) for v in c))
+    for typ in ("C3D8", "C3D6"):
+        els = [(k, ids) for k, (t, ids) in enumerate(master.elements) if t == typ]
+        if els:
+            w(f"*ELEMENT, TYPE={typ}, ELSET={ELSETS[typ]}")
+            for k, ids in els:
+                w(f"{base + k + 1}, " + ", ".join(str(base + v + 1) for v in ids))
 
     def nset(name, ids):
         w(f"*NSET, NSET={name}")
@@ -200,8 +206,8 @@ def deck(case: Case, path: str) -> dict:
     for k, j in slave:
         w(f"{k}, S{j}")
     w("*SURFACE, NAME=SMASTER, TYPE=ELEMENT")
-    for k in range(len(pel)):
-        w(f"{base + k + 1}, S2")
+    for k, j in master.faces:
+        w(f"{base + k + 1}, S{j}")
     w("*MATERIAL, NAME=RUBBER")
     w("*HYPERELASTIC, NEO HOOKE")
     w(f"{c10:.10g}, {d1:.10g}")
@@ -209,7 +215,9 @@ def deck(case: Case, path: str) -> dict:
     w("*ELASTIC")
     w("1e6, 0.3")
     w("*SOLID SECTION, ELSET=EBODY, MATERIAL=RUBBER")
-    w("*SOLID SECTION, ELSET=EPLATE, MATERIAL=RIGID")
+    for typ in ("C3D8", "C3D6"):
+        if any(t == typ for t, _ in master.elements):
+            w(f"*SOLID SECTION, ELSET={ELSETS[typ]}, MATERIAL=RIGID")
     w("*SURFACE INTERACTION, NAME=SI")
     w("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR")
     w(f"{case.kpen:g}")
@@ -264,4 +272,5 @@ def deck(case: Case, path: str) -> dict:
     with open(path, "w") as fh:
         fh.write("\n".join(o) + "\n")
     return dict(elements=len(E), nodes=nn, slave_faces=len(slave), h_surface=h_surf,
-                gmsh=gmsh_version)
+                gmsh=gmsh_version, master=master.about, master_elements=len(master.elements),
+                facet_sag_mm=case.cp.sag())

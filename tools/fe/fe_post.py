@@ -3,9 +3,11 @@
 Per output time point (step time = x = delta / R):
   force_N              -180 x total RF_y of the pushed node set NPUSH (CalculiX reports
                        axisymmetric reaction forces per 2-degree segment)
-  contact_radius_mm    a_lin: curved-surface nodes in order from the pole, the last one on or below
-                       the plane (deformed height <= 0), then linear interpolation of the signed
-                       height to zero towards the next node; resolved to about one surface node
+  contact_radius_mm    a_lin: curved-surface nodes in order from the pole, the last one on or inside
+                       the counterpart (signed gap <= 0: the height above a plane, the distance
+                       to a ball's surface), then linear interpolation of the signed gap to zero
+                       towards the next node, reported as the deformed radius r there (the
+                       patch's radius seen along the axis); resolved to about one surface node
   min_element_J        smallest element volume ratio (A r_centroid)_deformed / (A r_centroid)_ref
   V_over_V0            body volume ratio
   max_copen_over_delta largest penalty penetration / delta
@@ -15,9 +17,13 @@ Pressure profiles: nodal CPRESS of the curved-surface nodes against the deformed
 """
 from __future__ import annotations
 
+import json
+import os
 import re
 
 import numpy as np
+
+from fe_counterpart import Counterpart
 
 R = 1.0
 # nodes of the curved surface counted from the pole that are dropped from pressure profiles:
@@ -56,14 +62,16 @@ def read_inp(path):
     return X, E, sets, kpen
 
 
-def read_dat_force(path, nset="NPUSH"):
+def read_dat_force(path, nset="NPUSH", scale=-180.0):
+    """Total RF_y of `nset` per output time, times `scale` (axisymmetric: -180, the 2-degree
+    segment to the whole ring, sign to a compressive force > 0; quarter model: -4)."""
     F = {}
     L = open(path).read().split("\n")
     pat = re.compile(rf"\s*total force \(fx,fy,fz\) for set {nset} and time\s+(\S+)")
     for i, line in enumerate(L):
         m = pat.match(line)
         if m:
-            F[round(float(m.group(1)), 6)] = -180.0 * float(L[i + 2].split()[1])
+            F[round(float(m.group(1)), 6)] = scale * float(L[i + 2].split()[1])
     return F
 
 
@@ -102,9 +110,41 @@ def read_frd(path, nodes):
     return U, C
 
 
+def edge_crossing(c, g):
+    """Where a contact ends along a line of surface nodes ordered from the first contact point:
+    c their deformed coordinate along the line, g their signed gap to the counterpart. Returns
+    (a_lin, a_32): a_lin = from the last node with g <= 0, linear interpolation of g to zero
+    towards the next node (inside the contact g is ~0, so a_lin sits at that node: resolved to
+    one node spacing); a_32 = the crossing of g = C (s - a)^(3/2) through the first two nodes
+    outside, the gap's shape at the edge of a smooth frictionless contact (Hertz), kept between
+    the last node in and the first node out (a_lin where it does not apply)."""
+    inside = np.where(g <= 0)[0]
+    if len(inside) == 0 or inside.max() >= len(c) - 1:
+        return np.nan, np.nan
+    j = int(inside.max())
+    a_lin = c[j] + (c[j + 1] - c[j]) * (0 - g[j]) / (g[j + 1] - g[j])
+    a_32 = a_lin
+    if j + 2 < len(c) and 0 < g[j + 1] < g[j + 2]:
+        q = (g[j + 1] / g[j + 2]) ** (2 / 3)
+        a = (c[j + 1] - q * c[j + 2]) / (1 - q)
+        lo, hi = sorted((c[j], c[j + 1]))
+        a_32 = float(min(max(a, lo), hi))
+    return float(a_lin), a_32
+
+
+def counterpart_of(rundir):
+    """The run's counterpart, from its meta.json (runs made before counterparts: the plane)."""
+    path = os.path.join(rundir, "meta.json")
+    c = json.load(open(path))["case"] if os.path.exists(path) else {}
+    if "facet_sag" in c:
+        return Counterpart(c.get("counterpart", "plane"), c.get("k", 0.0), c["facet_sag"])
+    return Counterpart(c.get("counterpart", "plane"), c.get("k", 0.0))
+
+
 class Run:
     def __init__(self, rundir, job="job"):
         base = f"{rundir}/{job}"
+        self.cp = counterpart_of(rundir)
         X, E, sets, self.kpen = read_inp(base + ".inp")
         self.ids = sorted(X)
         pos = {n: i for i, n in enumerate(self.ids)}
@@ -129,17 +169,13 @@ class Run:
         u = self.U[t]
         P = self.X0 + u
         r, z = P[self.arc, 0], P[self.arc, 1]
-        j = int(np.where(z <= 0)[0].max()) if (z <= 0).any() else -1
-        if 0 <= j < len(r) - 1:
-            a = r[j] + (r[j + 1] - r[j]) * (0 - z[j]) / (z[j + 1] - z[j])
-        else:
-            a = np.nan
+        a, a32 = edge_crossing(r, self.cp.gap(P[self.arc]))
         V = self._vol(P)
         J = V / self.V0
         c = self.C.get(t)
         copen = float(c[self.arc, 0].max()) / t if c is not None else np.nan
         lift = float(z.max() - (R - t * R))
-        return dict(x=t, F=self.F[t], a=a, minJ=float(J.min()), VV0=float(V.sum() / self.V0.sum()),
+        return dict(x=t, F=self.F[t], a=a, a32=a32, minJ=float(J.min()), VV0=float(V.sum() / self.V0.sum()),
                     copen=copen, lift=lift)
 
     def pressure(self, t):

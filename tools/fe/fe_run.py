@@ -2,8 +2,11 @@
 """Run one softgrip FE case: mesh + deck (fe_model), CalculiX, post-processing (fe_post).
 
 usage: fe_run.py GEOMETRY --nu NU [--t T] [--h 60] [--tend 0.75] [--dt-small 0.0025] [--dir DIR]
-                 [--timeout S]
+                 [--timeout S] [--counterpart plane|ball|cylinder|edge --k R2/R] [--dim 2|3]
   GEOMETRY free | flat | core; --h is R / element size at the contact (60 = fine, 30 = coarse).
+  --counterpart: what the fingertip is pressed on: plane (the default) or a rigid ball of radius
+  k R (axisymmetric), a rigid cylinder of radius k R or a right-angle edge (3D quarter models,
+  fe_model3d; --h is then R / element size at the pole). --dim 3 runs the plane in 3D.
 Writes DIR/job.inp, job.dat, job.frd, log, meta.json and prints x, force, contact radius, min J.
 ccx runs single-threaded under nice (OMP_NUM_THREADS=1, nice -n 5).
 """
@@ -20,7 +23,9 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fe_model  # noqa: E402
+import fe_model3d  # noqa: E402
 import fe_post  # noqa: E402
+import fe_post3d  # noqa: E402
 
 J_CUT = 0.2
 _GMSH = threading.Lock()  # gmsh keeps global state: one mesh at a time per process  # data beyond the first point with min element J below this are dropped
@@ -35,19 +40,27 @@ def ccx_version():
         return "unknown"
 
 
-def make_case(geometry, nu, t=0.0, h=60, tend=0.75, dt_small=0.0025, late_dt=0.01):
+def make_case(geometry, nu, t=0.0, h=60, tend=0.75, dt_small=0.0025, late_dt=0.01,
+              counterpart="plane", k=0.0, dim=2):
     """Load steps: increments <= dt_small to x = 0.1 (the contact front crosses a face every few
     increments there; coarser increments leave a jitter of up to 0.5 % in force), <= 2 dt_small
     to 0.2, <= late_dt beyond (0.005 for nearly incompressible material)."""
     steps = [(0.1, dt_small), (0.2, min(2 * dt_small, late_dt)), (tend, late_dt)]
     steps = [s for s in steps if s[0] < tend] + [(tend, [d for x, d in steps if x >= tend][0])]
-    return fe_model.Case(geometry=geometry, nu=nu, t=t, h=1.0 / h, steps=steps)
+    if dim == 3 or counterpart in ("cylinder", "edge"):
+        if geometry not in fe_model3d.GEOMETRIES:
+            raise ValueError(f"3D models are {fe_model3d.GEOMETRIES}, not {geometry}")
+        return fe_model3d.Case3D(geometry=geometry, nu=nu, counterpart=counterpart, k=k, n=h,
+                                 steps=steps)
+    return fe_model.Case(geometry=geometry, nu=nu, t=t, h=1.0 / h, steps=steps,
+                         counterpart=counterpart, k=k)
 
 
 def run_case(case, rundir, timeout=3000):
     os.makedirs(rundir, exist_ok=True)
     with _GMSH:
-        info = fe_model.deck(case, f"{rundir}/job.inp")
+        deck = fe_model3d.deck if getattr(case, "dim", 2) == 3 else fe_model.deck
+        info = deck(case, f"{rundir}/job.inp")
     env = dict(os.environ, OMP_NUM_THREADS="1")
     t0 = time.time()
     with open(f"{rundir}/log", "w") as log:
@@ -66,7 +79,7 @@ def run_case(case, rundir, timeout=3000):
 def analyse(rundir):
     """Rows of every converged output point, the cut (J) and why the run stopped."""
     meta = json.load(open(f"{rundir}/meta.json"))
-    run = fe_post.Run(rundir)
+    run = (fe_post3d.Run3D if meta["case"].get("dim", 2) == 3 else fe_post.Run)(rundir)
     rows = [run.row(t) for t in run.times]
     tend = meta["case"]["steps"][-1][0]
     last = rows[-1]["x"] if rows else 0.0
@@ -109,6 +122,7 @@ def analyse(rundir):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("geometry", choices=fe_model.GEOMETRIES)
+    ap.add_argument("--dim", type=int, choices=[2, 3], default=2)
     ap.add_argument("--nu", type=float, required=True)
     ap.add_argument("--t", type=float, default=0.0, help="shell thickness / R (core)")
     ap.add_argument("--h", type=float, default=60, help="R / element size at the contact")
@@ -117,12 +131,21 @@ def main():
                     help="max load increment to x = 0.1 (twice that to 0.2, 0.01 beyond)")
     ap.add_argument("--dir", default=None)
     ap.add_argument("--timeout", type=float, default=3000)
+    ap.add_argument("--counterpart", choices=["plane", "ball", "cylinder", "edge"],
+                    default="plane")
+    ap.add_argument("--k", type=float, default=0.0, help="ball or cylinder radius / R")
     a = ap.parse_args()
-    case = make_case(a.geometry, a.nu, a.t, a.h, a.tend, a.dt_small)
+    case = make_case(a.geometry, a.nu, a.t, a.h, a.tend, a.dt_small, counterpart=a.counterpart,
+                     k=a.k, dim=a.dim)
     d = a.dir or f"/tmp/softgrip-fe/{case.name}"
     meta = run_case(case, d, a.timeout)
     res = analyse(d)
     print(f"# {case.name}: {meta['wall_s']} s, reached x = {res['reached']:g}: {res['why']}")
+    if "b" in (res["rows"] or [{}])[0]:
+        print("delta_over_R,force_N,semi_axis_across_mm,semi_axis_along_mm,min_element_J")
+        for r in res["rows"]:
+            print(f"{r['x']:g},{r['F']:.6g},{r['a']:.6g},{r['b']:.6g},{r['minJ']:.4f}")
+        return
     print("delta_over_R,force_N,contact_radius_mm,min_element_J")
     for r in res["rows"]:
         print(f"{r['x']:g},{r['F']:.6g},{r['a']:.6g},{r['minJ']:.4f}")

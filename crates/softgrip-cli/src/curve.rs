@@ -4,10 +4,10 @@
 use std::io::{self, BufWriter, Write};
 
 use anyhow::{Context, Result, bail};
-use softgrip_law::{Backing, ContactLaw, ContactParams};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Shortest};
 
 use crate::level_arg::LevelArgs;
-use crate::xrange::XRange;
+use crate::xrange::{MAX_POINTS, XRange};
 
 /// The CSV header, one column per normalised quantity.
 pub const HEADER: &str = "x,force_norm,stiffness_norm,energy_norm,radius_norm,p_mean_norm,valid";
@@ -17,6 +17,20 @@ pub const PROFILE_HEADER: &str = "r_norm,p_norm";
 
 /// Rows of a `--profile`: r/R from 0 to a/R in equal steps.
 pub const PROFILE_ROWS: usize = 50;
+
+/// Most points of a `--level neo-hookean-exact` curve: it solves the compressible theory at
+/// every point (5001 points took 0.48 s in a debug build on the shared 2-core machine: about
+/// 0.1 ms each), so its million allowed points ran for over a minute; 20 000 take about 2 s. `neo-hookean` tabulates the same
+/// theory (within its documented tolerance) and takes the full [`MAX_POINTS`].
+pub const MAX_POINTS_EXACT: usize = 20_000;
+
+/// The most points `level` evaluates in one call.
+pub fn max_points(level: Level) -> usize {
+    match level {
+        Level::NeoHookeanExact => MAX_POINTS_EXACT,
+        _ => MAX_POINTS,
+    }
+}
 
 /// Arguments of `softgrip curve`.
 #[derive(Debug, clap::Args)]
@@ -55,7 +69,10 @@ fn backing(args: &CurveArgs) -> Result<Backing> {
     match (args.backing.as_str(), args.thickness) {
         ("core", Some(t)) => {
             if !(t > 0.0 && t < 1.0) {
-                bail!("`--thickness` is t/R and must be in (0, 1), got {t}");
+                bail!(
+                    "`--thickness` is t/R and must be in (0, 1), got {}",
+                    Shortest(t)
+                );
             }
             Ok(Backing::Core { thickness: t })
         }
@@ -85,26 +102,36 @@ pub fn run(args: &CurveArgs) -> Result<()> {
         .context("invalid `--thickness`")?;
     // The construction as the user gave it: t/R, not the law's t in metres (R = 1 m here).
     let named = match backing {
-        Backing::Core { thickness } => format!("core (t/R = {thickness})"),
+        Backing::Core { thickness } => format!("core (t/R = {})", Shortest(thickness)),
         other => other.to_string(),
     };
     let law = ContactLaw::try_new(params, level).with_context(|| {
         format!(
             "cannot build level `{level}` at nu = {} for backing {named}",
-            args.nu
+            Shortest(args.nu)
         )
     })?;
     let written = match (args.profile, &args.x) {
         (Some(x), _) => {
             if !(x > 0.0 && x <= law.x_max()) {
                 bail!(
-                    "`--profile` must be in (0, {}] (level `{level}`'s validity range for backing {named}), got {x}",
-                    law.x_max()
+                    "`--profile` must be in (0, {}] (level `{level}`'s validity range for backing {named}), got {}",
+                    Shortest(law.x_max()),
+                    Shortest(x)
                 );
             }
             write_profile(&law, x, io::stdout().lock())
         }
-        (None, Some(xs)) => write_csv(&law, xs, io::stdout().lock()),
+        (None, Some(xs)) => {
+            let cap = max_points(level);
+            if xs.len() > cap {
+                bail!(
+                    "`--x` has {} points; level `{level}` evaluates at most {cap} per call (it solves the theory at each point): use a larger STEP, or `--level neo-hookean` (the same theory, tabulated; up to {MAX_POINTS} points)",
+                    xs.len()
+                );
+            }
+            write_csv(&law, xs, io::stdout().lock())
+        }
         (None, None) => bail!("give `--x START:STOP:STEP` or `--profile X`"),
     };
     match written {
@@ -123,7 +150,8 @@ fn write_csv(law: &ContactLaw, xs: &XRange, out: impl Write) -> io::Result<()> {
         // `{:e}` is the shortest representation that parses back to the same double.
         writeln!(
             out,
-            "{x},{:e},{:e},{:e},{:e},{:e},{}",
+            "{},{:e},{:e},{:e},{:e},{:e},{}",
+            Shortest(x),
             r.force,
             r.stiffness,
             law.energy(x),

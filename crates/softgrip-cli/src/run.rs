@@ -7,10 +7,11 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
+use softgrip_ecs::softgrip_record::RecorderOptions;
 use softgrip_ecs::softgrip_record::units::{si, sig};
 use softgrip_ecs::{McapReport, McapSink, Physics, Simulation, Summary};
 use softgrip_ros2::PublisherStats;
-use softgrip_scene::{ContactDigest, DEFAULT_SCENE, LevelSpec, Scene};
+use softgrip_scene::{ContactDigest, DEFAULT_SCENE, Scene};
 
 use crate::files::check_output;
 use crate::out::outln;
@@ -19,7 +20,9 @@ use crate::signals::Stop;
 /// Arguments of `softgrip run`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct RunArgs {
-    /// Scene file (TOML, see crates/softgrip-scene/SCENES.md); default: the embedded grasp.
+    /// Scene file (TOML, see crates/softgrip-scene/SCENES.md), `-` for standard input (read
+    /// once; mesh and curve paths then relative to the current folder); default: the embedded
+    /// grasp.
     pub scene: Option<PathBuf>,
     /// Write an MCAP recording (ROS 2 messages, see crates/softgrip-record/README.md).
     #[arg(long, value_name = "FILE.mcap")]
@@ -130,16 +133,16 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
     Ok(done.end)
 }
 
-/// The scene and its text (for the recording's metadata).
+/// The scene and its text as read (for the recording's metadata): the file is read once, so
+/// a pipe (`/dev/stdin`, `-`) gives its text to both (it was read twice, and the recorded
+/// text was empty).
 fn load_scene(args: &RunArgs) -> Result<(Scene, String)> {
     Ok(match &args.scene {
-        Some(path) => {
-            let scene = Scene::from_file(path)?;
-            // Read again for the metadata (the scene parsed, so the file is readable).
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("reading {}", path.display()))?;
-            (scene, text)
+        Some(path) if path.as_os_str() == "-" => {
+            let text = softgrip_scene::read_text_from(std::io::stdin().lock(), "<stdin>")?;
+            (Scene::parse(&text, "<stdin>", Path::new("."))?, text)
         }
+        Some(path) => Scene::from_file_with_text(path)?,
         None => (Scene::default_scene(), DEFAULT_SCENE.to_string()),
     })
 }
@@ -175,8 +178,13 @@ fn attach_sinks(
         ros2: None,
     };
     if let Some(out) = &args.out {
-        let sink = McapSink::with_options(out, scene, text, every, &Default::default())
-            .with_context(|| format!("creating the recording {}", out.display()))?;
+        // Without --force, created only if still absent: a file that appeared since the
+        // check is an error, never replaced.
+        let options = RecorderOptions {
+            create_new: !args.force,
+            ..Default::default()
+        };
+        let sink = McapSink::with_options(out, scene, text, every, &options)?;
         handles.recording = Some(sink.report_handle());
         sim = sim.with_recorder(sink);
     }
@@ -196,22 +204,10 @@ fn attach_sinks(
 
 /// The files a run reads: the scene, its meshes and its measured curves.
 fn inputs(scene_path: Option<&Path>, scene: &Scene) -> Vec<PathBuf> {
-    let Some(path) = scene_path else {
-        return Vec::new();
-    };
-    let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let f = scene.file();
-    let meshes = f
-        .bodies
-        .iter()
-        .flat_map(|b| &b.shapes)
-        .filter_map(|s| s.file.as_deref());
-    let curves = f.fingertips.iter().filter_map(|t| match &t.level {
-        LevelSpec::Tabulated(p) => Some(p.as_str()),
-        LevelSpec::Named(_) => None,
-    });
-    std::iter::once(path.to_path_buf())
-        .chain(meshes.chain(curves).map(|p| base.join(p)))
+    (scene_path.filter(|p| p.as_os_str() != "-"))
+        .map(Path::to_path_buf)
+        .into_iter()
+        .chain(scene.input_files())
         .collect()
 }
 

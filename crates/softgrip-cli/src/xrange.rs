@@ -2,6 +2,8 @@
 
 use std::str::FromStr;
 
+use softgrip_law::Shortest;
+
 /// Largest number of points a grid may have.
 pub const MAX_POINTS: usize = 1_000_000;
 
@@ -23,6 +25,11 @@ pub struct XRange {
 }
 
 impl XRange {
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        self.count
+    }
+
     /// The points, in increasing order.
     pub fn iter(&self) -> impl Iterator<Item = f64> + '_ {
         (0..self.count).map(move |i| self.point(i))
@@ -63,14 +70,19 @@ impl FromStr for XRange {
         );
         if start < 0.0 {
             return Err(format!(
-                "START must be >= 0 (x = delta/R is a compression), got {start}"
+                "START must be >= 0 (x = delta/R is a compression), got {}",
+                Shortest(start)
             ));
         }
         if step <= 0.0 {
-            return Err(format!("STEP must be > 0, got {step}"));
+            return Err(format!("STEP must be > 0, got {}", Shortest(step)));
         }
         if stop < start {
-            return Err(format!("STOP ({stop}) must be >= START ({start})"));
+            return Err(format!(
+                "STOP ({}) must be >= START ({})",
+                Shortest(stop),
+                Shortest(start)
+            ));
         }
         // Finite or +inf (tiny step), never NaN: stop - start >= 0 and step > 0.
         let span = (stop - start) / step;

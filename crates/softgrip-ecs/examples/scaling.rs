@@ -51,8 +51,16 @@ fn scene_text(n: usize, steps: u64) -> String {
     let half = 0.5 * side as f64 * PITCH + PITCH;
     let mut s = String::new();
     let duration = (SETTLE + steps) as f64 * DT;
-    writeln!(s, "duration = {duration}\ndt = {DT}\ngravity = [0.0, -9.81, 0.0]").ok();
-    writeln!(s, "[record]\nposes = true\nwrenches = true\ncontacts = true\n").ok();
+    writeln!(
+        s,
+        "duration = {duration}\ndt = {DT}\ngravity = [0.0, -9.81, 0.0]"
+    )
+    .ok();
+    writeln!(
+        s,
+        "[record]\nposes = true\nwrenches = true\ncontacts = true\n"
+    )
+    .ok();
     writeln!(
         s,
         "[[body]]\nname = \"ground\"\nkind = \"fixed\"\nposition = [0.0, -0.01, 0.0]\n\

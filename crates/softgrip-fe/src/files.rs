@@ -1,45 +1,13 @@
-//! [`FILES`]: the one table of the embedded FE files. Adding a file is one row here.
+//! [`FILES`]: the one table of the embedded FE files on a plane. Adding a file is one row
+//! here; the files on other counterparts are [`COUNTERPART_FILES`], written by
+//! `tools/fe/fe_campaign.py export`.
 
-use serde::de::DeserializeOwned;
-
-use crate::error::{Error, Result};
-use crate::points::FePoint;
-use crate::rows::{ForceRow, FullRow, MeshConvergenceRow, SmallXRow};
+use crate::counterpart::Counterpart;
+pub use crate::counterpart_files::COUNTERPART_FILES;
+use crate::fe_file::{FeFile, Schema};
 
 /// The provenance of the whole reference set: `tests/data/fe/README.md`, embedded.
 pub const PROVENANCE: &str = include_str!("../../../tests/data/fe/README.md");
-
-/// The column layout of a file, i.e. which row type it parses into.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Schema {
-    /// `delta_over_R, force_N, contact_radius_mm`: [`ForceRow`].
-    Force,
-    /// The force with radius estimators and run diagnostics: [`FullRow`].
-    Full,
-    /// Small-x points of both nu on two meshes: [`SmallXRow`].
-    SmallX,
-    /// Force and radius on three meshes: [`MeshConvergenceRow`].
-    MeshConvergence,
-}
-
-/// One embedded FE file.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FeFile {
-    /// Path relative to `tests/data/fe/`.
-    pub path: &'static str,
-    /// Its column layout.
-    pub schema: Schema,
-    /// Poisson ratio of every run in the file [-] (`None`: per row, [`Schema::SmallX`]).
-    pub nu: Option<f64>,
-    /// What it holds.
-    pub about: &'static str,
-    /// The construction it models: `free` (a sphere between two plates), `flat` (a hemisphere
-    /// bonded at its flat face) or `core` (a skin over a rigid core).
-    pub geometry: &'static str,
-    /// For `core`: skin thickness over outer radius t/R [-].
-    pub thickness_ratio: Option<f64>,
-    text: &'static str,
-}
 
 /// One row of [`FILES`]: the path (relative to `tests/data/fe/`), schema, nu and description.
 macro_rules! fe_file {
@@ -54,6 +22,7 @@ macro_rules! fe_file {
             about: $about,
             geometry: $geometry,
             thickness_ratio: $t,
+            counterpart: Counterpart::Plane,
             text: include_str!(concat!("../../../tests/data/fe/", $path)),
         }
     };
@@ -372,6 +341,11 @@ pub const FILES: &[FeFile] = &[
     ),
 ];
 
+/// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`].
+pub fn all() -> impl Iterator<Item = &'static FeFile> {
+    FILES.iter().chain(COUNTERPART_FILES.iter())
+}
+
 /// The file at `path` (relative to `tests/data/fe/`), if it is embedded.
 ///
 /// ```
@@ -380,7 +354,7 @@ pub const FILES: &[FeFile] = &[
 /// assert_eq!(f.points().unwrap().last().unwrap().x, 0.78);
 /// ```
 pub fn file(path: &str) -> Option<&'static FeFile> {
-    FILES.iter().find(|f| f.path == path)
+    all().find(|f| f.path == path)
 }
 
 /// The force reference at Poisson ratio `nu` (the [`Schema::Force`] file of that nu: 0.3 or
@@ -391,116 +365,31 @@ pub fn force_reference(nu: f64) -> Option<&'static FeFile> {
         .find(|f| f.schema == Schema::Force && f.nu == Some(nu) && !f.path.contains('/'))
 }
 
-impl FeFile {
-    /// The file's text as embedded.
-    pub fn text(&self) -> &'static str {
-        self.text
-    }
-
-    /// The file's own provenance: its comment lines (starting with `#`), without the `#`.
-    pub fn provenance(&self) -> Vec<&'static str> {
-        self.text
-            .lines()
-            .filter_map(|l| l.strip_prefix('#'))
-            .map(str::trim)
-            .collect()
-    }
-
-    /// The rows, typed (`T` is the row type of the file's [`Schema`]; lines starting with `#`
-    /// are comments).
-    pub fn rows<T: DeserializeOwned>(&self) -> Result<Vec<T>> {
-        csv::ReaderBuilder::new()
-            .comment(Some(b'#'))
-            .trim(csv::Trim::All)
-            .from_reader(self.text.as_bytes())
-            .deserialize()
-            .collect::<std::result::Result<Vec<T>, _>>()
-            .map_err(|source| Error {
-                path: self.path,
-                source,
-            })
-    }
-
-    /// The points, normalised like the law (force by `E*(nu)`, radius by R), in the file's
-    /// order. The radius is the file's contact radius: `contact_radius_mm`, `a_lin_mm` or, for
-    /// [`Schema::MeshConvergence`], the fine (R/60) mesh's force and radius, the mesh of the
-    /// other files.
-    pub fn points(&self) -> Result<Vec<FePoint>> {
-        let nu = self.nu.unwrap_or(f64::NAN);
-        Ok(match self.schema {
-            Schema::Force => self
-                .rows::<ForceRow>()?
-                .into_iter()
-                .map(|r| FePoint::from_si(nu, r.delta_over_r, r.force_n, r.contact_radius_mm))
-                .collect(),
-            Schema::Full => self
-                .rows::<FullRow>()?
-                .into_iter()
-                .map(|r| FePoint {
-                    min_element_j: Some(r.min_element_j),
-                    ..FePoint::from_si(nu, r.delta_over_r, r.force_n, r.a_lin_mm)
-                })
-                .collect(),
-            Schema::SmallX => self
-                .rows::<SmallXRow>()?
-                .into_iter()
-                .map(|r| FePoint::from_si(r.nu, r.delta_over_r, r.force_n, r.a_lin_mm))
-                .collect(),
-            Schema::MeshConvergence => self
-                .rows::<MeshConvergenceRow>()?
-                .into_iter()
-                .map(|r| FePoint::from_si(nu, r.delta_over_r, r.force_fine_n, r.a_fine))
-                .collect(),
-        })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn comment_lines_are_provenance_not_rows() {
-        let f = FeFile {
-            path: "free/example.csv",
-            schema: Schema::Force,
-            nu: Some(0.49),
-            about: "a file of the next campaign",
-            geometry: "free",
-            thickness_ratio: None,
-            text: "# CalculiX 2.21, free sphere\n# mesh R/60\ndelta_over_R,force_N,contact_radius_mm\n\
-                   0.01,0.0054149,0.0915245\n# a comment between rows\n0.02,0.0155219,0.141968\n",
-        };
-        assert_eq!(
-            f.provenance(),
-            [
-                "CalculiX 2.21, free sphere",
-                "mesh R/60",
-                "a comment between rows"
-            ]
-        );
-        let points = f.points().expect("parses");
-        assert_eq!(points.len(), 2);
-        assert_eq!(points[1].x, 0.02);
-        assert_eq!(points[1].radius_norm, 0.141968);
-    }
-
-    #[test]
-    fn a_malformed_number_names_the_file_and_line() {
-        let f = FeFile {
-            path: "bad.csv",
-            schema: Schema::Force,
-            nu: Some(0.3),
-            about: "",
-            geometry: "free",
-            thickness_ratio: None,
-            text: "delta_over_R,force_N,contact_radius_mm\n0.1,abc,0.3\n",
-        };
-        let err = f.points().expect_err("bad number");
-        let text = err.to_string();
-        assert!(
-            text.contains("bad.csv") && text.contains("line: 2"),
-            "{text}"
-        );
-    }
+/// The campaign's force curve of one case, keyed by what it is pressed on, the construction
+/// (`free`, `flat`, `core`), nu and (`core`) t/R: `None` if there is no such run.
+///
+/// ```
+/// use softgrip_fe::Counterpart;
+/// let f = softgrip_fe::force_file(Counterpart::Ball { k: 1.0 }, "free", 0.48, None).unwrap();
+/// assert_eq!(f.path, "ball/free/force_nu0.48_k1.csv");
+/// // At small x a ball of the fingertip's size is Hertz with R_eff = R/2: 0.7x the plane.
+/// let p = &f.points().unwrap()[0];
+/// let hertz = 4.0 / 3.0 * 0.5f64.sqrt() * p.x.powf(1.5);
+/// assert!((p.force_norm / hertz - 1.0).abs() < 0.03);
+/// # Ok::<(), softgrip_fe::Error>(())
+/// ```
+pub fn force_file(
+    counterpart: Counterpart,
+    geometry: &str,
+    nu: f64,
+    thickness_ratio: Option<f64>,
+) -> Option<&'static FeFile> {
+    all().find(|f| {
+        matches!(f.schema, Schema::Force | Schema::Force3d)
+            && f.path.contains('/')
+            && f.counterpart == counterpart
+            && f.geometry == geometry
+            && f.nu == Some(nu)
+            && f.thickness_ratio == thickness_ratio
+    })
 }

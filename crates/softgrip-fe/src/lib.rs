@@ -1,11 +1,18 @@
 #![doc = include_str!("../README.md")]
 
+mod counterpart;
+mod counterpart_files;
 mod error;
+mod fe_file;
 mod files;
 mod points;
 mod rows;
 
+pub use counterpart::Counterpart;
 pub use error::{Error, Result};
-pub use files::{FILES, FeFile, PROVENANCE, Schema, file, force_reference};
+pub use fe_file::{FeFile, Schema};
+pub use files::{COUNTERPART_FILES, FILES, PROVENANCE, all, file, force_file, force_reference};
 pub use points::{FePoint, RADIUS_MM, SHEAR_MODULUS_MPA, effective_modulus_mpa};
-pub use rows::{ForceRow, FullRow, MeshConvergenceRow, SmallXRow};
+pub use rows::{
+    Force3dRow, ForceRow, FullRow, MeshConvergenceRow, PressureMapRow, PressureRow, SmallXRow,
+};

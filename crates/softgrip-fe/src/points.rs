@@ -26,6 +26,10 @@ pub struct FePoint {
     pub radius_norm: f64,
     /// Smallest element Jacobian J [-] (volume ratio), where the file has it.
     pub min_element_j: Option<f64>,
+    /// 3D runs ([`crate::Schema::Force3d`]): the patch's semi-axis along the cylinder's axis or
+    /// the edge over R [-] ([`FePoint::radius_norm`] is the one across it); `None` for
+    /// axisymmetric runs (a circular patch).
+    pub radius_along_norm: Option<f64>,
 }
 
 impl FePoint {
@@ -37,6 +41,7 @@ impl FePoint {
             force_norm: force_n / effective_modulus_mpa(nu),
             radius_norm: radius_mm / RADIUS_MM,
             min_element_j: None,
+            radius_along_norm: None,
         }
     }
 }

@@ -99,3 +99,60 @@ pub struct MeshConvergenceRow {
     /// Radius on the extra-fine mesh \[mm\].
     pub a_xfine: f64,
 }
+
+/// A row of a 3D run's `force_nu*.csv` ([`crate::Schema::Force3d`]): a cylinder or an edge.
+/// The semi-axes are the patch's extents along the two symmetry planes, seen along the pressing
+/// direction: from the last surface node in contact (resolved to one node spacing, like
+/// `contact_radius_mm`), and from the Hertzian edge shape of the gap through the first two
+/// nodes outside (`*_32_mm`).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+pub struct Force3dRow {
+    /// Compression ratio x = delta/R [-].
+    #[serde(rename = "delta_over_R")]
+    pub delta_over_r: f64,
+    /// Force (the whole fingertip: 4 x the quarter model's) \[N\].
+    #[serde(rename = "force_N")]
+    pub force_n: f64,
+    /// Semi-axis across the cylinder's axis or the edge \[mm\].
+    pub semi_axis_across_mm: f64,
+    /// Semi-axis along the cylinder's axis or the edge \[mm\].
+    pub semi_axis_along_mm: f64,
+    /// Semi-axis across, from the gap's Hertzian edge shape \[mm\].
+    pub semi_axis_across_32_mm: f64,
+    /// Semi-axis along, from the gap's Hertzian edge shape \[mm\].
+    pub semi_axis_along_32_mm: f64,
+    /// Smallest element volume ratio J [-].
+    #[serde(rename = "min_element_J")]
+    pub min_element_j: f64,
+    /// Body volume over its initial volume [-].
+    #[serde(rename = "V_over_V0")]
+    pub v_over_v0: f64,
+    /// Largest penalty penetration over delta [-].
+    pub max_copen_over_delta: f64,
+}
+
+/// A row of a pressure profile `pressure_nu*_d*.csv` ([`crate::Schema::Pressure`]): nodal
+/// contact pressure against the deformed radius, to the contact radius (closed by p = 0).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+pub struct PressureRow {
+    /// Deformed radius of the surface node (seen along the axis) \[mm\].
+    pub r_mm: f64,
+    /// Contact pressure \[MPa\].
+    #[serde(rename = "pressure_MPa")]
+    pub pressure_mpa: f64,
+}
+
+/// A row of a 3D pressure map `pressure_nu*_d*.csv` ([`crate::Schema::PressureMap`]): one
+/// surface node in contact of the quarter model (x >= 0, z >= 0).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+pub struct PressureMapRow {
+    /// Deformed x (across the cylinder or edge) \[mm\].
+    pub x_mm: f64,
+    /// Deformed z (along it) \[mm\].
+    pub z_mm: f64,
+    /// Nodal contact pressure \[MPa\].
+    #[serde(rename = "pressure_MPa")]
+    pub pressure_mpa: f64,
+    /// Signed gap to the counterpart's true surface (<= 0: in contact) \[mm\].
+    pub gap_mm: f64,
+}

@@ -3,8 +3,17 @@
 use std::fmt;
 use std::str::FromStr;
 
+use crate::Shortest;
 use crate::backing_table::{BACKINGS, BackingInfo, BackingKind};
 use crate::error::{Error, Result};
+
+/// The thinnest skin the calibrated level (and `auto`'s reference) of a [`Backing::Core`]
+/// takes, as t/R [-]: down to it the level's tabulated form follows the form within its
+/// documented accuracy (1.2e-8 in force); below it the table drifts from the form (2e-7 at
+/// 0.01, 6e-6 at 0.001, 2e-3 at 1e-4) and below about 1e-8 the force turns negative (t/R =
+/// 1e-22 was accepted and let a fingertip fall through the floor). The FE data behind the form
+/// start at t/R = 0.2. A thinner skin needs a measured (`tabulated`) curve.
+pub const MIN_CORE_THICKNESS_RATIO: f64 = 0.05;
 
 /// How a soft fingertip of outer radius R is held by the rigid finger.
 ///
@@ -156,7 +165,7 @@ impl Backing {
 impl fmt::Display for Backing {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Backing::Core { thickness } => write!(f, "core (t = {thickness} m)"),
+            Backing::Core { thickness } => write!(f, "core (t = {} m)", Shortest(*thickness)),
             b => f.write_str(b.name()),
         }
     }

@@ -1,6 +1,6 @@
 //! The one error type of `softgrip-law`.
 
-use crate::LevelKind;
+use crate::{LevelKind, Shortest};
 
 /// Everything that can go wrong when building or querying a contact law.
 ///
@@ -10,7 +10,7 @@ use crate::LevelKind;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A parameter is outside its valid range.
-    #[error("`{field}` must be {range}, got {value}")]
+    #[error("`{field}` must be {range}, got {}", Shortest(*.value))]
     InvalidParameter {
         /// Name of the offending field or argument.
         field: &'static str,
@@ -20,7 +20,7 @@ pub enum Error {
         range: &'static str,
     },
     /// The level cannot be used with this material (e.g. the compressible theory at `nu = 0.5`).
-    #[error("level `{level}` cannot be used with Poisson ratio nu = {nu}: {reason}")]
+    #[error("level `{level}` cannot be used with Poisson ratio nu = {}: {reason}", Shortest(*.nu))]
     IncompatibleLevel {
         /// The level that was asked for.
         level: LevelKind,
@@ -42,7 +42,9 @@ pub enum Error {
     },
     /// A compression past the validity range of the level (checked API only).
     #[error(
-        "compression ratio x = delta/R = {x} is outside the validity range of level `{level}` (0 <= x <= {x_max})"
+        "compression ratio x = delta/R = {} is outside the validity range of level `{level}` (0 <= x <= {})",
+        Shortest(*.x),
+        Shortest(*.x_max)
     )]
     OutOfRange {
         /// The level that was queried.
@@ -54,7 +56,10 @@ pub enum Error {
     },
     /// A force that the level cannot produce inside its validity range (inverse queries).
     #[error(
-        "force {force} N is outside the range of level `{level}`: 0 <= F <= {force_max} N (reached at x = {x_max})"
+        "force {} N is outside the range of level `{level}`: 0 <= F <= {} N (reached at x = {})",
+        Shortest(*.force),
+        Shortest(*.force_max),
+        Shortest(*.x_max)
     )]
     ForceOutOfRange {
         /// The level that was queried.
@@ -69,7 +74,7 @@ pub enum Error {
     /// A sample of a measured curve ([`crate::TabulatedCurve`]) is invalid, or the table as a
     /// whole is (too short, columns of different lengths: then `index` is `None` and `value` is
     /// the count).
-    #[error("`{field}{}` must be {range}, got {value}", index_suffix(.index))]
+    #[error("`{field}{}` must be {range}, got {}", index_suffix(.index), Shortest(*.value))]
     InvalidTable {
         /// The column: `delta_m` \[m\] or `force_n` \[N\].
         field: &'static str,
@@ -133,7 +138,7 @@ pub enum Error {
         range: &'static str,
     },
     /// A user's [`crate::NormalisedLaw`] failed the checks of [`crate::ContactLaw::custom`].
-    #[error("custom law: {quantity} at x = {x} must be {range}, got {value}")]
+    #[error("custom law: {quantity} at x = {} must be {range}, got {}", Shortest(*.x), Shortest(*.value))]
     InvalidCustomLaw {
         /// What was checked: `x_max`, `force`, `stiffness`, `energy` or `radius`.
         quantity: &'static str,

@@ -1,6 +1,7 @@
 //! [`TabulatedCurve`]: a user's own measured squeeze curve, validated once, for the `tabulated`
 //! level ([`crate::ContactLaw::tabulated`]).
 
+use crate::Shortest;
 use crate::error::{Error, Result};
 
 /// Fewest samples with `delta > 0` a curve needs (with the origin, two cells: one interior node
@@ -145,7 +146,7 @@ fn check_order(delta_m: &[f64], force_n: &[f64], i: usize) -> Result<()> {
             format!(
                 "> delta_m[{}] = {} m (strictly increasing)",
                 i - 1,
-                delta_m[i - 1]
+                Shortest(delta_m[i - 1])
             ),
         ));
     }
@@ -157,7 +158,7 @@ fn check_order(delta_m: &[f64], force_n: &[f64], i: usize) -> Result<()> {
             format!(
                 ">= force_n[{}] = {} N (non-decreasing: a contact law may not soften)",
                 i - 1,
-                force_n[i - 1]
+                Shortest(force_n[i - 1])
             ),
         ));
     }

@@ -74,6 +74,7 @@ pub fn sweep_error(py: Python<'_>, e: &SweepError) -> PyErr {
         SweepError::Invalid { field, value, .. } => (Some(field.as_str()), Some(value.clone())),
         SweepError::Scene { .. } => (Some("scene"), None),
         SweepError::Shard { value, .. } => (Some("shard"), Some(value.clone())),
+        SweepError::Options { option, value, .. } => (Some(*option), Some(value.clone())),
         _ => (None, None),
     };
     let class = if field == Some("trial") {

@@ -60,17 +60,12 @@ struct RunData {
 enum Failure {
     Scene(SceneError),
     Recording(String),
-    Io(String),
 }
 
 fn load(source: &Source) -> Result<(Scene, String), Failure> {
     match source {
-        Source::File(path) => {
-            let scene = Scene::from_file(path).map_err(Failure::Scene)?;
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| Failure::Io(format!("reading {}: {e}", path.display())))?;
-            Ok((scene, text))
-        }
+        // Read once: a pipe gives its text only once (it was read twice, the text empty).
+        Source::File(path) => Scene::from_file_with_text(path).map_err(Failure::Scene),
         Source::Text(text, base) => Scene::parse(text, "<toml>", base)
             .map(|s| (s, text.clone()))
             .map_err(Failure::Scene),
@@ -386,7 +381,6 @@ pub fn run_scene<'py>(
         Err(Failure::Recording(m)) => {
             return Err(raise(py, "RecordingError", m, Some("mcap"), None));
         }
-        Err(Failure::Io(m)) => return Err(raise(py, "SceneError", m, None, None)),
     };
     if let Some(e) = interrupted {
         // The recording is finished; the interrupt goes on to the caller.

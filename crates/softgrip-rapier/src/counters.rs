@@ -22,9 +22,6 @@ pub struct SoftCounters {
     pub non_finite: u64,
     /// Candidate pairs that parry could not compute (unsupported shape pair).
     pub unsupported_pairs: u64,
-    /// Extra solves for contacts that begin within a (sub)step (linearised where they end:
-    /// Newton on the implicit law; 0 when every contact is resolved or already touching).
-    pub onset_solves: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the impulse solve.

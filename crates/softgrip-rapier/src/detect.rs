@@ -174,9 +174,6 @@ pub(crate) struct Scene<'a> {
     pub groups: &'a HashMap<ColliderHandle, InteractionGroups>,
     /// The fingertips and their collision groups, in handle order.
     pub tip_order: &'a [(ColliderHandle, InteractionGroups)],
-    /// The world's gravity magnitude [m/s^2]: what a body at rest gains in speed over the step
-    /// bounds its travel too (a ball released just above the ground).
-    pub gravity: f32,
 }
 
 /// Finds the soft contacts of every fingertip (`scene.tip_order`; `tips` tells the soft
@@ -186,8 +183,7 @@ pub(crate) struct Scene<'a> {
 /// Candidates come from one query of rapier's broad-phase BVH per fingertip, so the cost per
 /// fingertip depends on its neighbourhood, not on the scene. The query box is the fingertip's
 /// swept AABB grown by the largest prediction distance any pair of this fingertip can have
-/// (`0.05 R + 1.5 (|v_tip| + |w_tip| R + v_max + 2 |g| dt) dt`, `v_max` the fastest body of
-/// the world, `|g| dt` the speed gravity adds to either side within the step),
+/// (`0.05 R + 1.5 (|v_tip| + |w_tip| R + v_max) dt`, `v_max` the fastest body of the world),
 /// so it finds every collider whose BVH leaf lies within reach. rapier's narrow-phase pairs
 /// (`contact_pairs_with`) are not walked: they are the pairs of the *fattened* leaves
 /// (`0.04 length_unit` each, 4 cm at the default length unit: dozens per fingertip in a dense
@@ -251,8 +247,6 @@ struct Tip<'a> {
     /// Linear [m/s] and angular [rad/s] velocity of its body (zero without one).
     v: Vector,
     w: Vector,
-    /// The speed gravity adds to either side over the step, `|g| dt` [m/s].
-    fall: f32,
     /// Radius \[m\].
     r: f32,
     /// Its current AABB.
@@ -294,7 +288,6 @@ impl<'a> Tip<'a> {
             body,
             v,
             w,
-            fall: scene.gravity * dt as f32,
             r: ball.radius,
             aabb: collider.compute_aabb(),
             dt: dt as f32,
@@ -312,12 +305,9 @@ impl<'a> Tip<'a> {
     }
 
     /// The prediction distance \[m\] of a pair whose other side moves at up to `v_other` [m/s]
-    /// at the fingertip's radius: `0.05 R + 1.5 (|v_tip| + |w_tip| R + v_other + 2 |g| dt) dt`.
+    /// at the fingertip's radius: `0.05 R + 1.5 (|v_tip| + |w_tip| R + v_other) dt`.
     fn prediction(&self, v_other: f32) -> f32 {
-        0.05 * self.r
-            + (self.v.length() + self.w.length() * self.r + v_other + 2.0 * self.fall)
-                * self.dt
-                * 1.5
+        0.05 * self.r + (self.v.length() + self.w.length() * self.r + v_other) * self.dt * 1.5
     }
 
     /// The candidate colliders of the fingertip, in handle order, each once, written to
@@ -337,18 +327,14 @@ impl<'a> Tip<'a> {
         let sweep = self.v * self.dt;
         // Conservative reach: the ball, a margin and the largest prediction distance of its
         // pairs, so that every pair within prediction is a candidate.
-        let reach = r * 1.1
-            + (self.v.length() + self.w.length() * r + v_max + w_max * r + 2.0 * self.fall)
-                * self.dt
-                * 1.5;
+        let reach =
+            r * 1.1 + (self.v.length() + self.w.length() * r + v_max + w_max * r) * self.dt * 1.5;
         let lo = centre.min(centre + sweep) - Vector::splat(reach);
         let hi = centre.max(centre + sweep) + Vector::splat(reach);
         // The largest prediction distance of this fingertip's pairs (`prediction` with the
         // fastest other side), for the prefilter before any per-pair lookup.
-        let max_prediction = 0.05 * r
-            + (self.v.length() + self.w.length() * r + v_max + w_max * r + 2.0 * self.fall)
-                * self.dt
-                * 1.5;
+        let max_prediction =
+            0.05 * r + (self.v.length() + self.w.length() * r + v_max + w_max * r) * self.dt * 1.5;
         out.clear();
         out.extend(
             qp.intersect_aabb_conservative(Aabb::new(lo, hi))

@@ -2,12 +2,13 @@
 //! the step.
 
 use rapier3d::prelude::ColliderHandle;
+use softgrip_law::Shortest;
 
 /// Everything that can go wrong when building a fingertip or registering it with rapier.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A fingertip parameter is outside its valid range.
-    #[error("`{field}` must be {range}, got {}", number(*value))]
+    #[error("`{field}` must be {range}, got {}", Shortest(*value))]
     InvalidParameter {
         /// Name of the offending field.
         field: &'static str,
@@ -17,7 +18,7 @@ pub enum Error {
         range: &'static str,
     },
     /// A tactile pad is outside its valid range ([`TactilePad`](crate::TactilePad)).
-    #[error("`{field}` must be {range}, got {value}")]
+    #[error("`{field}` must be {range}, got {}", Shortest(*value))]
     InvalidTactilePad {
         /// Name of the offending field, e.g. `tactile.width`.
         field: &'static str,
@@ -59,7 +60,9 @@ pub enum Error {
     },
     /// The collider's ball radius differs from the fingertip's radius.
     #[error(
-        "collider {handle:?} is a ball of radius {collider_radius} m, the fingertip has radius {fingertip_radius} m (they must agree to 1e-5 relative)"
+        "collider {handle:?} is a ball of radius {} m, the fingertip has radius {} m (they must agree to 1e-5 relative)",
+        Shortest(*collider_radius),
+        Shortest(*fingertip_radius)
     )]
     RadiusMismatch {
         /// The collider that was passed.
@@ -73,14 +76,3 @@ pub enum Error {
 
 /// `Result` with this crate's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
-
-/// A value as a message shows it: plain for ordinary magnitudes, in scientific notation for
-/// huge or tiny ones (`1e39`, not 40 digits).
-fn number(v: f64) -> String {
-    let a = v.abs();
-    if a != 0.0 && a.is_finite() && !(1e-4..1e6).contains(&a) {
-        format!("{v:e}")
-    } else {
-        format!("{v}")
-    }
-}

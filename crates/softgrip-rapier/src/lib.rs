@@ -32,7 +32,7 @@ pub use fingertip::{
 pub use presets::Preset;
 pub use readout::TipContact;
 pub use substep::{AMPLITUDE_FRACTION, MAX_SUBSTEPS, SoftAccuracy};
-pub use tactile::{MAX_TAXELS_PER_SIDE, TactileGrid, TactilePad};
+pub use tactile::{MAX_TAXELS_PER_SIDE, MIN_TAXEL_SIDE_OVER_RADIUS, TactileGrid, TactilePad};
 pub use taxels::TactileImage;
 pub use world::SoftWorld;
 

@@ -123,9 +123,6 @@ pub(crate) struct Row {
     /// Inverse tangential mobility (`None`: no tangential mobility) and torsional mobility
     /// [1/(kg m^2)]: constant over a solve, computed once at its start.
     pub friction_mobility: Option<(Option<Matrix2<f64>>, f64)>,
-    /// A contact beginning within the step: the compression its law is linearised at \[m\]
-    /// (0: at the start; `step::onset`).
-    pub lin: f64,
 }
 
 /// Positional correction factor of static friction (fraction of the anchor offset removed

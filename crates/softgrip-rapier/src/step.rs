@@ -23,7 +23,7 @@ use softgrip_law::Regime;
 
 use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
 use crate::contacts::{PairState, Scratch, SoftContacts};
-use crate::detect::{self, Geom, Model, Scene, compression_from_signed_distance, to_f32, to_f64};
+use crate::detect::{self, Geom, Scene, compression_from_signed_distance, to_f32, to_f64};
 use crate::hooks::{SoftEvents, SoftHooks};
 use crate::readout;
 use crate::rigid::RigidRow;
@@ -110,7 +110,6 @@ impl Step<'_> {
             broad_phase: &self.physics.broad_phase,
             groups: &soft.groups,
             tip_order: &soft.tip_order,
-            gravity: self.physics.gravity.length(),
         };
         detect::detect(
             &scene,
@@ -482,7 +481,14 @@ impl Step<'_> {
         s.accums.begin_substep();
 
         if !s.rows.is_empty() {
-            self.solve_with_onsets(h, s);
+            let failed = solve::solve(
+                &mut s.body_table.table,
+                &mut s.rows,
+                &mut s.rigid,
+                h,
+                &mut s.solve,
+            );
+            self.soft.counters.non_finite += failed;
         }
         bodies::apply_impulses(
             &mut self.physics.bodies,
@@ -514,98 +520,6 @@ impl Step<'_> {
     }
 }
 
-impl Step<'_> {
-    /// The solve of a (sub)step, and again while a contact that does not touch at the start
-    /// but would by the end is not yet linearised where it ends (see [`onset`]): Newton on the
-    /// implicit law from the predicted compression, at most [`MAX_ONSET_PASSES`] solves. The
-    /// body table is restored before each solve again.
-    fn solve_with_onsets(&mut self, h: f64, s: &mut Scratch) {
-        let base = s.body_table.table.clone();
-        for pass in 0..MAX_ONSET_PASSES {
-            if pass > 0 {
-                s.body_table.table.copy_from_slice(&base);
-                self.soft.counters.onset_solves += 1;
-            }
-            let failed = solve::solve(
-                &mut s.body_table.table,
-                &mut s.rows,
-                &mut s.rigid,
-                h,
-                &mut s.solve,
-            );
-            let mut again = false;
-            for ((row, model), (&gi, &w)) in s
-                .rows
-                .iter_mut()
-                .zip(&s.models)
-                .zip(s.geom.iter().zip(&s.mobility))
-            {
-                let delta0 = compression_from_signed_distance(self.soft.geoms[gi].dist);
-                again |= onset(row, model, delta0, w, h);
-            }
-            if !again || pass + 1 == MAX_ONSET_PASSES {
-                self.soft.counters.non_finite += failed;
-                break;
-            }
-        }
-    }
-}
-
-/// The most solves of one (sub)step while contacts begin within it.
-const MAX_ONSET_PASSES: usize = 12;
-
-/// A contact that begins within the (sub)step: it does not touch at the start (`delta0 <= 0`,
-/// \[m\]) but its solved end velocity brings it to `delta_end = delta0 - h v_n(end) > 0`. Its
-/// row is linearised at the predicted compression instead of the start (where the law is
-/// zero): `F(δ) ≈ F(δ_L) + K(δ_L)(δ - δ_L)`, evaluated at `δ0 - θ h v(end)` with `θ` blended by
-/// the stiffness there. Unresolved (`θ = 1`), the contact is backward Euler on the law from
-/// the moment it would touch, and never gains energy; before, it penetrated a whole step's
-/// travel with no force and released the elastic energy of that penetration on the way out
-/// (the default fingertip dropped 0.5 mm at dt = 1/60 s rebounded to 13 times its height, a
-/// stiff 1 mm tip dropped 10 cm at dt = 1/30 s to 317 m). Resolved (`θ = 0`, a fine substep)
-/// it changes nothing. Returns whether the row was linearised anew (the solve must run again).
-fn onset(row: &mut Row, model: &Model, delta0: f64, w: f64, h: f64) -> bool {
-    if delta0 > 0.0 {
-        return false;
-    }
-    let d = if row.lin > 0.0 {
-        delta0 - row.theta * h * row.vn_end
-    } else {
-        delta0 - h * row.vn_end
-    };
-    if !(d > 0.0 && d.is_finite()) {
-        return false;
-    }
-    let resp = model.law.response(d);
-    if row.lin > 0.0 {
-        // Converged: the law at the prediction is the linear model's.
-        let linear = row.force + row.stiffness * (d - delta0);
-        if (resp.force - linear).abs() <= 1e-6 * resp.force.abs().max(linear.abs())
-            || (d - row.lin).abs() <= 1e-12 * model.radius
-        {
-            return false;
-        }
-    }
-    row.lin = d;
-    row.theta = if w > 0.0 {
-        theta_blend((resp.stiffness * w).sqrt() * h)
-    } else {
-        1.0
-    };
-    if row.theta == 0.0 {
-        // Resolved: the law at the start (zero) is the explicit update's.
-        row.force = 0.0;
-        row.stiffness = 0.0;
-        row.damping = 0.0;
-        return row.lin != d;
-    }
-    // The linear model at the start: F(δ_L) + K(δ_L)(δ0 - δ_L).
-    row.force = resp.force + resp.stiffness * (delta0 - d);
-    row.stiffness = resp.stiffness;
-    row.damping = model.alpha * resp.force;
-    true
-}
-
 /// A contact's row before the law's response: bodies `a` (the fingertip's) and `b` (the
 /// other's) in the body table, the geometry `g` and the friction coefficient `mu`.
 fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
@@ -632,7 +546,6 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         vn_end: 0.0,
         extended: false,
         friction_mobility: None,
-        lin: 0.0,
     }
 }
 

@@ -21,10 +21,19 @@
 //! one direction and by Gauss-Legendre quadrature (split at the disc's kinks) in the other:
 //! `Σ taxel pressure x taxel area = Σ F` for discs inside the grid.
 
+use softgrip_law::Shortest;
+
 use crate::error::{Error, Result};
 
 /// Largest number of rows or of columns of a pad.
 pub const MAX_TAXELS_PER_SIDE: u32 = 1024;
+
+/// Smallest taxel side over the fingertip's radius R [-]: a taxel narrower than 1e-6 R is
+/// integrated from differences of values of order R² (the disc's cap), which loses
+/// `1e-16 R / side` of its value (1e-10 here, all of it at 1e-16 R); its area, side² (1e-30
+/// m² at the smallest R, 1 nm), stays far above f64's range. A 1e-300 m pad had a taxel area
+/// of 0 and recorded NaN pressures.
+pub const MIN_TAXEL_SIDE_OVER_RADIUS: f64 = 1e-6;
 
 /// A tactile sensor pad (the builder's input, [`SoftFingertipBuilder::tactile`]); checked by
 /// [`SoftFingertipBuilder::build`] into a [`TactileGrid`].
@@ -52,9 +61,11 @@ pub struct TactilePad {
     /// Direction of the image's top (`+v`) in the fingertip's frame [-]: made tangent to the
     /// sphere at `direction`; finite, not parallel to `direction`.
     pub up: [f64; 3],
-    /// Width covered by the columns, along the surface \[m\], finite and > 0.
+    /// Width covered by the columns, along the surface \[m\], finite, each taxel at least
+    /// [`MIN_TAXEL_SIDE_OVER_RADIUS`] R wide.
     pub width: f64,
-    /// Height covered by the rows, along the surface \[m\], finite and > 0. The pad's corners
+    /// Height covered by the rows, along the surface \[m\], finite, each taxel at least
+    /// [`MIN_TAXEL_SIDE_OVER_RADIUS`] R high. The pad's corners
     /// lie within a quarter great circle of its centre: `sqrt(width² + height²) <= π R`.
     pub height: f64,
 }
@@ -119,15 +130,32 @@ impl TactilePad {
             })?;
         let limit = std::f64::consts::PI * radius;
         if !(self.height.is_finite() && self.height > 0.0 && self.height < limit) {
-            let range = format!("finite, > 0 m and < π R = {limit:.6e} m (along the surface)");
+            let range = format!(
+                "finite, > 0 m and < π R = {} m (along the surface)",
+                Shortest(limit)
+            );
             return Err(invalid("tactile.height", self.height, range));
         }
         let w_max = (limit * limit - self.height * self.height).sqrt();
         if !(self.width.is_finite() && self.width > 0.0 && self.width <= w_max) {
             let range = format!(
-                "finite, > 0 m and <= sqrt((π R)² - height²) = {w_max:.6e} m (the corners within a quarter great circle of the centre)"
+                "finite, > 0 m and <= sqrt((π R)² - height²) = {} m (the corners within a quarter great circle of the centre)",
+                Shortest(w_max)
             );
             return Err(invalid("tactile.width", self.width, range));
+        }
+        let min_side = MIN_TAXEL_SIDE_OVER_RADIUS * radius;
+        for (field, size, n) in [
+            ("tactile.width", self.width, self.columns),
+            ("tactile.height", self.height, self.rows),
+        ] {
+            if size / f64::from(n) < min_side {
+                let side = Shortest(min_side);
+                let range = format!(
+                    "at least {n} x {side} m ({n} taxels, each at least 1e-6 R = {side} m wide: f64 integrates smaller ones inexactly)"
+                );
+                return Err(invalid(field, size, range));
+            }
         }
         Ok(TactileGrid {
             pad: TactilePad {

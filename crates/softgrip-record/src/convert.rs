@@ -40,7 +40,7 @@ struct TipMount {
 /// What is recorded is z-up under the fixed root [`WORLD_FRAME`] (REP 103): every position,
 /// orientation and vector of the frame (scene axes, [`SceneInfo::up`]) is rotated into world
 /// axes here, once. Bodies are children of the world on `/tf`; each fingertip is a child of its
-/// body ([`fingertip_frame`]), its constant offset on `/tf_static`, which the first converted
+/// body ([`fingertip_frame`](crate::frames::fingertip_frame)), its constant offset on `/tf_static`, which the first converted
 /// step carries. Wrenches are in the fingertip's frame. Stamps are `round(step · dt · 1e9)` ns
 /// from the f64 step index and `dt` (the frame's `time` only when `dt` is unknown).
 #[derive(Debug, Clone, Default)]
@@ -306,7 +306,7 @@ fn soft_contact_msg_in(c: &ContactSample, up: UpAxis) -> SoftContactMsg {
 
 /// A fingertip's tactile image as a `sensor_msgs/Image` (`32FC1`, pressure \[Pa\],
 /// little-endian, row-major, `step = 4 columns`) stamped `time_ns` \[ns\], in the
-/// fingertip's tf frame `frame` ([`fingertip_frame`]).
+/// fingertip's tf frame `frame` ([`fingertip_frame`](crate::frames::fingertip_frame)).
 pub fn tactile_image(s: &TactileSample, frame: &str, time_ns: u64) -> Image {
     Image::tactile(Header::new(time_ns, frame), s.rows, s.columns, &s.pressure)
 }

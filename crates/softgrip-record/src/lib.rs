@@ -35,7 +35,7 @@ pub use recorder::{
     RecordingStats,
 };
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
-pub use recover::{RecoverReport, recover};
+pub use recover::{RecoverReport, recover, recover_into};
 pub use sink::{
     BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, ShapeGeometry, ShapeInfo,
     SinkError, StepFrame, StepSink, TactileSample, WrenchSample,

@@ -40,6 +40,10 @@ pub struct RecorderOptions {
     pub compression_threads: u32,
     /// zstd level; 0 is zstd's default (3). Default 0.
     pub compression_level: u32,
+    /// Create the file only if it does not exist (`O_EXCL`): a file that appeared since the
+    /// caller checked is an error, never replaced. Default false: an existing file is
+    /// truncated.
+    pub create_new: bool,
 }
 
 impl Default for RecorderOptions {
@@ -49,6 +53,7 @@ impl Default for RecorderOptions {
             compress: true,
             compression_threads: 1,
             compression_level: 0,
+            create_new: false,
         }
     }
 }
@@ -116,17 +121,24 @@ impl Recorder {
         Self::with_options(path, info, &RecorderOptions::default())
     }
 
-    /// Creates (or truncates) `path` with `options` and writes the metadata record.
+    /// Creates (or truncates, unless [`RecorderOptions::create_new`]) `path` with `options`
+    /// and writes the metadata record.
     pub fn with_options(
         path: impl AsRef<Path>,
         info: &RecordingInfo,
         options: &RecorderOptions,
     ) -> Result<Self> {
         let path = path.as_ref().to_path_buf();
-        let file = File::create(&path).map_err(|source| Error::Io {
-            path: path.clone(),
-            source,
-        })?;
+        let file = std::fs::OpenOptions::new()
+            .write(true)
+            .create(true)
+            .create_new(options.create_new)
+            .truncate(true)
+            .open(&path)
+            .map_err(|source| Error::Io {
+                path: path.clone(),
+                source,
+            })?;
         let compression = options.compress.then_some(Compression::Zstd);
         let mut writer = WriteOptions::new()
             .profile("ros2")
@@ -136,13 +148,13 @@ impl Recorder {
             .compression_level(options.compression_level)
             .chunk_size(Some(options.chunk_size.max(1)))
             .create(BufWriter::with_capacity(64 * 1024, file))
-            .map_err(Error::Write)?;
+            .map_err(|e| Error::write(&path, e))?;
         writer
             .write_metadata(&Metadata {
                 name: METADATA_NAME.into(),
                 metadata: info.to_metadata()?,
             })
-            .map_err(Error::Write)?;
+            .map_err(|e| Error::write(&path, e))?;
         Ok(Self {
             writer: Some(writer),
             path,
@@ -178,7 +190,7 @@ impl Recorder {
         let id = self
             .writer()
             .add_schema(M::TYPE_NAME, "ros2msg", text.as_bytes())
-            .map_err(Error::Write)?;
+            .map_err(|e| Error::write(&self.path, e))?;
         self.schemas.insert(M::TYPE_NAME, id);
         Ok(id)
     }
@@ -191,7 +203,7 @@ impl Recorder {
         let schema = self.schema_id::<M>()?;
         self.writer()
             .add_channel(schema, topic, "cdr", metadata)
-            .map_err(Error::Write)
+            .map_err(|e| Error::write(&self.path, e))
     }
 
     fn channel_id<M: RosMessage>(&mut self, topic: &str) -> Result<u16> {
@@ -217,7 +229,7 @@ impl Recorder {
             .expect("invariant: the writer is only taken by finish(self) and drop");
         writer
             .write_to_known_channel(&header, self.buf.as_bytes())
-            .map_err(Error::Write)
+            .map_err(|e| Error::write(&self.path, e))
     }
 
     /// Writes `msg` on `topic` at simulation time `time_ns` \[ns\] (log time = publish time).
@@ -249,13 +261,15 @@ impl Recorder {
                 name: name.into(),
                 metadata,
             })
-            .map_err(Error::Write)
+            .map_err(|e| Error::write(&self.path, e))
     }
 
     /// Closes the current chunk and hands the file everything written so far (it then
     /// survives a kill). Not needed in normal use: chunks close at `chunk_size`.
     pub fn flush(&mut self) -> Result<()> {
-        self.writer().flush().map_err(Error::Write)
+        self.writer()
+            .flush()
+            .map_err(|e| Error::write(&self.path, e))
     }
 
     /// Finishes the file: closes the last chunk, writes the summary (schemas, channels,
@@ -265,7 +279,7 @@ impl Recorder {
             .writer
             .take()
             .expect("invariant: the writer is only taken by finish(self) and drop");
-        let summary = writer.finish().map_err(Error::Write)?;
+        let summary = writer.finish().map_err(|e| Error::write(&self.path, e))?;
         let path = self.path.clone();
         writer.into_inner().into_inner().map_err(|e| Error::Io {
             path,

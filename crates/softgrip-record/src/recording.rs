@@ -263,11 +263,20 @@ impl Recording {
         file.seek(SeekFrom::Start(0)).map_err(io)?;
         let mut src = BufReader::with_capacity(READ_PIECE, file);
         if finished {
-            Self::read_finished(&mut src)
+            let rec = Self::read_finished(&mut src, || 0)?;
+            if rec.chunk_count > 0 || rec.messages.is_empty() {
+                return Ok(rec);
+            }
+            // No Statistics record: the chunks counted from the record heads.
+            let counted = complete_records_end(&mut src, len).map_err(io)?.chunks;
+            Ok(Self {
+                chunk_count: counted,
+                ..rec
+            })
         } else {
-            let (end, chunks) = complete_records_end(&mut src, len).map_err(io)?;
+            let records = complete_records_end(&mut src, len).map_err(io)?;
             src.seek(SeekFrom::Start(0)).map_err(io)?;
-            Ok(Self::recover(&mut src.take(end), end, len, chunks))
+            Ok(Self::recover(&mut src.take(records.end), &records, len))
         }
     }
 
@@ -287,16 +296,26 @@ impl Recording {
         check_magic(&bytes[..bytes.len().min(MAGIC.len())])?;
         let finished = bytes.len() >= 2 * MAGIC.len() && bytes.ends_with(MAGIC);
         if finished {
-            Self::read_finished(&mut &bytes[..])
+            Self::read_finished(&mut &bytes[..], || {
+                let mut src = BufReader::new(std::io::Cursor::new(bytes));
+                complete_records_end(&mut src, bytes.len() as u64).map_or(0, |r| r.chunks)
+            })
         } else {
             let len = bytes.len() as u64;
-            let (end, chunks) = complete_records_end(&mut std::io::Cursor::new(bytes), len)
+            let mut src = BufReader::new(std::io::Cursor::new(bytes));
+            let records = complete_records_end(&mut src, len)
                 .expect("invariant: reading memory does not fail");
-            Ok(Self::recover(&mut &bytes[..end as usize], end, len, chunks))
+            Ok(Self::recover(
+                &mut &bytes[..records.end as usize],
+                &records,
+                len,
+            ))
         }
     }
 
-    fn read_finished(src: &mut impl Read) -> Result<Self> {
+    /// Reads a finished file; `count_chunks` counts its chunks when it has no Statistics
+    /// record to say how many.
+    fn read_finished(src: &mut impl Read, count_chunks: impl FnOnce() -> u32) -> Result<Self> {
         let corrupt = |reason: String| Error::Corrupt { reason };
         let mut scan = Scan::default();
         match scan.read(src, true) {
@@ -304,23 +323,32 @@ impl Recording {
             Err(ScanStop::Damaged(reason)) => return Err(corrupt(reason)),
             Err(ScanStop::Decode(e)) => return Err(e),
         }
-        let stats = scan.statistics.take().unwrap_or_default();
+        // The Statistics record is optional (the MCAP spec; the MCAP CLI and Python's writer
+        // can leave it out, or the whole summary section): when present, it must agree.
         let read = scan.messages.len() as u64;
-        if stats.message_count != read {
-            return Err(corrupt(format!(
-                "summary section: the statistics count {} messages, the data section has {read}",
-                stats.message_count
-            )));
-        }
-        Ok(Self::from_scan(scan, stats.chunk_count, None))
+        let chunks = match scan.statistics.take() {
+            Some(stats) if stats.message_count != read => {
+                return Err(corrupt(format!(
+                    "summary section: the statistics count {} messages, the data section has {read}",
+                    stats.message_count
+                )));
+            }
+            Some(stats) => stats.chunk_count,
+            None => count_chunks(),
+        };
+        Ok(Self::from_scan(scan, chunks, None))
     }
 
-    /// Reads the `end` bytes of complete records (`chunks` of them chunks) of an unfinished
-    /// file of `file_len` bytes.
-    fn recover(src: &mut impl Read, end: u64, file_len: u64, chunks: u32) -> Self {
+    /// Reads the complete records (`records`) of an unfinished file of `file_len` bytes.
+    fn recover(src: &mut impl Read, records: &Records, file_len: u64) -> Self {
+        let (end, chunks) = (records.end, records.chunks);
         let mut scan = Scan::default();
         let stopped_because = match scan.read(src, false) {
             Ok(()) if end == file_len => "the file ends without a summary and footer".into(),
+            Ok(()) if records.zeros => format!(
+                "opcode 0x00 at byte {end}: not a record (a zero-filled tail of {} bytes)",
+                file_len - end
+            ),
             Ok(()) => format!("incomplete record at byte {end}"),
             Err(ScanStop::Damaged(reason)) => reason,
             Err(ScanStop::Decode(e)) => e.to_string(),
@@ -437,26 +465,63 @@ fn read_full(src: &mut impl Read, buf: &mut [u8]) -> std::io::Result<usize> {
     Ok(n)
 }
 
+/// Where the complete top-level records of an unfinished file end.
+struct Records {
+    /// The end of the last complete record \[bytes\].
+    end: u64,
+    /// Chunks among them.
+    chunks: u32,
+    /// Reading stopped at opcode 0x00 (no record: a zero-filled tail).
+    zeros: bool,
+}
+
 /// The end of the last complete top-level record of a file of `len` bytes (after the magic;
-/// opcode u8, body length u64 LE, body): a killed writer leaves a partial record after it.
-/// Only the 9-byte record heads are read; bodies are skipped by seeking. Also the number of
-/// chunks among those records.
-fn complete_records_end(src: &mut (impl Read + Seek), len: u64) -> std::io::Result<(u64, u32)> {
+/// opcode u8, body length u64 LE, body): a killed writer leaves a partial record after it,
+/// a crash may leave a zero-filled tail (opcode 0x00 is no record: it ends the walk at once).
+/// Only the 9-byte record heads are read; bodies are skipped within the buffer when they can
+/// be (`seek_relative`), so many small records cost no system call each.
+fn complete_records_end<R: Read + Seek>(
+    src: &mut BufReader<R>,
+    len: u64,
+) -> std::io::Result<Records> {
     let mut end = MAGIC.len() as u64;
     let mut chunks = 0;
+    src.seek(SeekFrom::Start(end))?;
     loop {
-        src.seek(SeekFrom::Start(end))?;
         let mut head = [0u8; 9];
         if read_full(src, &mut head)? < 9 {
-            return Ok((end, chunks));
+            return Ok(Records {
+                end,
+                chunks,
+                zeros: false,
+            });
+        }
+        if head[0] == 0 {
+            return Ok(Records {
+                end,
+                chunks,
+                zeros: true,
+            });
         }
         let body = u64::from_le_bytes(head[1..].try_into().expect("invariant: 8 bytes"));
         match (end + 9).checked_add(body) {
             Some(next) if next <= len => end = next,
-            _ => return Ok((end, chunks)),
+            _ => {
+                return Ok(Records {
+                    end,
+                    chunks,
+                    zeros: false,
+                });
+            }
         }
         if head[0] == mcap::records::op::CHUNK {
             chunks += 1;
+        }
+        match i64::try_from(body) {
+            Ok(b) => src.seek_relative(b)?,
+            Err(_) => {
+                src.seek(SeekFrom::Start(end))?;
+            }
         }
     }
 }

@@ -5,7 +5,7 @@
 use std::collections::BTreeSet;
 use std::fs::File;
 use std::io::{BufReader, BufWriter, Read};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use mcap::records::{Record, op};
 use mcap::{Attachment, Compression, WriteOptions, Writer};
@@ -27,6 +27,9 @@ pub struct RecoverReport {
     pub file_len: u64,
     /// Bytes of the input read as complete records.
     pub bytes_read: u64,
+    /// Records of unknown opcodes (extension records, opcode >= 0x80) skipped by their
+    /// length, as the MCAP spec asks of readers.
+    pub unknown_records: u64,
     /// Each damaged or unreadable part skipped, and why (empty for an intact file).
     pub skipped: Vec<String>,
 }
@@ -35,9 +38,46 @@ pub struct RecoverReport {
 /// can be read to `output` as a finished MCAP file (zstd chunks, message indexes, summary).
 /// A chunk whose CRC does not match is skipped; an unfinished chunk (length 2^64 - 1, as a
 /// killed writer leaves it) is decompressed as far as its bytes go and its complete records
-/// kept; reading stops at the data section's end, at a record longer than the file, or at an
-/// unknown opcode. `output` must not be `input` (the caller checks).
+/// kept; a record of an unknown opcode (an extension record, opcode >= 0x80) is skipped by its
+/// length; the data-end record and the summary section's records are read past (a damaged
+/// file may have records after a stray data-end: they are kept; the summary is rebuilt);
+/// reading stops at the footer, at a record longer than the file, or at opcode 0x00 (not a
+/// record: a zero-filled tail, where a crash left blocks unwritten).
+///
+/// `output` is written whole or not at all: to a temporary file beside it, renamed over it
+/// at the end; if it exists it must be a regular file (a rename would replace a device).
+/// [`Error::NothingRecovered`] (and no `output`) when no message could be kept. `output` must
+/// not be `input` (the caller checks).
 pub fn recover(input: &Path, output: &Path) -> Result<RecoverReport> {
+    let io = |source| Error::Io {
+        path: output.to_path_buf(),
+        source,
+    };
+    if let Ok(meta) = std::fs::metadata(output)
+        && !meta.is_file()
+    {
+        return Err(io(std::io::Error::other(
+            "exists and is not a regular file: give the path of a file to write",
+        )));
+    }
+    let dir = match output.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let mut tmp = tempfile::Builder::new()
+        .prefix(".softgrip-recover-")
+        .suffix(".mcap")
+        .tempfile_in(dir)
+        .map_err(io)?;
+    let report = recover_into(input, tmp.as_file_mut(), output)?;
+    tmp.persist(output).map_err(|e| io(e.error))?;
+    Ok(report)
+}
+
+/// [`recover`] into an open file `out` (which it fills from its start); `out_path` names it in
+/// errors. [`Error::NothingRecovered`] when no message could be kept (`out` then holds a
+/// valid MCAP file without messages, which the caller discards).
+pub fn recover_into(input: &Path, out: &mut File, out_path: &Path) -> Result<RecoverReport> {
     let io = |path: &Path| {
         let path = path.to_path_buf();
         move |source| Error::Io { path, source }
@@ -52,7 +92,6 @@ pub fn recover(input: &Path, output: &Path) -> Result<RecoverReport> {
     if magic != *mcap::MAGIC {
         return Err(Error::NotMcap);
     }
-    let out = File::create(output).map_err(io(output))?;
     let writer = WriteOptions::new()
         .profile("ros2")
         .library(format!(
@@ -60,9 +99,10 @@ pub fn recover(input: &Path, output: &Path) -> Result<RecoverReport> {
         ))
         .compression(Some(Compression::Zstd))
         .create(BufWriter::new(out))
-        .map_err(Error::Write)?;
+        .map_err(|e| Error::write(out_path, e))?;
     let mut r = Rewriter {
         writer,
+        out_path: out_path.to_path_buf(),
         schemas: BTreeSet::new(),
         channels: BTreeSet::new(),
         report: RecoverReport {
@@ -72,12 +112,31 @@ pub fn recover(input: &Path, output: &Path) -> Result<RecoverReport> {
         },
     };
     r.copy(&mut src)?;
-    r.writer.finish().map_err(Error::Write)?;
-    Ok(r.report)
+    let Rewriter {
+        mut writer,
+        out_path,
+        report,
+        ..
+    } = r;
+    writer.finish().map_err(|e| Error::write(&out_path, e))?;
+    writer
+        .into_inner()
+        .into_inner()
+        .map_err(|e| io(&out_path)(e.into_error()))?;
+    if report.messages == 0 {
+        return Err(Error::NothingRecovered {
+            file_len,
+            bytes_read: report.bytes_read,
+            skipped: report.skipped,
+        });
+    }
+    Ok(report)
 }
 
 struct Rewriter<W: std::io::Write + std::io::Seek> {
     writer: Writer<W>,
+    /// The output, named in errors.
+    out_path: PathBuf,
     schemas: BTreeSet<u16>,
     channels: BTreeSet<u16>,
     report: RecoverReport,
@@ -95,8 +154,17 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
             let opcode = head[0];
             let len = u64::from_le_bytes(head[1..].try_into().expect("invariant: 8 bytes"));
             let left = self.report.file_len.saturating_sub(at + 9);
-            if opcode == op::DATA_END || opcode == op::FOOTER {
+            if opcode == op::FOOTER {
                 return Ok(()); // the summary is rebuilt
+            }
+            if opcode == 0 {
+                // Opcode 0x00 is no record (the MCAP spec reserves it): a zero-filled tail,
+                // which a crash leaves where blocks were allocated but never written.
+                self.skip(format!(
+                    "opcode 0x00 at byte {at}: not a record (the rest of the file, {} bytes, is not MCAP records); stopped there",
+                    self.report.file_len.saturating_sub(at)
+                ));
+                return Ok(());
             }
             if len > left || len > MAX_RECORD_SIZE as u64 {
                 if opcode == op::CHUNK {
@@ -112,6 +180,17 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                 }
                 return Ok(());
             }
+            if !KNOWN_OPCODES.contains(&opcode) {
+                // An extension record (opcode >= 0x80) or one of a later MCAP version: skipped
+                // by its length, as the spec asks of readers.
+                let skipped = std::io::copy(&mut src.take(len), &mut std::io::sink()).unwrap_or(0);
+                if skipped < len {
+                    return Ok(());
+                }
+                self.report.bytes_read = at + 9 + len;
+                self.report.unknown_records += 1;
+                continue;
+            }
             let mut body = vec![0u8; len as usize];
             if read_full(src, &mut body) < body.len() {
                 return Ok(());
@@ -119,11 +198,6 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
             self.report.bytes_read = at + 9 + len;
             if opcode == op::CHUNK {
                 self.chunk(at, &body)?;
-            } else if !(0x01..=0x10).contains(&opcode) {
-                self.skip(format!(
-                    "unknown opcode 0x{opcode:02x} at byte {at}; stopped there"
-                ));
-                return Ok(());
             } else {
                 match mcap::read::parse_record(opcode, &body) {
                     Ok(rec) => self.record(rec)?,
@@ -156,6 +230,13 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                 Ok(d) => d,
                 Err(e) => {
                     self.skip(format!("chunk at byte {at}: zstd: {e}; skipped"));
+                    return Ok(());
+                }
+            },
+            "lz4" => match lz4_frame(&data, size) {
+                Ok(d) => d,
+                Err(e) => {
+                    self.skip(format!("chunk at byte {at}: lz4: {e}; skipped"));
                     return Ok(());
                 }
             },
@@ -196,6 +277,7 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
         let records = match name {
             b"" => data.to_vec(),
             b"zstd" => partial_zstd(data),
+            b"lz4" => partial_lz4(data),
             _ => Vec::new(),
         };
         let n = self.records_in(at, &records)?;
@@ -234,7 +316,7 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
         match rec {
             Record::Schema { header, data } if header.id != 0 && self.schemas.insert(header.id) => {
                 w.add_schema_with_id(header.id, &header.name, &header.encoding, &data)
-                    .map_err(Error::Write)?;
+                    .map_err(|e| Error::write(&self.out_path, e))?;
             }
             Record::Channel(c) => {
                 let schema_ok = c.schema_id == 0 || self.schemas.contains(&c.schema_id);
@@ -246,13 +328,13 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                         &c.message_encoding,
                         &c.metadata,
                     )
-                    .map_err(Error::Write)?;
+                    .map_err(|e| Error::write(&self.out_path, e))?;
                 }
             }
             Record::Message { header, data } => {
                 if self.channels.contains(&header.channel_id) {
                     w.write_to_known_channel(&header, &data)
-                        .map_err(Error::Write)?;
+                        .map_err(|e| Error::write(&self.out_path, e))?;
                     self.report.messages += 1;
                 } else {
                     self.report.skipped.push(format!(
@@ -261,7 +343,9 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                     ));
                 }
             }
-            Record::Metadata(m) => w.write_metadata(&m).map_err(Error::Write)?,
+            Record::Metadata(m) => w
+                .write_metadata(&m)
+                .map_err(|e| Error::write(&self.out_path, e))?,
             Record::Attachment { header, data, .. } => w
                 .attach(&Attachment {
                     log_time: header.log_time,
@@ -270,7 +354,7 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                     media_type: header.media_type,
                     data,
                 })
-                .map_err(Error::Write)?,
+                .map_err(|e| Error::write(&self.out_path, e))?,
             _ => {} // indexes and statistics: rebuilt
         }
         Ok(())
@@ -289,6 +373,47 @@ fn read_full(src: &mut impl Read, buf: &mut [u8]) -> usize {
     n
 }
 
+/// An LZ4 frame (MCAP's `lz4` chunks) decompressed whole, at most `limit` bytes.
+fn lz4_frame(data: &[u8], limit: usize) -> std::io::Result<Vec<u8>> {
+    let mut out = Vec::new();
+    lz4::Decoder::new(data)?
+        .take(limit as u64 + 1)
+        .read_to_end(&mut out)?;
+    if out.len() > limit {
+        return Err(std::io::Error::other(format!(
+            "decompresses past the chunk's uncompressed size ({limit} bytes)"
+        )));
+    }
+    Ok(out)
+}
+
+/// An LZ4 frame decompressed as far as its bytes go (a killed writer's), at most
+/// [`MAX_RECORD_SIZE`] bytes.
+fn partial_lz4(data: &[u8]) -> Vec<u8> {
+    let mut out = Vec::new();
+    let Ok(decoder) = lz4::Decoder::new(data) else {
+        return out;
+    };
+    read_partial(decoder, &mut out);
+    out
+}
+
+/// Reads `src` into `out` until it ends or fails (the bytes before a failure are kept), at
+/// most [`MAX_RECORD_SIZE`] bytes.
+fn read_partial(src: impl Read, out: &mut Vec<u8>) {
+    let mut src = src.take(MAX_RECORD_SIZE as u64);
+    let mut buf = vec![0u8; 64 * 1024];
+    loop {
+        match src.read(&mut buf) {
+            Ok(0) | Err(_) => break,
+            Ok(k) => out.extend_from_slice(&buf[..k]),
+        }
+    }
+}
+
+/// The opcodes of MCAP version 0 (0x01 header .. 0x10 data end).
+const KNOWN_OPCODES: std::ops::RangeInclusive<u8> = 0x01..=0x10;
+
 /// A zstd stream decompressed as far as its bytes go (a killed writer's stream ends in the
 /// middle of a frame), at most [`MAX_RECORD_SIZE`] bytes.
 fn partial_zstd(data: &[u8]) -> Vec<u8> {
@@ -296,13 +421,6 @@ fn partial_zstd(data: &[u8]) -> Vec<u8> {
     let Ok(decoder) = zstd::stream::read::Decoder::new(data) else {
         return out;
     };
-    let mut decoder = decoder.take(MAX_RECORD_SIZE as u64);
-    let mut buf = vec![0u8; 64 * 1024];
-    loop {
-        match decoder.read(&mut buf) {
-            Ok(0) | Err(_) => break,
-            Ok(k) => out.extend_from_slice(&buf[..k]),
-        }
-    }
+    read_partial(decoder, &mut out);
     out
 }

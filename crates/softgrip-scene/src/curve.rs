@@ -9,7 +9,7 @@ use serde::Deserialize;
 
 use crate::error::SceneError;
 use crate::limits::MAX_CURVE_BYTES;
-use crate::read::{ReadError, read_bounded};
+use crate::read::{ReadError, read_regular, strip_bom};
 
 /// The header a curve file must have.
 pub const CURVE_HEADER: [&str; 2] = ["delta_m", "force_n"];
@@ -35,24 +35,25 @@ struct Row {
 /// Reads a curve file: CSV with the header `delta_m,force_n` (SI units: m, N), one row per
 /// measured point; lines starting with `#` are comments (where the data came from).
 pub fn read_curve(path: &Path) -> Result<MeasuredCurve, SceneError> {
-    let bytes = read_bounded(path, MAX_CURVE_BYTES).map_err(|e| match e {
-        ReadError::Io(e) => error(path, 0, "", format!("cannot read: {e}")),
+    let bytes = read_regular(path, MAX_CURVE_BYTES).map_err(|e| match e {
         ReadError::TooLarge { limit } => SceneError::TooLarge {
             path: path.to_path_buf(),
             what: "curve",
             limit,
         },
+        e => error(path, 0, "", e.message()),
     })?;
     parse_curve(&bytes, path)
 }
 
 /// Parses the text of a curve file (see [`read_curve`]); `path` names it in errors, which
-/// carry the line (from 1) and the column at fault.
+/// carry the line (from 1) and the column at fault. A leading UTF-8 byte-order mark is not
+/// part of the header.
 pub fn parse_curve(bytes: &[u8], path: &Path) -> Result<MeasuredCurve, SceneError> {
     let mut reader = csv::ReaderBuilder::new()
         .comment(Some(b'#'))
         .trim(csv::Trim::All)
-        .from_reader(bytes);
+        .from_reader(strip_bom(bytes));
     let headers = reader
         .headers()
         .map_err(|e| csv_error(path, &e, &csv::StringRecord::new(), None))?

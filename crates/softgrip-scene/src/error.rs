@@ -110,7 +110,9 @@ pub enum SceneError {
     /// `duration / dt` is more steps than the scene's cap (`max_steps`, default
     /// [`DEFAULT_MAX_STEPS`](crate::DEFAULT_MAX_STEPS)).
     #[error(
-        "{origin}: `duration` = {duration} s at `dt` = {dt} s is {steps:.4e} steps, more than the cap of {max_steps}: raise it with `max_steps = ...` at the top of the scene file, or use a larger `dt` or a shorter `duration`"
+        "{origin}: `duration` = {} s at `dt` = {} s is {steps:.4e} steps, more than the cap of {max_steps}: raise it with `max_steps = ...` at the top of the scene file, or use a larger `dt` or a shorter `duration`",
+        softgrip_law::Shortest(*duration),
+        softgrip_law::Shortest(*dt)
     )]
     TooManySteps {
         /// The file.
@@ -123,6 +125,25 @@ pub enum SceneError {
         steps: f64,
         /// The cap in force.
         max_steps: u64,
+    },
+    /// A backed fingertip starts with its centre inside another shape (deeper than its radius),
+    /// whichever side of it the nearest surface is on.
+    #[error(
+        "{origin}: `{fingertip}` starts buried in `{other}`: {} m deep, more than its radius R = {} m (its centre is inside): move the bodies apart (SCENES.md, \"Starting in contact\")",
+        softgrip_law::Shortest(*depth),
+        softgrip_law::Shortest(*radius)
+    )]
+    StartBuried {
+        /// The file.
+        origin: String,
+        /// The fingertip, e.g. `fingertip[0]` (`left_tip`).
+        fingertip: String,
+        /// The other shape or fingertip.
+        other: String,
+        /// Penetration depth at the start \[m\].
+        depth: f64,
+        /// The fingertip's radius R \[m\].
+        radius: f64,
     },
     /// A fingertip starts pressed into another body deeper than its law's validity range.
     #[error(

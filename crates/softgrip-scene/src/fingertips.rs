@@ -4,7 +4,10 @@
 use std::collections::HashSet;
 use std::path::Path;
 
-use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material, TabulatedCurve};
+use softgrip_law::{
+    Backing, ContactLaw, ContactParams, Level, MIN_CORE_THICKNESS_RATIO, Material, Shortest,
+    TabulatedCurve,
+};
 use softgrip_rapier::{Preset, SoftFingertip, SoftFingertipBuilder};
 
 use crate::curve::{MeasuredCurve, read_curve};
@@ -41,6 +44,7 @@ pub(crate) fn check_fingertips(
         let material = material(c, t, &f)?;
         let law = law(c, t, &f, base)?;
         let backing = backing(c, t, &f)?;
+        check_core_ratio(c, t, &f, backing, &law)?;
         let builder = SoftFingertip::builder(t.radius)
             .name(t.name.clone())
             .material(material)
@@ -142,6 +146,35 @@ fn backing(
             .parse()
             .map_err(|_: String| c.invalid(f("backing"), name, &expected)),
     }
+}
+
+/// A `core` skin thinner than the calibrated level's form holds
+/// ([`MIN_CORE_THICKNESS_RATIO`] R): an error naming `core_thickness` for the levels that use
+/// the form (`calibrated`, `auto`); a measured curve holds any thickness.
+fn check_core_ratio(
+    c: &Checker,
+    t: &FingertipSpec,
+    f: &dyn Fn(&str) -> String,
+    backing: Backing,
+    law: &TipLaw,
+) -> Result<(), SceneError> {
+    let (Backing::Core { thickness }, TipLaw::Level(level)) = (backing, law) else {
+        return Ok(());
+    };
+    if !matches!(level, Level::Calibrated | Level::Auto { .. }) {
+        return Ok(());
+    }
+    let min = MIN_CORE_THICKNESS_RATIO * t.radius;
+    if thickness >= min {
+        return Ok(());
+    }
+    let range = format!(
+        "in [{} m, radius) for level `{}` (t/R >= {MIN_CORE_THICKNESS_RATIO}, radius = {} m: the calibrated core form is validated down to there; a thinner skin needs `level = {{ tabulated = \"curve.csv\" }}`)",
+        Shortest(min),
+        level.name(),
+        Shortest(t.radius)
+    );
+    Err(c.invalid(f("core_thickness"), thickness, &range))
 }
 
 /// What a fingertip's `level` (and `tolerance`) ask for.

@@ -291,11 +291,14 @@ pub struct TactileSpec {
     pub rows: u32,
     /// Columns of taxels (the image's width), in 1..=1024.
     pub columns: u32,
-    /// Direction of the pad's centre in the fingertip's frame (its body's axes), non-zero.
+    /// Direction of the pad's centre in the fingertip's frame (its body's axes), non-zero;
+    /// exactly three components (a fourth was silently dropped).
+    #[serde(deserialize_with = "exact")]
     pub direction: [f64; 3],
     /// Direction of the image's top in the fingertip's frame, not parallel to `direction`
-    /// (default `+z`, or `+x` when `direction` is within 25° of the z axis).
-    #[serde(default)]
+    /// (default `+z`, or `+x` when `direction` is within 25° of the z axis); exactly three
+    /// components.
+    #[serde(default, deserialize_with = "exact_opt")]
     pub up: Option<[f64; 3]>,
     /// Width covered by the columns, along the surface \[m\], > 0.
     pub width: f64,

@@ -35,11 +35,12 @@ pub use level::LevelSpec;
 pub use limits::{
     DEFAULT_MAX_STEPS, MAX_COORDINATE, MAX_CURVE_BYTES, MAX_DENSITY, MAX_DT, MAX_FRICTION,
     MAX_GRAVITY, MAX_MESH_BYTES, MAX_ROTATION_ANGLE, MAX_SCENE_BYTES, MAX_SIZE, MAX_SPEED,
-    MAX_TIME, MIN_DENSITY, MIN_DT, MIN_SIZE,
+    MAX_TIME, MIN_DENSITY, MIN_DT, MIN_SIZE, RESERVED_FRAME_NAMES,
 };
 pub use mesh::{Mesh, load_mesh, parse_obj, parse_stl};
 pub use plain::PlainRun;
-pub use scene::{DEFAULT_SCENE, Scene};
+pub use read::{UTF8_BOM, same_file, strip_bom};
+pub use scene::{DEFAULT_SCENE, Scene, read_text, read_text_from};
 pub use trajectory::Trajectory;
 pub use vector::vector;
 

@@ -39,3 +39,7 @@ pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 pub const MAX_MESH_BYTES: u64 = 256 << 20;
 /// Largest curve (CSV) file read \[bytes\] (16 MiB).
 pub const MAX_CURVE_BYTES: u64 = 16 << 20;
+/// Body names a scene may not use: the tf frames a recording and the ROS 2 publisher put above
+/// the bodies (`world`, `softgrip_record::WORLD_FRAME`): a body named `world` made the frame
+/// `world -> world` on /tf, a cycle no tf reader accepts.
+pub const RESERVED_FRAME_NAMES: [&str; 1] = ["world"];

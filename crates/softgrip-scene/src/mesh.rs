@@ -5,7 +5,7 @@ use std::path::Path;
 
 use crate::error::SceneError;
 use crate::limits::{MAX_COORDINATE, MAX_MESH_BYTES};
-use crate::read::{ReadError, read_bounded};
+use crate::read::{ReadError, read_regular, strip_bom, strip_bom_str};
 
 /// A triangle mesh: vertices \[m\] and counter-clockwise triangles (indices into `vertices`).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -23,13 +23,13 @@ pub fn load_mesh(path: &Path) -> Result<Mesh, SceneError> {
         line,
         message,
     };
-    let bytes = read_bounded(path, MAX_MESH_BYTES).map_err(|e| match e {
-        ReadError::Io(e) => err(0, format!("cannot read: {e}")),
+    let bytes = read_regular(path, MAX_MESH_BYTES).map_err(|e| match e {
         ReadError::TooLarge { limit } => SceneError::TooLarge {
             path: path.to_path_buf(),
             what: "mesh",
             limit,
         },
+        e => err(0, e.message()),
     })?;
     let ext = path
         .extension()
@@ -51,10 +51,11 @@ pub fn load_mesh(path: &Path) -> Result<Mesh, SceneError> {
 }
 
 /// Parses OBJ text: `v x y z` and `f i j k ...` (1-based or negative indices, `i/t/n` forms;
-/// polygons are fanned into triangles). Other lines are ignored. Errors carry the line.
+/// polygons are fanned into triangles). Other lines are ignored. Errors carry the line. A
+/// leading byte-order mark is not part of the first line (it hid the first vertex).
 pub fn parse_obj(text: &str) -> Result<Mesh, (usize, String)> {
     let mut mesh = Mesh::default();
-    for (i, line) in text.lines().enumerate() {
+    for (i, line) in strip_bom_str(text).lines().enumerate() {
         let n = i + 1;
         let mut words = line.split_whitespace();
         match words.next() {
@@ -98,7 +99,7 @@ pub fn parse_obj(text: &str) -> Result<Mesh, (usize, String)> {
 }
 
 /// Parses STL, binary (80-byte header, count, 50-byte records) or ASCII (`vertex` lines).
-/// Equal vertices are merged.
+/// Equal vertices are merged. An ASCII file may start with a byte-order mark.
 pub fn parse_stl(bytes: &[u8]) -> Result<Mesh, (usize, String)> {
     let binary_len = |b: &[u8]| {
         b.get(80..84)
@@ -117,7 +118,7 @@ pub fn parse_stl(bytes: &[u8]) -> Result<Mesh, (usize, String)> {
             }
         }
     } else {
-        let text = std::str::from_utf8(bytes)
+        let text = std::str::from_utf8(strip_bom(bytes))
             .map_err(|_| (0, String::from("neither binary STL nor ASCII text")))?;
         if !text.trim_start().starts_with("solid") {
             return Err((1, String::from("ASCII STL must start with `solid`")));

@@ -2,6 +2,7 @@
 //! checks a file once; a [`Scene`] that exists is valid.
 
 use std::collections::HashMap;
+use std::io::Read;
 use std::path::{Path, PathBuf};
 
 use softgrip_rapier::SoftFingertip;
@@ -11,8 +12,11 @@ use crate::error::SceneError;
 use crate::fingertips;
 use crate::format::SceneFile;
 use crate::gripper::GripperProgram;
+use softgrip_law::shorten_numbers;
+
+use crate::level::LevelSpec;
 use crate::limits::MAX_SCENE_BYTES;
-use crate::read::{ReadError, read_bounded};
+use crate::read::{ReadError, read_bounded, read_limited, strip_bom_str};
 use crate::start;
 use crate::validate::{self, Checker};
 
@@ -25,6 +29,8 @@ pub const DEFAULT_SCENE: &str = include_str!("../../../scenes/default.toml");
 #[derive(Debug, Clone)]
 pub struct Scene {
     origin: String,
+    /// The folder mesh and curve paths are relative to.
+    base_dir: PathBuf,
     file: SceneFile,
     shapes: Vec<Vec<SharedShape>>,
     fingertips: Vec<SoftFingertip>,
@@ -35,8 +41,9 @@ pub struct Scene {
 
 impl Scene {
     /// Parses and checks TOML text. `origin` names it in errors; mesh and curve files are
-    /// looked up relative to `base_dir`.
+    /// looked up relative to `base_dir`. A leading byte-order mark (U+FEFF) is skipped.
     pub fn parse(text: &str, origin: &str, base_dir: &Path) -> Result<Self, SceneError> {
+        let text = strip_bom_str(text);
         let file: SceneFile = toml::from_str(text).map_err(|e| {
             let (line, column) = e
                 .span()
@@ -46,7 +53,7 @@ impl Scene {
                 origin: origin.to_string(),
                 line,
                 column,
-                message: e.message().trim().to_string(),
+                message: shorten_numbers(e.message().trim()),
             }
         })?;
         let c = Checker { origin };
@@ -65,6 +72,7 @@ impl Scene {
             .collect();
         let scene = Self {
             origin: origin.to_string(),
+            base_dir: base_dir.to_path_buf(),
             file,
             shapes,
             fingertips,
@@ -77,23 +85,18 @@ impl Scene {
 
     /// Reads and checks a scene file.
     pub fn from_file(path: &Path) -> Result<Self, SceneError> {
-        let origin = path.display().to_string();
-        let io = |source| SceneError::Io {
-            origin: origin.clone(),
-            source,
-        };
-        let bytes = read_bounded(path, MAX_SCENE_BYTES).map_err(|e| match e {
-            ReadError::Io(e) => io(e),
-            ReadError::TooLarge { limit } => SceneError::TooLarge {
-                path: path.to_path_buf(),
-                what: "scene",
-                limit,
-            },
-        })?;
-        let text = String::from_utf8(bytes)
-            .map_err(|e| io(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))?;
+        Self::from_file_with_text(path).map(|(scene, _)| scene)
+    }
+
+    /// Reads a scene file once (any kind of file: a pipe such as `/dev/stdin` can be read only
+    /// once) and checks it; also returns its text as read, for a recording's metadata.
+    pub fn from_file_with_text(path: &Path) -> Result<(Self, String), SceneError> {
+        let text = read_text(path)?;
         let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        Self::parse(&text, &origin, &base)
+        Ok((
+            Self::parse(&text, &path.display().to_string(), &base)?,
+            text,
+        ))
     }
 
     /// The embedded default scene ([`DEFAULT_SCENE`]).
@@ -132,10 +135,75 @@ impl Scene {
         ((self.file.duration / self.file.dt).round() as u64).max(1)
     }
 
+    /// The folder the scene's mesh and curve paths are relative to.
+    pub fn base_dir(&self) -> &Path {
+        &self.base_dir
+    }
+
+    /// The files the scene reads besides itself: every mesh and measured curve, each once, as
+    /// resolved against [`base_dir`](Self::base_dir) (what an output must never replace).
+    pub fn input_files(&self) -> Vec<PathBuf> {
+        let meshes = (self.file.bodies.iter())
+            .flat_map(|b| &b.shapes)
+            .filter_map(|s| s.file.as_deref());
+        let curves = self.file.fingertips.iter().filter_map(|t| match &t.level {
+            LevelSpec::Tabulated(p) => Some(p.as_str()),
+            LevelSpec::Named(_) => None,
+        });
+        let mut files: Vec<PathBuf> = Vec::new();
+        for p in meshes.chain(curves).map(|p| self.base_dir.join(p)) {
+            if !files.contains(&p) {
+                files.push(p);
+            }
+        }
+        files
+    }
+
     /// Index of the body named `name`.
     pub fn body_index(&self, name: &str) -> Option<usize> {
         self.body_index.get(name).copied()
     }
+}
+
+/// A scene file's text: at most [`MAX_SCENE_BYTES`], UTF-8, a leading byte-order mark
+/// dropped. The file is opened and read once, whatever it is (a regular file, a pipe).
+pub fn read_text(path: &Path) -> Result<String, SceneError> {
+    let origin = path.display().to_string();
+    let bytes = read_bounded(path, MAX_SCENE_BYTES).map_err(|e| read_error(e, path, &origin))?;
+    utf8(bytes, &origin)
+}
+
+/// A scene's text from `reader` (standard input), as [`read_text`]; `origin` names it.
+pub fn read_text_from(reader: impl Read, origin: &str) -> Result<String, SceneError> {
+    let bytes = read_limited(reader, MAX_SCENE_BYTES)
+        .map_err(|e| read_error(e, Path::new(origin), origin))?;
+    utf8(bytes, origin)
+}
+
+fn read_error(e: ReadError, path: &Path, origin: &str) -> SceneError {
+    match e {
+        ReadError::Io(source) => SceneError::Io {
+            origin: origin.to_string(),
+            source,
+        },
+        ReadError::TooLarge { limit } => SceneError::TooLarge {
+            path: path.to_path_buf(),
+            what: "scene",
+            limit,
+        },
+        ReadError::NotRegular(kind) => SceneError::Io {
+            origin: origin.to_string(),
+            source: std::io::Error::other(format!("is {kind}")),
+        },
+    }
+}
+
+fn utf8(bytes: Vec<u8>, origin: &str) -> Result<String, SceneError> {
+    let text = String::from_utf8(bytes).map_err(|e| SceneError::Io {
+        origin: origin.to_string(),
+        source: std::io::Error::new(std::io::ErrorKind::InvalidData, e),
+    })?;
+    Ok(strip_bom_str(&text).to_string())
 }
 
 /// Line and column (from 1) of byte `offset` in `text`.

@@ -136,12 +136,36 @@ fn check_pair(
             sign * f.dot(n) < 0.0
         })
     };
-    if behind(tip, tip_co, -1.0)
-        || other_tip.is_some_and(|j| behind(&scene.fingertips()[j], other_co, 1.0))
-    {
+    // But a fingertip whose centre is inside the other shape (depth > R) is buried, whichever
+    // face the nearest surface is behind: refused (a pad buried 3R in a box ran, its normal
+    // being behind, while 2.5R was refused).
+    let depth = -(contact.dist as f64);
+    let backs = [
+        behind(tip, tip_co, -1.0).then_some((i, tip)),
+        other_tip
+            .map(|j| (j, &scene.fingertips()[j]))
+            .filter(|(_, t)| behind(t, other_co, 1.0)),
+    ];
+    if backs.iter().any(Option::is_some) {
+        if let Some((k, t)) = backs
+            .into_iter()
+            .flatten()
+            .find(|(_, t)| depth > t.radius())
+        {
+            return Err(SceneError::StartBuried {
+                origin: c.origin.to_string(),
+                fingertip: format!("fingertip[{k}] (`{}`)", t.name()),
+                other: if k == i {
+                    other_label.to_string()
+                } else {
+                    format!("fingertip[{i}] (`{}`)", tip.name())
+                },
+                depth,
+                radius: t.radius(),
+            });
+        }
         return Ok(());
     }
-    let depth = -(contact.dist as f64);
     // The law's compression ratio and validity range of the pair at this depth.
     let (x, x_max) = match other_tip {
         // A backed fingertip in the pair: the two in series on their mid-surface, valid while

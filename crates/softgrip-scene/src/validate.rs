@@ -4,6 +4,7 @@
 use std::collections::HashSet;
 use std::path::Path;
 
+use softgrip_law::Shortest;
 use softgrip_rapier::SoftAccuracy;
 use softgrip_rapier::rapier3d::prelude::SharedShape;
 
@@ -11,7 +12,7 @@ use crate::error::SceneError;
 use crate::format::{BodyKind, SceneFile, ShapeKind, ShapeSpec};
 use crate::limits::{
     MAX_COORDINATE, MAX_DENSITY, MAX_DT, MAX_FRICTION, MAX_GRAVITY, MAX_ROTATION_ANGLE, MAX_SIZE,
-    MAX_TIME, MIN_DENSITY, MIN_DT, MIN_SIZE,
+    MAX_TIME, MIN_DENSITY, MIN_DT, MIN_SIZE, RESERVED_FRAME_NAMES,
 };
 use crate::mesh::{Mesh, check_geometry, load_mesh};
 use crate::shape::shape;
@@ -129,6 +130,15 @@ pub(crate) fn check_bodies(
         let f = |s: &str| format!("body[{i}].{s}");
         if b.name.is_empty() || !names.insert(b.name.as_str()) {
             return Err(c.name(f("name"), format!("`{}` is empty or used twice", b.name)));
+        }
+        if RESERVED_FRAME_NAMES.contains(&b.name.as_str()) {
+            return Err(c.name(
+                f("name"),
+                format!(
+                    "`{}` is reserved: it is the recordings' fixed root frame, the parent of every body's frame on /tf (REP 103); rename the body",
+                    b.name
+                ),
+            ));
         }
         c.coords(f("position"), b.position)?;
         c.finite3(f("rotation"), b.rotation)?;
@@ -281,7 +291,7 @@ pub(crate) fn shapes(
 fn check_time(c: &Checker, file: &SceneFile) -> Result<(), SceneError> {
     c.range("dt", file.dt, (MIN_DT, MAX_DT), "s")?;
     if !(file.duration.is_finite() && file.duration >= file.dt) {
-        let expected = format!("finite and >= `dt` = {} s", file.dt);
+        let expected = format!("finite and >= `dt` = {} s", Shortest(file.dt));
         return Err(c.invalid("duration", file.duration, &expected));
     }
     if file.max_steps == 0 {

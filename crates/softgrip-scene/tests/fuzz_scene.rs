@@ -5,6 +5,13 @@
 //! types) or its text (byte flips, truncation), parses it, and, if it is accepted, builds it
 //! and runs a few steps: no panic, every pose finite, every fingertip force finite.
 //!
+//! The classes of issue 26 too: names replaced by the reserved `world`, 4-component vectors,
+//! mesh and curve paths pointing at a FIFO, a directory, a device or files with a byte-order
+//! mark, and the scene text itself with a byte-order mark (it must parse exactly as without).
+//! Every error message must print its numbers in shortest form (no run of more than 24
+//! digits: 1e300 was printed as 301), and no case may block (a watchdog aborts after 120 s:
+//! a FIFO opened for reading blocked forever).
+//!
 //! `SOFTGRIP_FUZZ_ITERS=N` sets the number of cases (default [`DEFAULT_ITERS`], ~10 s in a
 //! debug build); `SOFTGRIP_FUZZ_SEED=S` the seed. A failure prints the seed, the case and the
 //! mutated scene text: paste it into a named regression test.
@@ -19,6 +26,42 @@ use toml::Value;
 
 /// Cases per `cargo test` run.
 const DEFAULT_ITERS: u64 = 800;
+
+/// Non-regular files and files with a byte-order mark the mutations point meshes and curves
+/// at (absolute paths, made by [`hostile_files`]).
+const FIFO_OBJ: &str = "/tmp/softgrip-fuzz-scene-files/pipe.obj";
+const FIFO_CSV: &str = "/tmp/softgrip-fuzz-scene-files/pipe.csv";
+const DIR_OBJ: &str = "/tmp/softgrip-fuzz-scene-files/folder.obj";
+const BOM_OBJ: &str = "/tmp/softgrip-fuzz-scene-files/bom.obj";
+const BOM_CSV: &str = "/tmp/softgrip-fuzz-scene-files/bom.csv";
+
+/// Makes the files of [`FIFO_OBJ`] and the others.
+fn hostile_files() {
+    let dir = Path::new(FIFO_OBJ).parent().unwrap();
+    std::fs::create_dir_all(dir).unwrap();
+    for fifo in [FIFO_OBJ, FIFO_CSV] {
+        if !Path::new(fifo).exists() {
+            let made = std::process::Command::new("mkfifo")
+                .arg(fifo)
+                .status()
+                .unwrap();
+            assert!(made.success());
+        }
+    }
+    std::fs::create_dir_all(DIR_OBJ).unwrap();
+    let tet = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    std::fs::write(BOM_OBJ, format!("\u{feff}{tet}")).unwrap();
+    let curve = "delta_m,force_n\n0.0005,0.4\n0.001,1.2\n0.002,3.5\n0.003,6.8\n0.004,11.0\n";
+    std::fs::write(BOM_CSV, format!("\u{feff}{curve}")).unwrap();
+}
+
+/// The longest run of ASCII digits in `s`.
+fn digit_run(s: &str) -> usize {
+    s.split(|c: char| !c.is_ascii_digit())
+        .map(str::len)
+        .max()
+        .unwrap_or(0)
+}
 /// Steps run of every accepted scene.
 const STEPS: u64 = 12;
 
@@ -83,7 +126,7 @@ fn hostile(rng: &mut Rng, old: &Value) -> Value {
         1e-300,
         1e7,
     ];
-    match rng.below(10) {
+    match rng.below(11) {
         0 | 1 => Value::Float(numbers[rng.below(numbers.len())]),
         // Plausible values: a number scaled by 10^k (below) or by a factor in [1/4, 4].
         8 | 9 => match old {
@@ -97,13 +140,31 @@ fn hostile(rng: &mut Rng, old: &Value) -> Value {
             Value::Integer(i) => Value::Integer(i.wrapping_mul(1 << rng.below(40))),
             _ => Value::Integer(i64::MAX),
         },
-        3 => Value::String(["NaN", "inf", "1e39", "", "auto"][rng.below(5)].to_string()),
+        3 => Value::String(
+            [
+                "NaN",
+                "inf",
+                "1e39",
+                "",
+                "auto",
+                "world",
+                FIFO_OBJ,
+                FIFO_CSV,
+                DIR_OBJ,
+                "/dev/zero",
+                BOM_OBJ,
+                BOM_CSV,
+            ][rng.below(12)]
+            .to_string(),
+        ),
         4 => Value::Boolean(true),
         5 => Value::Array(
             (0..[0, 1, 2, 4, 1000][rng.below(5)])
                 .map(|_| Value::Float(1e39))
                 .collect(),
         ),
+        // A plausible direction with a fourth component (tactile `direction` dropped it).
+        10 => Value::Array([1.0, 0.0, 0.0, 5.0].map(Value::Float).to_vec()),
         6 => Value::Integer([0, -1, i64::MAX, i64::MIN, 1 << 40][rng.below(5)]),
         _ => Value::Table(toml::Table::new()),
     }
@@ -201,9 +262,28 @@ fn case(rng: &mut Rng, text: &str) -> String {
 /// The target: parse, validate and build `text`; if accepted, run a few steps. `Ok` says
 /// whether the scene was accepted, `Err` what broke (a panic is caught by the caller).
 pub fn scene_target(text: &str, base: &Path) -> Result<bool, String> {
-    let Ok(scene) = Scene::parse(text, "fuzz.toml", base) else {
-        return Ok(false); // rejected with a typed error: fine
+    let parsed = Scene::parse(text, "fuzz.toml", base);
+    // A byte-order mark before the text changes nothing.
+    let with_mark = Scene::parse(&format!("\u{feff}{text}"), "fuzz.toml", base);
+    match (&parsed, &with_mark) {
+        (Ok(a), Ok(b)) if a.file() == b.file() => {}
+        (Err(a), Err(b)) if a.to_string() == b.to_string() => {}
+        _ => return Err("a byte-order mark changed the scene".into()),
+    }
+    let scene = match parsed {
+        Ok(scene) => scene,
+        Err(e) => {
+            // Rejected with a typed error: fine, if its numbers are in shortest form.
+            let m = e.to_string();
+            if digit_run(&m) > 24 {
+                return Err(format!("a number not in shortest form: {m}"));
+            }
+            return Ok(false);
+        }
     };
+    if let Some(b) = scene.file().bodies.iter().find(|b| b.name == "world") {
+        return Err(format!("a body named `{}` was accepted", b.name));
+    }
     let mut run = PlainRun::new(&scene);
     for step in 0..scene.steps().min(STEPS) {
         run.step();
@@ -231,13 +311,33 @@ fn fuzz_scene_parser_validator_builder() {
     let seed = env("SOFTGRIP_FUZZ_SEED", 0x5EED_0011);
     let corpus = corpus();
     let base = scenes_dir();
+    hostile_files();
     let mut rng = Rng(seed);
+    // A case that blocks (a FIFO opened for reading) never returns: the watchdog ends the
+    // process with the case's number after 120 s without progress.
+    let progress = std::sync::Arc::new(std::sync::atomic::AtomicU64::new(0));
+    {
+        let progress = progress.clone();
+        std::thread::spawn(move || {
+            let mut last = u64::MAX;
+            loop {
+                std::thread::sleep(std::time::Duration::from_secs(120));
+                let now = progress.load(std::sync::atomic::Ordering::SeqCst);
+                if now == last {
+                    eprintln!("fuzz_scene: case {now} blocked for 120 s (seed {seed:#x})");
+                    std::process::abort();
+                }
+                last = now;
+            }
+        });
+    }
     let (mut accepted, start) = (0u64, std::time::Instant::now());
     // Quiet the default hook while panics are caught (they are reported below).
     let hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));
     let mut failure = None;
     for i in 0..iters {
+        progress.store(i, std::sync::atomic::Ordering::SeqCst);
         let (name, text) = &corpus[rng.below(corpus.len())];
         let mutated = case(&mut rng, text);
         match catch_unwind(AssertUnwindSafe(|| scene_target(&mutated, &base))) {

@@ -1,6 +1,8 @@
 //! [`Axis`]: one varied field and its values (a `values` list or `n` random draws), and the
 //! grid: trial index -> one value index per axis, the last axis fastest.
 
+use softgrip_scene::softgrip_rapier::softgrip_law::Shortest;
+
 use crate::file::VarySpec;
 use crate::path::FieldPath;
 use crate::random;
@@ -38,13 +40,13 @@ impl Axis {
             (None, Some(r)) => {
                 let field = |f: &str| at(&format!("random.{f}"));
                 if !r.low.is_finite() {
-                    return Err((field("low"), r.low.to_string(), "finite".into()));
+                    return Err((field("low"), Shortest(r.low).to_string(), "finite".into()));
                 }
                 if !(r.high.is_finite() && r.high > r.low) {
                     return Err((
                         field("high"),
-                        r.high.to_string(),
-                        format!("finite and > `low` = {}", r.low),
+                        Shortest(r.high).to_string(),
+                        format!("finite and > `low` = {}", Shortest(r.low)),
                     ));
                 }
                 if !(1..=MAX_TRIALS as i64).contains(&r.n) {
@@ -97,6 +99,17 @@ fn list(field: &str, values: &[toml::Value]) -> Result<Vec<Value>, AxisError> {
             )
         })?;
         out.push(value);
+    }
+    // NaN and infinities are no value of any scene field, and would reach the results.
+    if let Some(j) = out
+        .iter()
+        .position(|v| matches!(v, Value::Float(x) if !x.is_finite()))
+    {
+        return Err((
+            format!("{field}[{j}]"),
+            out[j].to_string(),
+            "a finite number (not nan or inf)".into(),
+        ));
     }
     let any_float = out.iter().any(|v| v.kind() == ValueKind::Float);
     if any_float {
@@ -179,5 +192,32 @@ mod tests {
         assert_eq!(e.0, "vary[0].values");
         let e = Axis::from_spec(0, &spec("[[1.0]]")).expect_err("array");
         assert_eq!(e.0, "vary[0].values[0]");
+    }
+
+    /// `values = [nan, inf]` was accepted and NaN reached the results: each non-finite value
+    /// is an error naming its index.
+    #[test]
+    fn nan_and_inf_values_are_errors_naming_the_index() {
+        let spec = |values: &str| VarySpec {
+            field: "gripper.hold".into(),
+            values: Some(
+                toml::from_str::<toml::Table>(&format!("v = {values}")).expect("toml")["v"]
+                    .as_array()
+                    .expect("array")
+                    .clone(),
+            ),
+            random: None,
+        };
+        for (values, index, shown) in [
+            ("[nan, inf]", 0, "NaN"),
+            ("[1.0, inf]", 1, "inf"),
+            ("[1, 2, -inf]", 2, "-inf"),
+            ("[0.5, -nan]", 1, "NaN"),
+        ] {
+            let e = Axis::from_spec(2, &spec(values)).expect_err(values);
+            assert_eq!(e.0, format!("vary[2].values[{index}]"), "{values}");
+            assert_eq!(e.1, shown, "{values}");
+            assert!(e.2.contains("finite"), "{values}: {}", e.2);
+        }
     }
 }

@@ -1,6 +1,7 @@
 //! The results table as CSV (`csv` crate): one header line of [`ResultsTable::columns`], one
 //! line per trial; an error row has empty outcome cells and its message in `error`.
 
+use std::io::Write;
 use std::path::Path;
 
 use crate::error::SweepError;
@@ -46,12 +47,10 @@ impl ResultsTable {
         String::from_utf8(bytes).expect("invariant: the cells are UTF-8")
     }
 
-    /// Writes [`ResultsTable::to_csv`] to `path`.
+    /// Writes [`ResultsTable::to_csv`] to `path`: the whole file or none (written to a
+    /// temporary file beside it, then renamed over `path`).
     pub fn write_csv(&self, path: &Path) -> Result<(), SweepError> {
-        std::fs::write(path, self.to_csv()).map_err(|source| SweepError::Io {
-            path: path.to_path_buf(),
-            source,
-        })
+        write_whole(path, self.to_csv().as_bytes())
     }
 
     /// Reads a results CSV file back.
@@ -144,6 +143,28 @@ impl ResultsTable {
             rows,
         })
     }
+}
+
+/// Writes `bytes` to a temporary file in `path`'s folder and renames it to `path` (replacing
+/// a file there): a reader of `path` sees the old file or the whole new one, and an
+/// interrupted write leaves no file cut mid-row.
+pub(crate) fn write_whole(path: &Path, bytes: &[u8]) -> Result<(), SweepError> {
+    let io = |source| SweepError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let mut tmp = tempfile::Builder::new()
+        .prefix(".softgrip-")
+        .suffix(".tmp")
+        .tempfile_in(dir)
+        .map_err(io)?;
+    tmp.write_all(bytes).map_err(io)?;
+    tmp.persist(path).map_err(|e| io(e.error))?;
+    Ok(())
 }
 
 /// The type of a column of cells (see [`ResultsTable::from_csv`]).

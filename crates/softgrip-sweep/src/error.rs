@@ -54,6 +54,16 @@ pub enum SweepError {
         /// What is wrong.
         message: String,
     },
+    /// A run option is outside its range (`threads`).
+    #[error("`{option}` must be {expected}, got {value}")]
+    Options {
+        /// The option, e.g. `threads`.
+        option: &'static str,
+        /// The value given.
+        value: String,
+        /// The valid range.
+        expected: String,
+    },
     /// A results file (CSV or Parquet) could not be written or read back.
     #[error("{}: {message}", path.display())]
     Results {

@@ -17,6 +17,7 @@ use parquet::file::writer::SerializedFileWriter;
 use parquet::record::Field;
 use parquet::schema::types::Type;
 
+use crate::csv_io::write_whole;
 use crate::error::SweepError;
 use crate::table::{OUTCOME_COLUMNS, ResultsTable, TrialRow};
 use crate::trial::Outcome;
@@ -140,12 +141,19 @@ impl ResultsTable {
         cols
     }
 
-    /// Writes the table to `path` as Parquet.
+    /// Writes the table to `path` as Parquet: the whole file or none (written to a temporary
+    /// file beside it, then renamed over `path`).
     pub fn write_parquet(&self, path: &Path) -> Result<(), SweepError> {
-        let fail = |e: parquet::errors::ParquetError| SweepError::Results {
+        let bytes = self.to_parquet().map_err(|message| SweepError::Results {
             path: path.to_path_buf(),
-            message: e.to_string(),
-        };
+            message,
+        })?;
+        write_whole(path, &bytes)
+    }
+
+    /// The table as the bytes of a Parquet file.
+    pub fn to_parquet(&self) -> Result<Vec<u8>, String> {
+        let fail = |e: parquet::errors::ParquetError| e.to_string();
         let cols = self.parquet_columns();
         let fields = cols
             .iter()
@@ -168,12 +176,9 @@ impl ResultsTable {
             .with_fields(fields)
             .build()
             .map_err(fail)?;
-        let file = File::create(path).map_err(|source| SweepError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
         let props = Arc::new(WriterProperties::builder().build());
-        let mut writer = SerializedFileWriter::new(file, Arc::new(schema), props).map_err(fail)?;
+        let mut writer =
+            SerializedFileWriter::new(Vec::new(), Arc::new(schema), props).map_err(fail)?;
         let mut group = writer.next_row_group().map_err(fail)?;
         for c in &cols {
             let mut w = group
@@ -191,8 +196,7 @@ impl ResultsTable {
             w.close().map_err(fail)?;
         }
         group.close().map_err(fail)?;
-        writer.close().map_err(fail)?;
-        Ok(())
+        writer.into_inner().map_err(fail)
     }
 
     /// Reads a results Parquet file back (one written by [`ResultsTable::write_parquet`], or

@@ -3,6 +3,7 @@
 //! ([`Sweep::run_trial`]: what a Ray task or an array job calls) or all in parallel
 //! ([`Sweep::run`]).
 
+use std::io::Read;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -10,6 +11,8 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 use softgrip_ecs::{BodyKind, Scene, SceneError};
+use softgrip_scene::same_file;
+use softgrip_scene::softgrip_rapier::softgrip_law::shorten_numbers;
 
 use crate::axis::{Axis, grid_indices, trial_count};
 use crate::error::SweepError;
@@ -22,10 +25,45 @@ use crate::value::Value;
 /// How [`Sweep::run`] runs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct RunOptions {
-    /// Worker threads, one trial each at a time; 0 = one per core (rayon's default).
+    /// Worker threads, one trial each at a time; 0 = one per core (rayon's default); at most
+    /// [`max_threads`].
     pub threads: usize,
     /// The slice of the trials to run ([`Shard::WHOLE`] by default).
     pub shard: Shard,
+}
+
+/// Worker threads per core at most: trials are CPU-bound, so threads beyond the cores only
+/// take memory and time to start (`--threads 100000` spent minutes spawning threads).
+pub const THREADS_PER_CORE: usize = 4;
+
+/// The largest [`RunOptions::threads`]: [`THREADS_PER_CORE`] times the cores this process may
+/// use (`std::thread::available_parallelism`; 1 if unknown).
+pub fn max_threads() -> usize {
+    THREADS_PER_CORE * std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+impl RunOptions {
+    /// [`SweepError::Options`] naming `threads` unless it is 0 or in 1..=[`max_threads`].
+    pub fn check(&self) -> Result<(), SweepError> {
+        check_threads(self.threads)
+    }
+}
+
+/// [`SweepError::Options`] naming `threads` unless `threads` is 0 (one per core) or in
+/// 1..=[`max_threads`].
+pub fn check_threads(threads: usize) -> Result<(), SweepError> {
+    let max = max_threads();
+    if threads <= max {
+        return Ok(());
+    }
+    Err(SweepError::Options {
+        option: "threads",
+        value: threads.to_string(),
+        expected: format!(
+            "0 (one per core) or in 1..={max} ({THREADS_PER_CORE} per core of the {} this process may use)",
+            max / THREADS_PER_CORE
+        ),
+    })
 }
 
 /// A checked sweep: the base scene, the object, the axes. A `Sweep` that exists has a valid
@@ -34,6 +72,9 @@ pub struct RunOptions {
 #[derive(Debug, Clone)]
 pub struct Sweep {
     origin: String,
+    /// The files the sweep reads: the sweep file (when read from one), the base scene, its
+    /// meshes and curves.
+    inputs: Vec<PathBuf>,
     scene_origin: String,
     scene_dir: PathBuf,
     base: toml::Table,
@@ -44,14 +85,29 @@ pub struct Sweep {
 }
 
 impl Sweep {
-    /// Reads and checks a sweep file (its scene is relative to it).
+    /// Reads and checks a sweep file (its scene is relative to it): at most
+    /// [`MAX_SWEEP_BYTES`], read once (a pipe works), a leading byte-order mark skipped.
     pub fn from_path(path: &Path) -> Result<Self, SweepError> {
-        let text = std::fs::read_to_string(path).map_err(|source| SweepError::Io {
+        let io = |source| SweepError::Io {
             path: path.to_path_buf(),
             source,
-        })?;
+        };
+        let mut bytes = Vec::new();
+        std::fs::File::open(path)
+            .and_then(|f| f.take(MAX_SWEEP_BYTES + 1).read_to_end(&mut bytes))
+            .map_err(io)?;
+        if bytes.len() as u64 > MAX_SWEEP_BYTES {
+            return Err(io(std::io::Error::other(format!(
+                "larger than the {} MiB limit of a sweep file",
+                MAX_SWEEP_BYTES >> 20
+            ))));
+        }
+        let text = String::from_utf8(bytes)
+            .map_err(|e| io(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))?;
         let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        Self::parse(&text, &path.display().to_string(), &base)
+        let mut sweep = Self::parse(&text, &path.display().to_string(), &base)?;
+        sweep.inputs.insert(0, path.to_path_buf());
+        Ok(sweep)
     }
 
     /// Checks sweep TOML text whose relative paths (`scene`, `mcap_dir`) are relative to
@@ -63,6 +119,7 @@ impl Sweep {
 
     /// Checks sweep TOML text; `origin` names it in errors.
     pub fn parse(text: &str, origin: &str, base_dir: &Path) -> Result<Self, SweepError> {
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let file: SweepFile = toml::from_str(text).map_err(|e| {
             let (line, column) = e
                 .span()
@@ -72,7 +129,7 @@ impl Sweep {
                 origin: origin.to_string(),
                 line,
                 column,
-                message: e.message().trim().to_string(),
+                message: shorten_numbers(e.message().trim()),
             }
         })?;
         let scene_err = |message: String| SweepError::Scene {
@@ -86,9 +143,7 @@ impl Sweep {
             expected,
         };
         let scene_path = base_dir.join(&file.scene);
-        let scene = Scene::from_file(&scene_path).map_err(|e| scene_err(e.to_string()))?;
-        let scene_text = std::fs::read_to_string(&scene_path)
-            .map_err(|e| scene_err(format!("{}: {e}", scene_path.display())))?;
+        let (scene, scene_text) = read_base_scene(&scene_path).map_err(scene_err)?;
         let base: toml::Table = toml::from_str(&scene_text)
             .map_err(|e| scene_err(format!("{}: {e}", scene_path.display())))?;
         if scene.gripper().is_none() {
@@ -122,8 +177,10 @@ impl Sweep {
             .parent()
             .map(Path::to_path_buf)
             .unwrap_or_default();
+        let inputs = input_files(&scene_path, &scene, &scene_dir, &axes);
         let sweep = Self {
             origin: origin.to_string(),
+            inputs,
             scene_origin: scene_path.display().to_string(),
             scene_dir,
             base,
@@ -180,6 +237,14 @@ impl Sweep {
             .iter()
             .map(|a| a.path.as_str().to_string())
             .collect()
+    }
+
+    /// The files the sweep reads, which no output may replace: the sweep file (when read with
+    /// [`from_path`](Self::from_path)), the base scene, its meshes and measured curves, and
+    /// every string value of an axis that names an existing file relative to the base scene
+    /// (a varied curve or mesh).
+    pub fn input_files(&self) -> &[PathBuf] {
+        &self.inputs
     }
 
     /// The body whose hold decides `held`.
@@ -249,6 +314,15 @@ impl Sweep {
         let outcome = match scene {
             Err(e) => Err(e.to_string()),
             Ok((scene, text)) => catch_unwind(AssertUnwindSafe(|| {
+                if let Some(path) = &mcap
+                    && let Some(input) = self.inputs.iter().find(|i| same_file(path, i))
+                {
+                    return Err(format!(
+                        "the recording {} would replace the sweep's input {}: choose another `mcap_dir`",
+                        path.display(),
+                        input.display()
+                    ));
+                }
                 if let Some(dir) = &self.mcap_dir {
                     std::fs::create_dir_all(dir)
                         .map_err(|e| format!("creating {}: {e}", dir.display()))?;
@@ -282,6 +356,20 @@ impl Sweep {
         options: &RunOptions,
         progress: &(dyn Fn(u64, u64) + Sync),
     ) -> Result<ResultsTable, SweepError> {
+        self.run_until(options, progress, &|| false)
+    }
+
+    /// [`run`](Self::run), stopping early once `stop()` is true (a signal: `softgrip sweep`
+    /// passes its SIGINT/SIGTERM/SIGHUP flag): trials already running finish, no trial starts
+    /// after it, and the table holds every finished trial's row, in trial order (the trials
+    /// not run are absent, not error rows).
+    pub fn run_until(
+        &self,
+        options: &RunOptions,
+        progress: &(dyn Fn(u64, u64) + Sync),
+        stop: &(dyn Fn() -> bool + Sync),
+    ) -> Result<ResultsTable, SweepError> {
+        options.check()?;
         let range = options.shard.range(self.trials);
         let total = range.end - range.start;
         let done = AtomicU64::new(0);
@@ -295,10 +383,13 @@ impl Sweep {
         let rows = pool.install(|| {
             range
                 .into_par_iter()
-                .map(|i| {
+                .filter_map(|i| {
+                    if stop() {
+                        return None;
+                    }
                     let row = self.run_trial(i);
                     progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-                    row
+                    Some(row)
                 })
                 .collect::<Result<Vec<_>, _>>()
         })?;
@@ -306,6 +397,42 @@ impl Sweep {
         table.rows = rows;
         Ok(table)
     }
+}
+
+/// The base scene, its meshes and curves, and every string value of an axis that names an
+/// existing file relative to the base scene (a varied curve or mesh), each once.
+fn input_files(scene_path: &Path, scene: &Scene, scene_dir: &Path, axes: &[Axis]) -> Vec<PathBuf> {
+    let mut files = vec![scene_path.to_path_buf()];
+    let texts = (axes.iter().flat_map(|a| &a.values)).filter_map(|v| match v {
+        Value::Text(t) => Some(scene_dir.join(t)),
+        _ => None,
+    });
+    for p in scene
+        .input_files()
+        .into_iter()
+        .chain(texts.filter(|p| p.is_file()))
+    {
+        if !files.contains(&p) {
+            files.push(p);
+        }
+    }
+    files
+}
+
+/// Largest sweep file read \[bytes\] (16 MiB).
+pub const MAX_SWEEP_BYTES: u64 = 16 << 20;
+
+/// The base scene and its text, read once. It must be a regular file: a FIFO named as the
+/// base scene would block the read forever.
+fn read_base_scene(path: &Path) -> Result<(Scene, String), String> {
+    let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    if !meta.is_file() {
+        return Err(format!(
+            "{}: not a regular file (a directory, FIFO or device): the base scene must be a file",
+            path.display()
+        ));
+    }
+    Scene::from_file_with_text(path).map_err(|e| e.to_string())
 }
 
 /// The body that decides `held`: `named`, or the scene's only dynamic body.

@@ -2,20 +2,26 @@
 //! headers: `contacts.csv` (every `SoftContactMsg` field), `wrenches.csv`, `poses.csv`,
 //! `clock.csv`. (`/softgrip/markers` is for 3D views and is not exported.) Each file's row is a
 //! serde struct written by the `csv` crate (its field names are the header).
+//!
+//! The four files are written whole or not at all: into temporary files beside them, put in
+//! place together at the end. SIGINT, SIGTERM or SIGHUP during the export removes the
+//! temporary files and exits 128 + the signal with nothing written (a CSV cut mid-row was
+//! left before).
 
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, anyhow};
 use serde::Serialize;
 use softgrip_ecs::softgrip_record::msgs::geometry_msgs::TransformStamped;
 use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_ecs::softgrip_record::{Message, Recording, topics};
 
 use super::{fingertips, open, seconds};
-use crate::files::check_output;
+use crate::files::{Output, check_output, commit_all};
+use crate::signals::Stop;
 
 /// Arguments of `softgrip export`.
 #[derive(Debug, Clone, clap::Args)]
@@ -165,9 +171,10 @@ struct ClockRow {
     clock_s: f64,
 }
 
-/// One CSV file of rows `R`, and its row count.
+/// One CSV file of rows `R` being written (into its [`Output`]'s temporary file), and its row
+/// count.
 struct Table<R> {
-    name: &'static str,
+    output: Output,
     writer: csv::Writer<BufWriter<File>>,
     rows: usize,
     _row: PhantomData<fn(R)>,
@@ -180,13 +187,15 @@ fn builder() -> csv::WriterBuilder {
     b
 }
 
+/// Messages exported between two looks at the signal flag.
+const SIGNAL_CHECK_EVERY: usize = 256;
+
 impl<R: Serialize + Default> Table<R> {
-    /// Creates `dir/name` with its header line (the field names of `R`), so that a file with
+    /// Starts `dir/name` with its header line (the field names of `R`), so that a file with
     /// no rows still says what its columns are.
-    fn create(dir: &Path, name: &'static str) -> Result<Self> {
-        let path = dir.join(name);
-        let file = File::create(&path).with_context(|| format!("creating {}", path.display()))?;
-        let mut file = BufWriter::new(file);
+    fn create(dir: &Path, name: &'static str, inputs: &[PathBuf], force: bool) -> Result<Self> {
+        let mut output = Output::create(&dir.join(name), inputs, force)?;
+        let path = output.path().to_path_buf();
         let mut header = builder().from_writer(Vec::new());
         header.serialize(R::default())?;
         let header = header.into_inner().context("CSV header")?;
@@ -194,10 +203,15 @@ impl<R: Serialize + Default> Table<R> {
             .iter()
             .position(|&b| b == b'\n')
             .map_or(header.len(), |i| i + 1);
+        let file = output
+            .file()
+            .try_clone()
+            .map_err(|e| anyhow!("{}: {e}", path.display()))?;
+        let mut file = BufWriter::new(file);
         file.write_all(&header[..end])
-            .with_context(|| format!("writing {}", path.display()))?;
+            .map_err(|e| anyhow!("{}: {e}", path.display()))?;
         Ok(Self {
-            name,
+            output,
             writer: builder().has_headers(false).from_writer(file),
             rows: 0,
             _row: PhantomData,
@@ -205,23 +219,26 @@ impl<R: Serialize + Default> Table<R> {
     }
 
     fn row(&mut self, row: R) -> Result<()> {
+        let path = self.output.path();
         self.writer
             .serialize(row)
-            .with_context(|| format!("writing {}", self.name))?;
+            .map_err(|e| anyhow!("{}: {e}", path.display()))?;
         self.rows += 1;
         Ok(())
     }
 
-    fn finish(mut self) -> Result<(&'static str, usize)> {
-        self.writer
-            .flush()
-            .with_context(|| format!("writing {}", self.name))?;
-        Ok((self.name, self.rows))
+    /// Flushes the rows; the output, ready to commit, and its row count.
+    fn finish(mut self) -> Result<(Output, usize)> {
+        let path = self.output.path().display().to_string();
+        self.writer.flush().map_err(|e| anyhow!("{path}: {e}"))?;
+        Ok((self.output, self.rows))
     }
 }
 
-/// Runs the command; prints the files written and their rows.
-pub fn export(args: &ExportArgs) -> Result<()> {
+/// Runs the command; prints the files written and their rows. `Some(signal)` when a signal
+/// stopped it (nothing is written then).
+pub fn export(args: &ExportArgs) -> Result<Option<i32>> {
+    let stop = Stop::install();
     for name in FILES {
         check_output(&args.csv.join(name), &[&args.file], args.force)?;
     }
@@ -234,17 +251,48 @@ pub fn export(args: &ExportArgs) -> Result<()> {
             args.file.display()
         );
     }
-    for (name, rows) in write_all(&rec, &args.csv)? {
-        crate::out::outln!("{}: {rows} rows", args.csv.join(name).display());
+    let inputs = [args.file.clone()];
+    let Some(tables) = write_all(&rec, &args.csv, &inputs, args.force, &stop)? else {
+        let sig = stop.received().unwrap_or_default();
+        eprintln!(
+            "export interrupted by {}: nothing written to {}",
+            crate::signals::name(sig),
+            args.csv.display()
+        );
+        return Ok(Some(sig));
+    };
+    let counts: Vec<(PathBuf, usize)> = (tables.iter())
+        .map(|(o, rows)| (o.path().to_path_buf(), *rows))
+        .collect();
+    commit_all(tables.into_iter().map(|(o, _)| o).collect())?;
+    for (path, rows) in counts {
+        crate::out::outln!("{}: {rows} rows", path.display());
     }
-    Ok(())
+    Ok(None)
 }
 
-fn write_all(rec: &Recording, dir: &Path) -> Result<Vec<(&'static str, usize)>> {
-    let mut contacts = Table::<ContactRow>::create(dir, FILES[0])?;
-    let mut wrenches = Table::<WrenchRow>::create(dir, FILES[1])?;
-    let mut poses = Table::<PoseRow>::create(dir, FILES[2])?;
-    let mut clock = Table::<ClockRow>::create(dir, FILES[3])?;
+/// Test-only: `SOFTGRIP_TEST_EXPORT_DELAY_US=N` waits N µs per message (a slow export, to
+/// test that a signal during it leaves nothing). Not for users.
+fn test_delay() -> Option<std::time::Duration> {
+    std::env::var("SOFTGRIP_TEST_EXPORT_DELAY_US")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .map(std::time::Duration::from_micros)
+}
+
+/// Writes the four tables into their temporary files; `None` if a signal came first (the
+/// temporary files are then removed as the outputs drop).
+fn write_all(
+    rec: &Recording,
+    dir: &Path,
+    inputs: &[PathBuf],
+    force: bool,
+    stop: &Stop,
+) -> Result<Option<Vec<(Output, usize)>>> {
+    let mut contacts = Table::<ContactRow>::create(dir, FILES[0], inputs, force)?;
+    let mut wrenches = Table::<WrenchRow>::create(dir, FILES[1], inputs, force)?;
+    let mut poses = Table::<PoseRow>::create(dir, FILES[2], inputs, force)?;
+    let mut clock = Table::<ClockRow>::create(dir, FILES[3], inputs, force)?;
     let names = fingertips(rec);
     let tip_of_topic = |topic: &str| {
         names
@@ -252,7 +300,14 @@ fn write_all(rec: &Recording, dir: &Path) -> Result<Vec<(&'static str, usize)>> 
             .find(|n| topics::wrench(n) == topic)
             .map_or("", String::as_str)
     };
-    for m in &rec.messages {
+    let delay = test_delay();
+    for (k, m) in rec.messages.iter().enumerate() {
+        if k % SIGNAL_CHECK_EVERY == 0 && stop.received().is_some() {
+            return Ok(None);
+        }
+        if let Some(d) = delay {
+            std::thread::sleep(d);
+        }
         let t = seconds(m.log_time_ns);
         match &m.message {
             Message::Contacts(a) => {
@@ -286,10 +341,14 @@ fn write_all(rec: &Recording, dir: &Path) -> Result<Vec<(&'static str, usize)>> 
             _ => {}
         }
     }
-    Ok(vec![
+    let tables = vec![
         contacts.finish()?,
         wrenches.finish()?,
         poses.finish()?,
         clock.finish()?,
-    ])
+    ];
+    if stop.received().is_some() {
+        return Ok(None);
+    }
+    Ok(Some(tables))
 }

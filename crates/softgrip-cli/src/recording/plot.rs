@@ -11,7 +11,7 @@ use softgrip_ecs::FingertipLaw;
 use softgrip_law::{Backing, ContactLaw, Level};
 
 use super::{contact_radius, contacts, fingertips, laws, open};
-use crate::files::check_output;
+use crate::files::{Output, check_output};
 use crate::plot::style::{
     CAPTION_SIZE, FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE, draw_curve, draw_legend, ensure_font,
     series_colour,
@@ -97,7 +97,10 @@ pub fn plot(args: &PlotArgs) -> Result<()> {
             .map_or_else(String::new, |f| f.to_string_lossy().into_owned()),
         rec.softgrip_metadata("origin").unwrap_or("recording")
     );
-    draw(&args.out, &title, &columns)?;
+    // Drawn into a temporary file beside the target, put in place when complete.
+    let out = Output::create(&args.out, std::slice::from_ref(&args.file), args.force)?;
+    draw(out.temp_path(), &args.out, &title, &columns)?;
+    out.commit()?;
     crate::out::outln!("{}", args.out.display());
     Ok(())
 }
@@ -112,11 +115,12 @@ fn prefix(max: f64) -> (f64, &'static str) {
     (1e12, "p")
 }
 
-fn draw(path: &Path, title: &str, columns: &[Column]) -> Result<()> {
+/// Draws the figure into `path` (a temporary file); errors name `target`.
+fn draw(path: &Path, target: &Path, title: &str, columns: &[Column]) -> Result<()> {
     ensure_font()?;
     let width = 900 * columns.len() as u32;
     let root = BitMapBackend::new(path, (width, 1500)).into_drawing_area();
-    let failed = |e: &dyn std::fmt::Display| anyhow!("drawing {}: {e}", path.display());
+    let failed = |e: &dyn std::fmt::Display| anyhow!("drawing {}: {e}", target.display());
     root.fill(&WHITE).map_err(|e| failed(&e))?;
     let root = root
         .titled(title, (FONT, TITLE_SIZE))

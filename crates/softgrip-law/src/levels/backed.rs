@@ -244,7 +244,7 @@
 use std::sync::Arc;
 
 use super::NormalisedLaw;
-use crate::backing::Backing;
+use crate::backing::{Backing, MIN_CORE_THICKNESS_RATIO};
 use crate::error::{Error, Result};
 use crate::level::LevelKind;
 use crate::quadrature::integrate;
@@ -543,6 +543,13 @@ impl Backed {
             _ => None,
         };
         let (radius, core, x_max) = match tau {
+            Some(tau) if !(MIN_CORE_THICKNESS_RATIO..1.0).contains(&tau) => {
+                return Err(Error::InvalidParameter {
+                    field: "thickness_ratio",
+                    value: tau,
+                    range: "in [0.05, 1) for the calibrated level of a `core` fingertip (t/R, MIN_CORE_THICKNESS_RATIO: where its form is validated; a thinner skin needs a `tabulated` curve)",
+                });
+            }
             Some(tau) => {
                 let rc = 1.0 - tau;
                 let radius = RadiusForm {

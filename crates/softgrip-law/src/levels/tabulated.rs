@@ -30,6 +30,7 @@
 //!   extension ([`crate::Regime::Extended`]).
 
 use super::NormalisedLaw;
+use crate::Shortest;
 use crate::error::{Error, Result};
 use crate::normalised::X_FROZEN;
 use crate::tabulated::TabulatedCurve;
@@ -90,7 +91,7 @@ impl Tabulated {
                 field: "delta_m",
                 index: Some(x.len() - 1),
                 value: curve.delta_max(),
-                range: format!("<= 4 R = {} m (x = delta/R <= 4)", 4.0 * radius),
+                range: format!("<= 4 R = {} m (x = delta/R <= 4)", Shortest(4.0 * radius)),
             });
         }
         if let Some(i) = f.iter().position(|v| !v.is_finite()) {
@@ -98,7 +99,10 @@ impl Tabulated {
                 field: "force_n",
                 index: Some(i),
                 value: curve.force_n()[i],
-                range: format!("finite once divided by E* R^2 = {force_scale} N"),
+                range: format!(
+                    "finite once divided by E* R^2 = {} N",
+                    Shortest(force_scale)
+                ),
             });
         }
         if let Some(i) = (1..x.len()).find(|&i| x[i] <= x[i - 1]) {
@@ -107,8 +111,9 @@ impl Tabulated {
                 index: Some(i),
                 value: curve.delta_m()[i],
                 range: format!(
-                    "distinct from delta_m[{}] once divided by R = {radius} m",
-                    i - 1
+                    "distinct from delta_m[{}] once divided by R = {} m",
+                    i - 1,
+                    Shortest(radius)
                 ),
             });
         }
