@@ -20,9 +20,13 @@ use crate::resources::Physics;
 use crate::scene::Scene;
 use crate::summary::Summary;
 
-/// The law parameters of a fingertip (named `name`: the scene's name for it).
+/// The law of a fingertip as recorded (named `name`: the scene's name for it): its level and
+/// parameters, and for a `tabulated` or `custom` level the curve that stands for it
+/// (`ContactLaw::recorded_curve`; a custom law whose curve cannot be sampled is recorded
+/// without one, and reads back as parameters without a law).
 pub fn fingertip_law(tip: &SoftFingertip, name: &str) -> FingertipLaw {
     let m = tip.material();
+    let law = tip.law();
     FingertipLaw {
         name: name.to_owned(),
         level: tip.level(),
@@ -32,6 +36,8 @@ pub fn fingertip_law(tip: &SoftFingertip, name: &str) -> FingertipLaw {
         friction: tip.friction(),
         restitution: tip.restitution(),
         backing: tip.backing(),
+        curve: law.recorded_curve().ok().flatten(),
+        custom_name: law.custom_name().map(str::to_owned),
     }
 }
 

@@ -30,6 +30,8 @@ fn tip(name: &str, body: &str, radius: f64) -> FingertipInfo {
             friction: 0.8,
             restitution: 0.5,
             backing: softgrip_law::Backing::Free,
+            curve: None,
+            custom_name: None,
         },
         facing: None,
     }
