@@ -95,7 +95,10 @@ impl BackingKind {
     /// assert_eq!(BackingKind::from_code(9), None);
     /// ```
     pub fn from_code(code: u8) -> Option<Self> {
-        BACKINGS.iter().find(|row| row.code == code).map(|row| row.kind)
+        BACKINGS
+            .iter()
+            .find(|row| row.code == code)
+            .map(|row| row.kind)
     }
 
     /// The [`Backing`] of this kind with the row's parameter (`thickness` \[m\] of `core`; the

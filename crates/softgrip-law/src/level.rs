@@ -129,7 +129,11 @@ impl Level {
             .ok_or_else(|| Error::UnknownName {
                 field: "level",
                 value: name.to_owned(),
-                expected: LEVELS.iter().map(|row| row.name).collect::<Vec<_>>().join(", "),
+                expected: LEVELS
+                    .iter()
+                    .map(|row| row.name)
+                    .collect::<Vec<_>>()
+                    .join(", "),
             })
     }
 

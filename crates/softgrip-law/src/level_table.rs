@@ -7,7 +7,9 @@
 //! until the row exists). Its `code` is new too: a code once written to a file keeps its
 //! meaning for ever, so codes are never reused or derived from the enums' order.
 
-use crate::level::{DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, Level, LevelKind};
+use crate::level::{
+    DEFAULT_AUTO_TOLERANCE, DEFAULT_FIT_K, DEFAULT_LINEAR_MATCH_X, Level, LevelKind,
+};
 use crate::setting::{Interval, LevelSetting};
 
 /// What a level needs besides the contact's parameters (E, nu, R, construction).
@@ -223,12 +225,18 @@ pub(crate) const fn buildable<const N: usize>() -> [Level; N] {
     let (mut i, mut n) = (0, 0);
     while i < LEVELS.len() {
         if matches!(LEVELS[i].data, LevelData::None) {
-            assert!(n < N, "Level::ALL is shorter than the table's buildable levels");
+            assert!(
+                n < N,
+                "Level::ALL is shorter than the table's buildable levels"
+            );
             out[n] = LEVELS[i].level;
             n += 1;
         }
         i += 1;
     }
-    assert!(n == N, "Level::ALL is longer than the table's buildable levels");
+    assert!(
+        n == N,
+        "Level::ALL is longer than the table's buildable levels"
+    );
     out
 }

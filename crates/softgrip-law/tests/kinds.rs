@@ -86,10 +86,14 @@ fn every_backing() -> Vec<(Backing, BackingKind, u8)> {
         Backing::Flat => (b, BackingKind::Flat, 1),
         Backing::Core { .. } => (b, BackingKind::Core, 2),
     };
-    [Backing::Free, Backing::Flat, Backing::Core { thickness: 0.004 }]
-        .into_iter()
-        .map(row)
-        .collect()
+    [
+        Backing::Free,
+        Backing::Flat,
+        Backing::Core { thickness: 0.004 },
+    ]
+    .into_iter()
+    .map(row)
+    .collect()
 }
 
 #[test]
@@ -103,7 +107,11 @@ fn every_level_variant_has_exactly_one_row() {
             .collect();
         assert_eq!(rows.len(), 1, "{level:?}");
         assert_eq!(level.info().name, rows[0].name);
-        assert_eq!(level.info().level, level, "the row holds the default settings");
+        assert_eq!(
+            level.info().level,
+            level,
+            "the row holds the default settings"
+        );
         assert_eq!(Level::from_name(level.name()).unwrap(), level);
         assert_eq!(level.to_string().parse::<Level>().unwrap(), level);
     }
@@ -128,7 +136,11 @@ fn level_codes_are_the_ones_every_recording_used() {
     let codes: HashSet<_> = LEVELS.iter().filter_map(|r| r.code).collect();
     assert_eq!(codes.len(), every_kind().len(), "codes are unique");
     assert_eq!(LevelKind::from_code(10), None);
-    assert_eq!(Level::auto().kind(), None, "auto picks a concrete level per call");
+    assert_eq!(
+        Level::auto().kind(),
+        None,
+        "auto picks a concrete level per call"
+    );
 }
 
 #[test]
@@ -141,7 +153,10 @@ fn backing_codes_are_the_ones_every_recording_used() {
         assert_eq!(kind.info().name, backing.name());
         let thickness = backing.thickness();
         assert_eq!(kind.info().parameter.is_some(), thickness.is_some());
-        assert_eq!(Backing::try_from_parts(backing.name(), thickness), Ok(backing));
+        assert_eq!(
+            Backing::try_from_parts(backing.name(), thickness),
+            Ok(backing)
+        );
     }
     assert_eq!(Backing::NAMES.to_vec(), BACKINGS.map(|r| r.name).to_vec());
     let names: HashSet<_> = BACKINGS.iter().map(|r| r.name).collect();
@@ -152,7 +167,13 @@ fn backing_codes_are_the_ones_every_recording_used() {
 fn every_setting_reads_sets_and_checks_from_its_row() {
     for row in &LEVELS {
         for s in row.settings {
-            assert_eq!((s.get)(&row.level), Some(s.default), "{}.{}", row.name, s.key);
+            assert_eq!(
+                (s.get)(&row.level),
+                Some(s.default),
+                "{}.{}",
+                row.name,
+                s.key
+            );
             assert_eq!(row.level.setting(s.key), Some(s.default));
             assert!(s.range.contains(s.default), "{}: default in range", s.key);
             assert!(
@@ -189,7 +210,10 @@ fn every_setting_reads_sets_and_checks_from_its_row() {
     assert_eq!(keys, ["match_x", "k", "tolerance"]);
     assert!(matches!(
         Level::Hertz.with_setting("stiffness", 1.0),
-        Err(Error::UnknownName { field: "setting", .. })
+        Err(Error::UnknownName {
+            field: "setting",
+            ..
+        })
     ));
 }
 
@@ -222,9 +246,8 @@ fn each_row_builds_the_level_it_names_with_the_data_it_says() {
                     ContactLaw::try_new(params, row.level),
                     Err(Error::LevelNeedsData { .. })
                 ));
-                let curve =
-                    TabulatedCurve::try_new(vec![0.001, 0.002, 0.003], vec![1.0, 3.0, 6.0])
-                        .unwrap();
+                let curve = TabulatedCurve::try_new(vec![0.001, 0.002, 0.003], vec![1.0, 3.0, 6.0])
+                    .unwrap();
                 ContactLaw::tabulated(params, curve).unwrap()
             }
             LevelData::UserLaw => {

@@ -49,14 +49,23 @@ fn worst(law: &ContactLaw, back: &ContactLaw) -> f64 {
 #[test]
 fn a_custom_law_reads_back_as_its_sample_within_5e_5() {
     let mut largest = 0.0_f64;
-    for level in [Level::Hertz, Level::fit(), Level::Incompressible, Level::Calibrated] {
+    for level in [
+        Level::Hertz,
+        Level::fit(),
+        Level::Incompressible,
+        Level::Calibrated,
+    ] {
         for nu in [0.3, 0.45, 0.49] {
             let unit = ContactParams::try_from_parts(1.0, 1.0, nu).unwrap();
             let normalised = ContactLaw::try_new(unit, level).unwrap();
             let params = ContactParams::try_from_parts(2.3e5, 0.012, nu).unwrap();
             let custom = ContactLaw::custom(params, Arc::new(Wrapped(normalised))).unwrap();
             let curve = custom.recorded_curve().unwrap().unwrap();
-            assert_eq!(curve.delta_m().len(), CUSTOM_CURVE_SAMPLES + 1, "origin + samples");
+            assert_eq!(
+                curve.delta_m().len(),
+                CUSTOM_CURVE_SAMPLES + 1,
+                "origin + samples"
+            );
             assert_eq!(curve.delta_max(), custom.delta_max());
             let back = ContactLaw::tabulated(params, curve).unwrap();
             assert_eq!(back.response(1e-3).level, LevelKind::Tabulated);
@@ -93,7 +102,11 @@ struct Dipping;
 impl NormalisedLaw for Dipping {
     fn force_stiffness(&self, x: f64) -> (f64, f64) {
         // A small dip just after each of the checked points x = i/64.
-        let dip = if (x * 64.0).fract() > 0.0 && (x * 64.0).fract() < 0.1 { 0.1 } else { 0.0 };
+        let dip = if (x * 64.0).fract() > 0.0 && (x * 64.0).fract() < 0.1 {
+            0.1
+        } else {
+            0.0
+        };
         (x * x - dip * x * x, 2.0 * x)
     }
     fn energy(&self, x: f64) -> f64 {
@@ -112,7 +125,10 @@ fn a_custom_law_that_dips_between_its_checks_still_records() {
     let params = ContactParams::try_from_parts(1.0e6, 0.01, 0.4).unwrap();
     let custom = ContactLaw::custom(params, Arc::new(Dipping)).unwrap();
     let curve = custom.recorded_curve().unwrap().unwrap();
-    assert!(curve.delta_m().len() < CUSTOM_CURVE_SAMPLES + 1, "dips left out");
+    assert!(
+        curve.delta_m().len() < CUSTOM_CURVE_SAMPLES + 1,
+        "dips left out"
+    );
     assert!(curve.force_n().windows(2).all(|w| w[1] >= w[0]));
     assert_eq!(curve.delta_max(), custom.delta_max());
 }
