@@ -139,23 +139,8 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
 /// pressures when the scene does not record pressure: the radius is always recorded).
 pub fn contact_reading(c: &TipContact, patch: Option<ContactPatch>) -> ContactReading {
     ContactReading {
-        point: c.point,
-        normal: c.normal,
-        delta: c.delta,
-        x: c.x,
-        normal_force: c.normal_force,
-        friction_force: c.friction_force,
-        torsional_moment: c.torsional_moment,
-        stiffness: c.stiffness,
-        level: c.level,
-        regime: c.regime,
-        validity_exceeded: c.validity_exceeded,
-        sliding: c.sliding,
-        peak_normal_force: c.peak_normal_force,
-        max_delta: c.max_delta,
-        contact_duration: c.contact_duration,
         patch,
-        backing: c.backing,
+        ..c.reading()
     }
 }
 

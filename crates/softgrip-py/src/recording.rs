@@ -63,7 +63,7 @@ fn recording_error(py: Python<'_>, path: &Path, e: &RecordError) -> PyErr {
         RecordError::Io { source, .. } if source.kind() == std::io::ErrorKind::NotFound => {
             pyo3::exceptions::PyFileNotFoundError::new_err((2, source.to_string(), shown))
         }
-        RecordError::Io { .. } | RecordError::Write(_) => raise(
+        RecordError::Io { .. } | RecordError::Write { .. } => raise(
             py,
             "RecordingError",
             e.to_string(),

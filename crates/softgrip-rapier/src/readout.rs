@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
-use softgrip_law::{Backing, ContactLaw, ContactPatch, LevelKind, Regime};
+use softgrip_law::{Backing, ContactLaw, ContactPatch, ContactReading, LevelKind, Regime};
 
 use crate::detect::{Model, Series, raw};
 use crate::solve::Row;
@@ -78,6 +78,32 @@ pub struct TipContact {
 }
 
 impl TipContact {
+    /// The contact's numbers as the law crate's plain [`ContactReading`], the one shape that
+    /// the recorder, the ROS 2 publisher and the ECS take (the conversion is here, once; the
+    /// patch is `None`: [`patch`](Self::patch) computes it when wanted).
+    pub fn reading(&self) -> ContactReading {
+        ContactReading {
+            point: self.point,
+            normal: self.normal,
+            delta: self.delta,
+            x: self.x,
+            normal_force: self.normal_force,
+            friction_force: self.friction_force,
+            torsional_moment: self.torsional_moment,
+            stiffness: self.stiffness,
+            level: self.level,
+            regime: self.regime,
+            validity_exceeded: self.validity_exceeded,
+            sliding: self.sliding,
+            peak_normal_force: self.peak_normal_force,
+            max_delta: self.max_delta,
+            max_x: self.max_x,
+            contact_duration: self.contact_duration,
+            backing: self.backing,
+            patch: None,
+        }
+    }
+
     /// Contact radius and pressure at `delta` (computed now).
     pub fn patch(&self) -> ContactPatch {
         self.model.law.patch(self.delta)

@@ -103,6 +103,7 @@ fn reading(force: f64, radius: f64, pressure: bool) -> ContactReading {
         sliding: false,
         peak_normal_force: force,
         max_delta: 1e-3,
+        max_x: 0.1,
         contact_duration: 1.0 / 60.0,
         backing: softgrip_law::Backing::Core { thickness: 0.004 },
         patch: Some(if pressure {
