@@ -82,7 +82,15 @@ fn backing(args: &CurveArgs) -> Result<Backing> {
             "`--thickness` is t/R and must be in (0, 1), got {}",
             Shortest(value)
         ),
-        e => anyhow::anyhow!("invalid `--backing`/`--thickness`: {e}"),
+        // The law's messages in the flags' words (`--thickness` is t/R here).
+        softgrip_law::Error::UnexpectedSetting { takes, name, .. } => anyhow::anyhow!(
+            "`--thickness` applies only to `--backing {}`, not to `--backing {name}`",
+            takes.join("|")
+        ),
+        softgrip_law::Error::MissingSetting { name, .. } => {
+            anyhow::anyhow!("`--backing {name}` needs `--thickness T` (t/R, in (0, 1))")
+        }
+        e => anyhow::anyhow!("invalid `--backing`: {e}"),
     })?;
     match backing.thickness() {
         Some(t) if t >= 1.0 => bail!(

@@ -55,9 +55,9 @@ impl LevelArgs {
         let mut level = self.level;
         for (key, value) in self.settings() {
             if let Some(value) = value {
-                level = level.with_setting(key, value).map_err(|e| {
-                    anyhow::anyhow!("`--{}`: {e}", key.replace('_', "-"))
-                })?;
+                level = level
+                    .with_setting(key, value)
+                    .map_err(|e| anyhow::anyhow!("`--{}`: {e}", key.replace('_', "-")))?;
             }
         }
         Ok(level)

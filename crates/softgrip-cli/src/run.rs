@@ -7,9 +7,9 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
+use softgrip_ecs::{McapReport, McapSink, Physics, Simulation, Summary};
 use softgrip_record::RecorderOptions;
 use softgrip_record::units::{si, sig};
-use softgrip_ecs::{McapReport, McapSink, Physics, Simulation, Summary};
 use softgrip_ros2::PublisherStats;
 use softgrip_scene::{ContactDigest, DEFAULT_SCENE, Scene};
 

@@ -73,7 +73,15 @@ fn a_setting_for_the_wrong_level_is_refused_by_the_law() {
         "{e}"
     );
     let o = common::softgrip(&[
-        "curve", "--level", "fit", "--k", "11", "--nu", "0.3", "--x", "0:0.1:0.05",
+        "curve",
+        "--level",
+        "fit",
+        "--k",
+        "11",
+        "--nu",
+        "0.3",
+        "--x",
+        "0:0.1:0.05",
     ]);
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(e.contains("`k` must be finite and in [0, 10]"), "{e}");
@@ -92,7 +100,7 @@ fn a_setting_for_the_wrong_level_is_refused_by_the_law() {
     ]);
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(
-        e.contains("`core_thickness` applies only to backing `core`"),
+        e.contains("`--thickness` applies only to `--backing core`, not to `--backing flat`"),
         "{e}"
     );
 }
@@ -148,9 +156,11 @@ fn a_tabulated_run_reads_back_as_the_same_law() {
             (a.parse::<f64>().unwrap(), b.parse::<f64>().unwrap())
         })
         .unzip();
-    let want =
-        ContactLaw::tabulated(left.params().unwrap(), TabulatedCurve::try_new(delta, force).unwrap())
-            .unwrap();
+    let want = ContactLaw::tabulated(
+        left.params().unwrap(),
+        TabulatedCurve::try_new(delta, force).unwrap(),
+    )
+    .unwrap();
     let got = left.law().unwrap();
     for i in 0..=50 {
         let d = 0.0001 * f64::from(i);

@@ -70,7 +70,15 @@ pub fn backing(name: &Bound<'_, PyAny>, thickness: Option<f64>) -> PyResult<Back
     )?;
     // The one parser of (name, thickness) (softgrip_law::BACKINGS); the thickness against R
     // is the law's check when the parameters are built.
-    Backing::try_from_parts(&name, thickness).map_err(|e| crate::errors::law_error(py, &e))
+    // Python's argument is `thickness` (the table's key is `core_thickness`, as in scenes).
+    Backing::try_from_parts(&name, thickness).map_err(|e| {
+        let (field, value) = match &e {
+            softgrip_law::Error::UnknownName { value, .. } => ("backing", Some(value.clone())),
+            _ => ("thickness", thickness.map(|t| t.to_string())),
+        };
+        let message = e.to_string().replace("`core_thickness`", "`thickness`");
+        crate::errors::raise(py, "ParameterError", message, Some(field), value)
+    })
 }
 
 /// The law of `level` for a fingertip of E [Pa], nu [-], R [m] and construction `backing`.
