@@ -83,9 +83,9 @@ fn backing(args: &CurveArgs) -> Result<Backing> {
             Shortest(value)
         ),
         // The law's messages in the flags' words (`--thickness` is t/R here).
-        softgrip_law::Error::UnexpectedSetting { takes, name, .. } => anyhow::anyhow!(
+        softgrip_law::Error::UnexpectedSetting { name, .. } => anyhow::anyhow!(
             "`--thickness` applies only to `--backing {}`, not to `--backing {name}`",
-            takes.join("|")
+            e.takes().join("|")
         ),
         softgrip_law::Error::MissingSetting { name, .. } => {
             anyhow::anyhow!("`--backing {name}` needs `--thickness T` (t/R, in (0, 1))")

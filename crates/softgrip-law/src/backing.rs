@@ -129,9 +129,7 @@ impl Backing {
                 range: p.range,
             }),
             (None, Some(t)) => {
-                let takes: Vec<&BackingInfo> =
-                    BACKINGS.iter().filter(|r| r.parameter.is_some()).collect();
-                let key = takes
+                let key = BACKINGS
                     .iter()
                     .find_map(|r| r.parameter)
                     .expect("invariant: a construction in BACKINGS takes a parameter")
@@ -141,7 +139,6 @@ impl Backing {
                     value: t,
                     kind: "backing",
                     name: row.name,
-                    takes: takes.iter().map(|r| r.name).collect(),
                 })
             }
             (None, None) => Ok(row.kind.with_parameter(0.0)),

@@ -109,9 +109,10 @@ pub enum Error {
     },
     /// A setting given to a kind that does not take it (`k` to level `hertz`, `core_thickness`
     /// to backing `flat`).
+    /// The names of those that take it are [`Error::takes`] (read from the table).
     #[error(
         "`{field}` applies only to {kind} `{}`, not to {kind} `{name}` (got {value})",
-        .takes.join("`, `")
+        takers(kind, field).join("`, `")
     )]
     UnexpectedSetting {
         /// The setting's key.
@@ -122,8 +123,6 @@ pub enum Error {
         kind: &'static str,
         /// The name of the level or backing it was given to.
         name: &'static str,
-        /// The names of those that take it.
-        takes: Vec<&'static str>,
     },
     /// A setting that a kind requires and was not given (`core_thickness` of backing `core`).
     #[error("`{field}` is required with {kind} `{name}`: {range}")]
@@ -172,5 +171,33 @@ pub(crate) fn positive(field: &'static str, value: f64, range: &'static str) -> 
             value,
             range,
         })
+    }
+}
+
+impl Error {
+    /// For [`Error::UnexpectedSetting`]: the names of the levels (or constructions) that take
+    /// the setting, from their table ([`crate::LEVELS`], [`crate::BACKINGS`]); else empty.
+    pub fn takes(&self) -> Vec<&'static str> {
+        match self {
+            Error::UnexpectedSetting { field, kind, .. } => takers(kind, field),
+            _ => Vec::new(),
+        }
+    }
+}
+
+/// The rows of `kind`'s table (`level` or `backing`) that take the setting `key`.
+fn takers(kind: &str, key: &str) -> Vec<&'static str> {
+    if kind == "backing" {
+        crate::BACKINGS
+            .iter()
+            .filter(|row| row.parameter.is_some_and(|p| p.key == key))
+            .map(|row| row.name)
+            .collect()
+    } else {
+        crate::LEVELS
+            .iter()
+            .filter(|row| row.setting(key).is_some())
+            .map(|row| row.name)
+            .collect()
     }
 }

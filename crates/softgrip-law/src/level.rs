@@ -175,7 +175,6 @@ impl Level {
                 value,
                 kind: "level",
                 name: self.name(),
-                takes,
             });
         };
         let level = (setting.set)(self, value)

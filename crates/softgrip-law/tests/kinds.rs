@@ -200,7 +200,8 @@ fn every_setting_reads_sets_and_checks_from_its_row() {
                 assert_eq!((s.get)(&other.level), None);
                 let e = other.level.with_setting(s.key, s.default).unwrap_err();
                 assert!(
-                    matches!(&e, Error::UnexpectedSetting { field, takes, .. } if *field == s.key && takes.contains(&row.name)),
+                    matches!(&e, Error::UnexpectedSetting { field, .. } if *field == s.key)
+                        && e.takes().contains(&row.name),
                     "{e}"
                 );
             }

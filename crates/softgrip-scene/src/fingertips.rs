@@ -183,16 +183,12 @@ fn kind_error(c: &Checker, f: &dyn Fn(&str) -> String, e: softgrip_law::Error) -
             expected,
         } => c.invalid(f(field), value, &format!("one of {expected}")),
         E::UnexpectedSetting {
-            field,
-            kind,
-            takes,
-            name,
-            ..
+            field, kind, name, ..
         } => c.name(
             f(field),
             format!(
                 "applies only to `{kind} = \"{}\"`, the {kind} is `{name}`",
-                takes.join("\" | \"")
+                e.takes().join("\" | \"")
             ),
         ),
         E::MissingSetting {
