@@ -33,9 +33,9 @@ def rows():
                 schema = {("force", False): "Force", ("force", True): "Force3d",
                           ("pressure", False): "Pressure", ("pressure", True): "PressureMap"}[
                     (what, three_d)]
-                cp = {"ball": f"Counterpart::Ball {{ k: {float(k)!r} }}",
-                      "cylinder": f"Counterpart::Cylinder {{ k: {float(k)!r} }}",
-                      "edge": "Counterpart::Edge"}[kind]
+                # Only the row's own kind is formatted: an edge file has no k.
+                cp = ("Counterpart::Edge" if kind == "edge" else
+                      f"Counterpart::{kind.capitalize()} {{ k: {float(k)!r} }}")
                 text = open(os.path.join(d, f)).read()
                 prov = text.splitlines()[0]
                 reached = re.search(r"reached x = ([\d.]+)", prov)

@@ -3,7 +3,10 @@
 - softgrip.json: tactile_turbo.ts once per tactile pad (Image panels show the colour-mapped pads);
 - softgrip-micro.json: contacts_micro.ts (plots of the cells' forces in uN and radii in um);
 - softgrip-sphere.json (written from softgrip-micro.json): the millimetre sphere between plates
-  (scenes/ecoflex_sphere.toml), grid 200 times larger, camera 400 times farther, plots in N and m.
+  (scenes/ecoflex_sphere.toml), grid 200 times larger, camera 400 times farther, plots in N and m;
+- softgrip-hand.json (written from softgrip.json): hand scenes (scenes/robots/), the pads of
+  HAND_TIPS (normal force per pad, tactile image per pad) and the joints' positions and efforts
+  from /joint_states in place of the contact radii.
 
 usage: python3 tools/foxglove/make_layouts.py          # rewrite both layouts in place
        python3 tools/foxglove/make_layouts.py --check  # exit 1 if a layout is stale
@@ -18,6 +21,10 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 TIPS = ["left_tip", "right_tip"]
+# The shipped parallel gripper's pads (scenes/robots/parallel_gripper_box.toml) and how many
+# joints /joint_states lists for it (finger_joint and its mimic).
+HAND_TIPS = ["left_pad", "right_pad"]
+HAND_JOINTS = 2
 
 
 def script(tip: str) -> dict:
@@ -99,12 +106,34 @@ def build_sphere(_old: dict) -> dict:
     return layout
 
 
+def build_hand(_old: dict) -> dict:
+    """softgrip.json with HAND_TIPS' pads, and the joints' positions and efforts."""
+    text = (HERE / "softgrip.json").read_text()
+    for old, new in zip(TIPS, HAND_TIPS):
+        text = text.replace(old, new)
+    layout = json.loads(text)
+    cfg = layout["configById"]["Plot!radius"]
+    cfg["paths"] = [
+        {
+            "value": f"/joint_states.{field}[{j}]",
+            "enabled": True,
+            "timestampMethod": "receiveTime",
+            "label": f"joint {j} {field}",
+        }
+        for field in ("position", "effort")
+        for j in range(HAND_JOINTS)
+    ]
+    cfg["title"] = "joints: position [m or rad], effort [N or N m]"
+    return layout
+
+
 def main() -> int:
     stale = 0
     for name, build in [
         ("softgrip.json", build_default),
         ("softgrip-micro.json", build_micro),
         ("softgrip-sphere.json", build_sphere),
+        ("softgrip-hand.json", build_hand),
     ]:
         path = HERE / name
         old = path.read_text() if path.exists() else "{}"

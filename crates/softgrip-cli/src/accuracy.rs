@@ -20,7 +20,8 @@ pub struct MaxError {
 pub enum Quantity {
     /// Normalised force f.
     Force,
-    /// Normalised contact radius a / R.
+    /// Normalised contact radius a / R: of an elliptical patch its second semi-axis (across a
+    /// cylinder or an edge: what the 3D FE files give as their radius), of a disc its radius.
     Radius,
 }
 
@@ -41,7 +42,7 @@ pub fn max_error(
     {
         let (model, reference) = match quantity {
             Quantity::Force => (law.response(p.x).force, p.force_norm),
-            Quantity::Radius => (law.patch(p.x).radius, p.radius_norm),
+            Quantity::Radius => (law.patch(p.x).radius2, p.radius_norm),
         };
         let e = ((model - reference) / reference).abs();
         result = Some(match result {

@@ -10,21 +10,38 @@ use anyhow::{Context, Result};
 use softgrip_law::{BACKINGS, Backing, ContactLaw, ContactParams, Level};
 
 use crate::accuracy::{MaxError, Quantity, max_error};
+use crate::counterpart_arg::CounterpartArg;
 use crate::fe::{Dataset, FeCurve};
 use crate::plot::{ForcePanel, SpeedPoint, draw_force_vs_x, draw_speed_vs_error};
 use crate::timing::{ns_per_eval, sample_points};
 
-/// The constructions and Poisson ratios of the table: (backing, t/R for core, nu, FE file in
-/// `tests/data/fe/`). The free sphere against the reference, the backed ones against
-/// softgrip's own FE campaign (`tools/fe/`).
-const PANELS: [(&str, f64, f64, &str); 7] = [
-    ("free", 0.0, 0.3, "force_nu0.3.csv"),
-    ("free", 0.0, 0.49, "force_nu0.49.csv"),
-    ("flat", 0.0, 0.3, "flat/force_nu0.3.csv"),
-    ("flat", 0.0, 0.48, "flat/force_nu0.48.csv"),
-    ("core", 0.2, 0.499, "core/force_nu0.499_t0.2.csv"),
-    ("core", 0.4, 0.48, "core/force_nu0.48_t0.4.csv"),
-    ("core", 0.8, 0.3, "core/force_nu0.3_t0.8.csv"),
+/// The constructions, Poisson ratios and counterparts of the table: (backing, t/R for core,
+/// nu, counterpart, FE file in `tests/data/fe/`). The free sphere against the reference, the
+/// backed ones and the curved counterparts against softgrip's own FE campaigns (`tools/fe/`).
+const PANELS: [(&str, f64, f64, &str, &str); 11] = [
+    ("free", 0.0, 0.3, "plane", "force_nu0.3.csv"),
+    ("free", 0.0, 0.49, "plane", "force_nu0.49.csv"),
+    ("flat", 0.0, 0.3, "plane", "flat/force_nu0.3.csv"),
+    ("flat", 0.0, 0.48, "plane", "flat/force_nu0.48.csv"),
+    ("core", 0.2, 0.499, "plane", "core/force_nu0.499_t0.2.csv"),
+    ("core", 0.4, 0.48, "plane", "core/force_nu0.48_t0.4.csv"),
+    ("core", 0.8, 0.3, "plane", "core/force_nu0.3_t0.8.csv"),
+    ("free", 0.0, 0.48, "ball:1", "ball/free/force_nu0.48_k1.csv"),
+    (
+        "free",
+        0.0,
+        0.48,
+        "ball:0.5",
+        "ball/free/force_nu0.48_k0.5.csv",
+    ),
+    ("flat", 0.0, 0.48, "ball:2", "ball/flat/force_nu0.48_k2.csv"),
+    (
+        "flat",
+        0.0,
+        0.48,
+        "cylinder:1",
+        "cylinder/flat/force_nu0.48_k1.csv",
+    ),
 ];
 /// Range of the first force-error column, where the paper's claims are made.
 const FORCE_RANGE: (f64, f64) = (0.01, 0.5);
@@ -32,12 +49,15 @@ const FORCE_RANGE: (f64, f64) = (0.01, 0.5);
 const RADIUS_RANGE: (f64, f64) = (0.1, 0.5);
 /// File names of the figures.
 const FORCE_FIGURE: &str = "law_force_vs_x.png";
+/// The force figure of the curved counterparts.
+const COUNTERPART_FIGURE: &str = "law_force_vs_x_counterparts.png";
 const SPEED_FIGURE: &str = "law_speed_vs_error.png";
 
 /// Arguments of `softgrip bench-law`.
 #[derive(Debug, clap::Args)]
 pub struct BenchLawArgs {
-    /// Folder for the figures law_force_vs_x.png and law_speed_vs_error.png (created if needed).
+    /// Folder for the figures law_force_vs_x.png, law_force_vs_x_counterparts.png and
+    /// law_speed_vs_error.png (created if needed).
     #[arg(long, value_name = "DIR", default_value = "docs/figures")]
     out: PathBuf,
     /// Time each level for ~2 ms instead of ~50 ms (for tests; the numbers are noisier).
@@ -69,6 +89,9 @@ struct Panel {
     rows: Vec<Row>,
     /// Levels that cannot be built at this nu, with the reason.
     unavailable: Vec<(Level, String)>,
+    /// Pressed on a plane (the figure `law_force_vs_x.png`; else
+    /// `law_force_vs_x_counterparts.png`).
+    on_plane: bool,
 }
 
 /// Measures, prints the table on stdout and writes the figures.
@@ -76,23 +99,30 @@ pub fn run(args: &BenchLawArgs) -> Result<()> {
     let budget = Duration::from_millis(if args.quick { 2 } else { 50 });
     let panels = PANELS
         .iter()
-        .map(|&(backing, tau, nu, path)| measure(backing, tau, nu, path, budget))
+        .map(|&(backing, tau, nu, counterpart, path)| {
+            measure(backing, tau, nu, counterpart, path, budget)
+        })
         .collect::<Result<Vec<_>>>()?;
     crate::out::text(&table(&panels, budget));
 
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create {}", args.out.display()))?;
-    let force_panels: Vec<ForcePanel<'_>> = panels
-        .iter()
-        .map(|p| ForcePanel {
-            title: format!("{}, ν = {}", p.construction, p.nu),
-            laws: p.rows.iter().map(|r| (r.level.name(), &r.law)).collect(),
-            fe: &p.fe.points,
-            fe_beyond: &p.fe_beyond,
-        })
-        .collect();
+    let force_panels = |plane: bool| -> Vec<ForcePanel<'_>> {
+        panels
+            .iter()
+            .filter(|p| p.on_plane == plane)
+            .map(|p| ForcePanel {
+                title: format!("{}, ν = {}", p.construction, p.nu),
+                laws: p.rows.iter().map(|r| (r.level.name(), &r.law)).collect(),
+                fe: &p.fe.points,
+                fe_beyond: &p.fe_beyond,
+            })
+            .collect()
+    };
     let force_path = args.out.join(FORCE_FIGURE);
-    draw_force_vs_x(&force_path, &force_panels)?;
+    draw_force_vs_x(&force_path, &force_panels(true))?;
+    let counterpart_path = args.out.join(COUNTERPART_FIGURE);
+    draw_force_vs_x(&counterpart_path, &force_panels(false))?;
     let speed: Vec<SpeedPoint> = panels
         .iter()
         .flat_map(|p| {
@@ -113,8 +143,9 @@ pub fn run(args: &BenchLawArgs) -> Result<()> {
         "time per evaluation of force and stiffness  [ns]",
     )?;
     eprintln!(
-        "wrote {} and {}",
+        "wrote {}, {} and {}",
         force_path.display(),
+        counterpart_path.display(),
         speed_path.display()
     );
     Ok(())
@@ -124,9 +155,13 @@ fn measure(
     backing: &str,
     tau: f64,
     nu: f64,
+    counterpart: &str,
     path: &'static str,
     budget: Duration,
 ) -> Result<Panel> {
+    let counterpart: CounterpartArg = counterpart
+        .parse()
+        .map_err(|e: String| anyhow::anyhow!("{e}"))?;
     let fe = Dataset::File(path).load()?;
     let fe_end = fe.points.last().map_or(0.0, |p| p.x);
     let fe_beyond = if path == "force_nu0.3.csv" {
@@ -141,15 +176,19 @@ fn measure(
         .find(|row| row.name == backing)
         .ok_or_else(|| anyhow::anyhow!("no construction `{backing}` in BACKINGS"))?;
     let backing = Backing::try_from_parts(row.name, row.parameter.map(|_| tau))?;
-    let construction = match backing.thickness() {
+    let mut construction = match backing.thickness() {
         Some(t) => format!("{} t/R = {t}", backing.name()),
         None => backing.name().to_owned(),
     };
+    if !counterpart.is_plane() {
+        construction.push_str(&format!(" on {counterpart}"));
+    }
+    let cp = counterpart.counterpart(1.0)?;
     let params = ContactParams::try_from_parts(1.0, 1.0, nu)?.with_backing(backing)?;
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
     for level in Level::ALL {
-        let law = match ContactLaw::try_new(params, level) {
+        let law = match ContactLaw::try_new(params, level).and_then(|l| l.with_counterpart(cp)) {
             Ok(law) => law,
             Err(e) => {
                 unavailable.push((level, e.to_string()));
@@ -174,6 +213,7 @@ fn measure(
             ns_patch,
             force_paper_range: max_error(&law, &fe.points, Quantity::Force, f_lo, f_hi),
             force_fe_range: max_error(&law, &fe.points, Quantity::Force, 0.0, f64::INFINITY),
+            // A ball's radius, or the semi-axis across a cylinder (what its FE file gives).
             radius: max_error(&law, &fe.points, Quantity::Radius, a_lo, a_hi),
             law,
         });
@@ -185,6 +225,7 @@ fn measure(
         fe_beyond,
         rows,
         unavailable,
+        on_plane: counterpart.is_plane(),
     })
 }
 
@@ -204,7 +245,11 @@ fn table(panels: &[Panel], budget: Duration) -> String {
          {build}. Errors: max |law - FE| / FE over that construction's FE points \
          (tests/data/fe/, CalculiX, compressible neo-Hookean), only where x <= x_max of the \
          level. With a backing, `calibrated` is that construction's own law and `auto` is \
-         measured against it; every other level is the free sphere's law (a baseline).\n",
+         measured against it; every other level is the free sphere's law (a baseline). On a \
+         counterpart (ball:K, cylinder:K: K = R2/R) every level is bound to it \
+         (`ContactLaw::with_counterpart`: `calibrated` and `auto` with the FE-calibrated map, \
+         the others with the patch argument alone) and the radius column is the patch's \
+         second semi-axis (a ball's radius, across a cylinder).\n",
         budget
     );
     for p in panels {

@@ -1,16 +1,22 @@
 //! `softgrip curve`: one level of the law over a grid of compression ratios, as CSV; or its
-//! pressure profile at one compression ratio (`--profile X`).
+//! pressure profile at one compression ratio (`--profile X`); on a plane or, with
+//! `--counterpart`, on a ball, a cylinder or an edge.
 
 use std::io::{self, BufWriter, Write};
 
 use anyhow::{Context, Result, bail};
 use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Shortest};
 
+use crate::counterpart_arg::CounterpartArg;
 use crate::level_arg::LevelArgs;
 use crate::xrange::{MAX_POINTS, XRange};
 
 /// The CSV header, one column per normalised quantity.
 pub const HEADER: &str = "x,force_norm,stiffness_norm,energy_norm,radius_norm,p_mean_norm,valid";
+
+/// The extra column on a counterpart other than a plane: the patch's second semi-axis over R
+/// (`radius_norm` is then its first, along the counterpart's first principal direction).
+pub const HEADER_SECOND_AXIS: &str = ",radius2_norm";
 
 /// The CSV header of `--profile`: radius over the outer radius R, pressure over E*.
 pub const PROFILE_HEADER: &str = "r_norm,p_norm";
@@ -57,6 +63,16 @@ pub struct CurveArgs {
     /// Skin thickness over outer radius t/R [-] of `--backing core`, in (0, 1); only there.
     #[arg(long, value_name = "T")]
     thickness: Option<f64>,
+    /// What the fingertip is pressed on: plane (default), ball:K, cylinder:K (K = R2/R, the
+    /// counterpart's radius over the fingertip's, > 0) or edge (a sharp edge). Off a plane the
+    /// patch is an ellipse: a column radius2_norm is added (radius_norm is then its semi-axis
+    /// along a cylinder's axis or an edge) and `--profile` runs along that first semi-axis.
+    #[arg(
+        long,
+        value_name = "plane|ball:K|cylinder:K|edge",
+        default_value = "plane"
+    )]
+    counterpart: CounterpartArg,
     /// Instead of the curve: the level's pressure profile at compression ratio x = X [-]
     /// (0 < X <= the level's x_max), as CSV `r_norm,p_norm` (r/R from 0 to a/R, 50 rows; p/E*).
     #[arg(long, value_name = "X")]
@@ -122,6 +138,16 @@ pub fn run(args: &CurveArgs) -> Result<()> {
             Shortest(args.nu)
         )
     })?;
+    let cp = args.counterpart;
+    let law = cp
+        .counterpart(1.0)
+        .and_then(|c| law.with_counterpart(c))
+        .with_context(|| format!("invalid `--counterpart {cp}`"))?;
+    let named = if cp.is_plane() {
+        named
+    } else {
+        format!("{named} on {cp}")
+    };
     let written = match (args.profile, &args.x) {
         (Some(x), _) => {
             if !(x > 0.0 && x <= law.x_max()) {
@@ -154,12 +180,14 @@ pub fn run(args: &CurveArgs) -> Result<()> {
 
 fn write_csv(law: &ContactLaw, xs: &XRange, out: impl Write) -> io::Result<()> {
     let mut out = BufWriter::new(out);
-    writeln!(out, "{HEADER}")?;
+    let ellipse = !law.counterpart().is_plane();
+    let extra = if ellipse { HEADER_SECOND_AXIS } else { "" };
+    writeln!(out, "{HEADER}{extra}")?;
     for x in xs.iter() {
         let r = law.response(x);
         let patch = law.patch(x);
         // `{:e}` is the shortest representation that parses back to the same double.
-        writeln!(
+        write!(
             out,
             "{},{:e},{:e},{:e},{:e},{:e},{}",
             Shortest(x),
@@ -170,12 +198,17 @@ fn write_csv(law: &ContactLaw, xs: &XRange, out: impl Write) -> io::Result<()> {
             patch.mean_pressure,
             u8::from(x <= law.x_max()),
         )?;
+        if ellipse {
+            write!(out, ",{:e}", patch.radius2)?;
+        }
+        writeln!(out)?;
     }
     out.flush()
 }
 
 /// The pressure profile of `law` (E* = 1, R = 1) at compression ratio `x`: `PROFILE_ROWS`
-/// rows from r = 0 to r = a (where p = 0), `ContactPatch::pressure_at`.
+/// rows from r = 0 to r = a (where p = 0), `ContactPatch::pressure_at` (on an ellipse along
+/// its first semi-axis a; along the second it is the same at `r b/a`).
 fn write_profile(law: &ContactLaw, x: f64, out: impl Write) -> io::Result<()> {
     let mut out = BufWriter::new(out);
     writeln!(out, "{PROFILE_HEADER}")?;

@@ -3,9 +3,11 @@
 mod accuracy;
 mod bench_law;
 mod cli;
+mod counterpart_arg;
 mod curve;
 mod fe;
 mod files;
+mod joint_commands;
 mod level_arg;
 mod out;
 mod plot;

@@ -7,9 +7,11 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
-use softgrip_ecs::{McapReport, McapSink, Physics, Simulation, Summary};
+use softgrip_ecs::{Controllers, McapReport, McapSink, Physics, Simulation, Summary};
 use softgrip_record::RecorderOptions;
 use softgrip_record::units::{si, sig};
+
+use crate::joint_commands::{CommandBridge, Routes};
 use softgrip_ros2::PublisherStats;
 use softgrip_scene::{ContactDigest, DEFAULT_SCENE, Scene};
 
@@ -42,6 +44,11 @@ pub struct RunArgs {
     /// possible; else from 0.001 to 1000). Default: 1 with `--ros2`, else 0.
     #[arg(long, value_name = "F", value_parser = parse_realtime_factor)]
     pub realtime_factor: Option<f64>,
+    /// With `--ros2` and robots in the scene: the topic joint commands come in on
+    /// (`sensor_msgs/JointState`: position and/or velocity targets by joint name,
+    /// `<robot>/<joint>` with several robots).
+    #[arg(long, value_name = "TOPIC", default_value = crate::joint_commands::DEFAULT_TOPIC)]
+    pub joint_commands: String,
     /// Print the digest of every step's contact values (`digest <hex> steps <n> contacts
     /// <m>`): the golden value crates/softgrip-cli/tests/digest.rs holds. For tests.
     #[arg(long, hide = true)]
@@ -110,6 +117,11 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
         scene.file().dt
     );
     sim.initialize();
+    let bridge = if args.ros2 {
+        start_commands(&mut sim, &args.joint_commands)?
+    } else {
+        None
+    };
     let mut digest = args.digest.then(ContactDigest::new);
     let done = step_loop(
         &mut sim,
@@ -127,6 +139,16 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
         outln!("{d}");
     }
     print_ros2(sinks.ros2);
+    if let Some(b) = bridge {
+        let topic = b.topic().to_owned();
+        let c = b.finish()?;
+        outln!(
+            "ros2: {} joint command messages on {topic}: {} joint targets applied, {} naming no robot",
+            c.messages,
+            c.routed,
+            c.unrouted
+        );
+    }
     if let (Some(out), Some(handle)) = (&args.out, sinks.recording) {
         print_recording(out, &handle, &done, every)?;
     }
@@ -155,6 +177,24 @@ fn panic_at_step() -> Result<Option<u64>> {
         })?)),
         Err(_) => Ok(None),
     }
+}
+
+/// Subscribes to joint commands for the scene's robots (none: nothing to command).
+fn start_commands(sim: &mut Simulation, topic: &str) -> Result<Option<CommandBridge>> {
+    let Some(mut controllers) = sim.world.get_resource_mut::<Controllers>() else {
+        return Ok(None);
+    };
+    let set = &mut controllers.0;
+    let names: Vec<String> = set.robots().iter().map(|r| r.name().to_owned()).collect();
+    let routes: Routes = (names.into_iter().enumerate())
+        .filter_map(|(i, name)| set.inbox(i).map(|inbox| (name, inbox)))
+        .collect();
+    if routes.is_empty() {
+        return Ok(None);
+    }
+    let bridge = CommandBridge::start(topic, routes)?;
+    outln!("ros2: joint commands from {topic} (sensor_msgs/JointState)");
+    Ok(Some(bridge))
 }
 
 /// What the sinks report after the run.

@@ -2,7 +2,7 @@
 
 mod components;
 mod contact;
-mod gripper;
+mod controller;
 mod messages;
 mod resources;
 mod schedule;
@@ -21,8 +21,10 @@ pub use components::{
     RapierBody, RapierCollider, RigidBody,
 };
 pub use contact::FingertipContact;
-pub use gripper::Gripper;
-pub use messages::{ContactEnded, ContactStarted, GripReached, SlipStarted, ValidityExcursion};
+pub use controller::{ControllerEntities, ControllerEntity, Controllers, RobotLinkEntity};
+pub use messages::{
+    ContactEnded, ContactStarted, GoalEnded, GripReached, SlipStarted, ValidityExcursion,
+};
 pub use resources::{
     CurrentFrame, PatchRequest, Physics, Publisher, RecordSelection, Recorder, SceneInfoResource,
     SimClock, SinkSlot,
@@ -36,8 +38,8 @@ pub use softgrip_record::{
     WORLD_FRAME, WrenchSample,
 };
 pub use softgrip_scene::{
-    BodyKind, GripperEvent, GripperProgram, GripperState, JawState, Phase, PlainRun, Scene,
-    SceneError, Squeeze,
+    BodyKind, Carrier, ControlEvent, ControlSet, Controller, GripperEvent, GripperProgram,
+    GripperState, JawState, Phase, PlainRun, Scene, SceneError, Squeeze, control::GraspView,
 };
 pub use spawn::{SceneEntities, init_world, spawn_scene};
 pub use summary::{Summary, TipSummary, accumulate_summary};

@@ -55,13 +55,25 @@ pub struct ValidityExcursion {
     pub time: f64,
 }
 
-/// A gripper's jaws reached the commanded grip (depth, or the depth of the commanded force).
-#[derive(Message, Debug, Clone, Copy, PartialEq)]
+/// A gripper's jaws (or a grasp's fingers) reached the commanded grip.
+#[derive(Message, Debug, Clone, PartialEq)]
 pub struct GripReached {
-    /// The gripper entity.
+    /// The controller's entity.
     pub gripper: Entity,
-    /// Commanded compression of each jaw's fingertip \[m\].
-    pub depth: [f64; 2],
+    /// Commanded compression of each jaw's fingertip \[m\] (parallel jaws), or each joint's
+    /// finger's smallest fingertip force at the stop \[N\] (grasp).
+    pub depth: Vec<f64>,
     /// Simulated time at the end of the step that reaches it \[s\].
+    pub time: f64,
+}
+
+/// A goal sent from outside (ROS 2's gripper action, Python) ended.
+#[derive(Message, Debug, Clone, PartialEq)]
+pub struct GoalEnded {
+    /// The controller's entity (the robot's `joint_commands`).
+    pub controller: Entity,
+    /// How it ended.
+    pub result: softgrip_scene::control::GoalResult,
+    /// Simulated time at the end of the step \[s\].
     pub time: f64,
 }

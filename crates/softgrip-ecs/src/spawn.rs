@@ -4,14 +4,17 @@
 
 use bevy_ecs::prelude::{Entity, Messages, Name, World};
 use softgrip_rapier::SoftWorld;
-use softgrip_scene::{BodyKind, GripperState, Scene, SceneHandles, Trajectory};
+use softgrip_scene::robot::BaseKind;
+use softgrip_scene::{BodyKind, Carrier, Scene, SceneHandles, Trajectory};
 
 use crate::components::{
     AttachedTo, Collider, Fingertip, KinematicPath, KinematicTarget, RapierBody, RapierCollider,
     RigidBody,
 };
-use crate::gripper::Gripper;
-use crate::messages::{ContactEnded, ContactStarted, GripReached, SlipStarted, ValidityExcursion};
+use crate::controller::{ControllerEntities, ControllerEntity, Controllers, RobotLinkEntity};
+use crate::messages::{
+    ContactEnded, ContactStarted, GoalEnded, GripReached, SlipStarted, ValidityExcursion,
+};
 use crate::resources::{CurrentFrame, Physics, RecordSelection, SceneInfoResource, SimClock};
 
 /// The entities of a spawned scene, in scene order.
@@ -19,9 +22,13 @@ use crate::resources::{CurrentFrame, Physics, RecordSelection, SceneInfoResource
 pub struct SceneEntities {
     /// Bodies.
     pub bodies: Vec<Entity>,
+    /// Each robot's link entities (bodies), in the robot's link order.
+    pub robot_links: Vec<Vec<Entity>>,
     /// Fingertips.
     pub fingertips: Vec<Entity>,
-    /// The gripper, if any.
+    /// Every controller, in the order they run (the `[gripper]` first if there is one).
+    pub controllers: Vec<Entity>,
+    /// The `[gripper]`'s controller, if any.
     pub gripper: Option<Entity>,
 }
 
@@ -35,6 +42,7 @@ pub fn init_world(world: &mut World, soft_world: SoftWorld) {
     world.init_resource::<Messages<SlipStarted>>();
     world.init_resource::<Messages<ValidityExcursion>>();
     world.init_resource::<Messages<GripReached>>();
+    world.init_resource::<Messages<GoalEnded>>();
     if !world.contains_resource::<Physics>() {
         world.insert_resource(Physics::new(soft_world));
     }
@@ -56,16 +64,65 @@ pub fn spawn_scene(world: &mut World, scene: &Scene) -> SceneEntities {
         ..SceneEntities::default()
     };
     spawn_colliders(world, scene, &handles, &out.bodies);
-    out.fingertips = spawn_fingertips(world, scene, &handles, &out.bodies);
-    out.gripper = scene.gripper().map(|p| {
-        let g = Gripper {
-            program: p.clone(),
-            state: GripperState::new(p.jaws.map(|i| scene.file().bodies[i].position)),
-            jaws: p.jaws.map(|i| out.bodies[i]),
-            tips: (p.tips.clone()).map(|tips| tips.iter().map(|&i| out.fingertips[i]).collect()),
-        };
-        world.spawn((Name::new(p.name.clone()), g)).id()
-    });
+    out.robot_links = spawn_robots(world, scene, &handles);
+    out.fingertips = spawn_fingertips(world, scene, &handles, &out);
+    let control = scene.control_set(&handles);
+    out.controllers = (control.controllers().iter().enumerate())
+        .map(|(i, c)| {
+            world
+                .spawn((Name::new(c.name().to_string()), ControllerEntity(i)))
+                .id()
+        })
+        .collect();
+    out.gripper = scene
+        .gripper()
+        .and_then(|_| out.controllers.first().copied());
+    world.insert_resource(ControllerEntities(out.controllers.clone()));
+    world.insert_resource(Controllers(control));
+    out
+}
+
+/// One entity per robot link (a body: `RigidBody`, named `<robot>/<link>`, tagged with its
+/// handle) and one per link collider (attached to it).
+fn spawn_robots(world: &mut World, scene: &Scene, handles: &SceneHandles) -> Vec<Vec<Entity>> {
+    let mut out = Vec::new();
+    for (r, (robot, (_, h))) in scene.robots().iter().zip(&handles.robots).enumerate() {
+        let mut links = Vec::new();
+        for (l, body) in h.links.iter().enumerate() {
+            let kind = if l != robot.root() {
+                BodyKind::Dynamic
+            } else {
+                match robot.base() {
+                    BaseKind::Fixed => BodyKind::Fixed,
+                    BaseKind::Kinematic => BodyKind::Kinematic,
+                    BaseKind::Dynamic => BodyKind::Dynamic,
+                }
+            };
+            let physics = world.resource::<Physics>();
+            let position = (physics.world.physics.bodies.get(*body))
+                .map(|rb| rb.translation())
+                .map_or([0.0; 3], |t| [t.x as f64, t.y as f64, t.z as f64]);
+            let e = world
+                .spawn((
+                    Name::new(robot.frame(l)),
+                    RigidBody {
+                        kind,
+                        position,
+                        rotation: [0.0; 3],
+                    },
+                    RapierBody(*body),
+                    RobotLinkEntity { robot: r, link: l },
+                ))
+                .id();
+            world.resource_mut::<Physics>().link_body(*body, e);
+            for co in &h.colliders[l] {
+                let c = world.spawn((AttachedTo(e), RapierCollider(*co))).id();
+                world.resource_mut::<Physics>().link_collider(*co, c);
+            }
+            links.push(e);
+        }
+        out.push(links);
+    }
     out
 }
 
@@ -117,19 +174,21 @@ fn spawn_fingertips(
     world: &mut World,
     scene: &Scene,
     handles: &SceneHandles,
-    bodies: &[Entity],
+    out: &SceneEntities,
 ) -> Vec<Entity> {
     let f = scene.file();
     let mut entities = Vec::new();
-    for ((t, tip), (_, h)) in f
+    for (((t, tip), (_, h)), carrier) in f
         .fingertips
         .iter()
         .zip(scene.fingertips())
         .zip(&handles.fingertips)
+        .zip(scene.carriers())
     {
-        let body = scene
-            .body_index(&t.body)
-            .expect("invariant: checked by Scene::parse");
+        let parent = match *carrier {
+            Carrier::Body(i) => out.bodies[i],
+            Carrier::Link { robot, link } => out.robot_links[robot][link],
+        };
         let fingertip = Fingertip {
             tip: tip.clone(),
             offset: t.offset,
@@ -138,7 +197,7 @@ fn spawn_fingertips(
         let e = world.spawn((
             Name::new(t.name.clone()),
             fingertip,
-            AttachedTo(bodies[body]),
+            AttachedTo(parent),
             RapierCollider(*h),
         ));
         let e = e.id();

@@ -18,7 +18,7 @@ use softgrip_record::units::{si, sig};
 use softgrip_scene::Phase;
 
 use crate::components::Fingertip;
-use crate::gripper::Gripper;
+use crate::controller::Controllers;
 use crate::messages::{SlipStarted, ValidityExcursion};
 use crate::resources::Physics;
 
@@ -102,7 +102,7 @@ pub fn accumulate_summary(
     physics: Res<Physics>,
     mut summary: ResMut<Summary>,
     tips: Query<(Entity, &Name), With<Fingertip>>,
-    grippers: Query<&Gripper>,
+    controllers: Option<Res<Controllers>>,
     mut slips: MessageReader<SlipStarted>,
     mut excursions: MessageReader<ValidityExcursion>,
 ) {
@@ -135,26 +135,31 @@ pub fn accumulate_summary(
                 .validity_excursions += 1;
         }
     }
-    for g in &grippers {
-        if g.state.phase != Phase::Settle {
+    let Some(controllers) = controllers else {
+        return;
+    };
+    let handles = controllers.0.handles();
+    for c in controllers.0.controllers() {
+        let (Some(Phase::Settle), Some(view)) = (c.phase(), c.grasp()) else {
             continue;
-        }
-        for k in 0..2 {
-            for &tip in &g.tips[k] {
+        };
+        for (fingertips, depth) in view.fingers.iter().zip(&view.depth) {
+            for &i in fingertips {
+                let Some(collider) = handles.fingertips.get(i).map(|h| h.1) else {
+                    continue;
+                };
+                let Some(tip) = physics.collider_entity(collider) else {
+                    continue;
+                };
                 let Ok((_, name)) = tips.get(tip) else {
                     continue;
                 };
-                let handle = physics
-                    .world
-                    .soft
-                    .contacts()
-                    .iter()
-                    .filter(|c| physics.collider_entity(c.fingertip) == Some(tip));
-                let (force, delta) = handle.fold((0.0, 0.0f64), |(f, d), c| {
-                    (f + c.normal_force, d.max(c.delta))
-                });
+                let (force, delta) = (physics.world.soft.contacts_of(collider))
+                    .fold((0.0, 0.0f64), |(f, d), c| {
+                        (f + c.normal_force, d.max(c.delta))
+                    });
                 let s = summary.entry(tip, name.as_str());
-                s.commanded_depth = Some(g.program.depth[k]);
+                s.commanded_depth = *depth;
                 s.squeeze_force = Some(force);
                 s.squeeze_delta = Some(delta);
             }

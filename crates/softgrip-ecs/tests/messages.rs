@@ -20,7 +20,7 @@ fn messages_live_two_rotations() {
     let gripper = sim.entities.gripper.unwrap();
     let reached = GripReached {
         gripper,
-        depth: [0.0; 2],
+        depth: vec![0.0; 2],
         time: 0.0,
     };
     let counts = |sim: &Simulation| {
@@ -29,14 +29,14 @@ fn messages_live_two_rotations() {
             sim.world.resource::<Messages<Ping>>().len(),
         )
     };
-    sim.world.write_message(reached).unwrap();
+    sim.world.write_message(reached.clone()).unwrap();
     sim.world.write_message(Ping).unwrap();
     assert_eq!(counts(&sim), (1, 1));
     sim.step(); // first rotation: still readable
     assert_eq!(counts(&sim), (1, 1));
     sim.step(); // second rotation: dropped
     assert_eq!(counts(&sim), (0, 0));
-    sim.world.write_message(reached).unwrap();
+    sim.world.write_message(reached.clone()).unwrap();
     sim.step();
     sim.step();
     assert_eq!(counts(&sim), (0, 0));

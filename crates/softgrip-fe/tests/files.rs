@@ -30,7 +30,14 @@ fn every_file_parses_into_its_rows_and_points() {
         for p in &points {
             assert!(p.x > 0.0 && p.x < 1.0, "{}: x = {}", f.path, p.x);
             assert!(p.force_norm > 0.0 && p.force_norm.is_finite(), "{}", f.path);
-            assert!(p.radius_norm > 0.0 && p.radius_norm < 2.0, "{}", f.path);
+            // An edge's semi-axes are NaN where its 3D post-processing finds no patch edge
+            // (across the ridge at x <= 0.03, narrower than a node spacing; along it always).
+            let edge = matches!(f.counterpart, Counterpart::Edge);
+            assert!(
+                (p.radius_norm > 0.0 && p.radius_norm < 2.0) || (edge && p.radius_norm.is_nan()),
+                "{}",
+                f.path
+            );
             assert!(p.nu >= 0.3 && p.nu < 0.5, "{}: nu = {}", f.path, p.nu);
             if let Some(nu) = f.nu {
                 assert_eq!(p.nu, nu, "{}", f.path);

@@ -7,7 +7,7 @@ use std::hint::black_box;
 use criterion::{
     BenchmarkGroup, Criterion, criterion_group, criterion_main, measurement::WallTime,
 };
-use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level, Material};
 
 /// 1024 compressions spread over (0, delta_max) in a scrambled order, as contacts of a scene
 /// would come.
@@ -80,7 +80,43 @@ fn bench_levels(c: &mut Criterion) {
             r.force + r.stiffness
         });
     }
+    // On a counterpart (target: at most 2x calibrated's cost on a plane): a ball of the
+    // fingertip's size, a cylinder of 3 R, an edge.
+    let calibrated = law(Level::Calibrated);
+    let counterparts = [
+        (
+            "calibrated-ball",
+            Counterpart::try_ball(0.01).expect("valid ball"),
+        ),
+        (
+            "calibrated-cylinder",
+            Counterpart::try_cylinder(0.03).expect("valid cylinder"),
+        ),
+        ("calibrated-edge", Counterpart::EDGE),
+    ];
+    for (name, cp) in counterparts {
+        let on = calibrated.with_counterpart(cp).expect("binds");
+        bench_pass(&mut force, name, &deltas(&on), |d| {
+            let r = on.response(d);
+            r.force + r.stiffness
+        });
+    }
     force.finish();
+
+    // Binding the law to a counterpart (what the plugin does per contact when the counterpart
+    // changes): a ball (a circle), a cylinder (Hertz's ellipse solved), an edge.
+    let mut bind = c.benchmark_group("with_counterpart");
+    for (name, cp) in counterparts {
+        bind.bench_function(name, |b| {
+            b.iter(|| {
+                calibrated
+                    .with_counterpart(black_box(cp))
+                    .expect("binds")
+                    .x_max()
+            })
+        });
+    }
+    bind.finish();
 
     let mut patch = c.benchmark_group("with_radius_pressure");
     for level in Level::ALL {

@@ -40,6 +40,20 @@ pub enum Error {
         /// The second body's backing.
         second: &'static str,
     },
+    /// A counterpart that cannot be bound to this fingertip's law
+    /// ([`crate::ContactLaw::with_counterpart`]): too concave (it would wrap the fingertip) or
+    /// too sharp for a curvature.
+    #[error(
+        "counterpart `{field}` relative to the fingertip, kappa R = {relative_curvature}, is out of range: {reason}"
+    )]
+    IncompatibleCounterpart {
+        /// The curvature at fault: `curvature k1` or `curvature k2`.
+        field: &'static str,
+        /// That curvature times the fingertip's radius, `kappa R` [-].
+        relative_curvature: f64,
+        /// Why, with the valid range.
+        reason: &'static str,
+    },
     /// A compression past the validity range of the level (checked API only).
     #[error(
         "compression ratio x = delta/R = {} is outside the validity range of level `{level}` (0 <= x <= {})",

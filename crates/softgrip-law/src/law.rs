@@ -2,11 +2,13 @@
 
 use std::sync::Arc;
 
+use crate::counterpart::Counterpart;
 use crate::curve::{Curve, finite_non_negative};
 use crate::error::{Error, Result};
 use crate::level::{Level, LevelKind};
 use crate::levels::NormalisedLaw;
 use crate::levels::tabulated::Tabulated;
+use crate::mapping::{CounterpartMap, reach};
 use crate::material::ContactParams;
 use crate::pressure::ContactPatch;
 use crate::root::{Probe, Stop, newton_bracketed};
@@ -71,6 +73,24 @@ struct Edge {
     taper: f64,
 }
 
+impl Edge {
+    /// The curve's values at its own compression ratio `x`.
+    fn at(curve: &Curve, x: f64) -> Self {
+        let c = curve.as_dyn();
+        let (f, k, _) = curve.force_stiffness(x);
+        let (shape, taper) = c.pressure_profile(x);
+        Self {
+            x,
+            f,
+            k,
+            w: finite_non_negative(c.energy(x)),
+            radius: finite_non_negative(c.radius(x)),
+            shape,
+            taper,
+        }
+    }
+}
+
 /// One level of the contact law bound to a contact's parameters.
 ///
 /// Two APIs:
@@ -105,11 +125,24 @@ pub struct ContactLaw {
     params: ContactParams,
     level: Level,
     curve: Curve,
+    /// `1/R` [1/m]: the compression ratio `x = delta/R` the API reports.
     inv_radius: f64,
-    /// E* R^2 \[N\]
+    /// `rho/R` [1/m]: the curve's own compression ratio, `rho x` (`rho = 1` on a plane).
+    x_scale: f64,
+    /// `s E* R^2` \[N\] (`s = 1` on a plane)
     force_scale: f64,
-    /// E* R [N/m]
+    /// `s rho E* R` [N/m]
     stiffness_scale: f64,
+    /// `R/rho` \[m\]: the energy is `w force_scale R/rho`.
+    energy_length: f64,
+    /// The counterpart's own finite size (`mapping`): `tau E* R^2` \[N\], the force
+    /// `tail x^(5/2)` subtracted from the mapped plane law (0 on a plane and an edge).
+    tail: f64,
+    /// The counterpart and its map ([`with_counterpart`](Self::with_counterpart)).
+    counterpart: Counterpart,
+    map: CounterpartMap,
+    /// Where the curve's validity ends, in the curve's own `x` (`edge.x` is the curve's
+    /// `x_max` unless the counterpart's range ends first).
     edge: Edge,
 }
 
@@ -170,29 +203,137 @@ impl ContactLaw {
     }
 
     fn bind(params: ContactParams, level: Level, curve: Curve) -> Self {
-        let c = curve.as_dyn();
-        let x = c.x_max();
-        let (f, k, _) = curve.force_stiffness(x);
-        let (shape, taper) = c.pressure_profile(x);
-        let edge = Edge {
-            x,
-            f,
-            k,
-            w: finite_non_negative(c.energy(x)),
-            radius: finite_non_negative(c.radius(x)),
-            shape,
-            taper,
-        };
+        let edge = Edge::at(&curve, curve.as_dyn().x_max());
         let (e, r) = (params.effective_modulus(), params.radius());
         Self {
             params,
             level,
             curve,
             inv_radius: 1.0 / r,
+            x_scale: 1.0 / r,
             force_scale: e * r * r,
             stiffness_scale: e * r,
+            energy_length: r,
+            tail: 0.0,
+            counterpart: Counterpart::PLANE,
+            map: CounterpartMap::IDENTITY,
             edge,
         }
+    }
+
+    /// The same fingertip's law on `counterpart`: a plane (today's law, bit for bit), a
+    /// curved surface (Hertz's ellipse at small x, the crate README's calibrated form at
+    /// large x) or a sharp edge. Cheap (no table is rebuilt: the plane law's scales change), so
+    /// a plugin can bind one per contact; the hot path then costs what the plane's does.
+    ///
+    /// Fails if a curved counterpart is more concave than the fingertip allows or too sharp
+    /// ([`Error::IncompatibleCounterpart`], [`crate::MIN_RELATIVE_CURVATURE`],
+    /// [`crate::MAX_RELATIVE_CURVATURE`]).
+    ///
+    /// Validity: in `x = delta/R`, where the FE of curved counterparts stops for the
+    /// construction (0.70 free, 0.66 flat, and for a core also `0.6 t/R`), or where the plane
+    /// law reaches its own `x_max` (at `rho x`), whichever comes first.
+    ///
+    /// ```
+    /// use softgrip_law::{ContactLaw, ContactParams, Counterpart, Level, Material};
+    /// let tip = ContactParams::try_new(Material::try_new(3.0e6, 0.49)?, 0.010)?;
+    /// let hertz = ContactLaw::try_new(tip, Level::Hertz)?;
+    /// // A ball of the fingertip's size: R_eff = R/2, Hertz's force 1/sqrt(2) of the plane's.
+    /// let ball = hertz.with_counterpart(Counterpart::try_ball(0.010)?)?;
+    /// let ratio = ball.response(1e-4).force / hertz.response(1e-4).force;
+    /// assert!((ratio - 0.5f64.sqrt()).abs() < 1e-12);
+    /// assert!((ball.patch(1e-4).radius - (0.005f64 * 1e-4).sqrt()).abs() < 1e-15);
+    /// # Ok::<(), softgrip_law::Error>(())
+    /// ```
+    pub fn with_counterpart(&self, counterpart: Counterpart) -> Result<Self> {
+        let p = &self.params;
+        // The fingertip's own law takes the calibrated map; the published levels (baselines)
+        // the patch argument alone.
+        let calibrated = matches!(
+            self.level,
+            Level::Calibrated | Level::Auto { .. } | Level::Tabulated | Level::Custom
+        );
+        let map = CounterpartMap::try_new(
+            &counterpart,
+            p.radius(),
+            p.poisson_ratio(),
+            p.backing(),
+            calibrated,
+        )?;
+        let (e, r) = (p.effective_modulus(), p.radius());
+        let x_max = self.curve.as_dyn().x_max();
+        // The curve's own range, in rho x, or the counterpart's reach in x, whichever ends
+        // first; a plane keeps its own.
+        let edge_x = if counterpart.is_plane() {
+            x_max
+        } else {
+            let reach = reach(p.backing(), p.thickness_ratio()).min(map.reach);
+            x_max.min(map.rho * reach)
+        };
+        let edge = if edge_x == self.edge.x {
+            self.edge
+        } else {
+            Edge::at(&self.curve, edge_x)
+        };
+        let s = map.force;
+        let law = Self {
+            params: self.params,
+            level: self.level,
+            curve: self.curve.clone(),
+            inv_radius: 1.0 / r,
+            x_scale: map.rho / r,
+            force_scale: s * e * r * r,
+            stiffness_scale: s * map.rho * e * r,
+            energy_length: r / map.rho,
+            tail: map.tail * e * r * r,
+            counterpart,
+            map,
+            edge,
+        };
+        Ok(law.without_softening())
+    }
+
+    /// The law with its range ended before its stiffness could vanish: the counterpart's
+    /// finite-size term grows as `x^(5/2)` and, on a counterpart far smaller than the
+    /// fingertip, overtakes the plane law's stiffening (no contact law may soften). 16 samples
+    /// of the range, then bisection on the first sign change (to 1e-6 of the range); a dip
+    /// between two stiff samples would be missed (the property tests check the monotonicity
+    /// over random counterparts down to R2 = R/20).
+    fn without_softening(mut self) -> Self {
+        if self.tail <= 0.0 {
+            return self;
+        }
+        const SAMPLES: u32 = 16;
+        let top = self.delta_max();
+        let soft = |d: f64| {
+            let k = self.response(d).stiffness;
+            k.is_nan() || k <= 0.0
+        };
+        let Some(i) = (1..=SAMPLES).find(|&i| soft(top * f64::from(i) / f64::from(SAMPLES))) else {
+            return self;
+        };
+        let (mut lo, mut hi) = (
+            top * f64::from(i - 1) / f64::from(SAMPLES),
+            top * f64::from(i) / f64::from(SAMPLES),
+        );
+        while hi - lo > 1e-6 * top {
+            let mid = 0.5 * (lo + hi);
+            if soft(mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        // 5 % short of where it vanishes: the extension needs a positive stiffness.
+        let edge_x = lo * self.x_scale;
+        self.edge = Edge::at(&self.curve, 0.95 * edge_x);
+        self
+    }
+
+    /// The counterpart this law is bound to ([`Counterpart::PLANE`] unless set by
+    /// [`with_counterpart`](Self::with_counterpart)).
+    pub fn counterpart(&self) -> Counterpart {
+        self.counterpart
     }
 
     /// For [`Level::Tabulated`]: the measured curve it was built from.
@@ -221,23 +362,32 @@ impl ContactLaw {
         self.level
     }
 
-    /// Largest compression ratio of the validity range, `x_max` [-].
+    /// Largest compression ratio of the validity range, `x_max` [-] (`x = delta/R`).
     pub fn x_max(&self) -> f64 {
-        self.edge.x
+        self.edge.x / self.map.rho
     }
 
     /// Largest compression of the validity range, `x_max R` \[m\].
     pub fn delta_max(&self) -> f64 {
-        self.edge.x * self.params.radius()
+        self.edge.x * self.params.radius() / self.map.rho
     }
 
     /// Force at the end of the validity range \[N\].
     pub fn force_max(&self) -> f64 {
-        self.edge.f * self.force_scale
+        let f = self.edge.f * self.force_scale;
+        if self.tail == 0.0 {
+            return f;
+        }
+        f - self.tail_at(self.edge.x / self.map.rho).0
     }
 
     /// The level that serves compression ratio `x` (differs from the chosen level for `Auto`).
     pub fn kind_at(&self, x: f64) -> LevelKind {
+        self.kind_at_curve(x * self.map.rho)
+    }
+
+    /// [`kind_at`](Self::kind_at) in the curve's own compression ratio.
+    fn kind_at_curve(&self, x: f64) -> LevelKind {
         match &self.curve {
             Curve::Auto(a) => a.kind_at(x.clamp(0.0, self.edge.x)),
             curve => curve.kind(),
@@ -260,18 +410,35 @@ impl ContactLaw {
     /// extension is used ([`Regime::Extended`]). It does not compute the radius or pressure.
     #[inline(always)]
     pub fn response(&self, delta: f64) -> NormalResponse {
-        let x = delta * self.inv_radius;
+        let x = delta * self.x_scale;
         // NaN fails both comparisons and goes to the cold path.
         if x > 0.0 && x <= self.edge.x {
             let (f, k, level) = self.curve.force_stiffness(x);
+            let (mut force, mut stiffness) = (f * self.force_scale, k * self.stiffness_scale);
+            if self.tail != 0.0 {
+                let (tf, tk) = self.tail_at(delta * self.inv_radius);
+                force -= tf;
+                stiffness -= tk;
+            }
             return NormalResponse {
-                force: f * self.force_scale,
-                stiffness: k * self.stiffness_scale,
+                force,
+                stiffness,
                 regime: Regime::Valid,
                 level,
             };
         }
         self.response_outside(x)
+    }
+
+    /// The counterpart's finite-size term at `x = delta/R`: its force `tail x^(5/2)` \[N\] and
+    /// stiffness `(5/2) tail x^(3/2) / R` \[N/m\].
+    #[inline(always)]
+    fn tail_at(&self, x: f64) -> (f64, f64) {
+        let s = x.sqrt();
+        (
+            self.tail * x * x * s,
+            2.5 * self.tail * x * s * self.inv_radius,
+        )
     }
 
     /// Separated, extended or non-finite: off the hot path.
@@ -287,18 +454,29 @@ impl ContactLaw {
         } else {
             (e.f + e.k * (X_FROZEN - e.x), 0.0, Regime::Extended)
         };
+        let (mut force, mut stiffness) = (f * self.force_scale, k * self.stiffness_scale);
+        if self.tail != 0.0 && regime == Regime::Extended {
+            // The tail extended by its tangent at the edge, frozen with the rest.
+            let (xe, xc) = (e.x / self.map.rho, x.min(X_FROZEN) / self.map.rho);
+            let (tf, tk) = self.tail_at(xe);
+            let r = self.params.radius();
+            force -= tf + tk * r * (xc - xe);
+            if x <= X_FROZEN {
+                stiffness -= tk;
+            }
+        }
         NormalResponse {
-            force: f * self.force_scale,
-            stiffness: k * self.stiffness_scale,
+            force,
+            stiffness,
             regime,
-            level: self.kind_at(if x.is_finite() { x } else { 0.0 }),
+            level: self.kind_at_curve(if x.is_finite() { x } else { 0.0 }),
         }
     }
 
     /// Stored elastic energy W(delta) \[J\], the exact integral of [`response`](Self::response)'s
     /// force (extension included); 0 when separated or for non-finite input.
     pub fn energy(&self, delta: f64) -> f64 {
-        let x = delta * self.inv_radius;
+        let x = delta * self.x_scale;
         if !x.is_finite() || x <= 0.0 {
             return 0.0;
         }
@@ -309,14 +487,28 @@ impl ContactLaw {
             let dx = x.min(X_FROZEN) - e.x;
             e.w + e.f * dx + 0.5 * e.k * dx * dx
         };
-        w * self.force_scale * self.params.radius()
+        let energy = w * self.force_scale * self.energy_length;
+        if self.tail == 0.0 {
+            return energy;
+        }
+        // The tail's integral, tail R x^(7/2)/(7/2), and past the edge its tangent's.
+        let r = self.params.radius();
+        let (xp, xe) = (x.min(X_FROZEN) / self.map.rho, e.x / self.map.rho);
+        let inside = xp.min(xe);
+        let mut w_tail = self.tail * r * inside.powi(3) * inside.sqrt() / 3.5;
+        if xp > xe {
+            let (tf, tk) = self.tail_at(xe);
+            let d = xp - xe;
+            w_tail += r * (tf * d + 0.5 * tk * r * d * d);
+        }
+        energy - w_tail
     }
 
     /// Contact radius and pressure at compression `delta` \[m\] (extension included; an empty
     /// patch when separated or for non-finite input). Costs more than the force: call it only
     /// when someone reads it.
     pub fn patch(&self, delta: f64) -> ContactPatch {
-        let x = delta * self.inv_radius;
+        let x = delta * self.x_scale;
         if !x.is_finite() || x <= 0.0 {
             return ContactPatch::EMPTY;
         }
@@ -331,7 +523,14 @@ impl ContactLaw {
         } else {
             (e.shape, e.taper)
         };
-        ContactPatch::with_profile(self.response(delta).force, rho * self.params.radius(), m, b)
+        let a = rho * self.params.radius();
+        let force = self.response(delta).force;
+        if self.counterpart.is_plane() {
+            ContactPatch::with_profile(force, a, m, b)
+        } else {
+            let [c1, c2] = self.map.axes;
+            ContactPatch::with_ellipse(force, [c1 * a, c2 * a], m, b)
+        }
     }
 
     /// Checked: the whole state at compression `delta` \[m\], finite and in
@@ -366,11 +565,11 @@ impl ContactLaw {
             });
         }
         let x = delta * self.inv_radius;
-        if x > self.edge.x {
+        if delta * self.x_scale > self.edge.x {
             return Err(Error::OutOfRange {
                 level: self.kind_at(x),
                 x,
-                x_max: self.edge.x,
+                x_max: self.x_max(),
             });
         }
         Ok(x)
@@ -399,16 +598,24 @@ impl ContactLaw {
             });
         }
         let f_target = force / self.force_scale;
-        if f_target > self.edge.f {
+        let beyond = if self.tail == 0.0 {
+            f_target > self.edge.f
+        } else {
+            force > self.force_max()
+        };
+        if beyond {
             return Err(Error::ForceOutOfRange {
-                level: self.kind_at(self.edge.x),
+                level: self.kind_at_curve(self.edge.x),
                 force,
                 force_max: self.force_max(),
-                x_max: self.edge.x,
+                x_max: self.x_max(),
             });
         }
         if f_target == 0.0 {
             return Ok(0.0);
+        }
+        if self.tail != 0.0 {
+            return Ok(self.compression_with_tail(force));
         }
         let x = match &self.curve {
             Curve::Tatara(t) => t.x_of_force(f_target),
@@ -430,7 +637,29 @@ impl ContactLaw {
                 })
             }
         };
-        Ok(x * self.params.radius())
+        Ok(x * self.params.radius() / self.map.rho)
+    }
+
+    /// The inverse with the counterpart's tail: safeguarded Newton in delta on the total
+    /// force (non-decreasing on the range: `with_counterpart` ends the range before the
+    /// stiffness could vanish), `0 < force <= force_max`.
+    fn compression_with_tail(&self, force: f64) -> f64 {
+        let hi = self.delta_max();
+        let r = self.params.radius();
+        // Hertz's compression of the force, for a start.
+        let hertz = (0.75 * force / (self.force_scale * self.map.force)).powf(2.0 / 3.0) * r;
+        let stop = Stop {
+            step: 1e-14,
+            width: Some(1e-15),
+            max_iterations: 200,
+        };
+        newton_bracketed(0.0, hi, hertz.min(hi), stop, |d| {
+            let resp = self.response(d);
+            Probe {
+                below_root: resp.force < force,
+                step: (resp.force - force) / resp.stiffness,
+            }
+        })
     }
 }
 

@@ -2,13 +2,16 @@
 
 mod backing;
 mod backing_table;
+mod counterpart;
 mod curve;
+mod elliptic;
 mod error;
 pub mod fitting;
 mod law;
 mod level;
 mod level_table;
 mod levels;
+mod mapping;
 mod material;
 mod normalised;
 mod number;
@@ -22,6 +25,9 @@ mod tabulated;
 
 pub use backing::{Backing, MIN_CORE_THICKNESS_RATIO};
 pub use backing_table::{BACKINGS, BackingInfo, BackingKind, BackingParameter};
+pub use counterpart::{
+    Counterpart, CounterpartKind, MAX_RELATIVE_CURVATURE, MIN_RELATIVE_CURVATURE,
+};
 pub use error::{Error, Result};
 pub use law::{ContactLaw, ContactState, NormalResponse, Regime};
 pub use level::{

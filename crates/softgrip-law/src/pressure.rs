@@ -2,16 +2,22 @@
 
 use std::f64::consts::PI;
 
-/// Contact radius and pressure of one contact.
+use crate::elliptic::second_kind;
+
+/// Contact patch and pressure of one contact: a disc on a plane or a ball, an ellipse on a
+/// cylinder or any surface of two different curvatures.
 ///
-/// `p(r) = p0 (1 - r^2/a^2)^m (1 + b r^2/a^2)` for `r <= a`, with
-/// `p0 = (m + 1)(m + 2)/(m + 2 + b) p_mean` and `p_mean = F / (pi a^2)`: the integral of `p`
-/// over the patch is `F` exactly for every shape exponent `m` [-] (`0 <= m <= 2`) and taper `b`
-/// [-] (`-1 <= b <= 0`; the peak is then at the centre and `p >= 0`). Hertz's ellipse is
-/// `m = 1/2, b = 0` (peak/mean 1.5); the finite-element patches of a squeezed free sphere or
-/// flat pad are flatter (peak/mean 1.3-1.5, `b = 0`), those of a thin skin over a rigid core
-/// fuller, their centre carrying more than any single power gives (`b < 0`), tending to a thin
-/// bonded layer's `(1 - r^2/a^2)^2`. The calibrated levels give `m` and `b` as functions of
+/// The patch is the ellipse of semi-axes `radius` (a, along the counterpart's first principal
+/// direction, [`crate::Counterpart`]) and `radius2` (b, along its second); a disc has `a = b`.
+/// With `ρ² = u²/a² + v²/b²` (u, v along the two directions),
+/// `p = p0 (1 - ρ²)^m (1 + b_t ρ²)` for `ρ <= 1`, with
+/// `p0 = (m + 1)(m + 2)/(m + 2 + b_t) p_mean` and `p_mean = F / (pi a b)`: the integral of `p`
+/// over the patch is `F` exactly for every shape exponent `m` [-] (`0 <= m <= 2`) and taper
+/// `b_t` [-] (`-1 <= b_t <= 0`; the peak is then at the centre and `p >= 0`). Hertz's ellipsoid is
+/// `m = 1/2, b_t = 0` (peak/mean 1.5); the finite-element patches of a squeezed free sphere or
+/// flat pad are flatter (peak/mean 1.3-1.5, `b_t = 0`), those of a thin skin over a rigid core
+/// fuller, their centre carrying more than any single power gives (`b_t < 0`), tending to a thin
+/// bonded layer's `(1 - ρ²)^2`. The calibrated levels give `m` and `b_t` as functions of
 /// `x`, nu and the backing.
 ///
 /// ```
@@ -22,15 +28,23 @@ use std::f64::consts::PI;
 /// assert_eq!(p.pressure_at(0.002), 0.0);
 /// let flat = ContactPatch::with_shape(2.0, 0.001, 0.3);
 /// assert!((flat.peak_pressure / flat.mean_pressure - 1.3).abs() < 1e-12);
-/// // m = 1, b = -1 is (1 - r^2/a^2)^2: peak/mean 3.
+/// // m = 1, b_t = -1 is (1 - r^2/a^2)^2: peak/mean 3.
 /// let layer = ContactPatch::with_profile(2.0, 0.001, 1.0, -1.0);
 /// assert!((layer.peak_pressure / layer.mean_pressure - 3.0).abs() < 1e-12);
+/// // An ellipse of semi-axes 2 mm and 1 mm: the mean over its area pi a b.
+/// let e = ContactPatch::with_ellipse(2.0, [0.002, 0.001], 0.5, 0.0);
+/// assert!((e.mean_pressure - 2.0 / (std::f64::consts::PI * 2e-6)).abs() < 1e-6);
+/// assert_eq!(e.pressure_at_point(0.0, 0.0011), 0.0); // past b
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactPatch {
-    /// Contact radius a \[m\], >= 0.
+    /// Contact radius a \[m\], >= 0: of a disc its radius, of an ellipse the semi-axis along
+    /// the counterpart's first principal direction.
     pub radius: f64,
-    /// Mean pressure F / (pi a^2) \[Pa\].
+    /// The semi-axis b along the counterpart's second principal direction \[m\], >= 0; equal
+    /// to `radius` for a disc (a plane, a ball).
+    pub radius2: f64,
+    /// Mean pressure F / (pi a b) \[Pa\].
     pub mean_pressure: f64,
     /// Peak pressure at the centre, `(m + 1)(m + 2)/(m + 2 + b)` times the mean \[Pa\]
     /// (`m + 1` for `b = 0`).
@@ -49,6 +63,7 @@ impl ContactPatch {
     /// No contact.
     pub const EMPTY: Self = Self {
         radius: 0.0,
+        radius2: 0.0,
         mean_pressure: 0.0,
         peak_pressure: 0.0,
         shape: HERTZ_SHAPE,
@@ -73,7 +88,18 @@ impl ContactPatch {
     /// NaN becomes 0); empty if force or radius is not positive. The levels' shapes are inside
     /// both ranges; the clamps keep a custom law's profile non-negative and peaked at the centre.
     pub fn with_profile(force: f64, radius: f64, shape: f64, taper: f64) -> Self {
-        if !(force > 0.0 && radius > 0.0) {
+        Self::with_ellipse(force, [radius, radius], shape, taper)
+    }
+
+    /// The elliptical patch of force `force` \[N\] over the semi-axes `semi_axes` = `[a, b]`
+    /// \[m\] (along the counterpart's first and second principal directions) with shape
+    /// exponent `shape` (clamped into [0, 2]; NaN becomes Hertz's 1/2) and taper `taper`
+    /// (clamped into [-1, 0]; NaN becomes 0); empty if the force or either semi-axis is not
+    /// positive. The levels' shapes are inside both ranges; the clamps keep a custom law's
+    /// profile non-negative and peaked at the centre.
+    pub fn with_ellipse(force: f64, semi_axes: [f64; 2], shape: f64, taper: f64) -> Self {
+        let [radius, radius2] = semi_axes;
+        if !(force > 0.0 && radius > 0.0 && radius2 > 0.0) {
             return Self::EMPTY;
         }
         let m = if shape.is_nan() {
@@ -86,13 +112,13 @@ impl ContactPatch {
         } else {
             taper.clamp(-1.0, 0.0)
         };
-        // a^2 underflows below a = 1.5e-154 m (a subnormal compression, 5e-324 m at level
-        // `linear`): divide by a twice then, or F / (pi a^2) is F / 0 = inf.
-        let a2 = radius * radius;
-        let mean = if a2 >= f64::MIN_POSITIVE {
-            force / (PI * a2)
+        // a b underflows below a = 1.5e-154 m (a subnormal compression, 5e-324 m at level
+        // `linear`): divide by a and b in turn then, or F / (pi a b) is F / 0 = inf.
+        let ab = radius * radius2;
+        let mean = if ab >= f64::MIN_POSITIVE {
+            force / (PI * ab)
         } else {
-            force / radius / radius / PI
+            force / radius / radius2 / PI
         };
         // b = 0 exactly: (m + 1) mean, bit for bit as before the taper.
         let peak = if b == 0.0 {
@@ -102,6 +128,7 @@ impl ContactPatch {
         };
         Self {
             radius,
+            radius2,
             mean_pressure: mean,
             peak_pressure: peak,
             shape: m,
@@ -109,13 +136,35 @@ impl ContactPatch {
         }
     }
 
-    /// Pressure p(r) \[Pa\] at distance `r` \[m\] from the centre; 0 outside the patch.
-    pub fn pressure_at(&self, r: f64) -> f64 {
-        if self.radius <= 0.0 || r.is_nan() || r.abs() >= self.radius {
+    /// `true` for a disc (`radius == radius2`), the patch on a plane or a ball.
+    pub fn is_disc(&self) -> bool {
+        self.radius == self.radius2
+    }
+
+    /// The radius of the disc of the same area, `sqrt(a b)` \[m\] (`radius` for a disc).
+    pub fn equivalent_radius(&self) -> f64 {
+        if self.is_disc() {
+            self.radius
+        } else {
+            (self.radius * self.radius2).sqrt()
+        }
+    }
+
+    /// The pressure \[Pa\] at the point `(u, v)` \[m\] of the patch, u along its first
+    /// semi-axis, v along its second; 0 outside the patch.
+    pub fn pressure_at_point(&self, u: f64, v: f64) -> f64 {
+        if !(self.radius > 0.0 && self.radius2 > 0.0) {
             return 0.0;
         }
-        let s = r / self.radius;
-        let s2 = s * s;
+        let (su, sv) = (u / self.radius, v / self.radius2);
+        self.pressure_at_normalised(su * su + sv * sv)
+    }
+
+    /// The profile at `s2 = rho²` (0 at the centre, 1 at the edge); 0 outside or for NaN.
+    fn pressure_at_normalised(&self, s2: f64) -> f64 {
+        if s2.is_nan() || s2 >= 1.0 {
+            return 0.0;
+        }
         let u = 1.0 - s2;
         let p = if self.shape == HERTZ_SHAPE {
             self.peak_pressure * u.sqrt()
@@ -129,11 +178,24 @@ impl ContactPatch {
         }
     }
 
+    /// Pressure p(r) \[Pa\] at distance `r` \[m\] from the centre along the first semi-axis
+    /// (any direction of a disc); 0 outside the patch.
+    pub fn pressure_at(&self, r: f64) -> f64 {
+        if self.radius <= 0.0 || r.is_nan() || r.abs() >= self.radius {
+            return 0.0;
+        }
+        let s = r / self.radius;
+        self.pressure_at_normalised(s * s)
+    }
+
     /// Torsional friction limit [N m]: the integral of `mu_f p r dA` over the patch for
     /// Coulomb friction `friction` and normal force `force` \[N\]:
     /// `mu_f F a (m + 1) B(3/2, m + 1) (m + 2)(2m + 5 + 3b) / ((2m + 5)(m + 2 + b))`
     /// (`3 pi / 16 mu_f F a` for Hertz's shape; `2/3 mu_f F a` for a uniform pressure;
-    /// `16/35 mu_f F a` for `(1 - r^2/a^2)^2`).
+    /// `16/35 mu_f F a` for `(1 - r^2/a^2)^2`). On an ellipse `a` is its mean radius, the
+    /// perimeter over 2 pi, `(2/pi) a_max E(e)` (E the complete elliptic integral of the second
+    /// kind, e the eccentricity): `∫ r dA` over the ellipse's rings, each of which is the
+    /// patch's outline scaled.
     pub fn torsion_limit(&self, friction: f64, force: f64) -> f64 {
         let (m, b) = (self.shape, self.taper);
         let taper = if b == 0.0 {
@@ -141,7 +203,25 @@ impl ContactPatch {
         } else {
             (m + 2.0) * (2.0 * m + 5.0 + 3.0 * b) / ((2.0 * m + 5.0) * (m + 2.0 + b))
         };
-        torsion_factor(m) * taper * friction * force * self.radius
+        torsion_factor(m) * taper * friction * force * self.mean_radius()
+    }
+
+    /// The perimeter over 2 pi \[m\]: `radius` for a disc, `(2/pi) a E(e)` for an ellipse of
+    /// larger semi-axis a and eccentricity e.
+    pub fn mean_radius(&self) -> f64 {
+        if self.is_disc() {
+            return self.radius;
+        }
+        let (long, short) = if self.radius >= self.radius2 {
+            (self.radius, self.radius2)
+        } else {
+            (self.radius2, self.radius)
+        };
+        if long.is_nan() || long <= 0.0 {
+            return 0.0;
+        }
+        let q = short / long;
+        2.0 / PI * long * second_kind(q * q)
     }
 }
 
@@ -236,6 +316,44 @@ mod tests {
                 "r {r}: {a} vs {b}"
             );
         }
+    }
+
+    /// Ellipses: the force and the torsion limit by quadrature over the patch in Cartesian
+    /// cells (`pressure_at_point`, the moment arm the distance from the centre), against the
+    /// closed forms; a disc's torsion is unchanged.
+    #[test]
+    fn ellipses_carry_the_force_and_their_torsion() {
+        for (axes, m, b) in [
+            ([0.002, 0.001], 0.5, 0.0),
+            ([0.001, 0.0035], 0.8, -0.3),
+            ([0.003, 0.0003], 0.5, 0.0),
+            ([0.0015, 0.0015 * (1.0 - 1e-9)], 1.2, -0.6),
+        ] {
+            let p = ContactPatch::with_ellipse(3.0, axes, m, b);
+            let n = 1500;
+            let (du, dv) = (2.0 * axes[0] / n as f64, 2.0 * axes[1] / n as f64);
+            let (mut force, mut torsion) = (0.0, 0.0);
+            for i in 0..n {
+                let u = -axes[0] + (i as f64 + 0.5) * du;
+                for j in 0..n {
+                    let v = -axes[1] + (j as f64 + 0.5) * dv;
+                    let q = p.pressure_at_point(u, v) * du * dv;
+                    force += q;
+                    torsion += 0.4 * q * (u * u + v * v).sqrt();
+                }
+            }
+            assert!((force / 3.0 - 1.0).abs() < 1e-4, "{axes:?}: force {force}");
+            let want = p.torsion_limit(0.4, 3.0);
+            assert!(
+                (torsion / want - 1.0).abs() < 1e-4,
+                "{axes:?}: {torsion} vs {want}"
+            );
+        }
+        let disc = ContactPatch::with_profile(3.0, 0.002, 0.7, -0.2);
+        assert!(disc.is_disc() && disc.mean_radius() == 0.002);
+        // The mean radius of a circle of radius 1 reached as an ellipse's limit.
+        let near = ContactPatch::with_ellipse(3.0, [1.0, 1.0 - 1e-12], 0.5, 0.0);
+        assert!((near.mean_radius() - 1.0).abs() < 1e-11);
     }
 
     #[test]

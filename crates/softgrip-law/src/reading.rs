@@ -4,9 +4,10 @@
 //! (`softgrip-rapier`, which depends on the law and not on the recorder) produces it, and the
 //! recorder (`softgrip-record`, which depends on the law and not on rapier) consumes it. Its
 //! fields are the law's vocabulary (compression, force, stiffness, level, regime, construction,
-//! patch) and plain vectors: no engine type.
+//! counterpart, patch) and plain vectors: no engine type.
 
 use crate::backing::Backing;
+use crate::counterpart::Counterpart;
 use crate::law::Regime;
 use crate::level::LevelKind;
 use crate::pressure::ContactPatch;
@@ -23,7 +24,7 @@ use crate::pressure::ContactPatch;
 /// fingertip, not over all contacts.
 ///
 /// ```
-/// use softgrip_law::{Backing, ContactReading, LevelKind, Regime};
+/// use softgrip_law::{Backing, ContactReading, Counterpart, LevelKind, Regime};
 /// let c = ContactReading {
 ///     point: [0.0, 0.0, -0.01],
 ///     normal: [0.0, 0.0, 1.0],
@@ -35,6 +36,7 @@ use crate::pressure::ContactPatch;
 /// assert_eq!((f[0], f[2]), (0.5, 2.0));
 /// assert!((t[1] - (-0.01 * 0.5)).abs() < 1e-15); // r x f = (0,0,-0.01) x (0.5,0,2)
 /// assert_eq!((c.level, c.regime, c.backing), (LevelKind::Hertz, Regime::Separated, Backing::Free));
+/// assert_eq!(c.counterpart, Counterpart::PLANE);
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactReading {
@@ -75,14 +77,23 @@ pub struct ContactReading {
     /// The construction of the fingertip whose law computed the contact (`Free` for a combined
     /// pair of two free fingertips).
     pub backing: Backing,
-    /// Contact radius and pressure at `delta`, when someone asked for them (they cost more
-    /// than the force): `None` in the plugin's readout (`softgrip_rapier::TipContact::patch`
-    /// computes it), set by whoever records pressure or the radius.
+    /// What the fingertip touched: a plane, a curved surface or an edge (a plane for two
+    /// fingertips: their combined law already has both curvatures).
+    pub counterpart: Counterpart,
+    /// Unit vector, world, along the patch's first semi-axis (`patch.radius`; the
+    /// counterpart's first principal direction), tangent to the contact [-]; `[0, 0, 0]` in
+    /// [`Default`] (no contact, no direction).
+    pub patch_direction: [f64; 3],
+    /// Contact patch (semi-axes `radius` along `patch_direction` and `radius2` across it) and
+    /// pressure at `delta`, when someone asked for them (they cost more than the force):
+    /// `None` in the plugin's readout (`softgrip_rapier::TipContact::patch` computes it), set
+    /// by whoever records pressure or the radius.
     pub patch: Option<ContactPatch>,
 }
 
 impl Default for ContactReading {
-    /// No contact: zeros, level `hertz`, regime `separated`, a free fingertip, no patch.
+    /// No contact: zeros, level `hertz`, regime `separated`, a free fingertip on a plane, no
+    /// patch direction, no patch.
     fn default() -> Self {
         Self {
             point: [0.0; 3],
@@ -102,6 +113,8 @@ impl Default for ContactReading {
             max_x: 0.0,
             contact_duration: 0.0,
             backing: Backing::Free,
+            counterpart: Counterpart::PLANE,
+            patch_direction: [0.0; 3],
             patch: None,
         }
     }

@@ -42,3 +42,57 @@ pub fn profile(text: &str, nu: f64) -> Vec<(f64, f64)> {
         })
         .collect()
 }
+
+/// The smooth FE radius of one curve: least squares of `a / sqrt(x)` as a polynomial in
+/// `s = sqrt(x)` over `0.05 <= x` (cubic where the curve spans more than 0.25 in x, else
+/// quadratic): Hertz's `a = sqrt(R delta)` times a low-order series in `sqrt(x)`.
+pub struct Smooth {
+    coef: Vec<f64>,
+}
+
+impl Smooth {
+    /// The fit to the points `(x, f, a/R)` (their `a/R` column).
+    pub fn fit(points: &[(f64, f64, f64)]) -> Self {
+        let pts: Vec<(f64, f64)> = points
+            .iter()
+            .filter(|p| p.0 >= 0.05 - 1e-9)
+            .map(|p| (p.0.sqrt(), p.2 / p.0.sqrt()))
+            .collect();
+        let span = pts.last().expect("points").0.powi(2) - 0.05;
+        let n = if span > 0.25 { 4 } else { 3 };
+        // Normal equations (n <= 4 unknowns, s in [0.22, 0.9]: well enough conditioned).
+        let mut m = vec![vec![0.0; n + 1]; n];
+        for &(s, y) in &pts {
+            for (i, row) in m.iter_mut().enumerate() {
+                for (j, v) in row.iter_mut().enumerate().take(n) {
+                    *v += s.powi((i + j) as i32);
+                }
+                row[n] += s.powi(i as i32) * y;
+            }
+        }
+        for c in 0..n {
+            let p = (c..n)
+                .max_by(|&a, &b| m[a][c].abs().total_cmp(&m[b][c].abs()))
+                .expect("rows");
+            m.swap(c, p);
+            let pivot = m[c].clone();
+            for (r, row) in m.iter_mut().enumerate() {
+                if r != c {
+                    let k = row[c] / pivot[c];
+                    for (v, pv) in row.iter_mut().zip(&pivot).skip(c) {
+                        *v -= k * pv;
+                    }
+                }
+            }
+        }
+        Self {
+            coef: (0..n).map(|i| m[i][n] / m[i][i]).collect(),
+        }
+    }
+
+    /// The smooth radius at `x`.
+    pub fn at(&self, x: f64) -> f64 {
+        let s = x.sqrt();
+        s * self.coef.iter().rev().fold(0.0, |acc, c| acc * s + c)
+    }
+}

@@ -45,6 +45,15 @@ pub fn law_error(py: Python<'_>, e: &softgrip_law::Error) -> PyErr {
         }
         E::IncompatibleLevel { nu, .. } => ("ParameterError", "level", Some(nu.to_string())),
         E::IncompatibleBacking { .. } => ("ParameterError", "backing", None),
+        E::IncompatibleCounterpart {
+            field,
+            relative_curvature,
+            ..
+        } => (
+            "ParameterError",
+            *field,
+            Some(relative_curvature.to_string()),
+        ),
         E::OutOfRange { x, .. } => ("OutOfRangeError", "delta", Some(x.to_string())),
         E::ForceOutOfRange { force, .. } => ("OutOfRangeError", "force", Some(force.to_string())),
         E::InvalidTable { field, value, .. } => ("ParameterError", *field, Some(value.to_string())),

@@ -11,6 +11,7 @@ use rapier3d::prelude::{
 
 use crate::bodies::BodyTable;
 use crate::counters::SoftCounters;
+use crate::curved_models::CurvedModels;
 use crate::detect::{Geom, Model, raw};
 use crate::error::{Error, Result};
 use crate::fingertip::SoftFingertip;
@@ -86,6 +87,8 @@ pub struct SoftContacts {
     pub(crate) soft_pairs: HashMap<(ColliderHandle, ColliderHandle), Option<Arc<Model>>>,
     /// The contact model of each fingertip on a rigid body (shared by its contacts).
     pub(crate) tip_models: HashMap<ColliderHandle, Arc<Model>>,
+    /// The models of contacts on curved counterparts and edges (`curved_models`).
+    pub(crate) curved_models: CurvedModels,
     pub(crate) contacts: Vec<TipContact>,
     pub(crate) counters: SoftCounters,
     pub(crate) accuracy: SoftAccuracy,
@@ -260,7 +263,18 @@ impl SoftContacts {
                 .or_insert_with(|| Model::of_pair(a, b, ma, mb).map(Arc::new))
                 .clone()
         } else {
-            self.tip_models.get(&g.tip).cloned()
+            let base = self.tip_models.get(&g.tip)?;
+            if g.touch.counterpart.is_plane() {
+                return Some(base.clone());
+            }
+            let pairs = &self.pairs;
+            Some(self.curved_models.model(
+                (g.tip, g.other),
+                base,
+                &g.touch,
+                &mut self.counters,
+                |k| pairs.contains_key(k),
+            ))
         }
     }
 }

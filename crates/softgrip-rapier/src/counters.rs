@@ -22,6 +22,9 @@ pub struct SoftCounters {
     pub non_finite: u64,
     /// Candidate pairs that parry could not compute (unsupported shape pair).
     pub unsupported_pairs: u64,
+    /// Contacts on a counterpart the fingertip's law cannot take (a groove or bowl tighter
+    /// than the fingertip), computed as on a plane instead (one per contact per substep).
+    pub counterpart_fallbacks: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the impulse solve.

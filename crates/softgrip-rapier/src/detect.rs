@@ -22,6 +22,7 @@ use rapier3d::prelude::{
 use softgrip_law::{Backing, ContactLaw, ContactParams};
 
 use crate::counters::SoftCounters;
+use crate::curvature::{self, Touch};
 use crate::fingertip::SoftFingertip;
 use crate::series::SeriesLaw;
 
@@ -57,6 +58,9 @@ pub(crate) struct Model {
     pub series: Option<Series>,
     /// The fingertip's construction (a combined pair of free fingertips: free).
     pub backing: Backing,
+    /// The world direction of the patch's first semi-axis (`curvature::Touch::direction`);
+    /// zero for a plane or a pair of fingertips (a disc: any tangent).
+    pub patch_direction: Vector3<f64>,
 }
 
 /// The parts of a pair in series: its law (for the split) and the two fingertips' own models.
@@ -80,6 +84,7 @@ impl Model {
             soft_pair: false,
             series: None,
             backing: tip.backing(),
+            patch_direction: Vector3::zeros(),
         }
     }
 
@@ -129,6 +134,7 @@ impl Model {
             series,
             law,
             backing: Backing::Free,
+            patch_direction: Vector3::zeros(),
         })
     }
 }
@@ -150,6 +156,9 @@ pub(crate) struct Geom {
     pub dist: f64,
     /// Key of the law: (tip, other) for soft-soft pairs, else the tip alone.
     pub soft_pair: bool,
+    /// What the fingertip touches on a rigid body (`curvature`); a plane for a pair of
+    /// fingertips and on a backed fingertip's finger.
+    pub touch: Touch,
 }
 
 /// Converts a glam `f32` vector into the plugin's `f64` algebra (the one boundary).
@@ -398,7 +407,14 @@ impl<'a> Tip<'a> {
             self.collider.shape(),
             prediction,
         ) {
-            Ok(Some(c)) => c,
+            Ok(Some(c)) => crate::rounded::exact_ball_contact(
+                other_co.shape(),
+                other_co.position(),
+                self.collider.position().translation,
+                self.r,
+                prediction,
+                c,
+            )?,
             Ok(None) => return None,
             Err(_) => {
                 counters.unsupported_pairs += 1;
@@ -416,12 +432,15 @@ impl<'a> Tip<'a> {
             normal: s.normal,
             dist: s.dist,
             soft_pair,
+            touch: Touch::plane(&s.normal),
         };
         // Behind the flat face of a backed fingertip is its rigid finger (`behind_face`).
         let tip_behind = behind_face(self.facing, &(-s.normal));
         if !soft_pair {
             // rapier's own rigid contact (the hooks keep its solver contacts there).
-            return (!tip_behind).then_some(g);
+            let touch =
+                curvature::counterpart_at(other_co, &s.point_other, &s.normal, f64::from(self.r));
+            return (!tip_behind).then_some(Geom { touch, ..g });
         }
         let other_facing = tips.get(&other_h).and_then(|t| facing_world(t, other_co));
         let other_behind = behind_face(other_facing, &s.normal);
@@ -455,6 +474,7 @@ impl Geom {
             normal: -self.normal,
             dist: self.dist,
             soft_pair: false,
+            touch: Touch::plane(&(-self.normal)),
         }
     }
 }

@@ -5,6 +5,8 @@
 mod bodies;
 mod contacts;
 mod counters;
+mod curvature;
+mod curved_models;
 mod detect;
 mod error;
 mod fingertip;
@@ -12,6 +14,7 @@ mod hooks;
 mod presets;
 mod readout;
 mod rigid;
+mod rounded;
 mod series;
 mod solve;
 mod step;
@@ -22,6 +25,7 @@ mod world;
 
 pub use contacts::SoftContacts;
 pub use counters::SoftCounters;
+pub use curvature::SHARP_DIHEDRAL;
 pub use detect::compression_from_signed_distance;
 pub use error::{Error, Result};
 pub use fingertip::{

@@ -6,7 +6,9 @@ use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
-use softgrip_law::{Backing, ContactLaw, ContactPatch, ContactReading, LevelKind, Regime};
+use softgrip_law::{
+    Backing, ContactLaw, ContactPatch, ContactReading, Counterpart, LevelKind, Regime,
+};
 
 use crate::detect::{Model, Series, raw};
 use crate::solve::Row;
@@ -100,13 +102,43 @@ impl TipContact {
             max_x: self.max_x,
             contact_duration: self.contact_duration,
             backing: self.backing,
+            counterpart: self.counterpart(),
+            patch_direction: self.patch_direction(),
             patch: None,
         }
     }
 
-    /// Contact radius and pressure at `delta` (computed now).
+    /// Contact patch and pressure at `delta` (computed now): a disc on a plane or a ball, an
+    /// ellipse on a cylinder or an edge, its first semi-axis (`radius`) along
+    /// [`patch_direction`](Self::patch_direction).
     pub fn patch(&self) -> ContactPatch {
         self.model.law.patch(self.delta)
+    }
+
+    /// What the fingertip touched (read from the other collider's shape at the contact, see
+    /// the crate's README): a plane, a curved surface or an edge. A plane for two fingertips
+    /// (their combined law already has both curvatures).
+    pub fn counterpart(&self) -> Counterpart {
+        self.model.law.counterpart()
+    }
+
+    /// Unit vector, world, along the patch's first semi-axis (the counterpart's first
+    /// principal direction: along a cylinder's axis, along an edge); tangent to the contact.
+    /// For a disc (a plane, a ball, two fingertips) any tangent: the one nearest the world's x
+    /// axis (z when the normal is nearly x).
+    pub fn patch_direction(&self) -> [f64; 3] {
+        let d = self.model.patch_direction;
+        if d.norm() > 0.0 {
+            return d.into();
+        }
+        let n = Vector3::from(self.normal);
+        let seed = if n.x.abs() < 0.9 {
+            Vector3::x()
+        } else {
+            Vector3::z()
+        };
+        let t = seed - n * n.dot(&seed);
+        (t / t.norm()).into()
     }
 
     /// Whether the compression was past the law's validity range during the step

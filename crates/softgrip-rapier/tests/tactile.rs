@@ -262,3 +262,51 @@ fn bad_pads_are_typed_errors_naming_field_value_and_range() {
     world.step();
     assert!(world.soft.tactile_image(co).is_none());
 }
+
+/// A fingertip pressed on a cylinder's side: the patch is an ellipse, longer along the
+/// cylinder's axis, and the image shows it so: it integrates to the normal force, and its
+/// spread along the axis is the larger one.
+#[test]
+fn a_cylinder_shows_an_elliptical_patch_along_its_axis() {
+    let mut world = SoftWorld::new();
+    world.physics.gravity = Vector::ZERO;
+    // A cylinder of radius R along z (rotated from y), top of its side at y = 0.
+    world.physics.colliders.insert(
+        ColliderBuilder::cylinder(0.05, R as f32)
+            .rotation(Vector::new(std::f32::consts::FRAC_PI_2, 0.0, 0.0))
+            .translation(Vector::new(0.0, -R as f32, 0.0)),
+    );
+    let pad = TactilePad::new(32, 32, [0.0, -1.0, 0.0], 0.016, 0.016).with_up([0.0, 0.0, 1.0]);
+    let (body, co) = common::kinematic_tip(
+        &mut world,
+        Vector::new(0.0, (R - 0.002) as f32, 0.0),
+        tip_with(pad),
+    );
+    for _ in 0..5 {
+        common::move_to(&mut world, body, Vector::new(0.0, (R - 0.002) as f32, 0.0));
+        world.step();
+    }
+    let c = world.soft.contacts()[0].clone();
+    let patch = c.patch();
+    assert!(patch.radius > 1.2 * patch.radius2, "{patch:?}");
+    let d = c.patch_direction();
+    assert!(d[2].abs() > 0.999, "along the axis (z): {d:?}");
+    let image = world.soft.tactile_image(co).unwrap();
+    assert!((image.total_force() / c.normal_force - 1.0).abs() < 1e-5);
+    // Second moments of the image about its centroid: along v (= z, the axis) and u (= x).
+    let g = image.grid();
+    let (mut su, mut sv) = (0.0, 0.0);
+    for r in 0..g.rows() {
+        for col in 0..g.columns() {
+            let [u, v] = g.taxel_center(r, col);
+            su += image.at(r, col) * u * u;
+            sv += image.at(r, col) * v * v;
+        }
+    }
+    // For the ellipse's Hertz pressure the second moment along an axis is F a²/5 over its
+    // area: the ratio of the two is (a/b)².
+    let ratio = sv / su;
+    let want = (patch.radius / patch.radius2).powi(2);
+    println!("cylinder patch {patch:?}: image moments v/u {ratio:.4}, (a/b)^2 {want:.4}");
+    assert!((ratio / want - 1.0).abs() < 0.03, "{ratio} vs {want}");
+}

@@ -9,13 +9,15 @@ use softgrip_law::ContactPatch;
 pub use crate::frames::WORLD_FRAME;
 use crate::frames::{FrameNames, UpAxis, rotate, rotate_inverse};
 use crate::msgs::geometry_msgs::{Point, Quaternion, Transform, TransformStamped, Vector3, Wrench};
-use crate::msgs::sensor_msgs::Image;
+use crate::msgs::sensor_msgs::{Image, JointState};
 use crate::msgs::softgrip_msgs::SoftContactMsg;
 use crate::msgs::std_msgs::Header;
+use crate::msgs::std_msgs::StringMsg;
 use crate::msgs::tf2_msgs::TFMessage;
 use crate::msgs::visualization_msgs::Marker;
 use crate::sink::{
-    ContactSample, FingertipInfo, SceneInfo, StepFrame, TactileSample, WrenchSample,
+    BodyFrame, BodySample, ContactSample, FingertipInfo, JointSample, SceneInfo, StepFrame,
+    TactileSample, WrenchSample,
 };
 use crate::step::{BodyPose, FingertipState, StepRecord};
 use crate::visuals;
@@ -51,8 +53,15 @@ pub struct StepConverter {
     up: UpAxis,
     dt: f64,
     shapes: Arc<[Marker]>,
-    /// `/tf_static`, until a step has carried it.
+    /// `/tf_static` (the fingertips' frames; the fixed links' are added from the first step),
+    /// until a step has carried it.
     tf_static: Option<TFMessage>,
+    /// The robots' descriptions, until a step has carried them.
+    descriptions: Vec<(String, StringMsg)>,
+    /// The robot links under their parent links.
+    frames: Vec<BodyFrame>,
+    /// No step converted yet.
+    first: bool,
 }
 
 /// Length of a contact's force arrow per newton for a fingertip \[m/N\], up to its reference
@@ -97,7 +106,7 @@ impl StepConverter {
             })
             .collect();
         let header = Header::new(0, "");
-        let tf_static = (!tips.is_empty()).then(|| TFMessage {
+        let tf_static = Some(TFMessage {
             transforms: tips
                 .iter()
                 .map(|t| TransformStamped {
@@ -113,6 +122,18 @@ impl StepConverter {
                 })
                 .collect(),
         });
+        let one = info.robots.len() == 1;
+        let descriptions = (info.robots.iter())
+            .map(|r| {
+                let key = if one { String::new() } else { r.name.clone() };
+                (
+                    key,
+                    StringMsg {
+                        data: r.urdf.clone(),
+                    },
+                )
+            })
+            .collect();
         let mut tip_index = HashMap::new();
         for (i, t) in tips.iter().enumerate() {
             tip_index.entry(t.name.clone()).or_insert(i);
@@ -124,6 +145,9 @@ impl StepConverter {
             dt: info.dt,
             shapes: visuals::shape_markers(info).into(),
             tf_static,
+            descriptions,
+            frames: info.frames.clone(),
+            first: true,
         }
     }
 
@@ -145,32 +169,56 @@ impl StepConverter {
         if step.world_frame != WORLD_FRAME {
             step.world_frame = WORLD_FRAME.to_owned();
         }
+        let first = std::mem::take(&mut self.first);
         step.tf_static = self.tf_static.take().map(|mut tf| {
+            tf.transforms.extend(self.fixed_links(frame));
             for t in &mut tf.transforms {
                 t.header.stamp = step.header().stamp;
             }
             tf
         });
+        step.tf_static = step.tf_static.take().filter(|tf| !tf.transforms.is_empty());
+        step.robot_descriptions = if first {
+            std::mem::take(&mut self.descriptions)
+        } else {
+            Vec::new()
+        };
+        step.joint_states = joint_state(&frame.joints, step.time_ns);
+        step.joint_commands = joint_state(&frame.commands, step.time_ns);
         if !Arc::ptr_eq(&step.shapes, &self.shapes) {
             step.shapes = Arc::clone(&self.shapes);
         }
         let up = self.up;
-        step.bodies.truncate(frame.bodies.len());
-        for (i, b) in frame.bodies.iter().enumerate() {
-            let (position, orientation) = (up.vector(b.translation), up.rotation(b.rotation));
-            match step.bodies.get_mut(i) {
+        let mut n = 0;
+        for b in &frame.bodies {
+            let (parent, (position, orientation)) = match self.frame_of(&b.name) {
+                // A fixed link is on `/tf_static`.
+                Some(f) if f.fixed => continue,
+                Some(f) => match frame.bodies.iter().find(|p| p.name == f.parent) {
+                    Some(p) => (f.parent.as_str(), relative(p, b)),
+                    None => ("", (up.vector(b.translation), up.rotation(b.rotation))),
+                },
+                None => ("", (up.vector(b.translation), up.rotation(b.rotation))),
+            };
+            match step.bodies.get_mut(n) {
                 Some(p) => {
                     p.name.clone_from(&b.name);
+                    if p.parent != parent {
+                        parent.clone_into(&mut p.parent);
+                    }
                     p.position = position;
                     p.orientation = orientation;
                 }
                 None => step.bodies.push(BodyPose {
                     name: b.name.clone(),
+                    parent: parent.to_owned(),
                     position,
                     orientation,
                 }),
             }
+            n += 1;
         }
+        step.bodies.truncate(n);
         step.fingertips.truncate(frame.wrenches.len());
         for (i, w) in frame.wrenches.iter().enumerate() {
             let state = self.fingertip_state(i, w, frame);
@@ -201,6 +249,31 @@ impl StepConverter {
                 .map_or(s.fingertip.as_str(), |t| t.frame.as_str());
             (s.fingertip.clone(), tactile_image(s, frame, step.time_ns))
         }));
+    }
+
+    /// A body's place under its parent link, if it is a robot link.
+    fn frame_of(&self, body: &str) -> Option<&BodyFrame> {
+        self.frames.iter().find(|f| f.body == body)
+    }
+
+    /// The fixed links' poses in their parents at `frame` (`/tf_static`).
+    fn fixed_links<'a>(
+        &'a self,
+        frame: &'a StepFrame,
+    ) -> impl Iterator<Item = TransformStamped> + 'a {
+        self.frames.iter().filter(|f| f.fixed).filter_map(|f| {
+            let child = frame.bodies.iter().find(|b| b.name == f.body)?;
+            let parent = frame.bodies.iter().find(|b| b.name == f.parent)?;
+            let (position, orientation) = relative(parent, child);
+            Some(TransformStamped {
+                header: Header::new(0, &f.parent),
+                child_frame_id: f.body.clone(),
+                transform: Transform {
+                    translation: Vector3::from_array(position),
+                    rotation: Quaternion::from_xyzw(orientation),
+                },
+            })
+        })
     }
 
     /// The mount of the fingertip named `name`.
@@ -254,10 +327,11 @@ impl StepConverter {
 /// A contact of the frame as a `softgrip_msgs/SoftContact`, its vectors as they are (a z-up
 /// frame; its header is set per step, by [`StepRecord::take_contact_array`]).
 ///
-/// `contact_radius` is the law's radius a at the end-of-step compression (whenever the patch
-/// is given). `mean_pressure` is `normal_force / (π a²)` (the step-average force over that
-/// patch), so `mean_pressure · π a² = normal_force`; `peak_pressure` keeps the law's ratio of
-/// peak to mean pressure (3/2 for Hertz). Both are 0 when the patch carries no pressure.
+/// `contact_radius` and `contact_radius2` are the law's semi-axes a, b at the end-of-step
+/// compression (whenever the patch is given; a = b for a disc). `mean_pressure` is
+/// `normal_force / (π a b)` (the step-average force over that patch), so
+/// `mean_pressure · π a b = normal_force`; `peak_pressure` keeps the law's ratio of peak to
+/// mean pressure (3/2 for Hertz). Both are 0 when the patch carries no pressure.
 pub fn soft_contact_msg(c: &ContactSample) -> SoftContactMsg {
     soft_contact_msg_in(c, UpAxis::Z)
 }
@@ -265,7 +339,7 @@ pub fn soft_contact_msg(c: &ContactSample) -> SoftContactMsg {
 /// `(mean, peak)` pressure \[Pa\] of `patch` carrying `normal_force` \[N\]: 0 without a patch
 /// or when the patch carries no pressure (the scene does not record pressure).
 fn pressures(patch: &ContactPatch, normal_force: f64) -> (f64, f64) {
-    let area = std::f64::consts::PI * patch.radius * patch.radius;
+    let area = std::f64::consts::PI * patch.radius * patch.radius2;
     if !(area > 0.0 && normal_force > 0.0 && patch.mean_pressure > 0.0) {
         return (0.0, 0.0);
     }
@@ -301,6 +375,8 @@ fn soft_contact_msg_in(c: &ContactSample, up: UpAxis) -> SoftContactMsg {
     };
     m.set_level(k.level);
     m.set_backing(k.backing);
+    m.set_counterpart(k.counterpart, up.vector(k.patch_direction));
+    m.contact_radius2 = patch.radius2;
     m
 }
 
@@ -309,4 +385,27 @@ fn soft_contact_msg_in(c: &ContactSample, up: UpAxis) -> SoftContactMsg {
 /// fingertip's tf frame `frame` ([`fingertip_frame`](crate::frames::fingertip_frame)).
 pub fn tactile_image(s: &TactileSample, frame: &str, time_ns: u64) -> Image {
     Image::tactile(Header::new(time_ns, frame), s.rows, s.columns, &s.pressure)
+}
+
+/// The pose of `child` in `parent`'s frame: `(q_p* (p_c - p_p), q_p* q_c)` (the same in any
+/// axes both are given in).
+fn relative(parent: &BodySample, child: &BodySample) -> ([f64; 3], [f64; 4]) {
+    let q = parent.rotation;
+    let d: [f64; 3] = std::array::from_fn(|i| child.translation[i] - parent.translation[i]);
+    let inv = [-q[0], -q[1], -q[2], q[3]];
+    (
+        rotate_inverse(q, d),
+        crate::frames::mul(inv, child.rotation),
+    )
+}
+
+/// A `sensor_msgs/JointState` of `joints` stamped `time_ns` \[ns\]; `None` without joints.
+fn joint_state(joints: &[JointSample], time_ns: u64) -> Option<JointState> {
+    (!joints.is_empty()).then(|| JointState {
+        header: Header::new(time_ns, ""),
+        name: joints.iter().map(|j| j.name.clone()).collect(),
+        position: joints.iter().map(|j| j.position).collect(),
+        velocity: joints.iter().map(|j| j.velocity).collect(),
+        effort: joints.iter().map(|j| j.effort).collect(),
+    })
 }

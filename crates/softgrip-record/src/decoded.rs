@@ -4,8 +4,9 @@ use crate::cdr::CdrError;
 use crate::message::RosMessage;
 use crate::msgs::geometry_msgs::WrenchStamped;
 use crate::msgs::rosgraph_msgs::Clock;
-use crate::msgs::sensor_msgs::Image;
+use crate::msgs::sensor_msgs::{Image, JointState};
 use crate::msgs::softgrip_msgs::SoftContactArrayMsg;
+use crate::msgs::std_msgs::StringMsg;
 use crate::msgs::tf2_msgs::TFMessage;
 use crate::msgs::visualization_msgs::MarkerArray;
 
@@ -24,6 +25,10 @@ pub enum Message {
     Clock(Clock),
     /// `sensor_msgs/msg/Image` (a fingertip's tactile image).
     Image(Image),
+    /// `sensor_msgs/msg/JointState` (`/joint_states`, `/joint_commands`).
+    JointState(JointState),
+    /// `std_msgs/msg/String` (`/robot_description`).
+    String(StringMsg),
     /// Any other schema or encoding: kept as bytes.
     Other {
         /// Schema name (empty without a schema).
@@ -50,6 +55,8 @@ impl Message {
             MarkerArray::TYPE_NAME => Self::Markers(MarkerArray::from_cdr(data)?),
             Clock::TYPE_NAME => Self::Clock(Clock::from_cdr(data)?),
             Image::TYPE_NAME => Self::Image(Image::from_cdr(data)?),
+            JointState::TYPE_NAME => Self::JointState(JointState::from_cdr(data)?),
+            StringMsg::TYPE_NAME => Self::String(StringMsg::from_cdr(data)?),
             _ => Self::other(schema_name, data),
         })
     }
@@ -57,23 +64,30 @@ impl Message {
     /// Like [`decode`](Self::decode), with the schema text the recording embeds: a message in
     /// a layout of an earlier softgrip version (told by its schema) is decoded into today's
     /// type. A `SoftContactArray` recorded before fingertips had a construction (no `backing`
-    /// field in its schema) reads as free fingertips (`backing = 0`, `core_thickness = 0`).
+    /// field in its schema) reads as free fingertips (`backing = 0`, `core_thickness = 0`); one
+    /// recorded before the counterpart (no `counterpart` field) as discs on a plane
+    /// (`contact_radius2 = contact_radius`, `counterpart = 0`).
     pub fn decode_with_schema(
         schema_name: &str,
         schema_text: &[u8],
         message_encoding: &str,
         data: &[u8],
     ) -> Result<Self, CdrError> {
-        let before_backing =
-            || !String::from_utf8_lossy(schema_text).contains(crate::msgs::legacy::BACKING_FIELD);
         if message_encoding == "cdr"
             && schema_name == SoftContactArrayMsg::TYPE_NAME
             && !schema_text.is_empty()
-            && before_backing()
         {
-            return Ok(Self::Contacts(
-                crate::msgs::legacy::contacts_before_backing(data)?,
-            ));
+            let text = String::from_utf8_lossy(schema_text);
+            if !text.contains(crate::msgs::legacy::BACKING_FIELD) {
+                return Ok(Self::Contacts(
+                    crate::msgs::legacy::contacts_before_backing(data)?,
+                ));
+            }
+            if !text.contains(crate::msgs::legacy::COUNTERPART_FIELD) {
+                return Ok(Self::Contacts(
+                    crate::msgs::legacy::contacts_before_counterpart(data)?,
+                ));
+            }
         }
         Self::decode(schema_name, message_encoding, data)
     }

@@ -37,8 +37,9 @@ pub use recorder::{
 pub use recording::{ChannelInfo, RecordedMessage, Recording, Recovery};
 pub use recover::{RecoverReport, recover, recover_into};
 pub use sink::{
-    BodySample, ContactReading, ContactSample, FingertipInfo, SceneInfo, ShapeGeometry, ShapeInfo,
-    SinkError, StepFrame, StepSink, TactileSample, WrenchSample,
+    BodyFrame, BodySample, ContactReading, ContactSample, FingertipInfo, JointSample, RobotInfo,
+    SceneInfo, ShapeGeometry, ShapeInfo, SinkError, StepFrame, StepSink, TactileSample,
+    WrenchSample,
 };
 pub use step::{BodyPose, FingertipState, StepRecord, contact_wrench};
 pub use step_messages::{Delivery, StepTopic, StepVisitor, visit_step};

@@ -6,18 +6,22 @@ use std::sync::Arc;
 use crate::msgs::builtin_interfaces::Time;
 use crate::msgs::geometry_msgs::{Quaternion, Transform, TransformStamped, Vector3, Wrench};
 use crate::msgs::rosgraph_msgs::Clock;
-use crate::msgs::sensor_msgs::Image;
+use crate::msgs::sensor_msgs::{Image, JointState};
 use crate::msgs::softgrip_msgs::{SoftContactArrayMsg, SoftContactMsg};
 use crate::msgs::std_msgs::Header;
+use crate::msgs::std_msgs::StringMsg;
 use crate::msgs::tf2_msgs::TFMessage;
 use crate::msgs::visualization_msgs::Marker;
 
-/// A body's pose for `/tf` (its frame is its name, child of the world frame; world axes are
-/// z-up).
+/// A body's pose for `/tf` (its frame is its name, a child of the world frame, or of its parent
+/// link for a robot's link; world axes are z-up).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyPose {
     /// Name of the body (its tf frame).
     pub name: String,
+    /// Its parent frame (a robot link's parent link); empty: the world frame. `position` and
+    /// `orientation` are relative to it.
+    pub parent: String,
     /// Position of the body frame's origin, world \[m\].
     pub position: [f64; 3],
     /// Orientation, unit quaternion `[x, y, z, w]`.
@@ -73,6 +77,13 @@ pub struct StepRecord {
     /// The tactile image of each fingertip with a pad: (fingertip name, its `32FC1` image,
     /// stamped with the step's time, `frame_id` the fingertip's frame).
     pub tactile: Vec<(String, Image)>,
+    /// Each robot's URDF on the first step a converter fills: (robot name, or `""` for a scene's
+    /// only robot; the URDF); empty on the others.
+    pub robot_descriptions: Vec<(String, StringMsg)>,
+    /// `/joint_states` (scenes with robots).
+    pub joint_states: Option<JointState>,
+    /// `/joint_commands`: the joints' targets for the step (scenes with robots).
+    pub joint_commands: Option<JointState>,
 }
 
 impl StepRecord {
@@ -111,27 +122,37 @@ impl StepRecord {
         }
     }
 
-    /// `/tf`: every body as a child of the world frame, then every fingertip that has no frame
-    /// of its own on `/tf_static` (`frame` empty) as a child of the world frame.
+    /// `/tf`: every body as a child of the world frame (a robot link: of its parent link),
+    /// then every fingertip that has no frame of its own on `/tf_static` (`frame` empty) as a
+    /// child of the world frame.
     pub fn tf(&self) -> TFMessage {
         let header = self.header();
-        let pose = |name: &str, position: [f64; 3], orientation: [f64; 4]| TransformStamped {
-            header: header.clone(),
-            child_frame_id: name.to_owned(),
-            transform: Transform {
-                translation: Vector3::from_array(position),
-                rotation: Quaternion::from_xyzw(orientation),
-            },
+        let pose_in = |parent: &str, name: &str, position: [f64; 3], orientation: [f64; 4]| {
+            TransformStamped {
+                header: if parent.is_empty() {
+                    header.clone()
+                } else {
+                    Header {
+                        frame_id: parent.to_owned(),
+                        ..header.clone()
+                    }
+                },
+                child_frame_id: name.to_owned(),
+                transform: Transform {
+                    translation: Vector3::from_array(position),
+                    rotation: Quaternion::from_xyzw(orientation),
+                },
+            }
         };
         let tips = self
             .fingertips
             .iter()
             .filter(|t| t.frame.is_empty())
-            .map(|t| pose(&t.name, t.position, t.orientation));
+            .map(|t| pose_in("", &t.name, t.position, t.orientation));
         let bodies = self
             .bodies
             .iter()
-            .map(|b| pose(&b.name, b.position, b.orientation));
+            .map(|b| pose_in(&b.parent, &b.name, b.position, b.orientation));
         TFMessage {
             transforms: bodies.chain(tips).collect(),
         }

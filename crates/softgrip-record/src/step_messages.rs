@@ -75,22 +75,32 @@ pub enum StepTopic {
     /// [`topics::tactile`] of each fingertip with a pad, `sensor_msgs/msg/Image` (`32FC1`,
     /// pressure \[Pa\], in the fingertip's frame).
     Tactile,
+    /// [`topics::robot_description`] of each robot, `std_msgs/msg/String` (its URDF), on the
+    /// first step only (right after `/tf_static`).
+    RobotDescription,
+    /// [`topics::JOINT_STATES`], `sensor_msgs/msg/JointState`: every robot's moving joints.
+    JointStates,
+    /// [`topics::JOINT_COMMANDS`], `sensor_msgs/msg/JointState`: their targets for the step.
+    JointCommands,
 }
 
 impl StepTopic {
     /// Every topic, in the order a step's messages come (`/tf_static` on the first step only).
-    pub const ALL: [StepTopic; 7] = [
+    pub const ALL: [StepTopic; 10] = [
         StepTopic::Clock,
         StepTopic::TfStatic,
+        StepTopic::RobotDescription,
         StepTopic::Tf,
         StepTopic::Contacts,
         StepTopic::Wrench,
         StepTopic::Markers,
         StepTopic::Tactile,
+        StepTopic::JointStates,
+        StepTopic::JointCommands,
     ];
 
-    /// The topic's name; `fingertip` names the fingertip of a per-fingertip topic (ignored by
-    /// the others).
+    /// The topic's name; `fingertip` names the fingertip of a per-fingertip topic, or the robot
+    /// of a robot's description (`""`: the scene's only robot), and is ignored by the others.
     pub fn name(self, fingertip: &str) -> Cow<'static, str> {
         match self {
             StepTopic::Clock => Cow::Borrowed(topics::CLOCK),
@@ -100,12 +110,18 @@ impl StepTopic {
             StepTopic::Markers => Cow::Borrowed(topics::MARKERS),
             StepTopic::TfStatic => Cow::Borrowed(topics::TF_STATIC),
             StepTopic::Tactile => Cow::Owned(topics::tactile(fingertip)),
+            StepTopic::RobotDescription => Cow::Owned(topics::robot_description(fingertip)),
+            StepTopic::JointStates => Cow::Borrowed(topics::JOINT_STATES),
+            StepTopic::JointCommands => Cow::Borrowed(topics::JOINT_COMMANDS),
         }
     }
 
-    /// Whether there is one such topic per fingertip.
+    /// Whether there is one such topic per fingertip (or per robot: its description).
     pub fn per_fingertip(self) -> bool {
-        matches!(self, StepTopic::Wrench | StepTopic::Tactile)
+        matches!(
+            self,
+            StepTopic::Wrench | StepTopic::Tactile | StepTopic::RobotDescription
+        )
     }
 
     /// How the topic is delivered live.
@@ -113,10 +129,13 @@ impl StepTopic {
         match self {
             StepTopic::Clock => Delivery::Clock,
             StepTopic::Tf => Delivery::Tf,
-            StepTopic::Contacts | StepTopic::Wrench | StepTopic::Markers | StepTopic::Tactile => {
-                Delivery::Data
-            }
-            StepTopic::TfStatic => Delivery::Static,
+            StepTopic::Contacts
+            | StepTopic::Wrench
+            | StepTopic::Markers
+            | StepTopic::Tactile
+            | StepTopic::JointStates
+            | StepTopic::JointCommands => Delivery::Data,
+            StepTopic::TfStatic | StepTopic::RobotDescription => Delivery::Static,
         }
     }
 }
@@ -141,7 +160,8 @@ pub trait StepVisitor {
 /// `/tf_static` (when the step carries it: the first of a run), `/tf`, `/softgrip/contacts`
 /// (each contact's header set to the step's), one `/softgrip/<fingertip>/wrench` per
 /// fingertip (in the fingertip's frame), `/softgrip/markers`, one
-/// `/softgrip/<fingertip>/tactile` per fingertip with a pad.
+/// `/softgrip/<fingertip>/tactile` per fingertip with a pad; with robots, their descriptions on the
+/// first step (after `/tf_static`), `/joint_states` and `/joint_commands`.
 ///
 /// `step` is only borrowed mutably to stamp its contacts and move them into the array
 /// without a copy; they are back in `step.contacts` when this returns.
@@ -150,6 +170,9 @@ pub fn visit_step<V: StepVisitor>(step: &mut StepRecord, visitor: &mut V) -> Res
     visitor.message(StepTopic::Clock, "", t, &step.clock())?;
     if let Some(tf_static) = &step.tf_static {
         visitor.message(StepTopic::TfStatic, "", t, tf_static)?;
+    }
+    for (robot, urdf) in &step.robot_descriptions {
+        visitor.message(StepTopic::RobotDescription, robot, t, urdf)?;
     }
     visitor.message(StepTopic::Tf, "", t, &step.tf())?;
     let array = step.take_contact_array();
@@ -166,6 +189,12 @@ pub fn visit_step<V: StepVisitor>(step: &mut StepRecord, visitor: &mut V) -> Res
     visitor.message(StepTopic::Markers, "", t, &visuals::markers(step))?;
     for (tip, image) in &step.tactile {
         visitor.message(StepTopic::Tactile, tip, t, image)?;
+    }
+    if let Some(states) = &step.joint_states {
+        visitor.message(StepTopic::JointStates, "", t, states)?;
+    }
+    if let Some(commands) = &step.joint_commands {
+        visitor.message(StepTopic::JointCommands, "", t, commands)?;
     }
     Ok(())
 }

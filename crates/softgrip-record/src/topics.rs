@@ -11,6 +11,29 @@ pub const TF_STATIC: &str = "/tf_static";
 pub const MARKERS: &str = "/softgrip/markers";
 /// Simulation time: `rosgraph_msgs/msg/Clock`.
 pub const CLOCK: &str = "/clock";
+/// Every robot joint's position, velocity and effort: `sensor_msgs/msg/JointState`.
+pub const JOINT_STATES: &str = "/joint_states";
+/// The joint targets the controllers commanded for the step (position and velocity targets,
+/// effort = the motor's force limit, 0 without one): `sensor_msgs/msg/JointState`.
+pub const JOINT_COMMANDS: &str = "/joint_commands";
+/// A robot's URDF: `std_msgs/msg/String`, once per run (transient-local on ROS 2).
+pub const ROBOT_DESCRIPTION: &str = "/robot_description";
+
+/// The description topic of robot `robot`: [`ROBOT_DESCRIPTION`] for `""` (a scene with one
+/// robot), `/<robot>/robot_description` otherwise (the name sanitised as in [`wrench`]).
+///
+/// ```
+/// use softgrip_record::topics::robot_description;
+/// assert_eq!(robot_description(""), "/robot_description");
+/// assert_eq!(robot_description("left hand"), "/left_hand/robot_description");
+/// ```
+pub fn robot_description(robot: &str) -> String {
+    if robot.is_empty() {
+        ROBOT_DESCRIPTION.to_owned()
+    } else {
+        format!("/{}/robot_description", ros_name_token(robot))
+    }
+}
 
 /// The wrench topic of a fingertip, `/softgrip/<fingertip>/wrench`
 /// (`geometry_msgs/msg/WrenchStamped`). Characters a ROS name cannot hold become `_`, and a

@@ -111,9 +111,13 @@ pub fn shape_markers(info: &SceneInfo) -> Vec<Marker> {
 
 /// One shape's marker (see [`shape_markers`]).
 fn shape_marker(s: &ShapeInfo, id: i32, color: ColorRGBA, extent: f64) -> Marker {
+    // The shape's own orientation in its body's frame, then the marker's in the shape's.
     let at = |offset: [f64; 3], orientation: Quaternion| Pose {
         position: Point::from_array(offset),
-        orientation,
+        orientation: Quaternion::from_xyzw(crate::frames::mul(
+            s.rotation,
+            [orientation.x, orientation.y, orientation.z, orientation.w],
+        )),
     };
     let (r#type, pose, scale, color, points) = match &s.geometry {
         ShapeGeometry::Plane { normal: n } => {
@@ -266,16 +270,16 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
         markers.push(m);
     }
     for (i, c) in step.contacts.iter().enumerate() {
-        let d = 2.0 * c.contact_radius;
+        let (orientation, [a, b]) = patch_frame(c);
         markers.push(Marker {
             pose: Pose {
                 position: c.point,
-                orientation: Quaternion::z_to(c.normal.to_array()),
+                orientation,
             },
             scale: Vector3 {
-                x: d,
-                y: d,
-                z: DISC_THICKNESS * c.contact_radius,
+                x: 2.0 * a,
+                y: 2.0 * b,
+                z: DISC_THICKNESS * a,
             },
             color: if c.validity_exceeded {
                 PATCH_EXCEEDED
@@ -306,6 +310,78 @@ pub fn markers(step: &StepRecord) -> MarkerArray {
         }
     }
     MarkerArray { markers }
+}
+
+/// The drawn patch of a contact: its orientation (the marker's z along the normal; for an
+/// ellipse its x along `patch_direction`) and its semi-axes `[a, b]` along the marker's x and
+/// y. A disc (`contact_radius2` equal to `contact_radius`, or 0 as in recordings made before
+/// patches were ellipses) is drawn as before, by the shortest rotation of z to the normal.
+fn patch_frame(c: &SoftContactMsg) -> (Quaternion, [f64; 2]) {
+    let (a, b) = (c.contact_radius, c.contact_radius2);
+    let n = c.normal.to_array();
+    let d = c.patch_direction.to_array();
+    if b == a || b <= 0.0 || !b.is_finite() {
+        return (Quaternion::z_to(n), [a, a]);
+    }
+    match frame_quaternion(n, d) {
+        Some(q) => (q, [a, b]),
+        None => (Quaternion::z_to(n), [a, a]),
+    }
+}
+
+/// The rotation whose z axis is `n` and x axis `d` made orthogonal to it (both normalised);
+/// `None` if either is zero or non-finite or they are parallel.
+fn frame_quaternion(n: [f64; 3], d: [f64; 3]) -> Option<Quaternion> {
+    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let unit = |v: [f64; 3]| {
+        let l = dot(v, v).sqrt();
+        (l > 0.0 && l.is_finite()).then(|| v.map(|c| c / l))
+    };
+    let z = unit(n)?;
+    let k = dot(d, z);
+    let x = unit(std::array::from_fn(|i| d[i] - k * z[i]))?;
+    let y = [
+        z[1] * x[2] - z[2] * x[1],
+        z[2] * x[0] - z[0] * x[2],
+        z[0] * x[1] - z[1] * x[0],
+    ];
+    // The quaternion of the rotation matrix with columns x, y, z (Shepperd's method).
+    let (m00, m11, m22) = (x[0], y[1], z[2]);
+    let trace = m00 + m11 + m22;
+    let q = if trace > 0.0 {
+        let s = 2.0 * (trace + 1.0).sqrt();
+        [
+            (y[2] - z[1]) / s,
+            (z[0] - x[2]) / s,
+            (x[1] - y[0]) / s,
+            0.25 * s,
+        ]
+    } else if m00 > m11 && m00 > m22 {
+        let s = 2.0 * (1.0 + m00 - m11 - m22).sqrt();
+        [
+            0.25 * s,
+            (y[0] + x[1]) / s,
+            (z[0] + x[2]) / s,
+            (y[2] - z[1]) / s,
+        ]
+    } else if m11 > m22 {
+        let s = 2.0 * (1.0 + m11 - m00 - m22).sqrt();
+        [
+            (y[0] + x[1]) / s,
+            0.25 * s,
+            (z[1] + y[2]) / s,
+            (z[0] - x[2]) / s,
+        ]
+    } else {
+        let s = 2.0 * (1.0 + m22 - m00 - m11).sqrt();
+        [
+            (z[0] + x[2]) / s,
+            (z[1] + y[2]) / s,
+            0.25 * s,
+            (x[1] - y[0]) / s,
+        ]
+    };
+    Some(Quaternion::from_xyzw(q))
 }
 
 /// Meridian segments of a drawn hemisphere, pole to equator.
@@ -401,4 +477,74 @@ fn force_arrow(tip: &FingertipState, c: &SoftContactMsg) -> Option<Marker> {
         points: vec![c.point, Point::from_array(end)],
         ..Default::default()
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `q v q*` for a unit quaternion.
+    fn rotate(q: Quaternion, v: [f64; 3]) -> [f64; 3] {
+        let (x, y, z, w) = (q.x, q.y, q.z, q.w);
+        let t = [
+            2.0 * (y * v[2] - z * v[1]),
+            2.0 * (z * v[0] - x * v[2]),
+            2.0 * (x * v[1] - y * v[0]),
+        ];
+        [
+            v[0] + w * t[0] + (y * t[2] - z * t[1]),
+            v[1] + w * t[1] + (z * t[0] - x * t[2]),
+            v[2] + w * t[2] + (x * t[1] - y * t[0]),
+        ]
+    }
+
+    /// An elliptical patch's marker: z along the normal, x along the patch's first semi-axis,
+    /// scaled by the two semi-axes; a disc is drawn as before.
+    #[test]
+    fn an_elliptical_patch_is_drawn_along_its_direction() {
+        let s = 0.5f64.sqrt();
+        for (n, d) in [
+            ([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]),
+            ([0.0, 0.0, -1.0], [0.0, 1.0, 0.0]),
+            ([s, s, 0.0], [0.0, 0.3, 1.0]),
+            ([-0.2, 0.9, -0.3], [0.7, 0.1, -0.2]),
+            ([1.0, 0.0, 0.0], [0.0, -1.0, 0.0]),
+        ] {
+            let c = SoftContactMsg {
+                normal: Vector3::from_array(n),
+                patch_direction: Vector3::from_array(d),
+                contact_radius: 0.003,
+                contact_radius2: 0.001,
+                ..Default::default()
+            };
+            let (q, axes) = patch_frame(&c);
+            assert_eq!(axes, [0.003, 0.001]);
+            let norm = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            let nz = n.map(|c| c / norm(n));
+            let z = rotate(q, [0.0, 0.0, 1.0]);
+            let x = rotate(q, [1.0, 0.0, 0.0]);
+            for i in 0..3 {
+                assert!((z[i] - nz[i]).abs() < 1e-12, "{n:?} {d:?}: z {z:?}");
+            }
+            // x is d made tangent.
+            let k: f64 = (0..3).map(|i| d[i] * nz[i]).sum();
+            let t: [f64; 3] = std::array::from_fn(|i| d[i] - k * nz[i]);
+            let tn = t.map(|c| c / norm(t));
+            for i in 0..3 {
+                assert!((x[i] - tn[i]).abs() < 1e-12, "{n:?} {d:?}: x {x:?}");
+            }
+        }
+        // A disc, and a contact recorded before patches were ellipses (radius2 = 0).
+        for b in [0.003, 0.0] {
+            let c = SoftContactMsg {
+                normal: Vector3::from_array([0.0, 1.0, 0.0]),
+                contact_radius: 0.003,
+                contact_radius2: b,
+                ..Default::default()
+            };
+            let (q, axes) = patch_frame(&c);
+            assert_eq!(axes, [0.003, 0.003]);
+            assert_eq!(q, Quaternion::z_to([0.0, 1.0, 0.0]));
+        }
+    }
 }

@@ -263,6 +263,8 @@ proptest! {
             validity_exceeded: flags.0, sliding: flags.1,
             peak_normal_force: v(1), max_compression: v(2), contact_duration: v(3),
             backing: level % 3, core_thickness: v(4),
+            contact_radius2: v(5), patch_direction: Vector3 { x: v(6), y: v(7), z: v(8) },
+            counterpart: level % 3, counterpart_curvature1: v(9), counterpart_curvature2: v(10),
         };
         let back = SoftContactMsg::from_cdr(&c.to_cdr()).unwrap();
         // Compare bit patterns: NaN != NaN.

@@ -66,6 +66,11 @@ fn assert_contact(got: &Value, want: &SoftContactMsg, step: &StepRecord) {
         want.friction_force.to_array(),
         "friction_force",
     );
+    assert_vec3(
+        &got["patch_direction"],
+        want.patch_direction.to_array(),
+        "patch_direction",
+    );
     for (name, w) in [
         ("compression", want.compression),
         ("ratio_x", want.ratio_x),
@@ -79,10 +84,17 @@ fn assert_contact(got: &Value, want: &SoftContactMsg, step: &StepRecord) {
         ("max_compression", want.max_compression),
         ("contact_duration", want.contact_duration),
         ("core_thickness", want.core_thickness),
+        ("contact_radius2", want.contact_radius2),
+        ("counterpart_curvature1", want.counterpart_curvature1),
+        ("counterpart_curvature2", want.counterpart_curvature2),
     ] {
         assert_close(&got[name], w, name);
     }
     assert_eq!(got["backing"].as_u64(), Some(u64::from(want.backing)));
+    assert_eq!(
+        got["counterpart"].as_u64(),
+        Some(u64::from(want.counterpart))
+    );
     assert_eq!(got["level"].as_u64(), Some(u64::from(want.level)));
     assert_eq!(got["level_name"], want.level_name.as_str());
     assert_eq!(

@@ -41,6 +41,7 @@ fn shape(body: &str, geometry: ShapeGeometry) -> ShapeInfo {
     ShapeInfo {
         body: body.into(),
         offset: [0.0; 3],
+        rotation: [0.0, 0.0, 0.0, 1.0],
         geometry,
     }
 }
@@ -83,6 +84,8 @@ fn scene() -> SceneInfo {
         ],
         up: UpAxis::Y,
         gravity: [0.0, -9.81, 0.0],
+        robots: Vec::new(),
+        frames: Vec::new(),
     }
 }
 
@@ -106,11 +109,14 @@ fn reading(force: f64, radius: f64, pressure: bool) -> ContactReading {
         max_x: 0.1,
         contact_duration: 1.0 / 60.0,
         backing: softgrip_law::Backing::Core { thickness: 0.004 },
+        counterpart: softgrip_law::Counterpart::PLANE,
+        patch_direction: [0.0, 0.0, 1.0],
         patch: Some(if pressure {
             patch
         } else {
             ContactPatch {
                 radius: patch.radius,
+                radius2: patch.radius2,
                 ..ContactPatch::EMPTY
             }
         }),
@@ -123,6 +129,8 @@ fn frame(step: u64, pressure: bool) -> StepFrame {
     StepFrame {
         step,
         tactile: Vec::new(),
+        joints: Vec::new(),
+        commands: Vec::new(),
         time: step as f64 * (1.0 / 60.0) as f32 as f64, // an f32-rounded time: not used
         bodies: vec![
             BodySample {

@@ -140,16 +140,22 @@ fn marker_array_schema_lists_the_whole_tree() {
 
 #[test]
 fn msg_code_constants_are_exactly_the_law_tables() {
-    // Every `uint8 LEVEL_*` / `uint8 BACKING_*` line of SoftContact.msg, in file order, is the
-    // table's: no code missing, none extra, none renumbered.
+    // Every `uint8 LEVEL_*` / `uint8 BACKING_*` / `uint8 COUNTERPART_*` line of
+    // SoftContact.msg, in file order, is the tables': no code missing, none extra, none
+    // renumbered.
     let text = SoftContactMsg::DEFINITION.text;
     let in_file: Vec<&str> = text
         .lines()
-        .filter(|l| l.starts_with("uint8 LEVEL_") || l.starts_with("uint8 BACKING_"))
+        .filter(|l| {
+            ["uint8 LEVEL_", "uint8 BACKING_", "uint8 COUNTERPART_"]
+                .iter()
+                .any(|p| l.starts_with(p))
+        })
         .collect();
     assert_eq!(in_file, code_constants());
     assert!(in_file.contains(&"uint8 LEVEL_TABULATED=8"));
     assert!(in_file.contains(&"uint8 LEVEL_CUSTOM=9"));
+    assert!(in_file.contains(&"uint8 COUNTERPART_CURVED=1"));
     // Each code written by a message reads back as its level, by code and by name.
     for row in softgrip_law::LEVELS.iter().filter(|r| r.kind.is_some()) {
         let kind = row.kind.unwrap();

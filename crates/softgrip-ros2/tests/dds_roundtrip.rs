@@ -100,6 +100,11 @@ fn assert_contact(got: &Value, want: &SoftContactMsg, step: &StepRecord, what: &
         want.friction_force.to_array(),
         &format!("{what}.friction_force"),
     );
+    assert_vec3(
+        &got["patch_direction"],
+        want.patch_direction.to_array(),
+        &format!("{what}.patch_direction"),
+    );
     for (name, v) in [
         ("compression", want.compression),
         ("ratio_x", want.ratio_x),
@@ -112,10 +117,18 @@ fn assert_contact(got: &Value, want: &SoftContactMsg, step: &StepRecord, what: &
         ("peak_normal_force", want.peak_normal_force),
         ("max_compression", want.max_compression),
         ("contact_duration", want.contact_duration),
+        ("contact_radius2", want.contact_radius2),
+        ("counterpart_curvature1", want.counterpart_curvature1),
+        ("counterpart_curvature2", want.counterpart_curvature2),
     ] {
         assert_f(&got[name], v, &format!("{what}.{name}"));
     }
     assert_eq!(got["level"], u64::from(want.level), "{what}.level");
+    assert_eq!(
+        got["counterpart"],
+        u64::from(want.counterpart),
+        "{what}.counterpart"
+    );
     assert_eq!(got["level_name"], want.level_name.as_str(), "{what}");
     assert_eq!(got["validity_exceeded"], want.validity_exceeded, "{what}");
     assert_eq!(got["sliding"], want.sliding, "{what}");

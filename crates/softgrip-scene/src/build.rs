@@ -10,7 +10,9 @@ use softgrip_rapier::rapier3d::prelude::{
 };
 use softgrip_rapier::{SoftAccuracy, SoftFingertip, SoftWorld};
 
+use crate::control::Carrier;
 use crate::format::BodyKind;
+use crate::robot::RobotHandles;
 use crate::scene::Scene;
 use crate::vector::vector;
 
@@ -60,6 +62,8 @@ pub struct SceneHandles {
     pub bodies: Vec<(String, RigidBodyHandle)>,
     /// Every rigid shape, body by body: (its body's name, handle).
     pub shapes: Vec<(String, ColliderHandle)>,
+    /// Every robot: (name, the handles of its links, colliders and joints).
+    pub robots: Vec<(String, RobotHandles)>,
     /// Every fingertip's ball collider, registered with the plugin: (name, handle).
     pub fingertips: Vec<(String, ColliderHandle)>,
 }
@@ -73,6 +77,19 @@ impl SceneHandles {
     /// The collider of the fingertip named `name`.
     pub fn fingertip(&self, name: &str) -> Option<ColliderHandle> {
         find(&self.fingertips, name)
+    }
+
+    /// The handles of the robot named `name`.
+    pub fn robot(&self, name: &str) -> Option<&RobotHandles> {
+        self.robots.iter().find(|(n, _)| n == name).map(|(_, h)| h)
+    }
+
+    /// The body of a carrier (a body or a robot's link).
+    pub fn carrier(&self, c: Carrier) -> Option<RigidBodyHandle> {
+        match c {
+            Carrier::Body(i) => self.bodies.get(i).map(|b| b.1),
+            Carrier::Link { robot, link } => self.robots.get(robot)?.1.links.get(link).copied(),
+        }
     }
 
     /// The rigid shapes of the body named `body`, in file order.
@@ -118,8 +135,9 @@ impl Scene {
         BuiltScene { world, handles }
     }
 
-    /// Inserts the scene's bodies, shapes and fingertips into `world` (bodies, then shapes,
-    /// then fingertips, each in file order) and registers the fingertips with the plugin.
+    /// Inserts the scene's bodies, shapes, robots and fingertips into `world` (bodies, then
+    /// shapes, then robots, then fingertips, each in file order) and registers the fingertips
+    /// with the plugin.
     /// The world's own settings (gravity, `dt`, accuracy) are left as they are.
     pub fn build_into(&self, world: &mut SoftWorld) -> SceneHandles {
         let f = self.file();
@@ -148,10 +166,18 @@ impl Scene {
                 out.shapes.push((b.name.clone(), h));
             }
         }
-        for (t, tip) in f.fingertips.iter().zip(self.fingertips()) {
-            let body = self
-                .body_index(&t.body)
-                .map(|i| out.bodies[i].1)
+        for r in self.robots() {
+            let h = r.insert(&mut world.physics);
+            out.robots.push((r.name().to_string(), h));
+        }
+        for ((t, tip), carrier) in f
+            .fingertips
+            .iter()
+            .zip(self.fingertips())
+            .zip(self.carriers())
+        {
+            let body = out
+                .carrier(*carrier)
                 .expect("invariant: checked by Scene::parse");
             let c = fingertip_builder(tip, t.offset, t.density);
             let h = world

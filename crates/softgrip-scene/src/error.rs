@@ -93,6 +93,19 @@ pub enum SceneError {
         /// What is wrong.
         message: String,
     },
+    /// A robot's URDF file could not be read, parsed or checked, or one of its meshes could not
+    /// be loaded: the message names the link or joint and the value.
+    #[error("{origin}: `{field}` ({}): {message}", path.display())]
+    Urdf {
+        /// The scene file.
+        origin: String,
+        /// The robot's field, e.g. `robot[0].urdf`.
+        field: String,
+        /// The URDF file.
+        path: PathBuf,
+        /// What is wrong, and where in the URDF.
+        message: String,
+    },
     /// A scene, mesh or curve file is larger than its read limit (`/dev/zero`, a wrong path).
     #[error(
         "{}: larger than the {} limit for a {what} file (limits in SCENES.md)",
@@ -173,7 +186,8 @@ impl SceneError {
             SceneError::Invalid { field, .. }
             | SceneError::Name { field, .. }
             | SceneError::Fingertip { field, .. }
-            | SceneError::Law { field, .. } => Some(field),
+            | SceneError::Law { field, .. }
+            | SceneError::Urdf { field, .. } => Some(field),
             _ => None,
         }
     }

@@ -24,3 +24,26 @@ where
 {
     exact(d).map(Some)
 }
+
+/// An optional list of arrays of exactly `N` elements each.
+pub(crate) fn exact_list_opt<'de, D, T, const N: usize>(
+    d: D,
+) -> Result<Option<Vec<[T; N]>>, D::Error>
+where
+    D: Deserializer<'de>,
+    T: Deserialize<'de>,
+{
+    let v: Vec<Vec<T>> = Vec::deserialize(d)?;
+    v.into_iter()
+        .enumerate()
+        .map(|(i, x)| {
+            let len = x.len();
+            x.try_into().map_err(|_| {
+                D::Error::custom(format!(
+                    "element {i}: expected exactly {N} components, got {len}"
+                ))
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .map(Some)
+}

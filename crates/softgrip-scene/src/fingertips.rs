@@ -1,7 +1,7 @@
 //! Fingertip checks: every `[[fingertip]]` built into the plugin's [`SoftFingertip`], its
 //! material from a preset or constants, its law from a level name or a measured curve.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
 use softgrip_law::{
@@ -10,30 +10,36 @@ use softgrip_law::{
 };
 use softgrip_rapier::{Preset, SoftFingertip, SoftFingertipBuilder};
 
+use crate::control::Carrier;
 use crate::curve::{MeasuredCurve, read_curve};
 use crate::error::SceneError;
 use crate::format::{FingertipSpec, SceneFile};
 use crate::level::LevelSpec;
 use crate::limits::{MAX_DENSITY, MIN_DENSITY};
+use crate::robot::Robot;
 use crate::validate::Checker;
 
-/// Builds every fingertip (the plugin validates radius, restitution, friction and material).
+/// Builds every fingertip (the plugin validates radius, restitution, friction and material)
+/// and finds what carries it: a body, or a robot's link.
 pub(crate) fn check_fingertips(
     c: &Checker,
     file: &SceneFile,
+    robots: &[Robot],
     base: &Path,
-) -> Result<Vec<SoftFingertip>, SceneError> {
+) -> Result<(Vec<SoftFingertip>, Vec<Carrier>), SceneError> {
     let mut names = HashSet::new();
-    let bodies: HashSet<&str> = file.bodies.iter().map(|b| b.name.as_str()).collect();
+    // By name, so that N fingertips on N bodies check in O(N).
+    let bodies: HashMap<&str, usize> = (file.bodies.iter().enumerate())
+        .map(|(i, b)| (b.name.as_str(), i))
+        .collect();
     let mut tips = Vec::new();
+    let mut carriers = Vec::new();
     for (i, t) in file.fingertips.iter().enumerate() {
         let f = |s: &str| format!("fingertip[{i}].{s}");
         if t.name.is_empty() || !names.insert(t.name.as_str()) {
             return Err(c.name(f("name"), format!("`{}` is empty or used twice", t.name)));
         }
-        if !bodies.contains(t.body.as_str()) {
-            return Err(c.name(f("body"), format!("no body is named `{}`", t.body)));
-        }
+        carriers.push(carrier(c, t, &bodies, robots, &f)?);
         c.coords(f("offset"), t.offset)?;
         c.range(
             f("density"),
@@ -80,7 +86,40 @@ pub(crate) fn check_fingertips(
         })?;
         tips.push(tip);
     }
-    Ok(tips)
+    Ok((tips, carriers))
+}
+
+/// What carries fingertip `t`: exactly one of `body` (a body's name) and `link`
+/// (`<robot>/<link>`).
+fn carrier(
+    c: &Checker,
+    t: &FingertipSpec,
+    bodies: &HashMap<&str, usize>,
+    robots: &[Robot],
+    f: &dyn Fn(&str) -> String,
+) -> Result<Carrier, SceneError> {
+    match (&t.body, &t.link) {
+        (Some(body), None) => (bodies.get(body.as_str()))
+            .map(|&i| Carrier::Body(i))
+            .ok_or_else(|| c.name(f("body"), format!("no body is named `{body}`"))),
+        (None, Some(link)) => {
+            let (robot, name) = link
+                .split_once('/')
+                .ok_or_else(|| c.name(f("link"), format!("`{link}`: expected `<robot>/<link>`")))?;
+            let r = (robots.iter().position(|r| r.name() == robot))
+                .ok_or_else(|| c.name(f("link"), format!("no robot is named `{robot}`")))?;
+            let l = robots[r].link_index(name).ok_or_else(|| {
+                c.name(
+                    f("link"),
+                    format!(
+                        "robot `{robot}` has no link `{name}` (links without collision, visual or inertial are merged into their parent)"
+                    ),
+                )
+            })?;
+            Ok(Carrier::Link { robot: r, link: l })
+        }
+        _ => Err(c.name(f("body"), "give exactly one of `body` and `link`")),
+    }
 }
 
 /// The material of a fingertip: a preset by name, or the constants.

@@ -6,8 +6,10 @@
 
 use serde::Deserialize;
 
-use crate::exact::{exact, exact_opt};
+use crate::control::ControllerSpec;
+use crate::exact::{exact, exact_list_opt, exact_opt};
 use crate::level::LevelSpec;
+use crate::robot::RobotSpec;
 
 /// A whole experiment: simulation settings, bodies, fingertips, an optional gripper and what
 /// to record.
@@ -36,12 +38,19 @@ pub struct SceneFile {
     /// Rigid bodies, in order.
     #[serde(default, rename = "body")]
     pub bodies: Vec<BodySpec>,
-    /// Soft fingertips, each attached to a body.
+    /// Robots loaded from URDF files, in order (after the bodies).
+    #[serde(default, rename = "robot")]
+    pub robots: Vec<RobotSpec>,
+    /// Soft fingertips, each attached to a body or a robot's link.
     #[serde(default, rename = "fingertip")]
     pub fingertips: Vec<FingertipSpec>,
-    /// A parallel-jaw gripper controller.
+    /// A parallel-jaw gripper controller (the controller `parallel_jaws`, written the short way).
     #[serde(default)]
     pub gripper: Option<GripperSpec>,
+    /// Controllers, in order (after the `[gripper]`): each one of the kinds listed in
+    /// SCENES.md ("Controllers").
+    #[serde(default, rename = "controller")]
+    pub controllers: Vec<ControllerSpec>,
 }
 
 fn default_dt() -> f64 {
@@ -76,6 +85,10 @@ pub struct RecordSpec {
     /// Contact radius and pressure of every contact (default false: not computed at all).
     #[serde(default)]
     pub pressure: bool,
+    /// Every robot joint's state and its targets (`/joint_states`, `/joint_commands`; default
+    /// true; nothing without robots).
+    #[serde(default = "yes")]
+    pub joints: bool,
     /// The MCAP recorder writes every n-th step (steps n, 2n, ...), >= 1 (default
     /// [`DEFAULT_EVERY_N_STEPS`]). Publishers still receive every step.
     #[serde(default = "default_every_n_steps")]
@@ -99,6 +112,7 @@ impl Default for RecordSpec {
             wrenches: true,
             contacts: true,
             pressure: false,
+            joints: true,
             every_n_steps: DEFAULT_EVERY_N_STEPS,
         }
     }
@@ -232,9 +246,14 @@ pub struct MaterialSpec {
 pub struct FingertipSpec {
     /// Unique name (readouts, summary, recording).
     pub name: String,
-    /// Name of the body that carries it.
-    pub body: String,
-    /// Centre of the sphere relative to the body origin \[m\] (default none).
+    /// Name of the body that carries it; exclusive with `link`.
+    #[serde(default)]
+    pub body: Option<String>,
+    /// The robot link that carries it, `<robot>/<link>`; exclusive with `body`. `offset` and
+    /// `facing` are then in the link's frame.
+    #[serde(default)]
+    pub link: Option<String>,
+    /// Centre of the sphere relative to the body (or link) origin \[m\] (default none).
     #[serde(default, deserialize_with = "exact")]
     pub offset: [f64; 3],
     /// Radius R \[m\], finite and > 0.
@@ -355,19 +374,23 @@ fn default_tip_density() -> f64 {
     1070.0
 }
 
-/// A parallel-jaw gripper: two kinematic jaws that approach, squeeze, lift, hold and release.
+/// A parallel-jaw gripper: kinematic jaws (any number) that approach, squeeze, lift, hold and
+/// release.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct GripperSpec {
     /// Name of the gripper (default `gripper`).
     #[serde(default = "default_gripper_name")]
     pub name: String,
-    /// The two jaw bodies (kinematic, each carrying at least one fingertip).
-    #[serde(deserialize_with = "exact")]
-    pub jaws: [String; 2],
-    /// Closing direction of the first jaw (normalised; the second closes along its opposite).
-    #[serde(deserialize_with = "exact")]
-    pub axis: [f64; 3],
+    /// The jaw bodies (kinematic, each carrying at least one fingertip), at least one.
+    pub jaws: Vec<String>,
+    /// Closing direction of the first of two jaws (normalised; the second closes along its
+    /// opposite). Exclusive with `axes`.
+    #[serde(default, deserialize_with = "exact_opt")]
+    pub axis: Option<[f64; 3]>,
+    /// Closing direction of each jaw (normalised), one per jaw. Exclusive with `axis`.
+    #[serde(default, deserialize_with = "exact_list_opt")]
+    pub axes: Option<Vec<[f64; 3]>>,
     /// Lift direction (normalised; default opposite to gravity).
     #[serde(default, deserialize_with = "exact_opt")]
     pub up: Option<[f64; 3]>,

@@ -4,21 +4,13 @@
 //! calls the same controller logic, so its contact values are bit-identical.
 
 use softgrip_rapier::SoftWorld;
-use softgrip_rapier::rapier3d::prelude::{ColliderHandle, RigidBodyHandle};
+use softgrip_rapier::rapier3d::prelude::RigidBodyHandle;
 
 use crate::build::SceneHandles;
-use crate::gripper::{GripperProgram, GripperState, jaw_compressions};
+use crate::control::{ControlEvent, ControlSet};
 use crate::scene::Scene;
 use crate::trajectory::Trajectory;
 use crate::vector::vector;
-
-/// The gripper of a plain run: program, state, and each jaw's fingertip colliders.
-struct PlainGripper {
-    program: GripperProgram,
-    state: GripperState,
-    tips: [Vec<ColliderHandle>; 2],
-    jaws: [RigidBodyHandle; 2],
-}
 
 /// A scene on the plain plugin.
 pub struct PlainRun {
@@ -26,8 +18,10 @@ pub struct PlainRun {
     pub world: SoftWorld,
     /// The scene's handles, by name and in file order.
     pub handles: SceneHandles,
+    /// The controllers (the `[gripper]`, the `[[controller]]`s, each robot's commands).
+    pub control: ControlSet,
     paths: Vec<(RigidBodyHandle, Trajectory)>,
-    gripper: Option<PlainGripper>,
+    events: Vec<(usize, ControlEvent)>,
     step: u64,
 }
 
@@ -41,21 +35,13 @@ impl PlainRun {
             .filter(|(b, _)| !b.trajectory.is_empty())
             .map(|(b, (_, h))| (*h, Trajectory::of(b)))
             .collect();
-        let gripper = scene.gripper().map(|p| PlainGripper {
-            program: p.clone(),
-            state: GripperState::new(p.jaws.map(|i| f.bodies[i].position)),
-            tips: p.tips.clone().map(|tips| {
-                tips.iter()
-                    .map(|&i| built.handles.fingertips[i].1)
-                    .collect()
-            }),
-            jaws: p.jaws.map(|i| bodies[i].1),
-        });
+        let control = scene.control_set(&built.handles);
         Self {
             world: built.world,
             handles: built.handles,
+            control,
             paths,
-            gripper,
+            events: Vec::new(),
             step: 0,
         }
     }
@@ -77,18 +63,14 @@ impl PlainRun {
                 rb.set_next_kinematic_translation(vector(p));
             }
         }
-        if let Some(g) = &mut self.gripper {
-            let contacts = self.world.soft.contacts().iter();
-            let delta = jaw_compressions(&g.tips, contacts.map(|c| (c.fingertip, c.delta)));
-            g.state.advance(&g.program, dt, delta);
-            for k in 0..2 {
-                if let Some(rb) = self.world.physics.bodies.get_mut(g.jaws[k]) {
-                    rb.set_next_kinematic_translation(vector(g.state.jaws[k].position));
-                }
-            }
-        }
+        self.events = self.control.step(&mut self.world, t, dt);
         self.world.step();
         self.step += 1;
+    }
+
+    /// What the controllers did in the last step, by controller index.
+    pub fn events(&self) -> &[(usize, ControlEvent)] {
+        &self.events
     }
 
     /// Steps `n` times; `each(run)` is called after every step.

@@ -8,17 +8,21 @@ use std::path::{Path, PathBuf};
 use softgrip_rapier::SoftFingertip;
 use softgrip_rapier::rapier3d::prelude::SharedShape;
 
+use crate::build::SceneHandles;
+use crate::control::{
+    Carrier, ControlSet, Controller, ControllerSpec, Grasp, GripperProgram, JointCommands,
+    JointTrajectory, ParallelJaws,
+};
 use crate::error::SceneError;
 use crate::fingertips;
 use crate::format::SceneFile;
-use crate::gripper::GripperProgram;
-use softgrip_law::shorten_numbers;
-
 use crate::level::LevelSpec;
 use crate::limits::MAX_SCENE_BYTES;
 use crate::read::{ReadError, read_bounded, read_limited, strip_bom_str};
+use crate::robot::Robot;
 use crate::start;
 use crate::validate::{self, Checker};
+use softgrip_law::shorten_numbers;
 
 /// The embedded default scene (`scenes/default.toml`): a parallel-jaw gripper with two soft
 /// hemispherical fingertips approaches a box, squeezes it, lifts, holds and releases it.
@@ -33,8 +37,11 @@ pub struct Scene {
     base_dir: PathBuf,
     file: SceneFile,
     shapes: Vec<Vec<SharedShape>>,
+    robots: Vec<Robot>,
     fingertips: Vec<SoftFingertip>,
+    carriers: Vec<Carrier>,
     gripper: Option<GripperProgram>,
+    controllers: Vec<Box<dyn Controller>>,
     /// The index of each body's name in `file.bodies` (names are unique: checked).
     body_index: HashMap<String, usize>,
 }
@@ -59,11 +66,48 @@ impl Scene {
         let c = Checker { origin };
         let meshes = validate::check_bodies(&c, &file, base_dir)?;
         let shapes = validate::shapes(&c, &file, meshes)?;
-        let fingertips = fingertips::check_fingertips(&c, &file, base_dir)?;
+        let robots = crate::robots::check_robots(&c, &file, base_dir)?;
+        let (fingertips, carriers) = fingertips::check_fingertips(&c, &file, &robots, base_dir)?;
         let gripper = match &file.gripper {
             Some(g) => Some(GripperProgram::from_spec(&c, &file, &fingertips, g)?),
             None => None,
         };
+        let mut controllers: Vec<Box<dyn Controller>> = Vec::new();
+        if let Some(p) = &gripper {
+            controllers.push(Box::new(jaws(&file, p.clone())));
+        }
+        for (i, spec) in file.controllers.iter().enumerate() {
+            let field = format!("controller[{i}]");
+            controllers.push(match spec {
+                ControllerSpec::ParallelJaws(g) => {
+                    let p = GripperProgram::from_spec(&c, &file, &fingertips, g)?;
+                    Box::new(jaws(&file, p))
+                }
+                ControllerSpec::Trajectory(t) => {
+                    Box::new(JointTrajectory::from_spec(&c, &field, &robots, t)?)
+                }
+                ControllerSpec::Grasp(g) => Box::new(Grasp::from_spec(
+                    &c,
+                    &field,
+                    &robots,
+                    &carriers,
+                    file.gravity,
+                    g,
+                )?),
+            });
+        }
+        let mut names = std::collections::HashSet::new();
+        for (i, ctrl) in controllers.iter().enumerate() {
+            if !names.insert(ctrl.name().to_string()) {
+                return Err(c.name(
+                    format!("controller[{i}].name"),
+                    format!("`{}` is used twice (the `[gripper]` counts)", ctrl.name()),
+                ));
+            }
+        }
+        for (i, r) in robots.iter().enumerate() {
+            controllers.push(Box::new(JointCommands::new(i, r)));
+        }
         let body_index = file
             .bodies
             .iter()
@@ -75,8 +119,11 @@ impl Scene {
             base_dir: base_dir.to_path_buf(),
             file,
             shapes,
+            robots,
             fingertips,
+            carriers,
             gripper,
+            controllers,
             body_index,
         };
         start::check_start(&c, &scene)?;
@@ -125,9 +172,43 @@ impl Scene {
         &self.fingertips
     }
 
-    /// The gripper's program, if the scene has a gripper.
+    /// The `[gripper]`'s program, if the scene has one.
     pub fn gripper(&self) -> Option<&GripperProgram> {
         self.gripper.as_ref()
+    }
+
+    /// The robots, in file order.
+    pub fn robots(&self) -> &[Robot] {
+        &self.robots
+    }
+
+    /// Index of the robot named `name`.
+    pub fn robot_index(&self, name: &str) -> Option<usize> {
+        self.robots.iter().position(|r| r.name() == name)
+    }
+
+    /// What carries each fingertip (a body or a robot's link), in file order.
+    pub fn carriers(&self) -> &[Carrier] {
+        &self.carriers
+    }
+
+    /// The name of a carrier: the body's, or `<robot>/<link>` (its tf frame).
+    pub fn carrier_name(&self, c: Carrier) -> String {
+        match c {
+            Carrier::Body(i) => self.file.bodies[i].name.clone(),
+            Carrier::Link { robot, link } => self.robots[robot].frame(link),
+        }
+    }
+
+    /// The controllers in their start state, in the order they run: the `[gripper]`, the
+    /// `[[controller]]`s, then each robot's commands from outside.
+    pub fn controllers(&self) -> Vec<Box<dyn Controller>> {
+        self.controllers.clone()
+    }
+
+    /// The controllers over a world built with `handles` ([`Scene::build_into`]).
+    pub fn control_set(&self, handles: &SceneHandles) -> ControlSet {
+        ControlSet::new(self.controllers(), handles.clone(), self.robots.clone())
     }
 
     /// Number of steps: `duration / dt`, rounded to the nearest integer (at least 1).
@@ -212,4 +293,14 @@ fn line_column(text: &str, offset: usize) -> (usize, usize) {
     let line = before.matches('\n').count() + 1;
     let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
     (line, column)
+}
+
+/// The parallel jaws of `program`, at their bodies' start positions.
+fn jaws(file: &SceneFile, program: GripperProgram) -> ParallelJaws {
+    let positions = program
+        .jaws
+        .iter()
+        .map(|&i| file.bodies[i].position)
+        .collect();
+    ParallelJaws::new(program, positions)
 }

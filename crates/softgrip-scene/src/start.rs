@@ -86,6 +86,17 @@ fn labels(scene: &Scene, h: &SceneHandles) -> Vec<(ColliderHandle, String)> {
             }
         }
     }
+    for (i, ((name, rh), robot)) in h.robots.iter().zip(scene.robots()).enumerate() {
+        for (l, colliders) in rh.colliders.iter().enumerate() {
+            for (k, co) in colliders.iter().enumerate() {
+                let link = &robot.links()[l].name;
+                labels.push((
+                    *co,
+                    format!("robot[{i}] (`{name}`) link `{link}` collision[{k}]"),
+                ));
+            }
+        }
+    }
     for (i, (name, handle)) in h.fingertips.iter().enumerate() {
         labels.push((*handle, format!("fingertip[{i}] (`{name}`)")));
     }

@@ -160,11 +160,24 @@ fn four_component_gravity_is_an_error_not_truncated() {
         "jaws = [\"left_jaw\", \"right_jaw\"]",
         "jaws = [\"left_jaw\", \"right_jaw\", \"table\"]",
     );
+    // Any number of jaws (issue 25): a third jaw is checked as a jaw, not dropped.
     let err = parse(&jaws).unwrap_err();
+    assert!(err.to_string().contains("`gripper.jaws[2]`"), "{err}");
+    let axes = DEFAULT_SCENE.replace(
+        "axis = [1.0, 0.0, 0.0]",
+        "axes = [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.0]]",
+    );
+    let err = parse(&axes).unwrap_err();
     assert!(
-        err.to_string().contains("exactly 2 components, got 3"),
+        err.to_string().contains("exactly 3 components, got 4"),
         "{err}"
     );
+    let axes = DEFAULT_SCENE.replace(
+        "axis = [1.0, 0.0, 0.0]",
+        "axes = [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]",
+    );
+    let err = parse(&axes).unwrap_err();
+    assert!(err.to_string().contains("2 jaws, 3 axes"), "{err}");
 }
 
 #[test]

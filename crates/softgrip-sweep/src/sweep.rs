@@ -146,9 +146,9 @@ impl Sweep {
         let (scene, scene_text) = read_base_scene(&scene_path).map_err(scene_err)?;
         let base: toml::Table = toml::from_str(&scene_text)
             .map_err(|e| scene_err(format!("{}: {e}", scene_path.display())))?;
-        if scene.gripper().is_none() {
+        if !scene.controllers().iter().any(|c| c.grasp().is_some()) {
             return Err(scene_err(format!(
-                "{}: has no [gripper]: a sweep's `held` is decided by the gripper's hold",
+                "{}: has no [gripper] and no `grasp` controller: a sweep's `held` is decided by the grasp's hold",
                 scene_path.display()
             )));
         }

@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use softgrip_ecs::{Gripper, McapSink, Phase, Physics, Scene, Simulation, Summary};
+use softgrip_ecs::{Controllers, GraspView, McapSink, Phase, Physics, Scene, Simulation, Summary};
 
 /// What a trial measured. Every figure but `wall_time` (in [`TrialRow`](crate::TrialRow)) is
 /// a function of the trial's scene alone: a trial re-run gives the same bits.
@@ -48,10 +48,9 @@ pub fn run_scene(
     let object_index = scene
         .body_index(object)
         .ok_or_else(|| format!("`object`: no body is named `{object}`"))?;
-    let program = scene
-        .gripper()
-        .ok_or("`held` needs a gripper: the scene has no [gripper]")?;
-    let (up, lift) = (program.up, program.lift.distance);
+    let view = grasp_view(scene)
+        .ok_or("`held` needs a grasp: the scene has no [gripper] and no `grasp` controller")?;
+    let (up, lift) = (view.up, view.lift_distance);
     let mut sim = Simulation::new(scene).with_summary();
     if let Some(path) = mcap {
         let every = scene.file().record.every_n_steps.max(1);
@@ -60,15 +59,16 @@ pub fn run_scene(
         sim = sim.with_recorder(sink);
     }
     sim.initialize();
-    let gripper = sim
-        .entities
-        .gripper
-        .expect("invariant: a scene with a gripper spawns its entity");
     let object_entity = sim.entities.bodies[object_index];
     let phase = |sim: &Simulation| {
         sim.world
-            .get::<Gripper>(gripper)
-            .map_or(Phase::Done, |g| g.state.phase)
+            .get_resource::<Controllers>()
+            .and_then(|c| {
+                c.0.controllers()
+                    .iter()
+                    .find_map(|c| c.grasp().and(c.phase()))
+            })
+            .unwrap_or(Phase::Done)
     };
     let mut lift_start = None;
     let mut hold_end = None;
@@ -77,11 +77,11 @@ pub fn run_scene(
         sim.step();
         let after = phase(&sim);
         if after == Phase::Lift && before != Phase::Lift {
-            lift_start = heights(&sim, gripper, object_entity, up);
+            lift_start = heights(&sim, &view, object_entity, up);
         }
         if before == Phase::Hold && after == Phase::Release {
-            let grip = in_grip(&sim, gripper, object_entity);
-            hold_end = heights(&sim, gripper, object_entity, up).map(|h| (h, grip));
+            let grip = in_grip(&sim, &view, object_entity);
+            hold_end = heights(&sim, &view, object_entity, up).map(|h| (h, grip));
         }
     }
     sim.finish()
@@ -109,53 +109,60 @@ pub fn run_scene(
     })
 }
 
-/// The object's and the jaws' mean position along `up` after the last step.
+/// The first controller of `scene` that runs a grasp, seen from outside.
+fn grasp_view(scene: &Scene) -> Option<GraspView> {
+    scene.controllers().iter().find_map(|c| c.grasp())
+}
+
+/// The object's and the hand's (its jaws' or base's) mean position along `up` after the last
+/// step.
 fn heights(
     sim: &Simulation,
-    gripper: softgrip_ecs::bevy_ecs::entity::Entity,
+    view: &GraspView,
     object: softgrip_ecs::bevy_ecs::entity::Entity,
     up: [f64; 3],
 ) -> Option<Heights> {
     let physics = sim.world.resource::<Physics>();
-    let along = |entity| {
-        let rb = physics
-            .world
-            .physics
-            .bodies
-            .get(physics.body_handle(entity)?)?;
+    let handles = sim.world.resource::<Controllers>().0.handles();
+    let along = |h| {
+        let rb = physics.world.physics.bodies.get(h)?;
         let t = rb.translation();
         Some(t.x as f64 * up[0] + t.y as f64 * up[1] + t.z as f64 * up[2])
     };
-    let jaws = sim.world.get::<Gripper>(gripper)?.jaws;
+    let mut hand = 0.0;
+    for c in &view.hand {
+        hand += along(handles.carrier(*c)?)?;
+    }
     Some(Heights {
-        object: along(object)?,
-        jaws: 0.5 * (along(jaws[0])? + along(jaws[1])?),
+        object: along(physics.body_handle(object)?)?,
+        jaws: hand / view.hand.len().max(1) as f64,
     })
 }
 
-/// Whether each jaw has a fingertip in contact with the object after the last step.
+/// Whether each jaw or finger has a fingertip in contact with the object after the last step.
 fn in_grip(
     sim: &Simulation,
-    gripper: softgrip_ecs::bevy_ecs::entity::Entity,
+    view: &GraspView,
     object: softgrip_ecs::bevy_ecs::entity::Entity,
 ) -> bool {
     let physics = sim.world.resource::<Physics>();
-    let (Some(g), Some(object)) = (
-        sim.world.get::<Gripper>(gripper),
-        physics.body_handle(object),
-    ) else {
+    let handles = sim.world.resource::<Controllers>().0.handles();
+    let Some(object) = physics.body_handle(object) else {
         return false;
     };
     let colliders = &physics.world.physics.colliders;
-    let mut touching = [false; 2];
+    let mut touching = vec![false; view.fingers.len()];
     for c in physics.world.soft.contacts() {
         let on_object = colliders.get(c.other).and_then(|o| o.parent()) == Some(object);
-        let Some(tip) = physics.collider_entity(c.fingertip) else {
-            continue;
-        };
         for (k, t) in touching.iter_mut().enumerate() {
-            *t |= on_object && c.normal_force > 0.0 && g.tips[k].contains(&tip);
+            let mine = view.fingers[k].iter().any(|&i| {
+                handles
+                    .fingertips
+                    .get(i)
+                    .is_some_and(|h| h.1 == c.fingertip)
+            });
+            *t |= on_object && c.normal_force > 0.0 && mine;
         }
     }
-    touching == [true, true]
+    !touching.is_empty() && touching.iter().all(|&t| t)
 }

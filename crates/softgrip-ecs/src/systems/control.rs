@@ -1,25 +1,26 @@
-//! Controllers: scripted trajectories and grippers write the kinematic targets of the coming
-//! step.
+//! Controllers: scripted kinematic paths, then the scene's [`Controllers`] (grippers, joint
+//! trajectories, grasps, commands from outside) write the targets of the coming step.
 
-use bevy_ecs::prelude::{Entity, MessageWriter, Query, Res};
-use softgrip_scene::{GripperEvent, jaw_compressions};
+use bevy_ecs::prelude::{MessageWriter, Query, Res, ResMut};
+use softgrip_scene::ControlEvent;
 
 use crate::components::{KinematicPath, KinematicTarget};
-use crate::contact::FingertipContact;
-use crate::gripper::Gripper;
-use crate::messages::GripReached;
+use crate::controller::{ControllerEntities, Controllers};
+use crate::messages::{GoalEnded, GripReached};
 use crate::resources::{Physics, SimClock};
 
 /// The built-in controllers, one system: moves every kinematic body with a [`KinematicPath`]
-/// to its position at the end of the coming step, then advances every [`Gripper`]'s program
-/// and writes its jaws' targets (a [`GripReached`] message when the grip is reached).
+/// to its position at the end of the coming step, then steps every controller of
+/// [`Controllers`] in order (kinematic targets and joint motor targets are written into the
+/// rapier world); a [`GripReached`] or [`GoalEnded`] message for what they report.
 pub fn run_controllers(
-    physics: Res<Physics>,
+    mut physics: ResMut<Physics>,
     clock: Res<SimClock>,
+    controllers: Option<ResMut<Controllers>>,
+    entities: Option<Res<ControllerEntities>>,
     mut targets: Query<(Option<&KinematicPath>, &mut KinematicTarget)>,
-    mut grippers: Query<(Entity, &mut Gripper)>,
-    contacts: Query<&FingertipContact>,
     mut reached: MessageWriter<GripReached>,
+    mut goals: MessageWriter<GoalEnded>,
 ) {
     let dt = physics.world.physics.integration_parameters.dt as f64;
     let t = (clock.step + 1) as f64 * dt;
@@ -28,22 +29,29 @@ pub fn run_controllers(
             target.0 = path.0.position_at(t);
         }
     }
-    for (entity, mut g) in &mut grippers {
-        let g = &mut *g;
-        let delta = jaw_compressions(
-            &g.tips,
-            contacts.iter().map(|c| (c.fingertip, c.contact.delta)),
-        );
-        if let Some(GripperEvent::GripReached) = g.state.advance(&g.program, dt, delta) {
-            reached.write(GripReached {
-                gripper: entity,
-                depth: g.program.depth,
-                time: t,
-            });
-        }
-        for k in 0..2 {
-            if let Ok((_, mut target)) = targets.get_mut(g.jaws[k]) {
-                target.0 = Some(g.state.jaws[k].position);
+    let Some(mut controllers) = controllers else {
+        return;
+    };
+    let events = controllers.0.step(&mut physics.world, t, dt);
+    let entity = |i: usize| entities.as_ref().and_then(|e| e.0.get(i).copied());
+    for (i, event) in events {
+        let Some(controller) = entity(i) else {
+            continue;
+        };
+        match event {
+            ControlEvent::GripReached { depth } => {
+                reached.write(GripReached {
+                    gripper: controller,
+                    depth,
+                    time: t,
+                });
+            }
+            ControlEvent::GoalEnded(result) => {
+                goals.write(GoalEnded {
+                    controller,
+                    result,
+                    time: t,
+                });
             }
         }
     }

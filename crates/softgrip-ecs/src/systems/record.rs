@@ -1,12 +1,14 @@
 //! Recording and publishing: the step's data is assembled once ([`CurrentFrame`]) and handed
 //! to the [`Recorder`] and the [`Publisher`] sinks.
 
-use bevy_ecs::prelude::{Entity, Name, Query, Res, ResMut, With};
+use bevy_ecs::prelude::{Entity, Local, Name, Query, Res, ResMut, With};
 
 use crate::components::{BodyPose, Fingertip, FingertipWrench, RigidBody};
+use crate::controller::Controllers;
 use crate::resources::{
     CurrentFrame, Physics, Publisher, RecordSelection, Recorder, SceneInfoResource, SimClock,
 };
+use crate::to_record::{JointMemory, joint_rates, joint_samples};
 use softgrip_law::ContactPatch;
 use softgrip_record::{BodySample, ContactSample, WrenchSample};
 
@@ -17,8 +19,9 @@ use crate::to_record::{contact_reading, tactile_samples};
 /// the MCAP recorder, every `record.every_n_steps`-th step.
 pub fn assemble_frame(
     physics: Res<Physics>,
-    clock: Res<SimClock>,
-    selection: Res<RecordSelection>,
+    (clock, selection): (Res<SimClock>, Res<RecordSelection>),
+    // The robots' controllers and the joints' positions at the last frame (one parameter).
+    (controllers, mut last_joints): (Option<Res<Controllers>>, Local<Option<JointMemory>>),
     mut frame: ResMut<CurrentFrame>,
     bodies: Query<(Entity, &Name, &BodyPose), With<RigidBody>>,
     tips: Query<(Entity, &Name, &FingertipWrench), With<Fingertip>>,
@@ -31,6 +34,16 @@ pub fn assemble_frame(
     f.bodies.clear();
     f.wrenches.clear();
     f.contacts.clear();
+    match (&controllers, sel.joints) {
+        (Some(c), true) => {
+            joint_samples(&c.0, &physics, &mut f.joints, &mut f.commands);
+            joint_rates(clock.time, &mut last_joints, &mut f.joints);
+        }
+        _ => {
+            f.joints.clear();
+            f.commands.clear();
+        }
+    }
     // Tactile images whenever a fingertip has a pad (the plugin computes them only then).
     tactile_samples(&physics, &names, &mut f.tactile);
     if sel.poses {
@@ -80,7 +93,7 @@ pub fn assemble_frame(
     }
 }
 
-/// A contact's patch as recorded: its radius always (cheap, and what a 3D view draws), its
+/// A contact's patch as recorded: its semi-axes always (cheap, and what a 3D view draws), its
 /// pressures only when the scene records pressure.
 fn recorded_patch(c: &softgrip_rapier::TipContact, pressure: bool) -> ContactPatch {
     let patch = c.patch();
@@ -89,6 +102,7 @@ fn recorded_patch(c: &softgrip_rapier::TipContact, pressure: bool) -> ContactPat
     } else {
         ContactPatch {
             radius: patch.radius,
+            radius2: patch.radius2,
             ..ContactPatch::EMPTY
         }
     }

@@ -13,7 +13,9 @@ use bevy_ecs::prelude::{
 };
 
 use crate::components::{AttachedTo, Collider, Fingertip, RapierBody, RapierCollider, RigidBody};
-use crate::messages::{ContactEnded, ContactStarted, GripReached, SlipStarted, ValidityExcursion};
+use crate::messages::{
+    ContactEnded, ContactStarted, GoalEnded, GripReached, SlipStarted, ValidityExcursion,
+};
 use crate::resources::Physics;
 
 /// One rotation of a message buffer: what `Messages::update` does, skipped when both buffers
@@ -56,7 +58,7 @@ impl FromWorld for Unsynchronised {
 /// Rotates the softgrip message buffers, then inserts new bodies, colliders and fingertips into
 /// rapier and tags them with their handles (the whole `Sync` set).
 ///
-/// The buffers of the five softgrip messages are rotated once per step, so a message is
+/// The buffers of the six softgrip messages are rotated once per step, so a message is
 /// readable during the step it is written in and the next one, then dropped (bevy's double
 /// buffering). This replaces bevy's `message_update_system` for them, so they are not in
 /// bevy's `MessageRegistry` ([`init_world`](crate::init_world) only inserts their `Messages`
@@ -73,6 +75,7 @@ pub fn sync_to_rapier(world: &mut World, mut new: Local<Unsynchronised>) {
     rotate::<SlipStarted>(world);
     rotate::<ValidityExcursion>(world);
     rotate::<GripReached>(world);
+    rotate::<GoalEnded>(world);
     create_in_rapier(world, &mut new);
 }
 

@@ -5,6 +5,10 @@
 //! - `softgrip_msgs/SoftContact` before the fingertip's construction was recorded (issue 10,
 //!   2026-12-02): no `backing` and `core_thickness` at the end. Read as a `free` fingertip
 //!   (`backing = 0`, `core_thickness = 0`), which is what every fingertip was then.
+//! - `softgrip_msgs/SoftContact` before the counterpart was recorded (issue 24, 2026-12-04): no
+//!   `contact_radius2`, `patch_direction`, `counterpart` and its curvatures at the end. Read as
+//!   a disc on a plane (`contact_radius2 = contact_radius`, `counterpart = 0`, zero direction
+//!   and curvatures): every contact was computed as on a plane then.
 
 use serde::Deserialize;
 
@@ -45,42 +49,142 @@ struct SoftContactArrayBeforeBacking {
     contacts: Vec<SoftContactBeforeBacking>,
 }
 
-/// The line of the schema that tells today's `SoftContact` from the one before it.
+/// `softgrip_msgs/SoftContact` with `backing` and `core_thickness`, before the counterpart
+/// (CDR has no field names: the fields are spelled out in order, no `serde(flatten)`).
+#[derive(Deserialize)]
+struct SoftContactBeforeCounterpart {
+    header: Header,
+    fingertip: String,
+    other: String,
+    point: Point,
+    normal: Vector3,
+    compression: f64,
+    ratio_x: f64,
+    normal_force: f64,
+    friction_force: Vector3,
+    torsional_moment: f64,
+    contact_radius: f64,
+    mean_pressure: f64,
+    peak_pressure: f64,
+    stiffness: f64,
+    level: u8,
+    level_name: String,
+    validity_exceeded: bool,
+    sliding: bool,
+    peak_normal_force: f64,
+    max_compression: f64,
+    contact_duration: f64,
+    backing: u8,
+    core_thickness: f64,
+}
+
+impl SoftContactBeforeCounterpart {
+    /// Its fields before `backing`, and `(backing, core_thickness)`.
+    fn split(self) -> (SoftContactBeforeBacking, u8, f64) {
+        (
+            SoftContactBeforeBacking {
+                header: self.header,
+                fingertip: self.fingertip,
+                other: self.other,
+                point: self.point,
+                normal: self.normal,
+                compression: self.compression,
+                ratio_x: self.ratio_x,
+                normal_force: self.normal_force,
+                friction_force: self.friction_force,
+                torsional_moment: self.torsional_moment,
+                contact_radius: self.contact_radius,
+                mean_pressure: self.mean_pressure,
+                peak_pressure: self.peak_pressure,
+                stiffness: self.stiffness,
+                level: self.level,
+                level_name: self.level_name,
+                validity_exceeded: self.validity_exceeded,
+                sliding: self.sliding,
+                peak_normal_force: self.peak_normal_force,
+                max_compression: self.max_compression,
+                contact_duration: self.contact_duration,
+            },
+            self.backing,
+            self.core_thickness,
+        )
+    }
+}
+
+#[derive(Deserialize)]
+struct SoftContactArrayBeforeCounterpart {
+    header: Header,
+    contacts: Vec<SoftContactBeforeCounterpart>,
+}
+
+/// The line of the schema that tells a `SoftContact` with the fingertip's construction from
+/// the one before it.
 pub(crate) const BACKING_FIELD: &str = "uint8 backing";
+
+/// The line of the schema that tells today's `SoftContact` from the one before the
+/// counterpart was recorded.
+pub(crate) const COUNTERPART_FIELD: &str = "uint8 counterpart";
+
+/// Decodes a `SoftContactArray` of a recording whose schema has `backing` but no
+/// `counterpart` field.
+pub(crate) fn contacts_before_counterpart(data: &[u8]) -> Result<SoftContactArrayMsg, CdrError> {
+    let old: SoftContactArrayBeforeCounterpart = cdr::decode(data)?;
+    Ok(SoftContactArrayMsg {
+        header: old.header,
+        contacts: old
+            .contacts
+            .into_iter()
+            .map(|c| {
+                let (before, backing, core_thickness) = c.split();
+                SoftContactMsg {
+                    backing,
+                    core_thickness,
+                    ..today(before)
+                }
+            })
+            .collect(),
+    })
+}
 
 /// Decodes a `SoftContactArray` of a recording whose schema has no `backing` field.
 pub(crate) fn contacts_before_backing(data: &[u8]) -> Result<SoftContactArrayMsg, CdrError> {
     let old: SoftContactArrayBeforeBacking = cdr::decode(data)?;
     Ok(SoftContactArrayMsg {
         header: old.header,
-        contacts: old
-            .contacts
-            .into_iter()
-            .map(|c| SoftContactMsg {
-                header: c.header,
-                fingertip: c.fingertip,
-                other: c.other,
-                point: c.point,
-                normal: c.normal,
-                compression: c.compression,
-                ratio_x: c.ratio_x,
-                normal_force: c.normal_force,
-                friction_force: c.friction_force,
-                torsional_moment: c.torsional_moment,
-                contact_radius: c.contact_radius,
-                mean_pressure: c.mean_pressure,
-                peak_pressure: c.peak_pressure,
-                stiffness: c.stiffness,
-                level: c.level,
-                level_name: c.level_name,
-                validity_exceeded: c.validity_exceeded,
-                sliding: c.sliding,
-                peak_normal_force: c.peak_normal_force,
-                max_compression: c.max_compression,
-                contact_duration: c.contact_duration,
-                backing: 0,
-                core_thickness: 0.0,
-            })
-            .collect(),
+        contacts: old.contacts.into_iter().map(today).collect(),
     })
+}
+
+/// An old contact as today's: a free fingertip's disc on a plane.
+fn today(c: SoftContactBeforeBacking) -> SoftContactMsg {
+    SoftContactMsg {
+        header: c.header,
+        fingertip: c.fingertip,
+        other: c.other,
+        point: c.point,
+        normal: c.normal,
+        compression: c.compression,
+        ratio_x: c.ratio_x,
+        normal_force: c.normal_force,
+        friction_force: c.friction_force,
+        torsional_moment: c.torsional_moment,
+        contact_radius: c.contact_radius,
+        mean_pressure: c.mean_pressure,
+        peak_pressure: c.peak_pressure,
+        stiffness: c.stiffness,
+        level: c.level,
+        level_name: c.level_name,
+        validity_exceeded: c.validity_exceeded,
+        sliding: c.sliding,
+        peak_normal_force: c.peak_normal_force,
+        max_compression: c.max_compression,
+        contact_duration: c.contact_duration,
+        backing: 0,
+        core_thickness: 0.0,
+        contact_radius2: c.contact_radius,
+        patch_direction: Vector3::default(),
+        counterpart: 0,
+        counterpart_curvature1: 0.0,
+        counterpart_curvature2: 0.0,
+    }
 }

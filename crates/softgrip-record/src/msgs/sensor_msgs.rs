@@ -1,5 +1,6 @@
-//! `sensor_msgs`: [`Image`] (the fingertips' tactile images) and [`CompressedImage`] (only
-//! because `visualization_msgs/Marker` embeds one).
+//! `sensor_msgs`: [`Image`] (the fingertips' tactile images), [`JointState`] (robots' joints:
+//! `/joint_states` and the commands) and [`CompressedImage`] (only because
+//! `visualization_msgs/Marker` embeds one).
 
 use super::std_msgs::Header;
 use crate::message::ros_message;
@@ -39,6 +40,25 @@ ros_message! {
         pub step: u32,
         /// The pixels, `step * height` bytes.
         pub data: Vec<u8>,
+    }
+}
+
+ros_message! {
+    /// The state of a set of joints (`/joint_states`), or commands to them (the
+    /// topic_based_ros2_control convention: a position and/or velocity target per named joint).
+    #[derive(Debug, Clone, PartialEq, Default)]
+    pub struct JointState {
+        name = "sensor_msgs/msg/JointState", file = "msg/sensor_msgs/JointState.msg", deps = [Header];
+        /// Stamp (the step's time) and frame (empty).
+        pub header: Header,
+        /// The joints' names.
+        pub name: Vec<String>,
+        /// Positions \[m or rad\] (empty: none given).
+        pub position: Vec<f64>,
+        /// Velocities \[m/s or rad/s\] (empty: none given).
+        pub velocity: Vec<f64>,
+        /// Efforts \[N or N m\] (empty: none given).
+        pub effort: Vec<f64>,
     }
 }
 

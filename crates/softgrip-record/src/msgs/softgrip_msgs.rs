@@ -1,7 +1,7 @@
 //! `softgrip_msgs` (the interface package in `ros2/softgrip_msgs/`): [`SoftContactMsg`] and
 //! [`SoftContactArrayMsg`].
 
-use softgrip_law::{Backing, BackingKind, LevelKind, Regime};
+use softgrip_law::{Backing, BackingKind, Counterpart, CounterpartKind, LevelKind, Regime};
 
 use super::geometry_msgs::{Point, Vector3};
 use super::std_msgs::Header;
@@ -34,9 +34,10 @@ ros_message! {
         pub friction_force: Vector3,
         /// Torsional friction moment about the normal [N m] (step average).
         pub torsional_moment: f64,
-        /// Contact radius a \[m\], >= 0.
+        /// Contact radius a \[m\], >= 0 (of an elliptical patch, its semi-axis along
+        /// `patch_direction`).
         pub contact_radius: f64,
-        /// Mean pressure F / (pi a^2) \[Pa\].
+        /// Mean pressure F / (pi a b) \[Pa\].
         pub mean_pressure: f64,
         /// Peak pressure at the patch centre: (m + 1) times the mean for the law's pressure
         /// shape m (3/2 for Hertz's) \[Pa\].
@@ -61,6 +62,18 @@ ros_message! {
         pub backing: u8,
         /// Skin thickness t of a `core` fingertip \[m\]; 0 for the others.
         pub core_thickness: f64,
+        /// The patch's second semi-axis b \[m\] (`contact_radius` for a disc; recordings made
+        /// before patches were ellipses read as discs).
+        pub contact_radius2: f64,
+        /// Unit vector, world, along the patch's first semi-axis [-] (zero in recordings made
+        /// before it was recorded).
+        pub patch_direction: Vector3,
+        /// What the fingertip touched ([`CounterpartKind::code`]: 0 plane, 1 curved, 2 edge).
+        pub counterpart: u8,
+        /// The counterpart's principal curvature along `patch_direction` \[1/m\].
+        pub counterpart_curvature1: f64,
+        /// The counterpart's principal curvature across `patch_direction` \[1/m\].
+        pub counterpart_curvature2: f64,
     }
 }
 
@@ -77,17 +90,19 @@ ros_message! {
     }
 }
 
-/// The `.msg` constants of the level and construction codes, as `SoftContact.msg` must list
-/// them: `uint8 LEVEL_<NAME>=<code>` for every concrete level of `softgrip_law::LEVELS` and
-/// `uint8 BACKING_<NAME>=<code>` for every construction of `softgrip_law::BACKINGS`, in table
-/// order (a test checks the `.msg` file against it: the file is read by ROS 2 tools, so it is
-/// written out, but from this table only).
+/// The `.msg` constants of the level, construction and counterpart codes, as
+/// `SoftContact.msg` must list them: `uint8 LEVEL_<NAME>=<code>` for every concrete level of
+/// `softgrip_law::LEVELS`, `uint8 BACKING_<NAME>=<code>` for every construction of
+/// `softgrip_law::BACKINGS` and `uint8 COUNTERPART_<NAME>=<code>` for every kind of
+/// `softgrip_law::CounterpartKind::ALL`, in table order (a test checks the `.msg` file against
+/// it: the file is read by ROS 2 tools, so it is written out, but from these tables only).
 ///
 /// ```
 /// use softgrip_record::msgs::softgrip_msgs::code_constants;
 /// let lines = code_constants();
 /// assert!(lines.contains(&"uint8 LEVEL_TABULATED=8".to_owned()));
 /// assert!(lines.contains(&"uint8 BACKING_CORE=2".to_owned()));
+/// assert!(lines.contains(&"uint8 COUNTERPART_EDGE=2".to_owned()));
 /// ```
 pub fn code_constants() -> Vec<String> {
     let constant = |prefix: &str, name: &str, code: u8| {
@@ -102,7 +117,10 @@ pub fn code_constants() -> Vec<String> {
     let backings = softgrip_law::BACKINGS
         .iter()
         .map(|row| constant("BACKING", row.name, row.code));
-    levels.chain(backings).collect()
+    let counterparts = CounterpartKind::ALL
+        .iter()
+        .map(|(_, code, name)| constant("COUNTERPART", name, *code));
+    levels.chain(backings).chain(counterparts).collect()
 }
 
 impl SoftContactMsg {
@@ -138,6 +156,34 @@ impl SoftContactMsg {
     /// ```
     pub fn backing(&self) -> Option<Backing> {
         BackingKind::from_code(self.backing).map(|kind| kind.with_parameter(self.core_thickness))
+    }
+
+    /// Sets `counterpart`, its curvatures and `patch_direction` (world, unit).
+    pub fn set_counterpart(&mut self, counterpart: Counterpart, patch_direction: [f64; 3]) {
+        self.counterpart = counterpart.kind().code();
+        [self.counterpart_curvature1, self.counterpart_curvature2] = counterpart.curvatures();
+        self.patch_direction = Vector3::from_array(patch_direction);
+    }
+
+    /// What the fingertip touched, if `counterpart` is a known code and its curvatures are
+    /// finite.
+    ///
+    /// ```
+    /// use softgrip_law::Counterpart;
+    /// use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+    /// let mut m = SoftContactMsg::default();
+    /// assert_eq!(m.counterpart(), Some(Counterpart::PLANE)); // and every old recording
+    /// m.set_counterpart(Counterpart::try_cylinder(0.02).unwrap(), [0.0, 0.0, 1.0]);
+    /// assert_eq!((m.counterpart, m.counterpart_curvature2), (1, 50.0));
+    /// assert_eq!(m.counterpart(), Some(Counterpart::try_cylinder(0.02).unwrap()));
+    /// ```
+    pub fn counterpart(&self) -> Option<Counterpart> {
+        let kind = CounterpartKind::from_code(self.counterpart)?;
+        Counterpart::try_from_parts(
+            kind,
+            [self.counterpart_curvature1, self.counterpart_curvature2],
+        )
+        .ok()
     }
 
     /// The law level, if `level` is a known code.

@@ -1,4 +1,4 @@
-//! `std_msgs`: [`Header`] and [`ColorRGBA`].
+//! `std_msgs`: [`Header`], [`ColorRGBA`] and [`StringMsg`] (`/robot_description`).
 
 use super::builtin_interfaces::Time;
 use crate::message::ros_message;
@@ -28,6 +28,17 @@ ros_message! {
         pub b: f32,
         /// Opacity [-].
         pub a: f32,
+    }
+}
+
+ros_message! {
+    /// A string: a robot's URDF on `/robot_description` (`std_msgs/msg/String`; the Rust name
+    /// says `Msg` to keep it apart from `std`'s `String`).
+    #[derive(Debug, Clone, PartialEq, Default)]
+    pub struct StringMsg {
+        name = "std_msgs/msg/String", file = "msg/std_msgs/String.msg", deps = [];
+        /// The text.
+        pub data: String,
     }
 }
 

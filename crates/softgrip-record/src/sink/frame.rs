@@ -53,6 +53,26 @@ pub struct StepFrame {
     pub contacts: Vec<ContactSample>,
     /// Tactile images of the fingertips with a pad (always, when a fingertip has one).
     pub tactile: Vec<TactileSample>,
+    /// Every robot's moving joints after the step (`record.joints`); the ECS gives as velocity
+    /// the rate of motion since its previous frame (rapier's own joint velocity lacks the
+    /// position correction of its solve).
+    pub joints: Vec<JointSample>,
+    /// Their targets for the step: position and velocity targets, effort = the motor's force
+    /// limit (0 without one) (`record.joints`).
+    pub commands: Vec<JointSample>,
+}
+
+/// A joint's numbers (a state or a command), by name.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct JointSample {
+    /// The joint's name (the URDF's; `<robot>/<joint>` in a scene with several robots).
+    pub name: String,
+    /// Position \[m or rad\].
+    pub position: f64,
+    /// Velocity \[m/s or rad/s\].
+    pub velocity: f64,
+    /// Effort \[N or N m\].
+    pub effort: f64,
 }
 
 /// A fingertip's tactile image over a step: mean pressure of each taxel.

@@ -10,7 +10,7 @@ mod scene;
 mod step_sink;
 
 pub use frame::{
-    BodySample, ContactReading, ContactSample, StepFrame, TactileSample, WrenchSample,
+    BodySample, ContactReading, ContactSample, JointSample, StepFrame, TactileSample, WrenchSample,
 };
-pub use scene::{FingertipInfo, SceneInfo, ShapeGeometry, ShapeInfo};
+pub use scene::{BodyFrame, FingertipInfo, RobotInfo, SceneInfo, ShapeGeometry, ShapeInfo};
 pub use step_sink::{SinkError, StepSink};

@@ -65,6 +65,10 @@ pub struct ShapeInfo {
     pub body: String,
     /// Position of the shape's origin in its body's frame \[m\].
     pub offset: [f64; 3],
+    /// Orientation of the shape's frame in its body's frame, unit quaternion `[x, y, z, w]`
+    /// (a scene file's shapes have none: `[0, 0, 0, 1]`; a robot link's collision shapes
+    /// have their URDF `<origin>`'s).
+    pub rotation: [f64; 4],
     /// Its geometry.
     pub geometry: ShapeGeometry,
 }
@@ -89,4 +93,30 @@ pub struct SceneInfo {
     pub up: UpAxis,
     /// Gravity, scene axes \[m/s²\] (recorded in world axes in the `softgrip` metadata).
     pub gravity: [f64; 3],
+    /// The robots: their URDFs (`/robot_description`).
+    pub robots: Vec<RobotInfo>,
+    /// The bodies that are not children of the world frame on tf: robot links under their
+    /// parent links.
+    pub frames: Vec<BodyFrame>,
+}
+
+/// A robot of the scene.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RobotInfo {
+    /// Its name (its links' frames are `<name>/<link>`).
+    pub name: String,
+    /// Its URDF, as read.
+    pub urdf: String,
+}
+
+/// A body's place in the tf tree: a robot link under its parent link.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct BodyFrame {
+    /// The body (its frame).
+    pub body: String,
+    /// Its parent body (frame).
+    pub parent: String,
+    /// Joined by a fixed joint: its pose in the parent is constant and goes on `/tf_static`
+    /// (taken at the first step), not on `/tf`.
+    pub fixed: bool,
 }

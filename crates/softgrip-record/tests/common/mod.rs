@@ -48,6 +48,16 @@ pub fn step(k: u64, dt_ns: u64) -> StepRecord {
             } else {
                 Regime::Valid
             });
+            // The first fingertip on a cylinder of radius 3 cm (an ellipse along z), the other
+            // on a plane (a disc).
+            if i == 0 {
+                let cylinder = softgrip_law::Counterpart::try_cylinder(0.03)
+                    .expect("invariant: a valid radius");
+                c.set_counterpart(cylinder, [0.0, 0.0, 1.0]);
+                c.contact_radius2 = 0.8 * c.contact_radius;
+            } else {
+                c.contact_radius2 = c.contact_radius;
+            }
             contacts.push(c);
         }
         let wrench = contact_wrench(center, contacts.iter().filter(|c| c.fingertip == *name));
@@ -69,6 +79,7 @@ pub fn step(k: u64, dt_ns: u64) -> StepRecord {
         fingertips: tips,
         bodies: vec![BodyPose {
             name: "box".into(),
+            parent: String::new(),
             position: [0.0, 0.001 * t, 0.05],
             orientation: [0.0, 0.0, 0.0, 1.0],
         }],

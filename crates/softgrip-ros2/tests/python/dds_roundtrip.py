@@ -95,6 +95,11 @@ class SoftContact(IdlStruct, typename="softgrip_msgs::msg::dds_::SoftContact_"):
     contact_duration: float64
     backing: uint8
     core_thickness: float64
+    contact_radius2: float64
+    patch_direction: Vector3
+    counterpart: uint8
+    counterpart_curvature1: float64
+    counterpart_curvature2: float64
 
 
 @dataclass

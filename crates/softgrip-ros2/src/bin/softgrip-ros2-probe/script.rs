@@ -2,7 +2,7 @@
 //! compares with what a foreign DDS participant decoded.
 //! (Shared with `tests/dds_roundtrip.rs` through `#[path]`.)
 
-use softgrip_law::{LevelKind, Regime};
+use softgrip_law::{Counterpart, LevelKind, Regime};
 use softgrip_record::msgs::geometry_msgs::{Point, Vector3};
 use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::{BodyPose, FingertipState, StepRecord, contact_wrench};
@@ -64,6 +64,16 @@ pub fn step(k: u64) -> StepRecord {
         } else {
             Regime::Valid
         });
+        // A cylinder's side for one fingertip (an ellipse along z), a plane for the other.
+        if i == 0 {
+            let cylinder = Counterpart::try_curved(0.0, 1.0 / (0.03 + kf * 1e-3))
+                .expect("invariant: a finite, non-zero curvature");
+            c.set_counterpart(cylinder, [0.0, 0.6, -0.8]);
+            c.contact_radius2 = 0.7 * c.contact_radius;
+        } else {
+            c.set_counterpart(Counterpart::PLANE, [0.8, 0.0, -0.6]);
+            c.contact_radius2 = c.contact_radius;
+        }
         let wrench = contact_wrench(center, [&c]);
         contacts.push(c);
         tips.push(FingertipState {
@@ -82,6 +92,7 @@ pub fn step(k: u64) -> StepRecord {
         fingertips: tips,
         bodies: vec![BodyPose {
             name: "box".into(),
+            parent: String::new(),
             position: [0.0, 1e-3 * kf / 7.0, 0.05],
             orientation: [0.0, 0.0, 0.0, 1.0],
         }],

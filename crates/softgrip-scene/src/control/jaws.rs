@@ -1,9 +1,14 @@
-//! The parallel-jaw gripper controller: approach -> squeeze -> settle -> lift -> hold ->
-//! release, as plain logic ([`GripperState::advance`], [`jaw_compressions`]) that the ECS
-//! system and the plain runner both call, so both command the jaws identically.
+//! The parallel-jaw gripper (`[gripper]`, the controller `parallel_jaws`): kinematic jaws,
+//! any number of them, each closing along its own direction: approach -> squeeze -> settle ->
+//! lift -> hold -> release, as plain logic ([`GripperState::advance`]) behind the
+//! [`Controller`] interface, so the ECS and the plain runner command the jaws identically.
+
+use std::any::Any;
 
 use softgrip_rapier::SoftFingertip;
 
+use crate::control::controller::{ControlEvent, Controller, GraspView, Phase};
+use crate::control::io::{Carrier, ControlIo};
 use crate::error::SceneError;
 use crate::format::{BodyKind, GripperSpec, MoveSpec, SceneFile};
 use crate::limits::{MAX_COORDINATE, MAX_SPEED, MAX_TIME};
@@ -23,10 +28,10 @@ pub enum Squeeze {
 pub struct GripperProgram {
     /// Name.
     pub name: String,
-    /// Body index of each jaw in the scene.
-    pub jaws: [usize; 2],
-    /// Closing direction of jaw 0 (unit); jaw 1 closes along `-axis`.
-    pub axis: [f64; 3],
+    /// Body index of each jaw in the scene, at least one.
+    pub jaws: Vec<usize>,
+    /// Closing direction of each jaw (unit).
+    pub axes: Vec<[f64; 3]>,
     /// Lift direction (unit).
     pub up: [f64; 3],
     /// Closing speed before touch [m/s].
@@ -45,10 +50,10 @@ pub struct GripperProgram {
     pub release: MoveSpec,
     /// Target compression of each jaw's fingertip \[m\] (the depth, or the law's
     /// `compression_for_force(force)` of the jaw's first fingertip).
-    pub depth: [f64; 2],
+    pub depth: Vec<f64>,
     /// The fingertips (indices into the scene's fingertips, in file order) carried by each
     /// jaw, at least one each.
-    pub tips: [Vec<usize>; 2],
+    pub tips: Vec<Vec<usize>>,
 }
 
 impl GripperProgram {
@@ -59,12 +64,46 @@ impl GripperProgram {
         g: &GripperSpec,
     ) -> Result<Self, SceneError> {
         let squeeze = squeeze(c, g)?;
-        let [jaw0, jaw1] = [0, 1].map(|k| jaw(c, file, tips, squeeze, k, &g.jaws[k]));
-        let (jaw0, jaw1) = (jaw0?, jaw1?);
-        if jaw0.body == jaw1.body {
-            return Err(c.name("gripper.jaws", "the two jaws must be different bodies"));
+        if g.jaws.is_empty() {
+            return Err(c.name("gripper.jaws", "give at least one jaw"));
         }
-        let axis = c.direction("gripper.axis", g.axis)?;
+        let mut jaws: Vec<Jaw> = Vec::with_capacity(g.jaws.len());
+        for (k, name) in g.jaws.iter().enumerate() {
+            let j = jaw(c, file, tips, squeeze, k, name)?;
+            if jaws.iter().any(|o| o.body == j.body) {
+                return Err(c.name(
+                    format!("gripper.jaws[{k}]"),
+                    "the jaws must be different bodies",
+                ));
+            }
+            jaws.push(j);
+        }
+        let axes = match (&g.axis, &g.axes) {
+            (Some(a), None) if jaws.len() == 2 => {
+                let a = c.direction("gripper.axis", *a)?;
+                vec![a, a.map(|x| -x)]
+            }
+            (Some(_), None) => {
+                return Err(c.name(
+                    "gripper.axis",
+                    format!("applies to two jaws (the second closes opposite); with {} jaws give `axes`, one per jaw", jaws.len()),
+                ));
+            }
+            (None, Some(list)) if list.len() == jaws.len() => (list.iter().enumerate())
+                .map(|(k, a)| c.direction(format!("gripper.axes[{k}]"), *a))
+                .collect::<Result<_, _>>()?,
+            (None, Some(list)) => {
+                return Err(c.name(
+                    "gripper.axes",
+                    format!(
+                        "give one direction per jaw: {} jaws, {} axes",
+                        jaws.len(),
+                        list.len()
+                    ),
+                ));
+            }
+            _ => return Err(c.name("gripper.axis", "give exactly one of `axis` and `axes`")),
+        };
         let up = match g.up {
             Some(u) => c.direction("gripper.up", u)?,
             None => c.direction("gripper.up", file.gravity.map(|x| -x))?,
@@ -94,8 +133,8 @@ impl GripperProgram {
         )?;
         Ok(Self {
             name: g.name.clone(),
-            jaws: [jaw0.body, jaw1.body],
-            axis,
+            jaws: jaws.iter().map(|j| j.body).collect(),
+            axes,
             up,
             approach_speed: g.approach_speed,
             squeeze,
@@ -104,8 +143,8 @@ impl GripperProgram {
             lift: g.lift,
             hold: g.hold,
             release: g.release,
-            depth: [jaw0.depth, jaw1.depth],
-            tips: [jaw0.tips, jaw1.tips],
+            depth: jaws.iter().map(|j| j.depth).collect(),
+            tips: jaws.into_iter().map(|j| j.tips).collect(),
         })
     }
 }
@@ -157,7 +196,7 @@ fn jaw(
         ));
     }
     let jaw_tips: Vec<usize> = (file.fingertips.iter().enumerate())
-        .filter(|(_, t)| t.body == name)
+        .filter(|(_, t)| t.body.as_deref() == Some(name))
         .map(|(j, _)| j)
         .collect();
     let &tip = jaw_tips
@@ -191,23 +230,6 @@ fn jaw(
     })
 }
 
-/// The controller's phase.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Phase {
-    /// Closing until each fingertip touches; then squeezing to the commanded depth.
-    Squeeze,
-    /// At the commanded depth, waiting `settle`.
-    Settle,
-    /// Moving along `up`.
-    Lift,
-    /// Holding still.
-    Hold,
-    /// Opening the jaws.
-    Release,
-    /// Finished.
-    Done,
-}
-
 /// One jaw's commanded motion.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct JawState {
@@ -222,7 +244,7 @@ pub struct JawState {
 /// What the controller did in one step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum GripperEvent {
-    /// Both jaws reached the commanded depth.
+    /// Every jaw reached the commanded depth.
     GripReached,
 }
 
@@ -232,21 +254,21 @@ pub struct GripperState {
     /// Current phase.
     pub phase: Phase,
     /// The jaws.
-    pub jaws: [JawState; 2],
+    pub jaws: Vec<JawState>,
     /// Time spent in the current phase (settle, hold) \[s\] or distance moved (lift, release) \[m\].
     pub progress: f64,
 }
 
 /// Largest compression \[m\] of each jaw's fingertips among `contacts`, given as (fingertip
 /// key, compression `delta` \[m\]) in readout order; `tips[k]` are jaw k's fingertip keys (rapier
-/// handles in the plain runner, entities in the ECS). `None` for a jaw without contact.
+/// handles, entities, scene indices). `None` for a jaw without contact.
 pub fn jaw_compressions<K: PartialEq>(
-    tips: &[Vec<K>; 2],
+    tips: &[Vec<K>],
     contacts: impl IntoIterator<Item = (K, f64)>,
-) -> [Option<f64>; 2] {
-    let mut delta = [None, None];
+) -> Vec<Option<f64>> {
+    let mut delta = vec![None; tips.len()];
     for (tip, d) in contacts {
-        for k in 0..2 {
+        for k in 0..tips.len() {
             if tips[k].contains(&tip) {
                 delta[k] = Some(delta[k].map_or(d, |m: f64| m.max(d)));
             }
@@ -261,14 +283,16 @@ fn axpy(a: f64, x: [f64; 3], y: [f64; 3]) -> [f64; 3] {
 
 impl GripperState {
     /// The state at the start: jaws at their initial positions.
-    pub fn new(jaw_positions: [[f64; 3]; 2]) -> Self {
+    pub fn new(jaw_positions: impl IntoIterator<Item = [f64; 3]>) -> Self {
         Self {
             phase: Phase::Squeeze,
-            jaws: jaw_positions.map(|position| JawState {
-                position,
-                touch: None,
-                reached: false,
-            }),
+            jaws: (jaw_positions.into_iter())
+                .map(|position| JawState {
+                    position,
+                    touch: None,
+                    reached: false,
+                })
+                .collect(),
             progress: 0.0,
         }
     }
@@ -279,15 +303,15 @@ impl GripperState {
         &mut self,
         p: &GripperProgram,
         dt: f64,
-        delta: [Option<f64>; 2],
+        delta: &[Option<f64>],
     ) -> Option<GripperEvent> {
-        let dirs = [p.axis, p.axis.map(|x| -x)];
+        let dirs = &p.axes;
         match self.phase {
             Phase::Squeeze => {
                 for (k, jaw) in self.jaws.iter_mut().enumerate() {
                     let dir = dirs[k];
                     if jaw.touch.is_none() {
-                        match delta[k] {
+                        match delta.get(k).copied().flatten() {
                             // Back off by the compression already there: the touch point.
                             Some(d) if d > 0.0 => jaw.touch = Some(axpy(-d, dir, jaw.position)),
                             _ => jaw.position = axpy(p.approach_speed * dt, dir, jaw.position),
@@ -344,5 +368,77 @@ impl GripperState {
             Phase::Done => {}
         }
         None
+    }
+}
+
+/// The parallel-jaw gripper as a [`Controller`]: its program and state.
+#[derive(Debug, Clone)]
+pub struct ParallelJaws {
+    /// The program.
+    pub program: GripperProgram,
+    /// The state.
+    pub state: GripperState,
+}
+
+impl ParallelJaws {
+    /// The controller of `program`, jaws at `positions` \[m\] (one per jaw).
+    pub fn new(program: GripperProgram, positions: Vec<[f64; 3]>) -> Self {
+        Self {
+            program,
+            state: GripperState::new(positions),
+        }
+    }
+}
+
+impl Controller for ParallelJaws {
+    fn name(&self) -> &str {
+        &self.program.name
+    }
+
+    fn kind(&self) -> &'static str {
+        "parallel_jaws"
+    }
+
+    fn update(&mut self, io: &mut ControlIo<'_>) -> Option<ControlEvent> {
+        let delta: Vec<Option<f64>> = self
+            .program
+            .tips
+            .iter()
+            .map(|t| io.compression(t))
+            .collect();
+        let event = self.state.advance(&self.program, io.dt, &delta);
+        for (jaw, state) in self.program.jaws.iter().zip(&self.state.jaws) {
+            io.set_translation(Carrier::Body(*jaw), state.position);
+        }
+        event.map(|GripperEvent::GripReached| ControlEvent::GripReached {
+            depth: self.program.depth.clone(),
+        })
+    }
+
+    fn phase(&self) -> Option<Phase> {
+        Some(self.state.phase)
+    }
+
+    fn grasp(&self) -> Option<GraspView> {
+        Some(GraspView {
+            up: self.program.up,
+            lift_distance: self.program.lift.distance,
+            fingers: self.program.tips.clone(),
+            hand: self
+                .program
+                .jaws
+                .iter()
+                .map(|&j| Carrier::Body(j))
+                .collect(),
+            depth: self.program.depth.iter().map(|&d| Some(d)).collect(),
+        })
+    }
+
+    fn as_any_mut(&mut self) -> &mut dyn Any {
+        self
+    }
+
+    fn boxed_clone(&self) -> Box<dyn Controller> {
+        Box::new(self.clone())
     }
 }

@@ -1,0 +1,243 @@
+//! The law on curved counterparts against the FE of curved counterparts
+//! (`tests/data/fe/{ball,cylinder}/`, softgrip's `tools/fe`, copied from the fe-curved branch):
+//! force and contact semi-axes per FE curve, each against the number
+//! `tools/calibration/fit_counterpart.py` prints (COUNTERPART.md), with the targets (3 %
+//! force on balls and cylinders, 5 % semi-axes) as the ceiling.
+//!
+//! `cargo test -p softgrip-law --test counterpart_fe -- --nocapture` prints every number.
+
+mod common;
+
+use common::Smooth;
+use softgrip_fe::{COUNTERPART_FILES, Counterpart as FeCounterpart, FeFile};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level};
+
+/// The calibrated law (E* = 1 Pa, R = 1 m) of the file's construction and Poisson ratio, on its
+/// counterpart (curvature 1/K for K = R2/R).
+fn law_of(file: &FeFile) -> ContactLaw {
+    let nu = file.nu.expect("a Poisson ratio");
+    let backing = match file.geometry {
+        "flat" => Backing::Flat,
+        _ => Backing::Free,
+    };
+    let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+        .and_then(|p| p.with_backing(backing))
+        .expect("valid params");
+    let cp = match file.counterpart {
+        FeCounterpart::Ball { k } => Counterpart::try_ball(k),
+        FeCounterpart::Cylinder { k } => Counterpart::try_cylinder(k),
+        FeCounterpart::Edge => Ok(Counterpart::EDGE),
+        FeCounterpart::Plane => Ok(Counterpart::PLANE),
+    }
+    .expect("valid counterpart");
+    ContactLaw::try_new(p, Level::Calibrated)
+        .and_then(|l| l.with_counterpart(cp))
+        .expect("the law binds")
+}
+
+/// The force files of the balls and cylinders.
+fn curves() -> impl Iterator<Item = &'static FeFile> {
+    COUNTERPART_FILES.iter().filter(|f| {
+        matches!(
+            f.counterpart,
+            FeCounterpart::Ball { .. } | FeCounterpart::Cylinder { .. }
+        ) && f.path.contains("/force_")
+    })
+}
+
+/// Largest |F_law / F_FE - 1| over `0.01 <= x <= x_max` and the x range compared.
+fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
+    let mut worst: f64 = 0.0;
+    let mut top: f64 = 0.0;
+    for p in file.points().expect("parses") {
+        if p.x < 0.01 - 1e-12 || p.x > law.x_max() {
+            continue;
+        }
+        worst = worst.max((law.response(p.x).force / p.force_norm - 1.0).abs());
+        top = top.max(p.x);
+    }
+    (worst, top)
+}
+
+/// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
+/// (`r+g, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
+/// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
+/// every fit: `ball/*/force_nu0.4_k0.7.csv`, `ball/free/force_nu0.499_k2.csv` and the cylinders
+/// (R2/R = 3 and the ball of 2R at nu 0.499 landed after the constants were fixed: blind).
+fn stated_force_error(path: &str) -> f64 {
+    let pct = match path {
+        "ball/free/force_nu0.3_k0.5.csv" => 3.04,
+        "ball/free/force_nu0.3_k1.csv" => 1.12,
+        "ball/free/force_nu0.3_k2.csv" => 3.12,
+        "ball/free/force_nu0.48_k0.5.csv" => 1.17,
+        "ball/free/force_nu0.48_k1.csv" => 1.55,
+        "ball/free/force_nu0.48_k2.csv" => 0.85,
+        "ball/free/force_nu0.48_k4.csv" => 1.66,
+        "ball/free/force_nu0.499_k1.csv" => 1.72,
+        "ball/free/force_nu0.499_k2.csv" => 1.43,
+        "ball/free/force_nu0.4_k0.7.csv" => 3.16,
+        "ball/flat/force_nu0.3_k1.csv" => 8.02,
+        "ball/flat/force_nu0.3_k2.csv" => 5.03,
+        "ball/flat/force_nu0.3_k0.5.csv" => 5.34,
+        "ball/flat/force_nu0.48_k0.5.csv" => 1.91,
+        "ball/flat/force_nu0.48_k1.csv" => 1.17,
+        "ball/flat/force_nu0.48_k2.csv" => 1.21,
+        "ball/flat/force_nu0.48_k4.csv" => 0.84,
+        "ball/flat/force_nu0.499_k1.csv" => 1.28,
+        "ball/flat/force_nu0.4_k0.7.csv" => 1.31,
+        "cylinder/flat/force_nu0.48_k1.csv" => 1.11,
+        "cylinder/flat/force_nu0.48_k3.csv" => 0.93,
+        "cylinder/free/force_nu0.48_k1.csv" => 1.50,
+        "cylinder/free/force_nu0.48_k3.csv" => 0.72,
+        // A curve not in COUNTERPART.md yet: the target.
+        _ => 2.8,
+    };
+    (pct + 0.2) / 100.0
+}
+
+/// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the balls of R/2
+/// (0.66, the bonded reach constant, of 0.68) and R (0.654, where the plane law ends at rho x,
+/// of 0.68), and on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69).
+const RANGE_SHORT: &[&str] = &[
+    "ball/flat/force_nu0.3_k0.5.csv",
+    "ball/flat/force_nu0.3_k1.csv",
+    "ball/flat/force_nu0.4_k0.7.csv",
+];
+
+/// The curves the law misses the 3 % on (COUNTERPART.md), all at nu <= 0.4: the bonded
+/// pad at nu = 0.3 on balls of R/2, R and 2R (5.34, 8.02, 5.03 %: too stiff at moderate x,
+/// too soft at the end, which one (r, g) per nu cannot follow); the free sphere at nu = 0.3 on
+/// balls of R/2 (3.04 %) and 2R (3.12 %), both at x = 0.7, where the compressible material
+/// under the contact collapses (smallest element volume ratio 0.25-0.35, cut at 0.2); the
+/// held-out free ball of 0.7 R at nu = 0.4 (-3.2 % at x = 0.5: r and g linear in eps between
+/// nu 0.3 and 0.48).
+const KNOWN_MISSES: &[&str] = &[
+    "ball/flat/force_nu0.3_k0.5.csv",
+    "ball/flat/force_nu0.3_k1.csv",
+    "ball/flat/force_nu0.3_k2.csv",
+    "ball/free/force_nu0.3_k0.5.csv",
+    "ball/free/force_nu0.3_k2.csv",
+    "ball/free/force_nu0.4_k0.7.csv",
+];
+
+#[test]
+fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
+    let mut seen = 0;
+    for file in curves() {
+        let law = law_of(file);
+        let (err, top) = force_error(file, &law);
+        println!(
+            "{:38} force within {:5.2} % for 0.01 <= x <= {top:.2} (law's x_max {:.3})",
+            file.path,
+            100.0 * err,
+            law.x_max()
+        );
+        assert!(
+            err <= stated_force_error(file.path)
+                && (err < 0.03 || KNOWN_MISSES.contains(&file.path)),
+            "{}: {:.2} %",
+            file.path,
+            100.0 * err
+        );
+        // The law's range reaches the FE's (within one FE step, 0.02 at the end of a 3D run),
+        // except where it is stated short.
+        let fe_end = file.points().expect("parses").last().expect("points").x;
+        assert!(
+            law.x_max() >= fe_end - 0.021 || RANGE_SHORT.contains(&file.path),
+            "{}: the law ends at x = {} of the FE's {fe_end}",
+            file.path,
+            law.x_max()
+        );
+        assert!(top > 0.0, "{}: nothing compared", file.path);
+        seen += 1;
+    }
+    assert!(seen >= 23, "{seen} curves");
+}
+
+/// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
+/// the lag of half an element (axisymmetric CAX8R on R/40); the 3D files' `_32` columns (from
+/// the gap's Hertzian edge shape) have no lag.
+fn fe_semi_axes(file: &FeFile) -> (Smooth, Option<Smooth>, f64) {
+    let points = file.points().expect("parses");
+    let across: Vec<(f64, f64, f64)> = points.iter().map(|p| (p.x, 0.0, p.radius_norm)).collect();
+    let along: Option<Vec<(f64, f64, f64)>> = points
+        .iter()
+        .map(|p| p.radius_along_norm.map(|a| (p.x, 0.0, a)))
+        .collect();
+    let lag = if matches!(file.counterpart, FeCounterpart::Ball { .. }) {
+        0.485 / 40.0
+    } else {
+        0.0
+    };
+    (Smooth::fit(&across), along.map(|a| Smooth::fit(&a)), lag)
+}
+
+/// A ball's contact radius within 5 % of the FE's for 0.1 <= x <= 0.4 (seen: 0.7-5.7 %,
+/// the flat pad on the smallest ball the worst).
+#[test]
+fn contact_radius_on_a_ball_is_within_six_percent_of_the_fe() {
+    for file in curves().filter(|f| matches!(f.counterpart, FeCounterpart::Ball { .. })) {
+        let end = file.points().expect("parses").last().expect("points").x;
+        if end < 0.4 {
+            // The bonded pad at nu = 0.499 on a ball of R diverged at x = 0.05: no radius to
+            // compare at x >= 0.1 (the FE's radius is resolved to a node below it).
+            println!("{:38} radius: the FE ends at x = {end}", file.path);
+            continue;
+        }
+        let law = law_of(file);
+        let (fe, _, lag) = fe_semi_axes(file);
+        let mut worst: f64 = 0.0;
+        for i in 0..=30 {
+            let x = 0.1 + 0.01 * f64::from(i);
+            if x > law.x_max() {
+                break;
+            }
+            let p = law.patch(x);
+            assert_eq!(p.radius, p.radius2, "a ball's patch is a disc");
+            worst = worst.max((p.radius / (fe.at(x) + lag) - 1.0).abs());
+        }
+        println!("{:38} radius within {:5.2} %", file.path, 100.0 * worst);
+        // The ball of R/2 at nu = 0.3: 8.85 % free, 9.00 % flat (the law wider by about 5 % on
+        // average), a stated miss of the 5 % target (COUNTERPART.md).
+        let limit = if file.path.ends_with("force_nu0.3_k0.5.csv") {
+            0.095
+        } else {
+            0.06
+        };
+        assert!(worst < limit, "{}: {:.2} %", file.path, 100.0 * worst);
+    }
+}
+
+/// A right-angle edge within its stated error of the FE (`fit_counterpart.py`: 4.25 %, fitted
+/// on this one curve; the target 10 %). The plane law there, what an edge was before,
+/// is 2.2-3.2x the FE.
+#[test]
+fn force_on_an_edge_is_within_its_stated_error_of_the_fe() {
+    let mut seen = 0;
+    for file in COUNTERPART_FILES
+        .iter()
+        .filter(|f| matches!(f.counterpart, FeCounterpart::Edge) && f.path.contains("/force_"))
+    {
+        let law = law_of(file);
+        let (err, top) = force_error(file, &law);
+        let plane = ContactLaw::try_new(*law.params(), Level::Calibrated).expect("binds");
+        let (plane_err, _) = force_error(file, &plane);
+        println!(
+            "{:38} force within {:5.2} % for 0.01 <= x <= {top:.2} (as a plane: {:.0} %)",
+            file.path,
+            100.0 * err,
+            100.0 * plane_err
+        );
+        assert!(
+            err <= 0.0445, // the stated 4.25 % + 0.2 %, inside the 10 %
+            "{}: {:.2} %",
+            file.path,
+            100.0 * err
+        );
+        assert!(plane_err > 1.0, "{}: as a plane {plane_err}", file.path);
+        let fe_end = file.points().expect("parses").last().expect("points").x;
+        assert!(law.x_max() >= fe_end, "{}", file.path);
+        seen += 1;
+    }
+    assert!(seen >= 1, "no edge curve");
+}

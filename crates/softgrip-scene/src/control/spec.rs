@@ -1,0 +1,95 @@
+//! `[[controller]]` as written in a scene file (SCENES.md, "Controllers"): one table per
+//! controller, its kind in `type`.
+
+use serde::Deserialize;
+
+use crate::exact::exact_opt;
+use crate::format::{GripperSpec, MoveSpec};
+
+/// A controller of a scene file, by kind.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum ControllerSpec {
+    /// Kinematic jaws (the `[gripper]` table's controller).
+    ParallelJaws(GripperSpec),
+    /// Joint position targets over time.
+    Trajectory(TrajectorySpec),
+    /// Close a group of joints until a force or a position, hold, lift, open.
+    Grasp(GraspSpec),
+}
+
+/// `type = "trajectory"`: joint position targets at times, linear in between (the velocity
+/// target is the segment's slope), held before the first and after the last.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TrajectorySpec {
+    /// Name (default `trajectory`).
+    #[serde(default = "trajectory_name")]
+    pub name: String,
+    /// The robot.
+    pub robot: String,
+    /// The joints it commands, by URDF name (moving, not mimic joints).
+    pub joints: Vec<String>,
+    /// The points: `t` \[s\] increasing, `positions` \[m or rad\] one per joint.
+    pub points: Vec<JointPointSpec>,
+}
+
+fn trajectory_name() -> String {
+    "trajectory".into()
+}
+
+/// A point of a joint trajectory.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JointPointSpec {
+    /// Time \[s\], >= 0, strictly increasing.
+    pub t: f64,
+    /// Position of each joint \[m or rad\], within its limits.
+    pub positions: Vec<f64>,
+}
+
+/// `type = "grasp"`: closes a group of joints at `speed` until each joint's finger presses
+/// `force` (or until `closed`), settles, lifts the robot's base along `up`, holds, opens.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GraspSpec {
+    /// Name (default `grasp`).
+    #[serde(default = "grasp_name")]
+    pub name: String,
+    /// The robot (its base must be `kinematic` to lift).
+    pub robot: String,
+    /// The joints of the group, by URDF name (moving, not mimic joints).
+    pub joints: Vec<String>,
+    /// Each joint's closed position \[m or rad\] (where closing stops at the latest).
+    pub closed: Vec<f64>,
+    /// Each joint's position after the release \[m or rad\] (default: its start position).
+    #[serde(default)]
+    pub open: Option<Vec<f64>>,
+    /// Speed of each joint's target while closing and opening \[m/s or rad/s\], > 0 and
+    /// within the joint's URDF velocity limit.
+    pub speed: f64,
+    /// Stop closing a joint once every fingertip of its finger presses at least this normal
+    /// force \[N\], > 0; without it, each joint closes to `closed`.
+    #[serde(default)]
+    pub force: Option<f64>,
+    /// Time before closing starts \[s\], >= 0 (default 0).
+    #[serde(default)]
+    pub start: f64,
+    /// Wait after the grip is reached \[s\], >= 0 (default 0.2).
+    #[serde(default = "settle")]
+    pub settle: f64,
+    /// Lift of the base along `up` after the settle.
+    pub lift: MoveSpec,
+    /// Lift direction (normalised; default opposite to gravity).
+    #[serde(default, deserialize_with = "exact_opt")]
+    pub up: Option<[f64; 3]>,
+    /// Hold at the top \[s\], >= 0.
+    pub hold: f64,
+}
+
+fn grasp_name() -> String {
+    "grasp".into()
+}
+fn settle() -> f64 {
+    0.2
+}

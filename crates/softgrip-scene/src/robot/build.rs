@@ -1,0 +1,201 @@
+//! A [`Robot`] inserted into a rapier world: its links, colliders and joints (multibody or
+//! impulse), the root's body type, each moving joint's position motor (limits, effort),
+//! start positions, and mimic joints coupled.
+
+use rapier3d_urdf::UrdfMultibodyOptions;
+use softgrip_rapier::rapier3d::prelude::{
+    ColliderHandle, ImpulseJointHandle, JointAxis, MotorModel, MultibodyDofCoupling,
+    MultibodyJointHandle, PhysicsWorld, RigidBodyHandle, RigidBodyType,
+};
+
+use crate::robot::model::{JointKind, Robot, RobotJoint};
+use crate::robot::spec::{BaseKind, JointModel};
+use crate::robot::state::fk_impulse;
+
+/// Density given to the collision shapes of a link whose URDF has no mass [kg/m³] (so that
+/// every dynamic link has one).
+pub const FALLBACK_DENSITY: f64 = 1000.0;
+
+/// How a robot joint is held in rapier.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RobotJointHandle {
+    /// A multibody joint (reduced coordinates).
+    Multibody(MultibodyJointHandle),
+    /// An impulse joint.
+    Impulse(ImpulseJointHandle),
+    /// Not in rapier (a multibody joint rapier refused, e.g. one that would close a loop).
+    None,
+}
+
+/// The rapier handles of an inserted robot.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RobotHandles {
+    /// Each link's body, in [`Robot::links`] order.
+    pub links: Vec<RigidBodyHandle>,
+    /// Each link's collision shapes (its colliders), in [`Robot::links`] order.
+    pub colliders: Vec<Vec<ColliderHandle>>,
+    /// Each joint, in [`Robot::joints`] order.
+    pub joints: Vec<RobotJointHandle>,
+}
+
+/// The motor axis of a joint kind (the URDF loader puts every joint's axis on its local x).
+pub(crate) fn motor_axis(kind: JointKind) -> JointAxis {
+    match kind {
+        JointKind::Prismatic => JointAxis::LinX,
+        _ => JointAxis::AngX,
+    }
+}
+
+impl Robot {
+    /// Inserts the robot into `world` and returns its handles.
+    pub fn insert(&self, world: &mut PhysicsWorld) -> RobotHandles {
+        let mut rapier = self.rapier().clone();
+        let root = self.root();
+        for (i, link) in rapier.links.iter_mut().enumerate() {
+            if i == root {
+                let kind = match self.base() {
+                    BaseKind::Fixed => RigidBodyType::Fixed,
+                    BaseKind::Kinematic => RigidBodyType::KinematicPositionBased,
+                    BaseKind::Dynamic => RigidBodyType::Dynamic,
+                };
+                link.body.set_body_type(kind, false);
+            }
+            if self.link_mass(i) == 0.0 {
+                for c in &mut link.colliders {
+                    c.collider.set_density(FALLBACK_DENSITY as f32);
+                }
+            }
+        }
+        // Every joint's motor and limits on the GenericJoint before insertion.
+        for (j, uj) in self.joints().iter().zip(rapier.joints.iter_mut()) {
+            if j.kind.moves() && !(self.joint_model() == JointModel::Multibody && j.mimic.is_some())
+            {
+                set_motor(&mut uj.joint, j, j.initial, 0.0);
+            }
+        }
+        let w = world;
+        let (links, colliders, joints) = match self.joint_model() {
+            JointModel::Multibody => {
+                let h = rapier.insert_using_multibody_joints(
+                    &mut w.bodies,
+                    &mut w.colliders,
+                    &mut w.multibody_joints,
+                    UrdfMultibodyOptions::empty(),
+                );
+                let joints = (h.joints.iter())
+                    .map(|j| {
+                        j.joint
+                            .map_or(RobotJointHandle::None, RobotJointHandle::Multibody)
+                    })
+                    .collect();
+                split(h.links, joints)
+            }
+            JointModel::Impulse => {
+                let h = rapier.insert_using_impulse_joints(
+                    &mut w.bodies,
+                    &mut w.colliders,
+                    &mut w.impulse_joints,
+                );
+                let joints = h
+                    .joints
+                    .iter()
+                    .map(|j| RobotJointHandle::Impulse(j.joint))
+                    .collect();
+                split(h.links, joints)
+            }
+        };
+        let handles = RobotHandles {
+            links,
+            colliders,
+            joints,
+        };
+        match self.joint_model() {
+            JointModel::Multibody => self.start_multibody(w, &handles),
+            JointModel::Impulse => fk_impulse(self, w, &handles, |j| j.initial),
+        }
+        handles
+    }
+
+    /// Start positions and mimic couplings of a multibody robot.
+    fn start_multibody(&self, w: &mut PhysicsWorld, h: &RobotHandles) {
+        for (j, handle) in self.joints().iter().zip(&h.joints) {
+            let RobotJointHandle::Multibody(handle) = *handle else {
+                continue;
+            };
+            if j.kind.moves()
+                && j.initial != 0.0
+                && let Some((mb, link)) = w.multibody_joints.get_mut(handle)
+                && let Some(l) = mb.link_mut(link)
+            {
+                l.joint.apply_displacement(&[j.initial as f32]);
+            }
+            let Some(m) = j.mimic else { continue };
+            let RobotJointHandle::Multibody(other) = h.joints[m.joint] else {
+                continue;
+            };
+            let Some(link1) = w.multibody_joints.get(other).map(|(_, l)| l) else {
+                continue;
+            };
+            if let Some((mb, link2)) = w.multibody_joints.get_mut(handle) {
+                mb.add_dof_coupling(MultibodyDofCoupling {
+                    link1,
+                    dof1: 0,
+                    axis1: motor_axis(self.joints()[m.joint].kind) as usize,
+                    link2,
+                    dof2: 0,
+                    axis2: motor_axis(j.kind) as usize,
+                    coeff: m.multiplier as f32,
+                    offset: m.offset as f32,
+                });
+            }
+        }
+        if let Some(&root) = h.links.get(self.root())
+            && let Some(id) = w.multibody_joints.rigid_body_link(root).copied()
+            && let Some(mb) = w.multibody_joints.get_multibody_mut(id.multibody)
+        {
+            mb.forward_kinematics(&w.bodies, true);
+            mb.update_rigid_bodies(&mut w.bodies, true);
+        }
+    }
+}
+
+/// Links' bodies and colliders apart.
+fn split(
+    links: Vec<rapier3d_urdf::UrdfLinkHandle>,
+    joints: Vec<RobotJointHandle>,
+) -> (
+    Vec<RigidBodyHandle>,
+    Vec<Vec<ColliderHandle>>,
+    Vec<RobotJointHandle>,
+) {
+    let bodies = links.iter().map(|l| l.body).collect();
+    let colliders = (links.into_iter())
+        .map(|l| l.colliders.into_iter().map(|c| c.handle).collect())
+        .collect();
+    (bodies, colliders, joints)
+}
+
+/// `j`'s position motor on `g` (force-based, its gains, its effort as the largest force) with
+/// target `position` \[m or rad\] and `velocity`, and its limits.
+pub(crate) fn set_motor(
+    g: &mut softgrip_rapier::rapier3d::prelude::GenericJoint,
+    j: &RobotJoint,
+    position: f64,
+    velocity: f64,
+) {
+    let axis = motor_axis(j.kind);
+    g.set_motor_model(axis, MotorModel::ForceBased);
+    g.set_motor(
+        axis,
+        position as f32,
+        velocity as f32,
+        j.stiffness as f32,
+        j.damping as f32,
+    );
+    if let Some(effort) = j.effort {
+        g.set_motor_max_force(axis, effort as f32);
+    }
+    if j.kind != JointKind::Continuous {
+        g.set_limits(axis, [j.limits[0] as f32, j.limits[1] as f32]);
+    }
+}

@@ -1,0 +1,14 @@
+//! Robots from URDF (`[[robot]]`): the format, the URDF reader and its checks, the checked
+//! [`Robot`], its insertion into a rapier world and its joints' state and targets.
+
+mod build;
+mod model;
+mod spec;
+mod state;
+mod urdf;
+
+pub use build::{FALLBACK_DENSITY, RobotHandles, RobotJointHandle};
+pub use model::{JointKind, Mimic, Robot, RobotJoint, RobotLink};
+pub use spec::{BaseKind, JointModel, MeshShape, RobotSpec};
+pub use state::{JointState, joint_state, joint_target, set_joint_target};
+pub use urdf::MAX_LINK_MASS;

@@ -1,0 +1,406 @@
+//! Reading a robot's URDF file: bounded read, `urdf-rs`, mesh paths resolved (`package://`,
+//! `file://`, relative) and every mesh loaded here first, so that a mesh that cannot be loaded
+//! is an error naming its file (`rapier3d-urdf` drops such a mesh without a word), and every
+//! number checked against what the engine can hold.
+
+use std::collections::{BTreeMap, HashMap, HashSet};
+use std::path::{Path, PathBuf};
+
+use rapier3d_urdf::urdf_rs::{Geometry, JointType, Pose, Robot};
+use softgrip_rapier::rapier3d::prelude::{MeshConverter, TriMeshFlags, Vector};
+
+use crate::limits::{MAX_COORDINATE, MAX_MESH_BYTES, MAX_SCENE_BYTES, MAX_SIZE, MIN_SIZE};
+use crate::read::{ReadError, read_regular, size, strip_bom};
+use crate::robot::spec::MeshShape;
+
+/// Largest mass of a link \[kg\] (rapier is f32; inertias are masses times squared lengths).
+pub const MAX_LINK_MASS: f64 = 1.0e6;
+
+/// A URDF read and checked: the robot with every collision mesh's `filename` replaced by the
+/// resolved path, and the file's text (the `/robot_description` published).
+#[derive(Debug, Clone)]
+pub(crate) struct CheckedUrdf {
+    /// The robot, meshes resolved.
+    pub robot: Robot,
+    /// The URDF file's text, as read.
+    pub text: String,
+    /// The URDF file.
+    pub path: PathBuf,
+}
+
+/// What is wrong, naming where in the URDF (link or joint and the value).
+pub(crate) type UrdfProblem = String;
+
+/// The URDF converter of meshes for `mesh`.
+pub(crate) fn converter(mesh: MeshShape) -> MeshConverter {
+    match mesh {
+        MeshShape::ConvexHull => MeshConverter::ConvexHull,
+        MeshShape::Trimesh => MeshConverter::TriMeshWithFlags(TriMeshFlags::all()),
+    }
+}
+
+/// Reads `path` (a regular file of at most [`MAX_SCENE_BYTES`]; a leading byte-order mark is
+/// skipped), parses it and checks it; mesh files are
+/// resolved with `packages` (name -> folder) and loaded once with `mesh`'s converter.
+pub(crate) fn read_urdf(
+    path: &Path,
+    packages: &BTreeMap<String, PathBuf>,
+    mesh: MeshShape,
+) -> Result<CheckedUrdf, UrdfProblem> {
+    // A regular file (a FIFO would block the read forever), at most the scene size limit.
+    let bytes = read_regular(path, MAX_SCENE_BYTES).map_err(|e| match e {
+        ReadError::TooLarge { limit } => format!("larger than the {} limit", size(limit)),
+        other => other.message(),
+    })?;
+    let text =
+        String::from_utf8(strip_bom(&bytes).to_vec()).map_err(|e| format!("not UTF-8: {e}"))?;
+    let mut robot = rapier3d_urdf::urdf_rs::read_from_string(&sanitize(&text))
+        .map_err(|e| format!("not a URDF robot: {e}"))?;
+    check_structure(&robot)?;
+    let dir = path.parent().unwrap_or(Path::new(""));
+    for link in &mut robot.links {
+        for (k, c) in link.collision.iter_mut().enumerate() {
+            let at = format!("link `{}` collision[{k}]", link.name);
+            check_pose(&at, &c.origin)?;
+            check_geometry(&at, &mut c.geometry, dir, packages, mesh)?;
+        }
+        let at = format!("link `{}` inertial", link.name);
+        check_pose(&at, &link.inertial.origin)?;
+        let m = link.inertial.mass.value;
+        if !(m.is_finite() && (0.0..=MAX_LINK_MASS).contains(&m)) {
+            return Err(format!(
+                "{at}: mass must be finite and in [0, {MAX_LINK_MASS:e}] kg, got {m}"
+            ));
+        }
+        let i = &link.inertial.inertia;
+        for (name, v) in [
+            ("ixx", i.ixx),
+            ("ixy", i.ixy),
+            ("ixz", i.ixz),
+            ("iyy", i.iyy),
+            ("iyz", i.iyz),
+            ("izz", i.izz),
+        ] {
+            if !(v.is_finite() && v.abs() <= MAX_LINK_MASS * MAX_SIZE) {
+                return Err(format!(
+                    "{at}: inertia {name} must be finite and within ±{:e} kg m^2, got {v}",
+                    MAX_LINK_MASS * MAX_SIZE
+                ));
+            }
+        }
+    }
+    Ok(CheckedUrdf {
+        robot,
+        text,
+        path: path.to_path_buf(),
+    })
+}
+
+/// An empty `<geometry></geometry>` (which some URDFs have and `urdf-rs` rejects) as a
+/// zero box, which `rapier3d-urdf` skips (as its own loader does).
+fn sanitize(input: &str) -> String {
+    const EMPTY: &str = "<box size=\"0 0 0\"/>";
+    let mut out = String::with_capacity(input.len());
+    let mut rem = input;
+    while let Some(open) = rem.find("<geometry") {
+        out.push_str(&rem[..open]);
+        let tag = &rem[open..];
+        let Some(end) = tag.find('>') else {
+            out.push_str(tag);
+            return out;
+        };
+        let (head, body) = tag.split_at(end + 1);
+        out.push_str(head);
+        if head.ends_with("/>") {
+            rem = body;
+            continue;
+        }
+        let Some(close) = body.find("</geometry>") else {
+            out.push_str(body);
+            return out;
+        };
+        let inner = &body[..close];
+        out.push_str(if inner.trim().is_empty() {
+            EMPTY
+        } else {
+            inner
+        });
+        out.push_str("</geometry>");
+        rem = &body[close + "</geometry>".len()..];
+    }
+    out.push_str(rem);
+    out
+}
+
+/// Unique names, joints between existing links, one parent per link, no loop, a single
+/// root, supported joint types, finite axes and limits, mimic joints that exist.
+fn check_structure(robot: &Robot) -> Result<(), UrdfProblem> {
+    if robot.links.is_empty() {
+        return Err("has no <link>".into());
+    }
+    let mut links = HashSet::new();
+    for l in &robot.links {
+        if !links.insert(l.name.as_str()) {
+            return Err(format!("link `{}` is defined twice", l.name));
+        }
+    }
+    let mut joints = HashMap::new();
+    let mut parent_of = HashMap::new();
+    for (i, j) in robot.joints.iter().enumerate() {
+        let at = format!("joint `{}`", j.name);
+        if joints.insert(j.name.as_str(), i).is_some() {
+            return Err(format!("{at} is defined twice"));
+        }
+        for (end, link) in [("parent", &j.parent.link), ("child", &j.child.link)] {
+            if !links.contains(link.as_str()) {
+                return Err(format!(
+                    "{at}: {end} link `{link}` is not a <link> of the robot"
+                ));
+            }
+        }
+        if j.parent.link == j.child.link {
+            return Err(format!(
+                "{at}: parent and child are the same link `{}`",
+                j.child.link
+            ));
+        }
+        if let Some(other) = parent_of.insert(j.child.link.as_str(), j.name.as_str()) {
+            return Err(format!(
+                "{at}: link `{}` is already the child of joint `{other}` (a URDF is a tree)",
+                j.child.link
+            ));
+        }
+        check_pose(&at, &j.origin)?;
+        check_joint(&at, j)?;
+    }
+    let roots: Vec<_> = (robot.links.iter())
+        .filter(|l| !parent_of.contains_key(l.name.as_str()))
+        .map(|l| l.name.as_str())
+        .collect();
+    if roots.len() != 1 {
+        return Err(format!(
+            "must have exactly one root link (a link that is no joint's child), found {}: {:?}",
+            roots.len(),
+            roots
+        ));
+    }
+    for j in &robot.joints {
+        if let Some(m) = &j.mimic {
+            let at = format!("joint `{}` mimic", j.name);
+            let Some(&k) = joints.get(m.joint.as_str()) else {
+                return Err(format!(
+                    "{at}: joint `{}` is not a joint of the robot",
+                    m.joint
+                ));
+            };
+            let other = &robot.joints[k];
+            if other.name == j.name || !moves(&other.joint_type) || !moves(&j.joint_type) {
+                return Err(format!(
+                    "{at}: `{}` ({:?}) cannot be mimicked by `{}` ({:?}): both must be other, moving joints",
+                    m.joint, other.joint_type, j.name, j.joint_type
+                ));
+            }
+            for (name, v) in [("multiplier", m.multiplier), ("offset", m.offset)] {
+                if v.is_some_and(|v| !(v.is_finite() && v.abs() <= MAX_COORDINATE)) {
+                    return Err(format!(
+                        "{at}: {name} must be finite and within ±{MAX_COORDINATE:e}, got {v:?}"
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Whether a joint type moves (revolute, continuous, prismatic).
+pub(crate) fn moves(t: &JointType) -> bool {
+    matches!(
+        t,
+        JointType::Revolute | JointType::Continuous | JointType::Prismatic
+    )
+}
+
+/// A joint's type, axis and limits.
+fn check_joint(at: &str, j: &rapier3d_urdf::urdf_rs::Joint) -> Result<(), UrdfProblem> {
+    match j.joint_type {
+        JointType::Fixed => return Ok(()),
+        JointType::Revolute | JointType::Continuous | JointType::Prismatic => {}
+        ref t => {
+            return Err(format!(
+                "{at}: type {t:?} is not supported (revolute, continuous, prismatic, fixed)"
+            ));
+        }
+    }
+    let a = j.axis.xyz.0;
+    let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
+    if !(n.is_finite() && n > 1e-12) {
+        return Err(format!(
+            "{at}: axis must be a finite, non-zero direction, got {a:?}"
+        ));
+    }
+    let l = &j.limit;
+    if j.joint_type != JointType::Continuous {
+        let bound = if j.joint_type == JointType::Prismatic {
+            MAX_COORDINATE
+        } else {
+            crate::limits::MAX_ROTATION_ANGLE
+        };
+        if !(l.lower.is_finite() && l.upper.is_finite() && l.lower <= l.upper)
+            || l.lower.abs() > bound
+            || l.upper.abs() > bound
+        {
+            return Err(format!(
+                "{at}: limit lower = {}, upper = {}: must be finite, lower <= upper, within ±{bound:e}",
+                l.lower, l.upper
+            ));
+        }
+    }
+    for (name, v) in [("effort", l.effort), ("velocity", l.velocity)] {
+        if !(v.is_finite() && (0.0..=1e9).contains(&v)) {
+            return Err(format!(
+                "{at}: limit {name} must be finite and in [0, 1e9] (0: none given), got {v}"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// An origin: finite, within the coordinate range, angles within 100 rad.
+fn check_pose(at: &str, p: &Pose) -> Result<(), UrdfProblem> {
+    let (xyz, rpy) = (p.xyz.0, p.rpy.0);
+    if !xyz
+        .iter()
+        .all(|c| c.is_finite() && c.abs() <= MAX_COORDINATE)
+    {
+        return Err(format!(
+            "{at}: origin xyz must be finite and within ±{MAX_COORDINATE:e} m, got {xyz:?}"
+        ));
+    }
+    if !rpy
+        .iter()
+        .all(|c| c.is_finite() && c.abs() <= crate::limits::MAX_ROTATION_ANGLE)
+    {
+        return Err(format!(
+            "{at}: origin rpy must be finite angles within ±100 rad, got {rpy:?}"
+        ));
+    }
+    Ok(())
+}
+
+/// A collision geometry's sizes; a mesh's path resolved (written back into `g`) and the mesh
+/// loaded with the converter the robot will use.
+fn check_geometry(
+    at: &str,
+    g: &mut Geometry,
+    dir: &Path,
+    packages: &BTreeMap<String, PathBuf>,
+    mesh: MeshShape,
+) -> Result<(), UrdfProblem> {
+    let size = |name: &str, v: f64| {
+        if v.is_finite() && (MIN_SIZE..=MAX_SIZE).contains(&v) {
+            Ok(())
+        } else {
+            Err(format!(
+                "{at}: {name} must be in [{MIN_SIZE:e}, {MAX_SIZE:e}] m, got {v}"
+            ))
+        }
+    };
+    match g {
+        Geometry::Box { size: s } if s.0 == [0.0; 3] => Ok(()), // an empty <geometry>
+        Geometry::Box { size: s } => {
+            for (k, v) in s.0.iter().enumerate() {
+                size(&format!("box size[{k}]"), *v)?;
+            }
+            Ok(())
+        }
+        Geometry::Cylinder { radius, length } | Geometry::Capsule { radius, length } => {
+            size("radius", *radius)?;
+            size("length", *length)
+        }
+        Geometry::Sphere { radius } => size("radius", *radius),
+        Geometry::Mesh { filename, scale } => {
+            let file = resolve(filename, dir, packages).map_err(|e| format!("{at}: {e}"))?;
+            let s = scale.map_or([1.0; 3], |s| s.0);
+            if !s
+                .iter()
+                .all(|c| c.is_finite() && (1e-9..=1e9).contains(&c.abs()))
+            {
+                return Err(format!(
+                    "{at}: mesh `{filename}`: scale must be finite with |s| in [1e-9, 1e9], got {s:?}"
+                ));
+            }
+            load_mesh(&file, s, mesh)
+                .map_err(|e| format!("{at}: mesh `{filename}` ({}): {e}", file.display()))?;
+            *filename = file.to_string_lossy().into_owned();
+            Ok(())
+        }
+    }
+}
+
+/// A mesh reference as a path: `package://name/rest` in the package's folder, `file://path`
+/// (absolute, or relative to the URDF's folder), an absolute path as it is, anything else
+/// relative to the URDF's folder `dir`.
+pub(crate) fn resolve(
+    filename: &str,
+    dir: &Path,
+    packages: &BTreeMap<String, PathBuf>,
+) -> Result<PathBuf, String> {
+    if let Some(rest) = filename.strip_prefix("package://") {
+        let (name, path) = rest
+            .split_once('/')
+            .ok_or_else(|| format!("mesh `{filename}`: expected package://<package>/<path>"))?;
+        let folder = packages.get(name).ok_or_else(|| {
+            let known: Vec<_> = packages.keys().map(String::as_str).collect();
+            format!(
+                "mesh `{filename}`: package `{name}` is not in the robot's `package_paths` (given: {known:?})"
+            )
+        })?;
+        return Ok(folder.join(path));
+    }
+    let path = Path::new(filename.strip_prefix("file://").unwrap_or(filename));
+    Ok(if path.is_absolute() {
+        path.to_path_buf()
+    } else {
+        dir.join(path)
+    })
+}
+
+/// Loads `file` as `rapier3d-urdf` will (the same loader and converter): an error if it cannot
+/// be read, parsed or converted, is larger than the mesh limit, holds no triangle, or has a
+/// vertex that is not finite.
+fn load_mesh(file: &Path, scale: [f64; 3], mesh: MeshShape) -> Result<(), String> {
+    let meta = std::fs::metadata(file).map_err(|e| format!("cannot read: {e}"))?;
+    if !meta.is_file() {
+        return Err("not a regular file".into());
+    }
+    if meta.len() > MAX_MESH_BYTES {
+        return Err(format!(
+            "larger than the {} mesh limit",
+            size(MAX_MESH_BYTES)
+        ));
+    }
+    let scale = Vector::new(scale[0] as f32, scale[1] as f32, scale[2] as f32);
+    let loaded = rapier3d_meshloader::load_from_path(file, &converter(mesh), scale)
+        .map_err(|e| format!("cannot load: {e}"))?;
+    if loaded.is_empty() {
+        return Err("holds no mesh".into());
+    }
+    for (k, shape) in loaded.into_iter().enumerate() {
+        let shape = shape.map_err(|e| format!("mesh {k}: cannot be converted: {e}"))?;
+        let raw = &shape.raw_mesh;
+        if raw.faces.is_empty() {
+            return Err(format!("mesh {k}: holds no triangle"));
+        }
+        if let Some(v) = raw
+            .vertices
+            .iter()
+            .position(|v| !v.iter().all(|c| c.is_finite()))
+        {
+            return Err(format!(
+                "mesh {k}: vertex {v} is not finite: {:?}",
+                raw.vertices[v]
+            ));
+        }
+    }
+    Ok(())
+}
