@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use anyhow::{Context, Result};
-use softgrip_law::{Backing, ContactLaw, ContactParams, Level};
+use softgrip_law::{BACKINGS, Backing, ContactLaw, ContactParams, Level};
 
 use crate::accuracy::{MaxError, Quantity, max_error};
 use crate::counterpart_arg::CounterpartArg;
@@ -170,13 +170,15 @@ fn measure(
     } else {
         Vec::new()
     };
-    let (backing, mut construction) = match backing {
-        "flat" => (Backing::Flat, "flat".to_owned()),
-        "core" => (
-            Backing::Core { thickness: tau },
-            format!("core t/R = {tau}"),
-        ),
-        _ => (Backing::Free, "free".to_owned()),
+    // The construction through the law's one parser (its row says whether it takes t/R).
+    let row = BACKINGS
+        .iter()
+        .find(|row| row.name == backing)
+        .ok_or_else(|| anyhow::anyhow!("no construction `{backing}` in BACKINGS"))?;
+    let backing = Backing::try_from_parts(row.name, row.parameter.map(|_| tau))?;
+    let mut construction = match backing.thickness() {
+        Some(t) => format!("{} t/R = {t}", backing.name()),
+        None => backing.name().to_owned(),
     };
     if !counterpart.is_plane() {
         construction.push_str(&format!(" on {counterpart}"));

@@ -57,9 +57,8 @@ pub struct CurveArgs {
         conflicts_with = "profile"
     )]
     x: Option<XRange>,
-    /// How the fingertip is built: free (a free sphere, default), flat (a hemisphere bonded at
-    /// its flat face) or core (a skin over a rigid core: needs `--thickness`).
-    #[arg(long, value_name = "free|flat|core", default_value = "free")]
+    /// How the fingertip is built (softgrip_law::BACKINGS; `core` needs `--thickness`).
+    #[arg(long, value_name = "NAME", default_value = "free", value_parser = backing_names())]
     backing: String,
     /// Skin thickness over outer radius t/R [-] of `--backing core`, in (0, 1); only there.
     #[arg(long, value_name = "T")]
@@ -80,29 +79,41 @@ pub struct CurveArgs {
     profile: Option<f64>,
 }
 
-/// The construction of `--backing` and `--thickness` (T = t/R; with R = 1 m, t = T m).
+/// The constructions `--backing` takes: every row of `softgrip_law::BACKINGS`, with its
+/// description as its help.
+fn backing_names() -> clap::builder::PossibleValuesParser {
+    clap::builder::PossibleValuesParser::new(
+        softgrip_law::BACKINGS
+            .iter()
+            .map(|row| clap::builder::PossibleValue::new(row.name).help(row.description)),
+    )
+}
+
+/// The construction of `--backing` and `--thickness` (T = t/R; with R = 1 m, t = T m),
+/// through the law's one parser ([`Backing::try_from_parts`], the table
+/// `softgrip_law::BACKINGS`); the thickness then against R = 1.
 fn backing(args: &CurveArgs) -> Result<Backing> {
-    match (args.backing.as_str(), args.thickness) {
-        ("core", Some(t)) => {
-            if !(t > 0.0 && t < 1.0) {
-                bail!(
-                    "`--thickness` is t/R and must be in (0, 1), got {}",
-                    Shortest(t)
-                );
-            }
-            Ok(Backing::Core { thickness: t })
-        }
-        ("core", None) => bail!("`--backing core` needs `--thickness T` (t/R, in (0, 1))"),
-        ("free" | "flat", Some(_)) => bail!(
-            "`--thickness` applies only to `--backing core`, not to `--backing {}`",
-            args.backing
+    let backing = Backing::try_from_parts(&args.backing, args.thickness).map_err(|e| match e {
+        softgrip_law::Error::InvalidParameter { value, .. } => anyhow::anyhow!(
+            "`--thickness` is t/R and must be in (0, 1), got {}",
+            Shortest(value)
         ),
-        (name, None) => name
-            .parse()
-            .map_err(|e: String| anyhow::anyhow!("invalid `--backing`: {e}")),
-        (name, Some(_)) => {
-            bail!("invalid `--backing`: unknown backing `{name}`; expected one of free, flat, core")
+        // The law's messages in the flags' words (`--thickness` is t/R here).
+        softgrip_law::Error::UnexpectedSetting { name, .. } => anyhow::anyhow!(
+            "`--thickness` applies only to `--backing {}`, not to `--backing {name}`",
+            e.takes().join("|")
+        ),
+        softgrip_law::Error::MissingSetting { name, .. } => {
+            anyhow::anyhow!("`--backing {name}` needs `--thickness T` (t/R, in (0, 1))")
         }
+        e => anyhow::anyhow!("invalid `--backing`: {e}"),
+    })?;
+    match backing.thickness() {
+        Some(t) if t >= 1.0 => bail!(
+            "`--thickness` is t/R and must be in (0, 1), got {}",
+            Shortest(t)
+        ),
+        _ => Ok(backing),
     }
 }
 

@@ -13,7 +13,7 @@ use std::time::Duration;
 
 use anyhow::{Context, Result};
 use softgrip_ecs::scene::control::{JointCommand, SharedInbox};
-use softgrip_ecs::softgrip_record::msgs::sensor_msgs::JointState;
+use softgrip_record::msgs::sensor_msgs::JointState;
 use softgrip_ros2::{NodeOptions, Ros2Subscriber};
 
 /// The default command topic: `joint_state_topic_hardware_interface`'s (topic_based_ros2_control)

@@ -1,14 +1,17 @@
-//! Choosing a level of the law on the command line: `--level` and its settings.
+//! Choosing a level of the law on the command line: `--level` and its settings, read from the
+//! law's table (`softgrip_law::LEVELS`): the names `--level` takes, their descriptions in
+//! `--help`, the settings' flags and their checks.
 
-use anyhow::{Result, bail};
-use softgrip_law::Level;
+use anyhow::Result;
+use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+use softgrip_law::{LEVELS, Level, LevelData};
 
 /// `--level NAME` with the settings that only some levels take.
 #[derive(Debug, Clone, clap::Args)]
 pub struct LevelArgs {
-    /// Level of the law: linear, hertz, fit, incompressible, neo-hookean, neo-hookean-exact,
-    /// tatara, calibrated or auto.
-    #[arg(long, value_name = "NAME", value_parser = parse_level)]
+    /// Level of the law (every level of softgrip_law::LEVELS that parameters alone build; a
+    /// measured curve is a scene's `level = { tabulated = "tip.csv" }`).
+    #[arg(long, value_name = "NAME", value_parser = level_parser())]
     pub level: Level,
     /// Slope k of 1/chi = 1 - k x, in [0, 10] (only with `--level fit`; default 10/9).
     #[arg(long)]
@@ -23,35 +26,38 @@ pub struct LevelArgs {
     pub match_x: Option<f64>,
 }
 
-fn parse_level(s: &str) -> std::result::Result<Level, String> {
-    s.parse()
+/// The levels `--level` takes: every row of [`LEVELS`] that needs no data, with the row's
+/// description as its help.
+fn level_parser() -> impl TypedValueParser<Value = Level> {
+    let values = LEVELS
+        .iter()
+        .filter(|row| row.data == LevelData::None)
+        .map(|row| PossibleValue::new(row.name).help(row.description));
+    PossibleValuesParser::new(values).try_map(|name| Level::from_name(&name))
 }
 
 impl LevelArgs {
-    /// The level with its settings. Fails if a setting is given to a level that does not take
-    /// it; the values themselves are checked by the law when it is built.
+    /// The level's settings as given, by their key in the table (`k`, `tolerance`,
+    /// `match_x`; a test checks that these are every key of the table).
+    pub fn settings(&self) -> [(&'static str, Option<f64>); 3] {
+        [
+            ("match_x", self.match_x),
+            ("k", self.k),
+            ("tolerance", self.tolerance),
+        ]
+    }
+
+    /// The level with its settings, each set and checked by the law
+    /// ([`Level::with_setting`]): a setting given to a level that does not take it, or
+    /// outside its range, is an error naming the flag, the value and the level that takes
+    /// it.
     pub fn level(&self) -> Result<Level> {
         let mut level = self.level;
-        if let Some(k) = self.k {
-            match level {
-                Level::Fit { .. } => level = Level::Fit { k },
-                other => bail!("`--k` applies only to `--level fit`, not to `--level {other}`"),
-            }
-        }
-        if let Some(tolerance) = self.tolerance {
-            match level {
-                Level::Auto { .. } => level = Level::Auto { tolerance },
-                other => {
-                    bail!("`--tolerance` applies only to `--level auto`, not to `--level {other}`")
-                }
-            }
-        }
-        if let Some(match_x) = self.match_x {
-            match level {
-                Level::Linear { .. } => level = Level::Linear { match_x },
-                other => {
-                    bail!("`--match-x` applies only to `--level linear`, not to `--level {other}`")
-                }
+        for (key, value) in self.settings() {
+            if let Some(value) = value {
+                level = level
+                    .with_setting(key, value)
+                    .map_err(|e| anyhow::anyhow!("`--{}`: {e}", key.replace('_', "-")))?;
             }
         }
         Ok(level)

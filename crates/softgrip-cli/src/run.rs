@@ -7,9 +7,9 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
-use softgrip_ecs::softgrip_record::RecorderOptions;
-use softgrip_ecs::softgrip_record::units::{si, sig};
 use softgrip_ecs::{Controllers, McapReport, McapSink, Physics, Simulation, Summary};
+use softgrip_record::RecorderOptions;
+use softgrip_record::units::{si, sig};
 
 use crate::joint_commands::{CommandBridge, Routes};
 use softgrip_ros2::PublisherStats;

@@ -11,7 +11,7 @@ mod common;
 use std::io::Read;
 use std::process::{Command, Stdio};
 
-use softgrip_ecs::softgrip_record::Recording;
+use softgrip_record::Recording;
 
 fn text(o: &std::process::Output) -> (String, String) {
     (

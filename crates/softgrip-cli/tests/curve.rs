@@ -205,7 +205,7 @@ const GRID: &str = "0.01:0.5:0.01";
 fn unknown_level_is_refused() {
     refused(
         &["--level", "spring", "--nu", "0.3", "--x", GRID],
-        &["unknown level `spring`", "neo-hookean"],
+        &["invalid value 'spring' for '--level <NAME>'", "neo-hookean"],
     );
 }
 
@@ -287,7 +287,7 @@ fn more_than_a_million_rows_is_refused() {
 fn settings_of_other_levels_are_refused() {
     refused(
         &["--level", "hertz", "--k", "1.1", "--nu", "0.3", "--x", GRID],
-        &["`--k` applies only to `--level fit`"],
+        &["`--k`: `k` applies only to level `fit`, not to level `hertz`"],
     );
     refused(
         &[
@@ -300,7 +300,7 @@ fn settings_of_other_levels_are_refused() {
             "--x",
             GRID,
         ],
-        &["`--tolerance` applies only to `--level auto`"],
+        &["`--tolerance`: `tolerance` applies only to level `auto`"],
     );
     refused(
         &[
@@ -313,7 +313,7 @@ fn settings_of_other_levels_are_refused() {
             "--x",
             GRID,
         ],
-        &["`--match-x` applies only to `--level linear`"],
+        &["`--match-x`: `match_x` applies only to level `linear`"],
     );
 }
 

@@ -197,7 +197,7 @@ fn bad_combinations_are_refused_with_a_clear_message() {
     }
     fails_with(
         &with(&["--backing", "glued", "--x", "0.1:0.2:0.1"]),
-        "unknown backing `glued`",
+        "invalid value 'glued' for '--backing <NAME>'",
     );
     for x in ["0", "-0.1", "nan"] {
         fails_with(

@@ -377,7 +377,7 @@ fn pipe_case(rng: &mut Rng, dir: &Path) -> Result<String, String> {
     drop(stdin);
     let o = finish(child)?;
     common_checks(&o, None)?;
-    let rec = softgrip_ecs::softgrip_record::Recording::open(&out).map_err(|e| e.to_string())?;
+    let rec = softgrip_record::Recording::open(&out).map_err(|e| e.to_string())?;
     if rec.softgrip_metadata("scene") != Some(scene.as_str()) {
         return Err("the recorded scene is not the text given".into());
     }

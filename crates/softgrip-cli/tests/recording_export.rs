@@ -6,7 +6,7 @@
 
 mod common;
 
-use softgrip_ecs::softgrip_record::{Message, Recording, topics};
+use softgrip_record::{Message, Recording, topics};
 
 /// The header of `contacts.csv` as written before the export went through `csv` + serde.
 const CONTACTS_HEADER: &str = "time_s,fingertip,other,point_x_m,point_y_m,point_z_m,normal_x,normal_y,normal_z,compression_m,ratio_x,normal_force_N,friction_force_x_N,friction_force_y_N,friction_force_z_N,torsional_moment_Nm,contact_radius_m,mean_pressure_Pa,peak_pressure_Pa,stiffness_N_per_m,level,level_name,validity_exceeded,sliding,peak_normal_force_N,max_compression_m,contact_duration_s";

@@ -12,7 +12,7 @@ mod tactile;
 use std::process::Command;
 
 use serde_json::Value;
-use softgrip_ecs::softgrip_record::{Message, Recording, topics};
+use softgrip_record::{Message, Recording, topics};
 
 fn close(a: f64, b: f64) -> bool {
     a == b || (a - b).abs() <= 1e-12 * a.abs().max(b.abs())

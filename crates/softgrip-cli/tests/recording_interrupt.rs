@@ -11,7 +11,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use softgrip_ecs::softgrip_record::{Recording, topics};
+use softgrip_record::{Recording, topics};
 
 fn wait_for_size(path: &std::path::Path, bytes: u64) {
     let start = Instant::now();

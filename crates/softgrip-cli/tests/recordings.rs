@@ -7,8 +7,8 @@
 
 mod common;
 
-use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
-use softgrip_ecs::softgrip_record::{Message, Recording, topics};
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+use softgrip_record::{Message, Recording, topics};
 
 /// (recording, scene file).
 const RECORDINGS: [(&str, &str); 5] = [

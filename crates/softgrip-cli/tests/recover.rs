@@ -11,7 +11,7 @@ mod common;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use softgrip_ecs::softgrip_record::Recording;
+use softgrip_record::Recording;
 
 #[test]
 fn sigkilled_recording_is_recovered_for_the_python_reader() {

@@ -14,7 +14,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use softgrip_ecs::softgrip_record::Recording;
+use softgrip_record::Recording;
 
 const FILES: [&str; 4] = ["contacts.csv", "wrenches.csv", "poses.csv", "clock.csv"];
 

@@ -15,7 +15,7 @@ use std::collections::HashMap;
 use std::process::Command;
 
 use serde_json::Value;
-use softgrip_ecs::softgrip_record::{Message, Recording};
+use softgrip_record::{Message, Recording};
 
 fn close(a: f64, b: f64) -> bool {
     a == b || (a - b).abs() <= 1e-12 * a.abs().max(b.abs())

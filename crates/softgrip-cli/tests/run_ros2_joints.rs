@@ -16,7 +16,7 @@ use std::collections::HashMap;
 use std::process::Command;
 
 use serde_json::Value;
-use softgrip_ecs::softgrip_record::{Message, Recording, topics};
+use softgrip_record::{Message, Recording, topics};
 
 #[test]
 fn run_ros2_takes_joint_commands_and_publishes_joint_states() {

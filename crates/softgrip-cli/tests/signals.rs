@@ -12,7 +12,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use softgrip_ecs::softgrip_record::{Recording, topics};
+use softgrip_record::{Recording, topics};
 
 fn kill(pid: u32, sig: &str) {
     let ok = Command::new("kill")

@@ -9,7 +9,7 @@
 
 mod common;
 
-use softgrip_ecs::softgrip_record::{Message, Recording, topics};
+use softgrip_record::{Message, Recording, topics};
 
 /// "12.35 µN" (or "0.1234") after `key` in `line`, in SI units.
 fn si_after(line: &str, key: &str) -> f64 {

@@ -22,9 +22,13 @@ use crate::resources::Physics;
 use crate::scene::Scene;
 use crate::summary::Summary;
 
-/// The law parameters of a fingertip (named `name`: the scene's name for it).
+/// The law of a fingertip as recorded (named `name`: the scene's name for it): its level and
+/// parameters, and for a `tabulated` or `custom` level the curve that stands for it
+/// (`ContactLaw::recorded_curve`; a custom law whose curve cannot be sampled is recorded
+/// without one, and reads back as parameters without a law).
 pub fn fingertip_law(tip: &SoftFingertip, name: &str) -> FingertipLaw {
     let m = tip.material();
+    let law = tip.law();
     FingertipLaw {
         name: name.to_owned(),
         level: tip.level(),
@@ -34,6 +38,8 @@ pub fn fingertip_law(tip: &SoftFingertip, name: &str) -> FingertipLaw {
         friction: tip.friction(),
         restitution: tip.restitution(),
         backing: tip.backing(),
+        curve: law.recorded_curve().ok().flatten(),
+        custom_name: law.custom_name().map(str::to_owned),
     }
 }
 
@@ -262,25 +268,8 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
 /// pressures when the scene does not record pressure: the radius is always recorded).
 pub fn contact_reading(c: &TipContact, patch: Option<ContactPatch>) -> ContactReading {
     ContactReading {
-        point: c.point,
-        normal: c.normal,
-        delta: c.delta,
-        x: c.x,
-        normal_force: c.normal_force,
-        friction_force: c.friction_force,
-        torsional_moment: c.torsional_moment,
-        stiffness: c.stiffness,
-        level: c.level,
-        regime: c.regime,
-        validity_exceeded: c.validity_exceeded,
-        sliding: c.sliding,
-        peak_normal_force: c.peak_normal_force,
-        max_delta: c.max_delta,
-        contact_duration: c.contact_duration,
         patch,
-        backing: c.backing,
-        counterpart: c.counterpart(),
-        patch_direction: c.patch_direction(),
+        ..c.reading()
     }
 }
 

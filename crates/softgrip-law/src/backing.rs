@@ -4,6 +4,8 @@ use std::fmt;
 use std::str::FromStr;
 
 use crate::Shortest;
+use crate::backing_table::{BACKINGS, BackingInfo, BackingKind};
+use crate::error::{Error, Result};
 
 /// The thinnest skin the calibrated level (and `auto`'s reference) of a [`Backing::Core`]
 /// takes, as t/R [-]: down to it the level's tabulated form follows the form within its
@@ -50,24 +52,96 @@ pub enum Backing {
 }
 
 impl Backing {
-    /// The names [`FromStr`] accepts (`core` parses with no thickness: see there).
-    pub const NAMES: [&'static str; 3] = ["free", "flat", "core"];
+    /// The names [`FromStr`] accepts, in the order of [`BACKINGS`] (`core` parses with no
+    /// thickness: see there).
+    pub const NAMES: [&'static str; BACKINGS.len()] = {
+        let mut names = [""; BACKINGS.len()];
+        let mut i = 0;
+        while i < BACKINGS.len() {
+            names[i] = BACKINGS[i].name;
+            i += 1;
+        }
+        names
+    };
 
-    /// `free`, `flat` or `core`, as in scene files and on the command line.
-    pub fn name(&self) -> &'static str {
+    /// The construction without its numbers.
+    pub fn kind(&self) -> BackingKind {
         match self {
-            Backing::Free => "free",
-            Backing::Flat => "flat",
-            Backing::Core { .. } => "core",
+            Backing::Free => BackingKind::Free,
+            Backing::Flat => BackingKind::Flat,
+            Backing::Core { .. } => BackingKind::Core,
         }
     }
 
-    /// A small stable code for recordings: 0 = free, 1 = flat, 2 = core.
+    /// The construction's row of [`BACKINGS`].
+    pub fn info(&self) -> &'static BackingInfo {
+        self.kind().info()
+    }
+
+    /// `free`, `flat` or `core`, as in scene files and on the command line.
+    pub fn name(&self) -> &'static str {
+        self.info().name
+    }
+
+    /// The construction's fixed code in files (0 = free, 1 = flat, 2 = core).
     pub fn code(&self) -> u8 {
-        match self {
-            Backing::Free => 0,
-            Backing::Flat => 1,
-            Backing::Core { .. } => 2,
+        self.info().code
+    }
+
+    /// The construction named `name` with its parameter (`thickness` \[m\], the skin of
+    /// `core`): the one parser of `(name, thickness)` that scene files, the command line,
+    /// recordings and Python use. Typed errors name the field, the value and the range:
+    /// [`Error::UnknownName`] (`backing`), [`Error::MissingSetting`] (`core` without a
+    /// thickness), [`Error::UnexpectedSetting`] (a thickness for `free` or `flat`) and
+    /// [`Error::InvalidParameter`] (a thickness that is not finite and > 0; against the
+    /// radius, [`ContactParams::with_backing`](crate::ContactParams::with_backing) checks).
+    ///
+    /// ```
+    /// use softgrip_law::{Backing, Error};
+    /// assert_eq!(Backing::try_from_parts("core", Some(0.004))?, Backing::Core { thickness: 0.004 });
+    /// assert_eq!(Backing::try_from_parts("flat", None)?, Backing::Flat);
+    /// let e = Backing::try_from_parts("flat", Some(0.004)).unwrap_err();
+    /// assert_eq!(e.to_string(), "`core_thickness` applies only to backing `core`, not to backing `flat` (got 0.004)");
+    /// assert!(matches!(Backing::try_from_parts("core", None), Err(Error::MissingSetting { .. })));
+    /// assert!(matches!(Backing::try_from_parts("steel", None), Err(Error::UnknownName { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    pub fn try_from_parts(name: &str, thickness: Option<f64>) -> Result<Backing> {
+        let row = BACKINGS
+            .iter()
+            .find(|row| row.name == name)
+            .ok_or_else(|| Error::UnknownName {
+                field: "backing",
+                value: name.to_owned(),
+                expected: Backing::NAMES.join(", "),
+            })?;
+        match (row.parameter, thickness) {
+            (Some(p), Some(t)) if !(t.is_finite() && t > 0.0) => Err(Error::InvalidParameter {
+                field: p.key,
+                value: t,
+                range: p.range,
+            }),
+            (Some(_), Some(t)) => Ok(row.kind.with_parameter(t)),
+            (Some(p), None) => Err(Error::MissingSetting {
+                field: p.key,
+                kind: "backing",
+                name: row.name,
+                range: p.range,
+            }),
+            (None, Some(t)) => {
+                let key = BACKINGS
+                    .iter()
+                    .find_map(|r| r.parameter)
+                    .expect("invariant: a construction in BACKINGS takes a parameter")
+                    .key;
+                Err(Error::UnexpectedSetting {
+                    field: key,
+                    value: t,
+                    kind: "backing",
+                    name: row.name,
+                })
+            }
+            (None, None) => Ok(row.kind.with_parameter(0.0)),
         }
     }
 
@@ -95,21 +169,11 @@ impl fmt::Display for Backing {
 }
 
 impl FromStr for Backing {
-    type Err = String;
+    type Err = Error;
 
-    /// `free` or `flat`; `core` needs its thickness and is refused here with a message that
-    /// says so (build [`Backing::Core`] directly).
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        match s {
-            "free" => Ok(Backing::Free),
-            "flat" => Ok(Backing::Flat),
-            "core" => Err(
-                "backing `core` needs its skin thickness: use Backing::Core { thickness }".into(),
-            ),
-            _ => Err(format!(
-                "unknown backing `{s}`; expected one of: {}",
-                Backing::NAMES.join(", ")
-            )),
-        }
+    /// A construction without parameter (`free`, `flat`); `core` needs its thickness and is
+    /// refused ([`Error::MissingSetting`]: use [`Backing::try_from_parts`]).
+    fn from_str(s: &str) -> Result<Self> {
+        Backing::try_from_parts(s, None)
     }
 }

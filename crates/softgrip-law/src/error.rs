@@ -110,6 +110,46 @@ pub enum Error {
         /// How to build it.
         hint: &'static str,
     },
+    /// A name that is not in its table: a level ([`crate::LEVELS`]), a construction
+    /// ([`crate::BACKINGS`]) or a level's setting.
+    #[error("`{field}` must be one of {expected}, got `{value}`")]
+    UnknownName {
+        /// What was named: `level`, `backing` or `setting`.
+        field: &'static str,
+        /// The name that was given.
+        value: String,
+        /// The names of the table, comma-separated.
+        expected: String,
+    },
+    /// A setting given to a kind that does not take it (`k` to level `hertz`, `core_thickness`
+    /// to backing `flat`).
+    /// The names of those that take it are [`Error::takes`] (read from the table).
+    #[error(
+        "`{field}` applies only to {kind} `{}`, not to {kind} `{name}` (got {value})",
+        takers(kind, field).join("`, `")
+    )]
+    UnexpectedSetting {
+        /// The setting's key.
+        field: &'static str,
+        /// Its value.
+        value: f64,
+        /// What takes settings: `level` or `backing`.
+        kind: &'static str,
+        /// The name of the level or backing it was given to.
+        name: &'static str,
+    },
+    /// A setting that a kind requires and was not given (`core_thickness` of backing `core`).
+    #[error("`{field}` is required with {kind} `{name}`: {range}")]
+    MissingSetting {
+        /// The setting's key.
+        field: &'static str,
+        /// `level` or `backing`.
+        kind: &'static str,
+        /// The level or backing that requires it.
+        name: &'static str,
+        /// What it must be, with its unit.
+        range: &'static str,
+    },
     /// A user's [`crate::NormalisedLaw`] failed the checks of [`crate::ContactLaw::custom`].
     #[error("custom law: {quantity} at x = {} must be {range}, got {}", Shortest(*.x), Shortest(*.value))]
     InvalidCustomLaw {
@@ -145,5 +185,33 @@ pub(crate) fn positive(field: &'static str, value: f64, range: &'static str) -> 
             value,
             range,
         })
+    }
+}
+
+impl Error {
+    /// For [`Error::UnexpectedSetting`]: the names of the levels (or constructions) that take
+    /// the setting, from their table ([`crate::LEVELS`], [`crate::BACKINGS`]); else empty.
+    pub fn takes(&self) -> Vec<&'static str> {
+        match self {
+            Error::UnexpectedSetting { field, kind, .. } => takers(kind, field),
+            _ => Vec::new(),
+        }
+    }
+}
+
+/// The rows of `kind`'s table (`level` or `backing`) that take the setting `key`.
+fn takers(kind: &str, key: &str) -> Vec<&'static str> {
+    if kind == "backing" {
+        crate::BACKINGS
+            .iter()
+            .filter(|row| row.parameter.is_some_and(|p| p.key == key))
+            .map(|row| row.name)
+            .collect()
+    } else {
+        crate::LEVELS
+            .iter()
+            .filter(|row| row.setting(key).is_some())
+            .map(|row| row.name)
+            .collect()
     }
 }

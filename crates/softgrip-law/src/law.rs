@@ -344,6 +344,14 @@ impl ContactLaw {
         }
     }
 
+    /// For [`Level::Custom`]: the user's law's [`NormalisedLaw::name`].
+    pub fn custom_name(&self) -> Option<&str> {
+        match &self.curve {
+            Curve::Custom(law) => Some(law.name()),
+            _ => None,
+        }
+    }
+
     /// The contact's parameters.
     pub fn params(&self) -> &ContactParams {
         &self.params

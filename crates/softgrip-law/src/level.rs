@@ -5,6 +5,8 @@ use std::fmt;
 use std::str::FromStr;
 
 use crate::error::{Error, Result};
+use crate::level_table::{LEVELS, LevelInfo};
+use crate::setting::LevelSetting;
 
 /// The paper's `k` of Eq. 38 (the least-squares value is 1.1141).
 pub const DEFAULT_FIT_K: f64 = 10.0 / 9.0;
@@ -83,57 +85,141 @@ impl Level {
     }
 
     /// Every level that [`crate::ContactLaw::try_new`] builds from parameters alone, with its
-    /// default settings (not [`Level::Tabulated`] and [`Level::Custom`], which need data).
-    pub const ALL: [Level; 9] = [
-        Level::linear(),
-        Level::Hertz,
-        Level::fit(),
-        Level::Incompressible,
-        Level::NeoHookean,
-        Level::NeoHookeanExact,
-        Level::Tatara,
-        Level::Calibrated,
-        Level::auto(),
-    ];
+    /// default settings (not [`Level::Tabulated`] and [`Level::Custom`], which need data), in
+    /// the order of [`LEVELS`](crate::LEVELS), from which it is made.
+    pub const ALL: [Level; 9] = crate::level_table::buildable();
 
-    /// The command-line name of the level.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Level::Linear { .. } => "linear",
-            Level::Hertz => "hertz",
-            Level::Fit { .. } => "fit",
-            Level::Incompressible => "incompressible",
-            Level::NeoHookean => "neo-hookean",
-            Level::NeoHookeanExact => "neo-hookean-exact",
-            Level::Tatara => "tatara",
-            Level::Calibrated => "calibrated",
-            Level::Tabulated => "tabulated",
-            Level::Custom => "custom",
-            Level::Auto { .. } => "auto",
-        }
+    /// The level's row of [`LEVELS`](crate::LEVELS).
+    pub fn info(&self) -> &'static LevelInfo {
+        let same = std::mem::discriminant(self);
+        LEVELS
+            .iter()
+            .find(|row| std::mem::discriminant(&row.level) == same)
+            .expect("invariant: every Level has a row in LEVELS (tests/kinds.rs)")
     }
 
-    /// Checks the level's own settings.
-    pub(crate) fn validate(&self) -> Result<()> {
-        let bad = |field, value, range| {
-            Err(Error::InvalidParameter {
-                field,
-                value,
-                range,
+    /// The level's name: scene files, the command line, recordings, Python.
+    pub fn name(&self) -> &'static str {
+        self.info().name
+    }
+
+    /// The concrete level it is; `None` for [`Level::Auto`], which picks one per call.
+    pub fn kind(&self) -> Option<LevelKind> {
+        self.info().kind
+    }
+
+    /// The level named `name`, with its default settings (every row of
+    /// [`LEVELS`](crate::LEVELS), `tabulated` and `custom` included: [`Level::info`]'s `data`
+    /// says what else it needs).
+    ///
+    /// ```
+    /// use softgrip_law::{Error, Level, LevelData};
+    /// assert_eq!(Level::from_name("auto")?, Level::auto());
+    /// assert_eq!(Level::from_name("tabulated")?.info().data, LevelData::MeasuredCurve);
+    /// let e = Level::from_name("spring").unwrap_err();
+    /// assert!(matches!(e, Error::UnknownName { field: "level", .. }));
+    /// assert!(e.to_string().starts_with("`level` must be one of linear, hertz, fit,"), "{e}");
+    /// # Ok::<(), Error>(())
+    /// ```
+    pub fn from_name(name: &str) -> Result<Level> {
+        LEVELS
+            .iter()
+            .find(|row| row.name == name)
+            .map(|row| row.level)
+            .ok_or_else(|| Error::UnknownName {
+                field: "level",
+                value: name.to_owned(),
+                expected: LEVELS
+                    .iter()
+                    .map(|row| row.name)
+                    .collect::<Vec<_>>()
+                    .join(", "),
             })
+    }
+
+    /// The value of its setting `key` (`k`, `tolerance`, `match_x`), `None` if it has none of
+    /// that key.
+    pub fn setting(&self, key: &str) -> Option<f64> {
+        self.info().setting(key).and_then(|s| (s.get)(self))
+    }
+
+    /// The level with its setting `key` set to `value`. Fails with
+    /// [`Error::UnexpectedSetting`] if the level does not take `key` (naming the levels that
+    /// do), [`Error::UnknownName`] if no level does, and [`Error::InvalidParameter`] if the
+    /// value is outside the setting's range.
+    ///
+    /// ```
+    /// use softgrip_law::{Error, Level};
+    /// assert_eq!(Level::fit().with_setting("k", 1.2)?, Level::Fit { k: 1.2 });
+    /// let e = Level::Hertz.with_setting("k", 1.2).unwrap_err();
+    /// assert_eq!(e.to_string(), "`k` applies only to level `fit`, not to level `hertz` (got 1.2)");
+    /// assert!(Level::auto().with_setting("tolerance", 0.9).is_err()); // outside (0, 0.5]
+    /// # Ok::<(), Error>(())
+    /// ```
+    pub fn with_setting(self, key: &str, value: f64) -> Result<Level> {
+        let Some(setting) = self.info().setting(key) else {
+            let takes: Vec<&str> = LEVELS
+                .iter()
+                .filter(|row| row.setting(key).is_some())
+                .map(|row| row.name)
+                .collect();
+            if takes.is_empty() {
+                return Err(Error::UnknownName {
+                    field: "setting",
+                    value: key.to_owned(),
+                    expected: setting_keys().join(", "),
+                });
+            }
+            return Err(Error::UnexpectedSetting {
+                field: setting_key(key),
+                value,
+                kind: "level",
+                name: self.name(),
+            });
         };
-        match *self {
-            Level::Linear { match_x } if !(match_x > 0.0 && match_x <= 1.0) => {
-                bad("match_x", match_x, "in (0, 1]")
+        let level = (setting.set)(self, value)
+            .expect("invariant: a row's setting applies to the row's level");
+        check(setting, value)?;
+        Ok(level)
+    }
+
+    /// Checks the level's own settings against their ranges.
+    pub(crate) fn validate(&self) -> Result<()> {
+        for setting in self.info().settings {
+            if let Some(value) = (setting.get)(self) {
+                check(setting, value)?;
             }
-            Level::Fit { k } if !(k.is_finite() && (0.0..=10.0).contains(&k)) => {
-                bad("k", k, "finite and in [0, 10]")
-            }
-            Level::Auto { tolerance } if !(tolerance > 0.0 && tolerance <= 0.5) => {
-                bad("tolerance", tolerance, "in (0, 0.5]")
-            }
-            _ => Ok(()),
         }
+        Ok(())
+    }
+}
+
+/// Every setting key of the table, in table order (`match_x`, `k`, `tolerance`).
+pub fn setting_keys() -> Vec<&'static str> {
+    LEVELS
+        .iter()
+        .flat_map(|row| row.settings.iter().map(|s| s.key))
+        .collect()
+}
+
+/// The table's `'static` spelling of `key` (one of [`setting_keys`]).
+fn setting_key(key: &str) -> &'static str {
+    setting_keys()
+        .into_iter()
+        .find(|k| *k == key)
+        .expect("invariant: called with a key of the table")
+}
+
+/// `value` against `setting`'s range.
+fn check(setting: &LevelSetting, value: f64) -> Result<()> {
+    if setting.range.contains(value) {
+        Ok(())
+    } else {
+        Err(Error::InvalidParameter {
+            field: setting.key,
+            value,
+            range: setting.range.text(),
+        })
     }
 }
 
@@ -144,20 +230,11 @@ impl fmt::Display for Level {
 }
 
 impl FromStr for Level {
-    type Err = String;
+    type Err = Error;
 
-    /// Parses a level name with default settings (`linear`, `hertz`, `fit`, `incompressible`,
-    /// `neo-hookean`, `neo-hookean-exact`, `tatara`, `calibrated`, `auto`; not `tabulated` and
-    /// `custom`, which need data).
-    fn from_str(s: &str) -> std::result::Result<Self, Self::Err> {
-        Level::ALL
-            .iter()
-            .find(|l| l.name() == s)
-            .copied()
-            .ok_or_else(|| {
-                let names: Vec<_> = Level::ALL.iter().map(|l| l.name()).collect();
-                format!("unknown level `{s}`; expected one of: {}", names.join(", "))
-            })
+    /// [`Level::from_name`].
+    fn from_str(s: &str) -> Result<Self> {
+        Level::from_name(s)
     }
 }
 
@@ -187,26 +264,44 @@ pub enum LevelKind {
 }
 
 impl LevelKind {
-    /// The level's name, as on the command line.
-    pub fn name(&self) -> &'static str {
-        match self {
-            LevelKind::Linear => "linear",
-            LevelKind::Hertz => "hertz",
-            LevelKind::Fit => "fit",
-            LevelKind::Incompressible => "incompressible",
-            LevelKind::NeoHookean => "neo-hookean",
-            LevelKind::NeoHookeanExact => "neo-hookean-exact",
-            LevelKind::Tatara => "tatara",
-            LevelKind::Calibrated => "calibrated",
-            LevelKind::Tabulated => "tabulated",
-            LevelKind::Custom => "custom",
-        }
+    /// The level's row of [`LEVELS`](crate::LEVELS).
+    pub fn info(&self) -> &'static LevelInfo {
+        LEVELS
+            .iter()
+            .find(|row| row.kind == Some(*self))
+            .expect("invariant: every LevelKind has a row in LEVELS (tests/kinds.rs)")
     }
 
-    /// A small stable code, for recordings (0 = linear ... 7 = calibrated, 8 = tabulated,
-    /// 9 = custom).
+    /// The level's name, as on the command line.
+    pub fn name(&self) -> &'static str {
+        self.info().name
+    }
+
+    /// The level's fixed code in files (its row's `code`: 0 = linear ... 7 = calibrated,
+    /// 8 = tabulated, 9 = custom; never the enum's order).
     pub fn code(&self) -> u8 {
-        *self as u8
+        self.info()
+            .code
+            .expect("invariant: every concrete level has a code (tests/kinds.rs)")
+    }
+
+    /// The concrete level of file code `code`, if any.
+    ///
+    /// ```
+    /// use softgrip_law::LevelKind;
+    /// assert_eq!(LevelKind::from_code(8), Some(LevelKind::Tabulated));
+    /// assert_eq!(LevelKind::from_code(200), None);
+    /// ```
+    pub fn from_code(code: u8) -> Option<LevelKind> {
+        LEVELS
+            .iter()
+            .find(|row| row.code == Some(code))
+            .and_then(|row| row.kind)
+    }
+
+    /// The level that computes this one's forces, with its default settings.
+    pub fn level(&self) -> Level {
+        self.info().level
     }
 }
 

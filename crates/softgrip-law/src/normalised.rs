@@ -83,6 +83,13 @@ pub trait NormalisedLaw: Send + Sync + Debug {
         0.0
     }
 
+    /// The law's name, kept by recordings: a recording stores a custom law as a sample of its
+    /// curve ([`ContactLaw::recorded_curve`](crate::ContactLaw::recorded_curve)) under this
+    /// name. The default is `custom`.
+    fn name(&self) -> &str {
+        "custom"
+    }
+
     /// Shape and taper together, `(m, b)` at `x` in `(0, x_max]`: what
     /// [`ContactLaw::patch`](crate::ContactLaw::patch) asks for. The default is
     /// `(pressure_shape(x), pressure_taper(x))`; a level whose two share their work overrides

@@ -60,6 +60,11 @@ pub fn law_error(py: Python<'_>, e: &softgrip_law::Error) -> PyErr {
         E::LevelNeedsData { .. } => ("ParameterError", "level", None),
         E::InvalidCustomLaw { quantity, .. } => ("ParameterError", *quantity, None),
         E::Fit(_) => ("ParameterError", "samples", None),
+        E::UnknownName { field, value, .. } => ("ParameterError", *field, Some(value.clone())),
+        E::UnexpectedSetting { field, value, .. } => {
+            ("ParameterError", *field, Some(value.to_string()))
+        }
+        E::MissingSetting { field, .. } => ("ParameterError", *field, None),
     };
     raise(py, class, message, Some(field), value)
 }

@@ -27,5 +27,15 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit::fit_material, m)?)?;
     m.add_function(wrap_pyfunction!(run::run_scene, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    // The kinds, from the law's tables (softgrip_law::LEVELS, BACKINGS): the level names `law`
+    // accepts (those built from parameters alone) and the constructions.
+    let levels: Vec<&str> = softgrip_law::LEVELS
+        .iter()
+        .filter(|row| row.data == softgrip_law::LevelData::None)
+        .map(|row| row.name)
+        .collect();
+    m.add("LEVELS", pyo3::types::PyTuple::new(m.py(), levels)?)?;
+    let backings: Vec<&str> = softgrip_law::BACKINGS.iter().map(|row| row.name).collect();
+    m.add("BACKINGS", pyo3::types::PyTuple::new(m.py(), backings)?)?;
     Ok(())
 }

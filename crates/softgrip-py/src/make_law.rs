@@ -6,7 +6,7 @@ use pyo3::prelude::*;
 use softgrip_law::{Backing, ContactLaw, ContactParams, Level, Material};
 
 use crate::args;
-use crate::errors::{law_error, parameter};
+use crate::errors::law_error;
 use crate::law::Law;
 
 /// A level's optional settings as given from Python (each only for the level that takes it).
@@ -43,39 +43,24 @@ pub fn level(name: &Bound<'_, PyAny>, settings: &Settings) -> PyResult<Level> {
         "level",
         "a level name (a str, one of softgrip.LEVELS)",
     )?;
-    let mut level: Level = name.parse().map_err(|e: String| {
-        crate::errors::raise(py, "ParameterError", e, Some("level"), Some(name.clone()))
-    })?;
-    let only = |field: &str, value: f64, level: &str| {
-        parameter(
-            py,
-            field,
-            value,
-            &format!("given only with level \"{level}\""),
-        )
-    };
-    if let Some(k) = settings.k {
-        match level {
-            Level::Fit { .. } => level = Level::Fit { k },
-            _ => return Err(only("k", k, "fit")),
-        }
-    }
-    if let Some(tolerance) = settings.tolerance {
-        match level {
-            Level::Auto { .. } => level = Level::Auto { tolerance },
-            _ => return Err(only("tolerance", tolerance, "auto")),
-        }
-    }
-    if let Some(match_x) = settings.match_x {
-        match level {
-            Level::Linear { .. } => level = Level::Linear { match_x },
-            _ => return Err(only("match_x", match_x, "linear")),
+    // The name, each setting and its range through the law's table (softgrip_law::LEVELS).
+    let mut level = Level::from_name(&name).map_err(|e| crate::errors::law_error(py, &e))?;
+    for (key, value) in [
+        ("match_x", settings.match_x),
+        ("k", settings.k),
+        ("tolerance", settings.tolerance),
+    ] {
+        if let Some(value) = value {
+            level = level
+                .with_setting(key, value)
+                .map_err(|e| crate::errors::law_error(py, &e))?;
         }
     }
     Ok(level)
 }
 
-/// The construction named `name` (`free`, `flat`, `core`) with the core's skin thickness [m].
+/// The construction named `name` (one of `softgrip.BACKINGS`) with the core's skin
+/// thickness [m].
 pub fn backing(name: &Bound<'_, PyAny>, thickness: Option<f64>) -> PyResult<Backing> {
     let py = name.py();
     let name = args::text(
@@ -83,25 +68,17 @@ pub fn backing(name: &Bound<'_, PyAny>, thickness: Option<f64>) -> PyResult<Back
         "backing",
         "a construction name (\"free\", \"flat\" or \"core\")",
     )?;
-    match (name.as_str(), thickness) {
-        ("core", Some(t)) => Ok(Backing::Core { thickness: t }),
-        ("core", None) => Err(crate::errors::raise(
-            py,
-            "ParameterError",
-            "`thickness` must be given for backing \"core\" (the skin thickness t in (0, R) m), got None",
-            Some("thickness"),
-            None,
-        )),
-        ("free" | "flat", Some(t)) => Err(parameter(
-            py,
-            "thickness",
-            t,
-            &format!("None for backing \"{name}\" (only \"core\" has a skin thickness)"),
-        )),
-        (other, _) => other.parse().map_err(|e: String| {
-            crate::errors::raise(py, "ParameterError", e, Some("backing"), Some(name.clone()))
-        }),
-    }
+    // The one parser of (name, thickness) (softgrip_law::BACKINGS); the thickness against R
+    // is the law's check when the parameters are built.
+    // Python's argument is `thickness` (the table's key is `core_thickness`, as in scenes).
+    Backing::try_from_parts(&name, thickness).map_err(|e| {
+        let (field, value) = match &e {
+            softgrip_law::Error::UnknownName { value, .. } => ("backing", Some(value.clone())),
+            _ => ("thickness", thickness.map(|t| t.to_string())),
+        };
+        let message = e.to_string().replace("`core_thickness`", "`thickness`");
+        crate::errors::raise(py, "ParameterError", message, Some(field), value)
+    })
 }
 
 /// The law of `level` for a fingertip of E [Pa], nu [-], R [m] and construction `backing`.

@@ -173,3 +173,25 @@ def test_hertz_fit_is_exact_on_hertz_samples():
     f = 4.0 / 3.0 * 2e6 * math.sqrt(r) * d**1.5
     fit = softgrip.fit_material(d, f, r, 0.5, 0.1, "hertz")
     assert abs(fit.effective_modulus / 2e6 - 1) < 1e-12
+
+
+def _possible_values(help_text: str, option: str) -> list[str]:
+    """The names under `Possible values:` of `--option` in `softgrip curve --help`."""
+    rest = help_text[help_text.index(f"--{option} <"):]
+    lines = rest[rest.index("Possible values:"):].splitlines()[1:]
+    names = []
+    for line in lines:
+        line = line.strip()
+        if not line.startswith("- "):
+            break
+        names.append(line[2:].split(":", 1)[0])
+    return names
+
+
+def test_kinds_are_the_law_tables(cli):
+    # softgrip.LEVELS and BACKINGS come from softgrip-law's tables, as the CLI's --help does.
+    _, out, _ = cli("curve", "--help")
+    assert list(softgrip.LEVELS) == _possible_values(out, "level")
+    assert list(softgrip.BACKINGS) == _possible_values(out, "backing")
+    for level in softgrip.LEVELS:
+        assert softgrip.law(level, 3e6, 0.45, 0.01).level == level

@@ -6,7 +6,9 @@ use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
-use softgrip_law::{Backing, ContactLaw, ContactPatch, Counterpart, LevelKind, Regime};
+use softgrip_law::{
+    Backing, ContactLaw, ContactPatch, ContactReading, Counterpart, LevelKind, Regime,
+};
 
 use crate::detect::{Model, Series, raw};
 use crate::solve::Row;
@@ -78,6 +80,34 @@ pub struct TipContact {
 }
 
 impl TipContact {
+    /// The contact's numbers as the law crate's plain [`ContactReading`], the one shape that
+    /// the recorder, the ROS 2 publisher and the ECS take (the conversion is here, once; the
+    /// patch is `None`: [`patch`](Self::patch) computes it when wanted).
+    pub fn reading(&self) -> ContactReading {
+        ContactReading {
+            point: self.point,
+            normal: self.normal,
+            delta: self.delta,
+            x: self.x,
+            normal_force: self.normal_force,
+            friction_force: self.friction_force,
+            torsional_moment: self.torsional_moment,
+            stiffness: self.stiffness,
+            level: self.level,
+            regime: self.regime,
+            validity_exceeded: self.validity_exceeded,
+            sliding: self.sliding,
+            peak_normal_force: self.peak_normal_force,
+            max_delta: self.max_delta,
+            max_x: self.max_x,
+            contact_duration: self.contact_duration,
+            backing: self.backing,
+            counterpart: self.counterpart(),
+            patch_direction: self.patch_direction(),
+            patch: None,
+        }
+    }
+
     /// Contact patch and pressure at `delta` (computed now): a disc on a plane or a ball, an
     /// ellipse on a cylinder or an edge, its first semi-axis (`radius`) along
     /// [`patch_direction`](Self::patch_direction).

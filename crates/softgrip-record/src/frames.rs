@@ -76,6 +76,8 @@ impl UpAxis {
 ///         name: name.into(), level: Level::auto(), youngs_modulus: 5.9e5,
 ///         poisson_ratio: 0.49, radius: 0.01, friction: 0.8, restitution: 0.5,
 ///         backing: Default::default(),
+///         curve: None,
+///         custom_name: None,
 ///     },
 ///     facing: None,
 /// };

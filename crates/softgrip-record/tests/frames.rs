@@ -30,6 +30,8 @@ fn tip(name: &str, body: &str, radius: f64) -> FingertipInfo {
             friction: 0.8,
             restitution: 0.5,
             backing: softgrip_law::Backing::Free,
+            curve: None,
+            custom_name: None,
         },
         facing: None,
     }
@@ -104,6 +106,7 @@ fn reading(force: f64, radius: f64, pressure: bool) -> ContactReading {
         sliding: false,
         peak_normal_force: force,
         max_delta: 1e-3,
+        max_x: 0.1,
         contact_duration: 1.0 / 60.0,
         backing: softgrip_law::Backing::Core { thickness: 0.004 },
         counterpart: softgrip_law::Counterpart::PLANE,

@@ -29,6 +29,8 @@ fn info() -> RecordingInfo {
             friction: 0.8,
             restitution: 0.5,
             backing: softgrip_law::Backing::Free,
+            curve: None,
+            custom_name: None,
         }],
         ..Default::default()
     }

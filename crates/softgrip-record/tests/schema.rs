@@ -9,7 +9,7 @@ use softgrip_record::msgs::builtin_interfaces::{Duration, Time};
 use softgrip_record::msgs::geometry_msgs::*;
 use softgrip_record::msgs::rosgraph_msgs::Clock;
 use softgrip_record::msgs::sensor_msgs::{CompressedImage, Image};
-use softgrip_record::msgs::softgrip_msgs::{LEVEL_KINDS, SoftContactArrayMsg, SoftContactMsg};
+use softgrip_record::msgs::softgrip_msgs::{SoftContactArrayMsg, SoftContactMsg, code_constants};
 use softgrip_record::msgs::std_msgs::{ColorRGBA, Header};
 use softgrip_record::msgs::tf2_msgs::TFMessage;
 use softgrip_record::msgs::visualization_msgs::*;
@@ -139,21 +139,41 @@ fn marker_array_schema_lists_the_whole_tree() {
 }
 
 #[test]
-fn level_codes_match_the_msg_constants() {
-    for (i, kind) in LEVEL_KINDS.iter().enumerate() {
-        assert_eq!(usize::from(kind.code()), i);
-    }
+fn msg_code_constants_are_exactly_the_law_tables() {
+    // Every `uint8 LEVEL_*` / `uint8 BACKING_*` / `uint8 COUNTERPART_*` line of
+    // SoftContact.msg, in file order, is the tables': no code missing, none extra, none
+    // renumbered.
     let text = SoftContactMsg::DEFINITION.text;
-    for kind in LEVEL_KINDS {
-        let constant = format!(
-            "uint8 LEVEL_{}={}",
-            kind.name().to_uppercase().replace('-', "_"),
-            kind.code()
-        );
-        assert!(text.contains(&constant), "{constant}");
+    let in_file: Vec<&str> = text
+        .lines()
+        .filter(|l| {
+            ["uint8 LEVEL_", "uint8 BACKING_", "uint8 COUNTERPART_"]
+                .iter()
+                .any(|p| l.starts_with(p))
+        })
+        .collect();
+    assert_eq!(in_file, code_constants());
+    assert!(in_file.contains(&"uint8 LEVEL_TABULATED=8"));
+    assert!(in_file.contains(&"uint8 LEVEL_CUSTOM=9"));
+    assert!(in_file.contains(&"uint8 COUNTERPART_CURVED=1"));
+    // Each code written by a message reads back as its level, by code and by name.
+    for row in softgrip_law::LEVELS.iter().filter(|r| r.kind.is_some()) {
+        let kind = row.kind.unwrap();
+        let mut c = SoftContactMsg::default();
+        c.set_level(kind);
+        assert_eq!((Some(c.level), c.level_name.as_str()), (row.code, row.name));
+        assert_eq!(c.level_kind(), Some(kind));
     }
     let mut c = SoftContactMsg::default();
     c.set_level(LevelKind::Tatara);
     assert_eq!((c.level, c.level_name.as_str()), (6, "tatara"));
-    assert_eq!(c.level_kind(), Some(LevelKind::Tatara));
+    c.level = 200;
+    assert_eq!(c.level_kind(), None);
+    for row in softgrip_law::BACKINGS {
+        let backing = row.kind.with_parameter(0.004);
+        let mut c = SoftContactMsg::default();
+        c.set_backing(backing);
+        assert_eq!(c.backing, row.code);
+        assert_eq!(c.backing(), Some(backing));
+    }
 }

@@ -5,8 +5,8 @@ use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
 use softgrip_law::{
-    Backing, ContactLaw, ContactParams, Level, MIN_CORE_THICKNESS_RATIO, Material, Shortest,
-    TabulatedCurve,
+    Backing, ContactLaw, ContactParams, Level, LevelData, MIN_CORE_THICKNESS_RATIO, Material,
+    Shortest, TabulatedCurve,
 };
 use softgrip_rapier::{Preset, SoftFingertip, SoftFingertipBuilder};
 
@@ -153,37 +153,32 @@ fn material(
     }
 }
 
-/// The fingertip's construction: `backing` by name, `core_thickness` [m] with `core` only
-/// (required there, in (0, radius)).
+/// The fingertip's construction: `backing` and `core_thickness` through the law's one parser
+/// ([`Backing::try_from_parts`], the table `softgrip_law::BACKINGS`), the thickness then
+/// against the radius (in (0, radius)).
 fn backing(
     c: &Checker,
     t: &FingertipSpec,
     f: &dyn Fn(&str) -> String,
 ) -> Result<Backing, SceneError> {
-    let name = t.backing.as_deref().unwrap_or("free");
-    let expected = format!("one of {}", Backing::NAMES.join(", "));
-    match (name, t.core_thickness) {
-        ("core", Some(thickness)) => {
-            if !(thickness.is_finite() && thickness > 0.0 && thickness < t.radius) {
-                let range = format!(
-                    "finite and in (0, radius) m, radius = {} m (the skin's thickness)",
-                    t.radius
-                );
-                return Err(c.invalid(f("core_thickness"), thickness, &range));
-            }
-            Ok(Backing::Core { thickness })
+    let name = t.backing.as_deref().unwrap_or(Backing::Free.name());
+    let range = |key: &str| {
+        format!(
+            "finite and in (0, radius) m, radius = {} m (the skin's thickness `{key}`)",
+            Shortest(t.radius)
+        )
+    };
+    let backing = Backing::try_from_parts(name, t.core_thickness).map_err(|e| match e {
+        softgrip_law::Error::InvalidParameter { field, value, .. } => {
+            c.invalid(f(field), value, &range(field))
         }
-        ("core", None) => Err(c.name(
-            f("core_thickness"),
-            "required with `backing = \"core\"`: the skin's thickness [m], in (0, radius)",
-        )),
-        (_, Some(_)) if Backing::NAMES.contains(&name) => Err(c.name(
-            f("core_thickness"),
-            format!("applies only to `backing = \"core\"`, the backing is `{name}`"),
-        )),
-        _ => name
-            .parse()
-            .map_err(|_: String| c.invalid(f("backing"), name, &expected)),
+        e => kind_error(c, f, e),
+    })?;
+    match (backing.thickness(), backing.info().parameter) {
+        (Some(thickness), Some(p)) if thickness >= t.radius => {
+            Err(c.invalid(f(p.key), thickness, &range(p.key)))
+        }
+        _ => Ok(backing),
     }
 }
 
@@ -216,7 +211,44 @@ fn check_core_ratio(
     Err(c.invalid(f("core_thickness"), thickness, &range))
 }
 
-/// What a fingertip's `level` (and `tolerance`) ask for.
+/// A law error about a fingertip's kinds (a level or backing name, a setting given to the
+/// wrong one or missing) as the scene's error naming the fingertip's key.
+fn kind_error(c: &Checker, f: &dyn Fn(&str) -> String, e: softgrip_law::Error) -> SceneError {
+    use softgrip_law::Error as E;
+    match e {
+        E::UnknownName {
+            field,
+            value,
+            expected,
+        } => c.invalid(f(field), value, &format!("one of {expected}")),
+        E::UnexpectedSetting {
+            field, kind, name, ..
+        } => c.name(
+            f(field),
+            format!(
+                "applies only to `{kind} = \"{}\"`, the {kind} is `{name}`",
+                e.takes().join("\" | \"")
+            ),
+        ),
+        E::MissingSetting {
+            field,
+            kind,
+            name,
+            range,
+        } => c.name(
+            f(field),
+            format!("required with `{kind} = \"{name}\"`: {range}"),
+        ),
+        E::InvalidParameter {
+            field,
+            value,
+            range,
+        } => c.invalid(f(field), value, range),
+        e => c.name(f("level"), e.to_string()),
+    }
+}
+
+/// What a fingertip's `level` (and its settings) ask for.
 enum TipLaw {
     /// A built-in level.
     Level(Level),
@@ -224,7 +256,8 @@ enum TipLaw {
     Tabulated(MeasuredCurve),
 }
 
-/// The law of a fingertip: a level by name (with `tolerance` for `auto`), or a measured curve
+/// The law of a fingertip: a level by name with its settings (`tolerance`, `k`, `match_x`:
+/// each only for the level whose row of `softgrip_law::LEVELS` has it), or a measured curve
 /// read from its CSV file (relative to `base`, the scene file's folder).
 fn law(
     c: &Checker,
@@ -232,25 +265,30 @@ fn law(
     f: &dyn Fn(&str) -> String,
     base: &Path,
 ) -> Result<TipLaw, SceneError> {
-    match &t.level {
-        LevelSpec::Named(name) => {
-            let mut level: Level = name
-                .parse()
-                .map_err(|e: String| c.invalid(f("level"), name, &e))?;
-            if let Some(tol) = t.tolerance {
-                match level {
-                    Level::Auto { .. } => level = Level::Auto { tolerance: tol },
-                    _ => return Err(c.name(f("tolerance"), "applies only to `level = \"auto\"`")),
-                }
-            }
-            Ok(TipLaw::Level(level))
+    let mut level = match &t.level {
+        LevelSpec::Named(name) => Level::from_name(name).map_err(|e| kind_error(c, f, e))?,
+        LevelSpec::Tabulated(_) => Level::Tabulated,
+    };
+    for (key, value) in t.settings() {
+        if let Some(value) = value {
+            level = level
+                .with_setting(key, value)
+                .map_err(|e| kind_error(c, f, e))?;
         }
-        LevelSpec::Tabulated(path) => {
-            if t.tolerance.is_some() {
-                return Err(c.name(f("tolerance"), "applies only to `level = \"auto\"`"));
-            }
-            Ok(TipLaw::Tabulated(read_curve(&base.join(path))?))
-        }
+    }
+    match (&t.level, level.info().data) {
+        (LevelSpec::Tabulated(path), _) => Ok(TipLaw::Tabulated(read_curve(&base.join(path))?)),
+        (LevelSpec::Named(_), LevelData::None) => Ok(TipLaw::Level(level)),
+        (LevelSpec::Named(name), LevelData::MeasuredCurve) => Err(c.name(
+            f("level"),
+            format!(
+                "`{name}` needs a measured curve: write `level = {{ tabulated = \"tip.csv\" }}`"
+            ),
+        )),
+        (LevelSpec::Named(name), LevelData::UserLaw) => Err(c.name(
+            f("level"),
+            format!("`{name}` is a user's own law, from Rust only (`ContactLaw::custom`)"),
+        )),
     }
 }
 

@@ -270,9 +270,18 @@ pub struct FingertipSpec {
     /// default `auto`), or `{ tabulated = "tip.csv" }`: a measured squeeze curve.
     #[serde(default)]
     pub level: LevelSpec,
-    /// Force tolerance of `auto` against the full theory, in (0, 0.5] (default 0.01).
+    /// `tolerance` of `auto`: relative force tolerance against `calibrated`, in (0, 0.5]
+    /// (default 0.01). Each level setting is a key of its own, valid only with the level whose
+    /// row of `softgrip_law::LEVELS` has it ([`settings`](Self::settings)).
     #[serde(default)]
     pub tolerance: Option<f64>,
+    /// `k` of `fit`: the slope of 1/chi = 1 - k x, in [0, 10] (default 10/9).
+    #[serde(default)]
+    pub k: Option<f64>,
+    /// `match_x` of `linear`: the compression ratio where the spring's force equals Hertz's,
+    /// in (0, 1] (default 0.05).
+    #[serde(default)]
+    pub match_x: Option<f64>,
     /// Coefficient of restitution e, in (0, 1] (default 0.5).
     #[serde(default = "default_tip_restitution")]
     pub restitution: f64,
@@ -299,6 +308,18 @@ pub struct FingertipSpec {
     /// fingertip; what touches it from the other side touches the rigid finger.
     #[serde(default, deserialize_with = "exact_opt")]
     pub facing: Option<[f64; 3]>,
+}
+
+impl FingertipSpec {
+    /// The level settings as written, by their key in `softgrip_law::LEVELS` (`match_x`, `k`,
+    /// `tolerance`; `None`: not given). A test checks that these are every key of the table.
+    pub fn settings(&self) -> [(&'static str, Option<f64>); 3] {
+        [
+            ("match_x", self.match_x),
+            ("k", self.k),
+            ("tolerance", self.tolerance),
+        ]
+    }
 }
 
 /// `[fingertip.tactile]`: a pad of `rows` x `columns` taxels over a patch of the fingertip's

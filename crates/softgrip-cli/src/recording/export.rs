@@ -15,9 +15,9 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow};
 use serde::Serialize;
-use softgrip_ecs::softgrip_record::msgs::geometry_msgs::TransformStamped;
-use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
-use softgrip_ecs::softgrip_record::{Message, Recording, topics};
+use softgrip_record::msgs::geometry_msgs::TransformStamped;
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+use softgrip_record::{Message, Recording, topics};
 
 use super::{fingertips, open, seconds};
 use crate::files::{Output, check_output, commit_all};

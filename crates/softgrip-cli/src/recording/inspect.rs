@@ -6,9 +6,9 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::Result;
-use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
-use softgrip_ecs::softgrip_record::units::{si, sig};
-use softgrip_ecs::softgrip_record::{Recording, RecordingInfo, TipRunSummary};
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+use softgrip_record::units::{si, sig};
+use softgrip_record::{Recording, RecordingInfo, TipRunSummary};
 
 use super::{contact_radius, contacts, fingertips, info, laws, open, seconds};
 

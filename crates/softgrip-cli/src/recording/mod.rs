@@ -14,8 +14,8 @@ pub use recover::{RecoverArgs, recover};
 use std::path::Path;
 
 use anyhow::{Result, anyhow};
-use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
-use softgrip_ecs::softgrip_record::{FingertipLaw, Message, Recording, RecordingInfo, topics};
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
+use softgrip_record::{FingertipLaw, Message, Recording, RecordingInfo, topics};
 
 /// Opens a recording; any failure (missing, not MCAP, truncated before the magic, corrupt) is
 /// one line naming the file.

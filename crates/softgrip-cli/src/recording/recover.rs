@@ -6,7 +6,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
-use softgrip_ecs::softgrip_record::{self, Error};
+use softgrip_record::{self, Error};
 
 use crate::files::Output;
 use crate::out::outln;

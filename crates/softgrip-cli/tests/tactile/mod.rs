@@ -6,8 +6,8 @@
 use std::collections::HashMap;
 
 use serde_json::Value;
-use softgrip_ecs::softgrip_record::msgs::sensor_msgs::Image;
-use softgrip_ecs::softgrip_record::msgs::softgrip_msgs::SoftContactArrayMsg;
+use softgrip_record::msgs::sensor_msgs::Image;
+use softgrip_record::msgs::softgrip_msgs::SoftContactArrayMsg;
 
 /// Taxel area of the default scene's pads: (16 mm / 16)^2 [m^2].
 const TAXEL_AREA: f64 = 1e-6;

@@ -83,20 +83,11 @@ __all__ = [
 
 PathLike = Union[str, "os.PathLike[str]"]
 
-LEVELS = (
-    "linear",
-    "hertz",
-    "fit",
-    "incompressible",
-    "neo-hookean",
-    "neo-hookean-exact",
-    "tatara",
-    "calibrated",
-    "auto",
-)
-"""The level names ``law`` accepts (softgrip-law's ``Level::ALL``)."""
+LEVELS = _native.LEVELS
+"""The level names ``law`` accepts: the rows of softgrip-law's table ``LEVELS`` that
+parameters alone build (a measured curve is a scene's ``level = { tabulated = "tip.csv" }``)."""
 
-BACKINGS = ("free", "flat", "core")
+BACKINGS = _native.BACKINGS
 """The fingertip constructions ``law`` accepts."""
 
 

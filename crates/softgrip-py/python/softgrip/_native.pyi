@@ -11,6 +11,8 @@ import numpy as np
 import numpy.typing as npt
 
 __version__: str
+LEVELS: tuple[str, ...]
+BACKINGS: tuple[str, ...]
 
 _Number = Union[float, int, np.floating, np.integer]
 _Array = npt.NDArray[np.float64]

@@ -125,7 +125,7 @@ fn law_line(line: &str) -> Result<FingertipLaw, MetadataError> {
             Err(_) => (*value).into(),
         };
         match *key {
-            "k" | "tolerance" | "match_x" => level.insert((*key).into(), v),
+            k if softgrip_law::setting_keys().contains(&k) => level.insert((*key).into(), v),
             _ => json.insert((*key).into(), v),
         };
     }

@@ -1,7 +1,7 @@
 //! `softgrip_msgs` (the interface package in `ros2/softgrip_msgs/`): [`SoftContactMsg`] and
 //! [`SoftContactArrayMsg`].
 
-use softgrip_law::{Backing, Counterpart, CounterpartKind, LevelKind, Regime};
+use softgrip_law::{Backing, BackingKind, Counterpart, CounterpartKind, LevelKind, Regime};
 
 use super::geometry_msgs::{Point, Vector3};
 use super::std_msgs::Header;
@@ -90,28 +90,37 @@ ros_message! {
     }
 }
 
-/// Every concrete level, indexed by its [`LevelKind::code`].
-pub const LEVEL_KINDS: [LevelKind; 8] = [
-    LevelKind::Linear,
-    LevelKind::Hertz,
-    LevelKind::Fit,
-    LevelKind::Incompressible,
-    LevelKind::NeoHookean,
-    LevelKind::NeoHookeanExact,
-    LevelKind::Tatara,
-    LevelKind::Calibrated,
-];
-
-/// The level with code `code`, if any.
+/// The `.msg` constants of the level, construction and counterpart codes, as
+/// `SoftContact.msg` must list them: `uint8 LEVEL_<NAME>=<code>` for every concrete level of
+/// `softgrip_law::LEVELS`, `uint8 BACKING_<NAME>=<code>` for every construction of
+/// `softgrip_law::BACKINGS` and `uint8 COUNTERPART_<NAME>=<code>` for every kind of
+/// `softgrip_law::CounterpartKind::ALL`, in table order (a test checks the `.msg` file against
+/// it: the file is read by ROS 2 tools, so it is written out, but from these tables only).
 ///
 /// ```
-/// use softgrip_law::LevelKind;
-/// use softgrip_record::msgs::softgrip_msgs::level_from_code;
-/// assert_eq!(level_from_code(LevelKind::Calibrated.code()), Some(LevelKind::Calibrated));
-/// assert_eq!(level_from_code(200), None);
+/// use softgrip_record::msgs::softgrip_msgs::code_constants;
+/// let lines = code_constants();
+/// assert!(lines.contains(&"uint8 LEVEL_TABULATED=8".to_owned()));
+/// assert!(lines.contains(&"uint8 BACKING_CORE=2".to_owned()));
+/// assert!(lines.contains(&"uint8 COUNTERPART_EDGE=2".to_owned()));
 /// ```
-pub fn level_from_code(code: u8) -> Option<LevelKind> {
-    LEVEL_KINDS.get(usize::from(code)).copied()
+pub fn code_constants() -> Vec<String> {
+    let constant = |prefix: &str, name: &str, code: u8| {
+        format!(
+            "uint8 {prefix}_{}={code}",
+            name.to_uppercase().replace('-', "_")
+        )
+    };
+    let levels = softgrip_law::LEVELS
+        .iter()
+        .filter_map(|row| row.code.map(|code| constant("LEVEL", row.name, code)));
+    let backings = softgrip_law::BACKINGS
+        .iter()
+        .map(|row| constant("BACKING", row.name, row.code));
+    let counterparts = CounterpartKind::ALL
+        .iter()
+        .map(|(_, code, name)| constant("COUNTERPART", name, *code));
+    levels.chain(backings).chain(counterparts).collect()
 }
 
 impl SoftContactMsg {
@@ -146,14 +155,7 @@ impl SoftContactMsg {
     /// assert_eq!(m.backing(), Some(Backing::Core { thickness: 0.004 }));
     /// ```
     pub fn backing(&self) -> Option<Backing> {
-        match self.backing {
-            0 => Some(Backing::Free),
-            1 => Some(Backing::Flat),
-            2 => Some(Backing::Core {
-                thickness: self.core_thickness,
-            }),
-            _ => None,
-        }
+        BackingKind::from_code(self.backing).map(|kind| kind.with_parameter(self.core_thickness))
     }
 
     /// Sets `counterpart`, its curvatures and `patch_direction` (world, unit).
@@ -186,6 +188,6 @@ impl SoftContactMsg {
 
     /// The law level, if `level` is a known code.
     pub fn level_kind(&self) -> Option<LevelKind> {
-        level_from_code(self.level)
+        LevelKind::from_code(self.level)
     }
 }

@@ -1,6 +1,8 @@
 //! [`StepFrame`]: one step's data, as plain numbers.
 
-use softgrip_law::{Backing, ContactPatch, Counterpart, LevelKind, Regime};
+/// The numbers of one soft contact over a step: the law crate's one plain reading, which
+/// the plugin produces (`softgrip_rapier::TipContact::reading`) and every sink writes.
+pub use softgrip_law::ContactReading;
 
 /// A body's pose.
 #[derive(Debug, Clone, PartialEq)]
@@ -22,50 +24,6 @@ pub struct WrenchSample {
     pub force: [f64; 3],
     /// Torque about the fingertip's centre [N m].
     pub torque: [f64; 3],
-}
-
-/// The numbers of one soft contact over a step, as the plugin reads them out.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ContactReading {
-    /// Contact point, world \[m\].
-    pub point: [f64; 3],
-    /// Unit normal, world, from the other body to the fingertip [-].
-    pub normal: [f64; 3],
-    /// Compression delta \[m\], >= 0.
-    pub delta: f64,
-    /// Compression ratio x = delta / R [-].
-    pub x: f64,
-    /// Normal force on the fingertip \[N\], >= 0 (step average).
-    pub normal_force: f64,
-    /// Friction force on the fingertip, world \[N\] (step average).
-    pub friction_force: [f64; 3],
-    /// Torsional friction moment about the normal [N m] (step average).
-    pub torsional_moment: f64,
-    /// Law stiffness K = dF/d delta at `delta` [N/m], >= 0.
-    pub stiffness: f64,
-    /// The level that computed the force.
-    pub level: LevelKind,
-    /// Valid, extended (validity excursion) or separated, at the end of the step.
-    pub regime: Regime,
-    /// The compression was past the law's validity range in some substep of the step.
-    pub validity_exceeded: bool,
-    /// Friction saturated (the contact slid) in some substep.
-    pub sliding: bool,
-    /// Largest normal force of any substep \[N\].
-    pub peak_normal_force: f64,
-    /// Largest compression of the step \[m\]: over the start of every substep and the end
-    /// of the step (`>= delta`).
-    pub max_delta: f64,
-    /// Time in contact during the step \[s\], in [0, dt].
-    pub contact_duration: f64,
-    /// Contact radius and pressure, when the scene records pressure.
-    pub patch: Option<ContactPatch>,
-    /// The construction of the fingertip whose law computed the contact.
-    pub backing: Backing,
-    /// What the fingertip touched (a plane for two fingertips).
-    pub counterpart: Counterpart,
-    /// Unit vector, world, along the patch's first semi-axis (`patch.radius`) [-].
-    pub patch_direction: [f64; 3],
 }
 
 /// One soft contact with both sides named.
