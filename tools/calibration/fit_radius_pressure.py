@@ -24,8 +24,10 @@ against softgrip's own FE (tests/data/fe/{free,flat,core}/ and the reference cop
    radius, then least squares of (m + 1)/(m_best + 1) - 1 (the peak is (m + 1) times the mean):
        m_flat = 1/2 + (a0 + a1 eps) sqrt(x) + a2 x + a3 x^2                   (refitted)
        m_core = m_flat + (2 - b eps - m_flat) v,  v = z^n/(z^n + cm^n),  z = x^alpha/(tau - x)
-   (2: the thin bonded incompressible layer's (1 - r^2/a^2)^2; the core inside its validity
-   x <= 0.6 t/R). The free shape is unchanged (calibrated.rs) and only reported.
+   (2: the thin bonded incompressible layer's (1 - r^2/a^2)^2; the core over x <= 0.6 t/R, the
+   force's validity before session 10: the force now holds to 0.8 t/R, the shape is not refitted
+   past 0.6 t/R and the test states what it gives there). The free shape is unchanged
+   (calibrated.rs) and only reported.
 4. The core's two-parameter shape (tools/calibration/CORE_PRESSURE.md), over the law's radius with
    backed.rs's constants and scored as tests/radius_pressure.rs (FE force and the law's force):
        p = p0 (1 - rho^2)^m (1 + b rho^2),  p0 = (m + 1)(m + 2) F/(pi a^2 (m + 2 + b))
@@ -455,7 +457,7 @@ def pressure(allc, qf, qc):
         mf = m_flat(x, nu)
         return mf + (2 - b * eps_of(nu) - mf) * v
 
-    def inside(w):  # the core's validity: x <= 0.6 t/R (backed.rs CORE_SQUEEZE)
+    def inside(w):  # the shape's fitted range x <= 0.6 t/R (the force's validity before session 10)
         return w["x"] <= 0.6 * w["c"]["t"] + 1e-9
 
     def res(q):
@@ -649,10 +651,14 @@ def write_core_shape(q, rows):
     with open(RADIUS_PRESSURE_RS) as fh:
         test = fh.read()
     done = 0
+    import fit_core  # same directory: the force's validity
     for w in rows:
-        if not w["inside"]:  # the test has the profiles inside the law's validity only
-            continue
         c = w["c"]
+        # the test has every profile inside the law's validity, x <= 0.8 t/R (fit_core.SQUEEZE,
+        # backed.rs CORE_SQUEEZE, since session 10) and the flat x_max; the shape is fitted on
+        # x <= 0.6 t/R only (w["inside"], the force's validity before session 10)
+        if w["x"] > min(fit_core.SQUEEZE * c["t"], fit_core.flat_x_max(c["nu"])) + 1e-9:
+            continue
         m, b = core_shape3(q, w["x"], c["nu"], c["t"])
         tol = [tolerance(e) for e in (*shape2_errors(w, w["f"], m, b)[:2], *shape2_errors(w, w["f_law"], m, b)[:2])]
         key = f'"core", {c["nu"]:g}, {c["t"]:g}, {w["x"]:g}, {"true" if c["held"] else "false"}, '

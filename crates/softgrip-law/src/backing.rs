@@ -9,9 +9,9 @@ use crate::error::{Error, Result};
 
 /// The thinnest skin the calibrated level (and `auto`'s reference) of a [`Backing::Core`]
 /// takes, as t/R [-]: down to it the level's tabulated form follows the form within its
-/// documented accuracy (1.2e-8 in force); below it the table drifts from the form (2e-7 at
-/// 0.01, 6e-6 at 0.001, 2e-3 at 1e-4) and below about 1e-8 the force turns negative (t/R =
-/// 1e-22 was accepted and let a fingertip fall through the floor). The FE data behind the form
+/// documented accuracy (5.3e-8 in force); below it the table drifted from the form (the
+/// session-7 form: 2e-7 at 0.01, 6e-6 at 0.001, 2e-3 at 1e-4) and below about 1e-8 the force
+/// turned negative (t/R = 1e-22 was accepted and let a fingertip fall through the floor). The FE data behind the form
 /// start at t/R = 0.2. A thinner skin needs a measured (`tabulated`) curve.
 pub const MIN_CORE_THICKNESS_RATIO: f64 = 0.05;
 

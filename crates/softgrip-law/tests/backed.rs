@@ -72,12 +72,13 @@ fn flat_calibrated_is_within_1_percent_of_its_fe_at_every_nu() {
 #[test]
 fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // nu and t/R between the fitted ones (tools/fe/fe_campaign.py role "heldout"). Seen: flat
-    // 0.35: 1.66 %, flat 0.45: 0.54 %; core (0.45, 0.5): 1.97 %, (0.35, 0.7): 2.07 % (at its
-    // x_max 0.42), (0.4, 0.3): 1.01 %, (0.49, 0.3): 2.25 % (at x = 0.18, its x_max). The second
-    // set (made after the five-constant form was chosen; the sixth constant was chosen with it in
-    // view): (0.46, 0.25) 1.59 %, (0.33, 0.25) 1.79 %, (0.42, 0.55) 1.52 %, (0.36, 0.2) 2.15 %,
-    // (0.44, 0.8) 1.42 %, (0.495, 0.35) 2.11 %: the 2 % target is missed on four of ten.
-    // Each tolerance: seen + 0.1 %.
+    // 0.35: 1.66 %, flat 0.45: 0.54 %; core, each to its FE reach (the law's x_max = 0.8 t/R
+    // since session 10): (0.45, 0.5) 2.24 % (at x = 0.15; reach 0.39), (0.35, 0.7) 1.39 % (to
+    // 0.49), (0.4, 0.3) 1.05 % (to 0.23), (0.49, 0.3) 2.17 % (at x = 0.18; to 0.20). The second
+    // set (made after the five-constant form was chosen; the sixth and seventh constants were
+    // chosen with it in view): (0.46, 0.25) 1.80 %, (0.33, 0.25) 2.37 % (to 0.20), (0.42, 0.55)
+    // 1.88 %, (0.36, 0.2) 2.31 % (to 0.16), (0.44, 0.8) 1.23 %, (0.495, 0.35) 1.76 %: the 2 %
+    // target is missed on four of ten. Each tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -85,61 +86,61 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.45_t0.5.csv",
             0.45,
             Backing::Core { thickness: 0.5 },
-            0.0207,
+            0.0235,
         ),
         (
             "core/force_nu0.35_t0.7.csv",
             0.35,
             Backing::Core { thickness: 0.7 },
-            0.0217,
+            0.0149,
         ),
         (
             "core/force_nu0.4_t0.3.csv",
             0.4,
             Backing::Core { thickness: 0.3 },
-            0.0111,
+            0.0115,
         ),
         (
             "core/force_nu0.49_t0.3.csv",
             0.49,
             Backing::Core { thickness: 0.3 },
-            0.0235,
+            0.0227,
         ),
         (
             "core/force_nu0.46_t0.25.csv",
             0.46,
             Backing::Core { thickness: 0.25 },
-            0.0169,
+            0.0190,
         ),
         (
             "core/force_nu0.33_t0.25.csv",
             0.33,
             Backing::Core { thickness: 0.25 },
-            0.0189,
+            0.0247,
         ),
         (
             "core/force_nu0.42_t0.55.csv",
             0.42,
             Backing::Core { thickness: 0.55 },
-            0.0162,
+            0.0198,
         ),
         (
             "core/force_nu0.36_t0.2.csv",
             0.36,
             Backing::Core { thickness: 0.2 },
-            0.0225,
+            0.0241,
         ),
         (
             "core/force_nu0.44_t0.8.csv",
             0.44,
             Backing::Core { thickness: 0.8 },
-            0.0152,
+            0.0133,
         ),
         (
             "core/force_nu0.495_t0.35.csv",
             0.495,
             Backing::Core { thickness: 0.35 },
-            0.0221,
+            0.0186,
         ),
     ];
     for (path, nu, backing, tol) in cases {
@@ -164,28 +165,30 @@ fn flat_is_stiffer_than_the_free_sphere_as_the_issue_measured() {
 
 #[test]
 fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
-    // Fitted on these 14 curves (tools/calibration/fit_core.py: six constants). Seen, to x_max
-    // = min(flat's, 0.6 t/R), the largest |F/F_FE - 1| in %; each tolerance is the seen value
-    // plus 0.1 % above, 0.25 % below (a changed constant or term breaks it).
+    // Fitted on these 14 curves (tools/calibration/fit_core.py: seven constants). Seen, to x_max
+    // = min(flat's, 0.8 t/R) (each FE curve's reach: delta/t 0.45-0.8), the largest
+    // |F/F_FE - 1| in %; each tolerance is the seen value plus 0.1 % above, 0.25 % below (a
+    // changed constant or term breaks it).
     let seen = [
-        (0.3, 0.2, 1.80),
-        (0.4, 0.2, 2.31),
-        (0.48, 0.2, 1.74),
-        (0.499, 0.2, 2.13),
-        (0.3, 0.4, 1.65),
-        (0.4, 0.4, 2.05),
-        (0.48, 0.4, 1.99),
-        (0.499, 0.4, 1.73),
-        (0.3, 0.6, 1.40),
-        (0.48, 0.6, 1.36),
-        (0.499, 0.6, 1.94),
-        (0.3, 0.8, 1.11),
-        (0.48, 0.8, 2.16),
-        (0.499, 0.8, 1.78),
+        (0.3, 0.2, 2.12),
+        (0.4, 0.2, 2.48),
+        (0.48, 0.2, 1.87),
+        (0.499, 0.2, 2.20),
+        (0.3, 0.4, 1.95),
+        (0.4, 0.4, 2.34),
+        (0.48, 0.4, 2.10),
+        (0.499, 0.4, 1.84),
+        (0.3, 0.6, 1.47),
+        (0.48, 0.6, 1.55),
+        (0.499, 0.6, 2.01),
+        (0.3, 0.8, 0.80),
+        (0.48, 0.8, 2.03),
+        (0.499, 0.8, 1.76),
     ];
     for (nu, t, pct) in seen {
         let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
-        assert!((core.x_max() - (0.6 * t).min(core.x_max())).abs() < 1e-12);
+        let flat = law(Level::Calibrated, nu, Backing::Flat);
+        assert!((core.x_max() - (0.8 * t).min(flat.x_max())).abs() < 1e-12);
         let data = fe(&format!("core/force_nu{nu}_t{t}.csv"));
         let (w, x) = worst(&core, &data, core.x_max());
         assert!(
@@ -199,6 +202,39 @@ fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
             "nu = {nu} t = {t}: {:.2} %",
             w * 100.0
         );
+    }
+}
+
+/// Issue 24 item 5: the core's validity reaches the FE's. Every committed FE core curve (the 14
+/// fitted and the 10 held out) lies inside the law's range to its last converged point, or to the
+/// flat construction's x_max where that comes first (nu 0.499 t/R 0.6: FE 0.47, flat 0.44; nu
+/// 0.35 t/R 0.7: FE 0.50, flat 0.495), and the issue's two marks hold at every nu the level
+/// takes: x = 0.22 at t/R 0.3 (FE: 0.23 at nu 0.4, 0.20 at 0.49) and 0.38 at t/R 0.5 (FE: 0.39
+/// at nu 0.45). Before session 10 the law stopped at 0.6 t/R: 0.18 and 0.30.
+#[test]
+fn core_validity_reaches_the_fe_reach() {
+    let mut files = 0;
+    for f in softgrip_fe::all().filter(|f| f.path.starts_with("core/force_nu")) {
+        let (nu, t) = (f.nu.expect("nu"), f.thickness_ratio.expect("t/R"));
+        let reach = fe(f.path).last().expect("points").0;
+        let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
+        let flat = law(Level::Calibrated, nu, Backing::Flat);
+        let want = reach.min(flat.x_max());
+        assert!(
+            core.x_max() >= want - 1e-9,
+            "{}: x_max {} < {want}",
+            f.path,
+            core.x_max()
+        );
+        files += 1;
+    }
+    assert_eq!(files, 24);
+    for j in 0..=20 {
+        let nu = 0.3 + 0.01 * f64::from(j);
+        for (t, x) in [(0.3, 0.22), (0.5, 0.38)] {
+            let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
+            assert!(core.x_max() >= x, "nu {nu} t/R {t}: x_max {}", core.x_max());
+        }
     }
 }
 

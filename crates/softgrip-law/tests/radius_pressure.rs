@@ -110,10 +110,11 @@ type RadiusCase = (&'static str, f64, Option<f64>, bool, f64, f64);
 fn radius_within_3_percent_of_the_smoothed_fe_radius() {
     // Largest |a_law / a_FE - 1| over the FE points with 0.1 <= x <= min(0.4, reach, x_max)
     // against the FE radius estimate (smoothed a_lin plus the lag) and against the raw a_lin.
-    // Seen: flat 0.68-1.37 % (held out 1.15, 1.16 %), core 0.58-1.68 % (held out 0.82-1.40 %,
-    // the second held-out set (made after the form was chosen) 0.96-1.40 %;
-    // nu 0.499 t/R 0.2 reaches x = 0.09 only, below the band); raw: 3.4-7.5 % (step noise and
-    // lag). Tolerances: seen + 0.2-0.5 points (core: + 0.3, rounded up).
+    // Seen: flat 0.68-1.37 % (held out 1.15, 1.16 %), core 0.75-2.23 % (to x = 0.8 t/R since
+    // session 10; t/R 0.2: 2.02 / 1.00 / 2.23 % at nu 0.3 / 0.4 / 0.48, the squeeze past 0.6 t
+    // included; held out 0.82-1.40 %, the second held-out set (made after the form was chosen)
+    // 0.96-1.40 %; nu 0.499 t/R 0.2 reaches x = 0.09 only, below the band); raw: 3.4-7.5 %
+    // (step noise and lag). Tolerances: seen + 0.2-0.5 points (core: + 0.3, rounded up).
     let cases: [RadiusCase; 29] = [
         ("flat/force_nu0.3.csv", 0.3, None, false, 0.010, 0.080),
         ("flat/force_nu0.4.csv", 0.4, None, false, 0.017, 0.075),
@@ -126,7 +127,7 @@ fn radius_within_3_percent_of_the_smoothed_fe_radius() {
             0.3,
             Some(0.2),
             false,
-            0.011,
+            0.024,
             0.049,
         ),
         (
@@ -134,7 +135,7 @@ fn radius_within_3_percent_of_the_smoothed_fe_radius() {
             0.48,
             Some(0.2),
             false,
-            0.020,
+            0.026,
             0.037,
         ),
         (
@@ -143,14 +144,14 @@ fn radius_within_3_percent_of_the_smoothed_fe_radius() {
             Some(0.2),
             false,
             0.013,
-            0.046,
+            0.054,
         ),
         (
             "core/force_nu0.4_t0.4.csv",
             0.4,
             Some(0.4),
             false,
-            0.009,
+            0.014,
             0.059,
         ),
         (
@@ -182,7 +183,7 @@ fn radius_within_3_percent_of_the_smoothed_fe_radius() {
             0.3,
             Some(0.6),
             false,
-            0.014,
+            0.019,
             0.068,
         ),
         (
@@ -311,7 +312,7 @@ fn radius_within_3_percent_of_the_smoothed_fe_radius() {
         let a_fe = fe_radius(path);
         let l = law(nu, backing(t));
         let (mut ws, mut wl) = (0.0_f64, 0.0_f64);
-        // Inside the law's validity (the core's is x <= 0.6 t/R).
+        // Inside the law's validity (the core's is x <= 0.8 t/R).
         let hi = l.x_max().min(0.4) + 1e-9;
         for &(x, _, a) in pts.iter().filter(|p| p.0 >= 0.1 - 1e-9 && p.0 <= hi) {
             let r = l.patch(x).radius;
@@ -409,8 +410,8 @@ macro_rules! profiles {
     (@t 0.8) => { "_t0.8" };
 }
 
-/// Every FE profile inside the law's validity (x <= x_max): tolerances in fractions of FE's
-/// peak, seen values just below. Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
+/// Every FE profile inside the law's validity (x <= x_max; the core's x <= 0.8 t/R since session
+/// 10): tolerances in fractions of FE's peak, seen values just below. Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
 /// integrates to 1.076 F (every other one to 0.93-1.03 F): a contact-edge node entering contact
 /// carries a penalty spike (3.53 MPa at r = 0.661 mm, twice the centre's), which would be taken
 /// as FE's peak (`fit_radius_pressure.py` `usable` leaves it out of the fits for the same reason).
@@ -441,38 +442,44 @@ fn all_profiles() -> Vec<Profile> {
         "flat", 0.35, 0.0, 0.3, true, [0.026, 0.027], [0.023, 0.024];
         "flat", 0.45, 0.0, 0.1, true, [0.013, 0.017], [0.014, 0.017];
         "flat", 0.45, 0.0, 0.3, true, [0.029, 0.031], [0.032, 0.033];
-        "core", 0.35, 0.7, 0.1, true, [0.019, 0.023], [0.018, 0.022];
-        "core", 0.35, 0.7, 0.3, true, [0.020, 0.021], [0.009, 0.025];
-        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.018, 0.029];
-        "core", 0.4, 0.4, 0.1, false, [0.030, 0.034], [0.050, 0.054];
-        "core", 0.3, 0.2, 0.1, false, [0.018, 0.048], [0.026, 0.055];
-        "core", 0.3, 0.4, 0.1, false, [0.012, 0.015], [0.022, 0.026];
-        "core", 0.3, 0.6, 0.1, false, [0.013, 0.017], [0.022, 0.025];
-        "core", 0.3, 0.6, 0.3, false, [0.008, 0.048], [0.019, 0.057];
-        "core", 0.3, 0.8, 0.1, false, [0.010, 0.017], [0.006, 0.021];
-        "core", 0.3, 0.8, 0.3, false, [0.019, 0.041], [0.030, 0.052];
-        "core", 0.45, 0.5, 0.1, true, [0.017, 0.021], [0.034, 0.037];
-        "core", 0.45, 0.5, 0.3, true, [0.042, 0.046], [0.046, 0.050];
-        "core", 0.48, 0.2, 0.1, false, [0.029, 0.046], [0.029, 0.046];
-        "core", 0.48, 0.4, 0.1, false, [0.022, 0.026], [0.042, 0.046];
-        "core", 0.48, 0.6, 0.1, false, [0.014, 0.018], [0.009, 0.019];
-        "core", 0.48, 0.6, 0.3, false, [0.046, 0.048], [0.039, 0.042];
-        "core", 0.48, 0.8, 0.1, false, [0.009, 0.018], [0.011, 0.032];
-        "core", 0.48, 0.8, 0.3, false, [0.007, 0.023], [0.010, 0.033];
-        "core", 0.499, 0.4, 0.1, false, [0.005, 0.022], [0.022, 0.027];
-        "core", 0.499, 0.6, 0.1, false, [0.009, 0.018], [0.009, 0.029];
-        "core", 0.499, 0.6, 0.3, false, [0.027, 0.029], [0.016, 0.034];
+        "core", 0.35, 0.7, 0.1, true, [0.019, 0.023], [0.019, 0.023];
+        "core", 0.35, 0.7, 0.3, true, [0.020, 0.021], [0.015, 0.021];
+        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.005, 0.038];
+        "core", 0.4, 0.4, 0.1, false, [0.030, 0.034], [0.053, 0.056];
+        "core", 0.3, 0.2, 0.1, false, [0.018, 0.048], [0.034, 0.060];
+        "core", 0.3, 0.4, 0.1, false, [0.012, 0.015], [0.030, 0.034];
+        "core", 0.3, 0.6, 0.1, false, [0.013, 0.017], [0.025, 0.028];
+        "core", 0.3, 0.6, 0.3, false, [0.008, 0.048], [0.007, 0.047];
+        "core", 0.3, 0.8, 0.1, false, [0.010, 0.017], [0.007, 0.020];
+        "core", 0.3, 0.8, 0.3, false, [0.019, 0.041], [0.026, 0.048];
+        "core", 0.45, 0.5, 0.1, true, [0.017, 0.021], [0.035, 0.039];
+        "core", 0.45, 0.5, 0.3, true, [0.042, 0.046], [0.049, 0.053];
+        "core", 0.48, 0.2, 0.1, false, [0.029, 0.046], [0.034, 0.051];
+        "core", 0.48, 0.4, 0.1, false, [0.022, 0.026], [0.043, 0.047];
+        "core", 0.48, 0.6, 0.1, false, [0.014, 0.018], [0.009, 0.018];
+        "core", 0.48, 0.6, 0.3, false, [0.046, 0.048], [0.043, 0.046];
+        "core", 0.48, 0.8, 0.1, false, [0.009, 0.018], [0.011, 0.031];
+        "core", 0.48, 0.8, 0.3, false, [0.007, 0.023], [0.009, 0.032];
+        "core", 0.499, 0.4, 0.1, false, [0.005, 0.022], [0.023, 0.028];
+        "core", 0.499, 0.6, 0.1, false, [0.009, 0.018], [0.008, 0.028];
+        "core", 0.499, 0.6, 0.3, false, [0.027, 0.029], [0.020, 0.031];
         "core", 0.499, 0.8, 0.1, false, [0.004, 0.024], [0.021, 0.041];
-        "core", 0.499, 0.8, 0.3, false, [0.016, 0.039], [0.026, 0.049];
-        "core", 0.49, 0.3, 0.1, true, [0.047, 0.053], [0.053, 0.058];
-        "core", 0.4, 0.3, 0.1, true, [0.054, 0.058], [0.056, 0.061];
-        "core", 0.46, 0.25, 0.1, true, [0.056, 0.063], [0.054, 0.061];
-        "core", 0.33, 0.25, 0.1, true, [0.028, 0.034], [0.012, 0.030];
-        "core", 0.42, 0.55, 0.1, true, [0.020, 0.023], [0.032, 0.036];
-        "core", 0.42, 0.55, 0.3, true, [0.042, 0.045], [0.043, 0.046];
-        "core", 0.36, 0.2, 0.1, true, [0.010, 0.034], [0.007, 0.041];
+        "core", 0.499, 0.8, 0.3, false, [0.016, 0.039], [0.025, 0.048];
+        "core", 0.49, 0.3, 0.1, true, [0.047, 0.053], [0.053, 0.059];
+        "core", 0.4, 0.3, 0.1, true, [0.054, 0.058], [0.057, 0.062];
+        "core", 0.46, 0.25, 0.1, true, [0.056, 0.063], [0.052, 0.058];
+        "core", 0.33, 0.25, 0.1, true, [0.028, 0.034], [0.013, 0.029];
+        "core", 0.42, 0.55, 0.1, true, [0.020, 0.023], [0.034, 0.037];
+        "core", 0.42, 0.55, 0.3, true, [0.042, 0.045], [0.048, 0.051];
+        "core", 0.36, 0.2, 0.1, true, [0.010, 0.034], [0.019, 0.050];
         "core", 0.44, 0.8, 0.1, true, [0.017, 0.021], [0.010, 0.018];
-        "core", 0.495, 0.35, 0.1, true, [0.031, 0.036], [0.045, 0.050];
+        "core", 0.495, 0.35, 0.1, true, [0.031, 0.036], [0.046, 0.051];
+        // Past 0.6 t/R, inside the validity since session 10 (x <= 0.8 t/R), the shape not fitted
+        // there (tools/calibration/CORE_PRESSURE.md): the FE's patch at delta/t 0.625-0.75 (nu 0.35
+        // t/R 0.7 x 0.5 lies past the flat construction's x_max 0.495).
+        "core", 0.3, 0.4, 0.3, false, [0.112, 0.115], [0.097, 0.105];
+        "core", 0.3, 0.8, 0.5, false, [0.049, 0.102], [0.050, 0.103];
+        "core", 0.4, 0.4, 0.3, false, [0.089, 0.094], [0.083, 0.088];
     )
     .into_iter()
     .collect()
