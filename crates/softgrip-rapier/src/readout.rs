@@ -51,7 +51,7 @@ pub struct TipContact {
 impl Deref for TipContact {
     type Target = ContactReading;
 
-    /// The contact's [`reading`](TipContact::reading).
+    /// The contact's [`reading`](field@TipContact::reading).
     fn deref(&self) -> &ContactReading {
         &self.reading
     }

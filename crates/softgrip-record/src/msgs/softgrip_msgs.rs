@@ -195,7 +195,7 @@ impl SoftContactMsg {
 
     /// The message as the law's plain [`ContactReading`], its vectors as recorded: the one
     /// conversion back from a recording (the inverse of
-    /// [`soft_contact_msg`](crate::convert::soft_contact_msg)). Every number the message and
+    /// [`soft_contact_msg`](crate::soft_contact_msg)). Every number the message and
     /// the reading share is copied as it is. What the message does not hold:
     /// - `regime`: `Separated` at zero compression, else `Extended` when `validity_exceeded`,
     ///   else `Valid` (`validity_exceeded` also flags an excursion within the step);
@@ -228,12 +228,10 @@ impl SoftContactMsg {
     /// ```
     pub fn reading(&self) -> ContactReading {
         let unknown = ContactReading::default();
-        let regime = if !(self.compression > 0.0) {
-            Regime::Separated
-        } else if self.validity_exceeded {
-            Regime::Extended
-        } else {
-            Regime::Valid
+        let regime = match (self.compression > 0.0, self.validity_exceeded) {
+            (false, _) => Regime::Separated,
+            (true, true) => Regime::Extended,
+            (true, false) => Regime::Valid,
         };
         ContactReading {
             point: self.point.to_array(),
