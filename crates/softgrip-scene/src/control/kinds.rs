@@ -92,8 +92,8 @@ pub struct UnknownControllerKind {
 }
 
 impl fmt::Display for UnknownControllerKind {
-    /// `unknown controller type `<name>`, expected one of `a`, `b`, ...` (the table's scene
-    /// kinds), plus why when the name is a kind no scene file names.
+    /// "unknown controller type \`NAME\`, expected one of \`a\`, \`b\`, ..." (the table's
+    /// scene kinds), plus why when the name is a kind no scene file names.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let names: Vec<String> = (CONTROLLERS.iter())
             .filter(|row| row.source == ControllerSource::SceneFile)
