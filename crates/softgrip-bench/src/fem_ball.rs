@@ -15,7 +15,7 @@ use std::time::{Duration, Instant};
 
 use rapier3d::prelude::*;
 
-use crate::icosphere::icosphere;
+use softgrip_testkit::icosphere::icosphere;
 
 /// Collision radius of the ball's particles, as a fraction of the radius (rapier's default is
 /// half the mean boundary edge, a quarter of the radius on a coarse mesh).

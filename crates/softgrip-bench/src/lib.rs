@@ -3,6 +3,5 @@
 pub mod bounce;
 pub mod fe;
 pub mod fem_ball;
-pub mod icosphere;
 pub mod overhead;
 pub mod squeeze;

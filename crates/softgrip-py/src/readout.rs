@@ -1,39 +1,16 @@
 //! The per-step arrays a run returns and a recording opens as, filled the same way from both:
-//! a fingertip's contacts of a step ([`ContactRow`]s) become one entry of each of its arrays
-//! ([`TipSeries`]), a body's pose one row ([`BodySeries`]), a tactile pad's image one slice
-//! ([`TactileSeries`]). `softgrip.run` fills them from the plugin's readout, and
-//! `softgrip.open_recording` from the recorded messages, so both give the same keys, shapes,
-//! dtypes and values.
+//! a fingertip's contacts of a step (each the law's plain `ContactReading` with its contact
+//! radius) become one entry of each of its arrays ([`TipSeries`]), a body's pose one row
+//! ([`BodySeries`]), a tactile pad's image one slice ([`TactileSeries`]). `softgrip.run` fills
+//! them from the plugin's readings (`TipContact::reading`), and `softgrip.open_recording` from
+//! the recorded messages read back as readings (`SoftContactMsg::reading`), so both give the
+//! same keys, shapes, dtypes and values.
 
 use numpy::IntoPyArray;
 use numpy::ndarray::{Array2, Array3};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-
-/// One contact of a fingertip in one step, in the scene's axes.
-#[derive(Debug, Clone, Copy)]
-pub struct ContactRow {
-    /// Normal force on the fingertip [N] (step average).
-    pub force: f64,
-    /// Friction force on the fingertip [N] (step average, scene axes).
-    pub friction: [f64; 3],
-    /// Torsional friction moment [N m].
-    pub moment: f64,
-    /// Law stiffness dF/d delta [N/m].
-    pub stiffness: f64,
-    /// Largest substep normal force [N].
-    pub peak: f64,
-    /// Friction saturated in some substep.
-    pub sliding: bool,
-    /// Past the level's validity range.
-    pub exceeded: bool,
-    /// Compression delta [m].
-    pub delta: f64,
-    /// Compression ratio x = delta / R [-].
-    pub x: f64,
-    /// Contact radius a [m].
-    pub radius: f64,
-}
+use softgrip_record::ContactReading;
 
 /// One fingertip's arrays, one entry per step: forces and stiffness summed over its
 /// contacts, the deepest contact's compression and contact radius.
@@ -53,8 +30,9 @@ pub struct TipSeries {
 }
 
 impl TipSeries {
-    /// Appends one step made of `rows` (the fingertip's contacts in that step, maybe none).
-    pub fn push_step(&mut self, rows: impl IntoIterator<Item = ContactRow>) {
+    /// Appends one step made of `rows`: the fingertip's contacts in that step (maybe none),
+    /// each its reading (vectors in the axes returned) and its contact radius a \[m\].
+    pub fn push_step<'a>(&mut self, rows: impl IntoIterator<Item = (&'a ContactReading, f64)>) {
         let mut force = 0.0;
         let mut friction = [0.0; 3];
         let mut moment = 0.0;
@@ -62,26 +40,26 @@ impl TipSeries {
         let mut peak = 0.0f64;
         let mut count = 0i64;
         let (mut sliding, mut exceeded) = (false, false);
-        let mut deepest: Option<ContactRow> = None;
-        for c in rows {
-            force += c.force;
-            for (f, cf) in friction.iter_mut().zip(c.friction) {
+        let mut deepest: Option<(&ContactReading, f64)> = None;
+        for (c, radius) in rows {
+            force += c.normal_force;
+            for (f, cf) in friction.iter_mut().zip(c.friction_force) {
                 *f += cf;
             }
-            moment += c.moment;
+            moment += c.torsional_moment;
             stiffness += c.stiffness;
-            peak = peak.max(c.peak);
+            peak = peak.max(c.peak_normal_force);
             count += 1;
             sliding |= c.sliding;
-            exceeded |= c.exceeded;
-            if deepest.is_none_or(|d| c.delta > d.delta) {
-                deepest = Some(c);
+            exceeded |= c.validity_exceeded;
+            if deepest.is_none_or(|(d, _)| c.delta > d.delta) {
+                deepest = Some((c, radius));
             }
         }
         self.force.push(force);
         self.friction_force.extend_from_slice(&friction);
         self.torsional_moment.push(moment);
-        let (delta, x, radius) = deepest.map_or((0.0, 0.0, 0.0), |c| (c.delta, c.x, c.radius));
+        let (delta, x, radius) = deepest.map_or((0.0, 0.0, 0.0), |(c, a)| (c.delta, c.x, a));
         self.delta.push(delta);
         self.x.push(x);
         self.radius.push(radius);

@@ -12,7 +12,9 @@ use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::msgs::tf2_msgs::TFMessage;
 use softgrip_record::{Message, Recording, RecordingInfo, WORLD_FRAME, topics};
 
-use crate::readout::{BodySeries, ContactRow, TactileSeries, TipSeries, matrix};
+use softgrip_record::ContactReading;
+
+use crate::readout::{BodySeries, TactileSeries, TipSeries, matrix};
 
 /// The axes vectors and poses are returned in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -273,7 +275,7 @@ impl Steps {
 
     /// Step `k`'s contacts: each fingertip's [`TipSeries`] and the contact rows.
     fn push_contacts(&mut self, k: usize, step: i64, contacts: &[&SoftContactMsg]) {
-        let mut rows: Vec<Vec<ContactRow>> = vec![Vec::new(); self.tips.len()];
+        let mut rows: Vec<Vec<(ContactReading, f64)>> = vec![Vec::new(); self.tips.len()];
         for c in contacts {
             self.rows.push(step, c, self.axes);
             let t = index_of(&mut self.tip_names, &c.fingertip);
@@ -284,11 +286,11 @@ impl Steps {
                 self.tips.push(series);
             }
             rows.resize(self.tips.len(), Vec::new());
-            rows[t].push(contact_row(c, self.axes));
+            rows[t].push((contact_reading(c, self.axes), c.contact_radius));
         }
         rows.resize(self.tips.len(), Vec::new());
         for (series, r) in self.tips.iter_mut().zip(rows) {
-            series.push_step(r);
+            series.push_step(r.iter().map(|(c, a)| (c, *a)));
         }
     }
 
@@ -383,19 +385,17 @@ fn topic_token(topic: &str) -> String {
         .to_owned()
 }
 
-/// A recorded contact as the readout's row (friction turned into the wanted axes).
-fn contact_row(c: &SoftContactMsg, axes: Axes) -> ContactRow {
-    let f = &c.friction_force;
-    ContactRow {
-        force: c.normal_force,
-        friction: axes.vector([f.x, f.y, f.z]),
-        moment: c.torsional_moment,
-        stiffness: c.stiffness,
-        peak: c.peak_normal_force,
-        sliding: c.sliding,
-        exceeded: c.validity_exceeded,
-        delta: c.compression,
-        x: c.ratio_x,
-        radius: c.contact_radius,
+/// A recorded contact as the law's reading (`SoftContactMsg::reading`, the one conversion
+/// back from a message), its vectors turned into the wanted axes.
+fn contact_reading(c: &SoftContactMsg, axes: Axes) -> ContactReading {
+    let mut r = c.reading();
+    for v in [
+        &mut r.point,
+        &mut r.normal,
+        &mut r.friction_force,
+        &mut r.patch_direction,
+    ] {
+        *v = axes.vector(*v);
     }
+    r
 }

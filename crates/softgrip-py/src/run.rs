@@ -14,7 +14,7 @@ use softgrip_scene::{ContactDigest, DEFAULT_SCENE};
 
 use crate::args;
 use crate::errors::{parameter, raise, scene_error};
-use crate::readout::{BodySeries, ContactRow, TactileSeries, TipSeries};
+use crate::readout::{BodySeries, TactileSeries, TipSeries};
 
 /// Steps between two checks for a pending Python signal (Ctrl-C) during a run.
 const SIGNAL_CHECK_STEPS: u64 = 512;
@@ -165,9 +165,10 @@ fn simulate(
     })
 }
 
-/// Appends each fingertip's readout of the last step (its contacts, [`TipSeries::push_step`]).
+/// Appends each fingertip's readout of the last step (its contacts' readings with their
+/// contact radius, [`TipSeries::push_step`]).
 fn read_tips(physics: &Physics, entities: &[Entity], tips: &mut [TipSeries]) {
-    let mut rows: Vec<Vec<ContactRow>> = tips.iter().map(|_| Vec::new()).collect();
+    let mut rows: Vec<Vec<_>> = tips.iter().map(|_| Vec::new()).collect();
     for c in physics.world.soft.contacts() {
         let Some(k) = physics
             .collider_entity(c.fingertip)
@@ -175,18 +176,7 @@ fn read_tips(physics: &Physics, entities: &[Entity], tips: &mut [TipSeries]) {
         else {
             continue;
         };
-        rows[k].push(ContactRow {
-            force: c.normal_force,
-            friction: c.friction_force,
-            moment: c.torsional_moment,
-            stiffness: c.stiffness,
-            peak: c.peak_normal_force,
-            sliding: c.sliding,
-            exceeded: c.validity_exceeded,
-            delta: c.delta,
-            x: c.x,
-            radius: c.patch().radius,
-        });
+        rows[k].push((&c.reading, c.patch().radius));
     }
     for (t, r) in tips.iter_mut().zip(rows) {
         t.push_step(r);

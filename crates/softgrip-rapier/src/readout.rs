@@ -2,24 +2,30 @@
 //! substeps' impulses.
 
 use std::collections::HashMap;
+use std::ops::Deref;
 use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
-use softgrip_law::{
-    Backing, ContactLaw, ContactPatch, ContactReading, Counterpart, LevelKind, Regime,
-};
+use softgrip_law::{ContactLaw, ContactPatch, ContactReading, Regime};
 
 use crate::detect::{Model, Series, raw};
 use crate::solve::Row;
 
-/// One soft contact after a step. Cheap to produce: the contact radius and pressure are only
-/// computed when [`patch`](Self::patch) is called.
+/// One soft contact after a step: the law crate's plain [`ContactReading`] (`reading`; the
+/// struct dereferences to it, so `c.normal_force`, `c.delta`, `c.wrench_about(..)` read it)
+/// plus what only the plugin has: the two colliders and the contact's law. Cheap to produce:
+/// the contact patch and pressure are only computed when [`patch`](Self::patch) is called
+/// (`reading.patch` is `None`).
 ///
 /// Forces are step averages (total impulse over the step / dt); the geometry (`point`,
 /// `normal`, `delta`) is that of the last (sub)step, with `delta` predicted to the end of it
 /// (`delta - h v_n`, what rapier's position update produces), so `normal_force` and
-/// `law(delta)` agree for a quasi-static contact.
+/// `law(delta)` agree for a quasi-static contact. `counterpart` is what the other collider's
+/// shape is at the contact (see the crate's README; a plane for two fingertips: their combined
+/// law already has both curvatures); `patch_direction` is along the counterpart's first
+/// principal direction (a cylinder's axis, an edge), and for a disc (a plane, a ball, two
+/// fingertips) the tangent nearest the world's x axis (z when the normal is nearly x).
 ///
 /// A contact of two fingertips is reported **twice**, once per fingertip: `fingertip` and
 /// `other` swapped, each with its own normal (from the other fingertip to it), the force and
@@ -37,120 +43,39 @@ pub struct TipContact {
     pub fingertip: ColliderHandle,
     /// The other collider (a rigid body, or a second fingertip).
     pub other: ColliderHandle,
-    /// Contact point, world \[m\].
-    pub point: [f64; 3],
-    /// Unit normal, world, from the other body to the fingertip.
-    pub normal: [f64; 3],
-    /// Compression delta \[m\] (> 0 in contact; of two fingertips: the approach of their
-    /// surfaces).
-    pub delta: f64,
-    /// Compression ratio x = delta / R [-] (of two fingertips: R = the combined radius).
-    pub x: f64,
-    /// Normal force on the fingertip \[N\], >= 0 (step average; includes the dissipative part).
-    pub normal_force: f64,
-    /// Friction force on the fingertip, world \[N\] (step average, tangent to the contact).
-    pub friction_force: [f64; 3],
-    /// Torsional friction moment on the fingertip about `normal` [N m] (step average).
-    pub torsional_moment: f64,
-    /// Law stiffness K = dF/d delta at `delta` \[N/m\].
-    pub stiffness: f64,
-    /// The level that computed the force.
-    pub level: LevelKind,
-    /// Valid, extended (validity excursion) or separated, at `delta` (the end of the step).
-    pub regime: Regime,
-    /// The compression was past the law's validity range in some substep of the step, or is
-    /// at its end (an impact can pass `x_max` and rebound within one step).
-    pub validity_exceeded: bool,
-    /// Friction was saturated (the contact slid) in some substep of the step.
-    pub sliding: bool,
-    /// Largest normal force of any substep of the step \[N\] (an impact's peak; equals
-    /// `normal_force` for an unsplit step).
-    pub peak_normal_force: f64,
-    /// Largest compression of the step \[m\]: the maximum over the start of every substep and
-    /// the end of the step, so `max_delta >= delta` always.
-    pub max_delta: f64,
-    /// Largest compression ratio of the step, `max_delta / R` [-] (`>= x`).
-    pub max_x: f64,
-    /// Time in contact (compression > 0) during the step \[s\].
-    pub contact_duration: f64,
-    /// The fingertip's construction (`SoftFingertip::backing`; `Free` for a combined pair of
-    /// two free fingertips).
-    pub backing: Backing,
+    /// The contact's numbers (without its patch: [`patch`](Self::patch) computes it).
+    pub reading: ContactReading,
     pub(crate) model: Arc<Model>,
 }
 
+impl Deref for TipContact {
+    type Target = ContactReading;
+
+    /// The contact's [`reading`](field@TipContact::reading).
+    fn deref(&self) -> &ContactReading {
+        &self.reading
+    }
+}
+
+impl AsRef<ContactReading> for TipContact {
+    fn as_ref(&self) -> &ContactReading {
+        &self.reading
+    }
+}
+
 impl TipContact {
-    /// The contact's numbers as the law crate's plain [`ContactReading`], the one shape that
-    /// the recorder, the ROS 2 publisher and the ECS take (the conversion is here, once; the
-    /// patch is `None`: [`patch`](Self::patch) computes it when wanted).
+    /// The contact's numbers, owned: the law crate's plain [`ContactReading`], the one shape
+    /// that the recorder, the ROS 2 publisher, the ECS and Python take (its patch is `None`:
+    /// [`patch`](Self::patch) computes it when wanted).
     pub fn reading(&self) -> ContactReading {
-        ContactReading {
-            point: self.point,
-            normal: self.normal,
-            delta: self.delta,
-            x: self.x,
-            normal_force: self.normal_force,
-            friction_force: self.friction_force,
-            torsional_moment: self.torsional_moment,
-            stiffness: self.stiffness,
-            level: self.level,
-            regime: self.regime,
-            validity_exceeded: self.validity_exceeded,
-            sliding: self.sliding,
-            peak_normal_force: self.peak_normal_force,
-            max_delta: self.max_delta,
-            max_x: self.max_x,
-            contact_duration: self.contact_duration,
-            backing: self.backing,
-            counterpart: self.counterpart(),
-            patch_direction: self.patch_direction(),
-            patch: None,
-        }
+        self.reading.clone()
     }
 
     /// Contact patch and pressure at `delta` (computed now): a disc on a plane or a ball, an
     /// ellipse on a cylinder or an edge, its first semi-axis (`radius`) along
-    /// [`patch_direction`](Self::patch_direction).
+    /// `patch_direction`.
     pub fn patch(&self) -> ContactPatch {
-        self.model.law.patch(self.delta)
-    }
-
-    /// What the fingertip touched (read from the other collider's shape at the contact, see
-    /// the crate's README): a plane, a curved surface or an edge. A plane for two fingertips
-    /// (their combined law already has both curvatures).
-    pub fn counterpart(&self) -> Counterpart {
-        self.model.law.counterpart()
-    }
-
-    /// Unit vector, world, along the patch's first semi-axis (the counterpart's first
-    /// principal direction: along a cylinder's axis, along an edge); tangent to the contact.
-    /// For a disc (a plane, a ball, two fingertips) any tangent: the one nearest the world's x
-    /// axis (z when the normal is nearly x).
-    pub fn patch_direction(&self) -> [f64; 3] {
-        let d = self.model.patch_direction;
-        if d.norm() > 0.0 {
-            return d.into();
-        }
-        let n = Vector3::from(self.normal);
-        let seed = if n.x.abs() < 0.9 {
-            Vector3::x()
-        } else {
-            Vector3::z()
-        };
-        let t = seed - n * n.dot(&seed);
-        (t / t.norm()).into()
-    }
-
-    /// Whether the compression was past the law's validity range during the step
-    /// ([`validity_exceeded`](Self::validity_exceeded)).
-    pub fn validity_excursion(&self) -> bool {
-        self.validity_exceeded
-    }
-
-    /// Magnitude of the friction force \[N\].
-    pub fn friction_magnitude(&self) -> f64 {
-        let [a, b, c] = self.friction_force;
-        (a * a + b * b + c * c).sqrt()
+        self.model.law.patch(self.reading.delta)
     }
 
     /// The contact's law (for a fingertip on a rigid body, the fingertip's own).
@@ -158,23 +83,30 @@ impl TipContact {
         &self.model.law
     }
 
-    /// Force and torque the contact puts on the fingertip, the torque about `center` (world
-    /// \[m\], e.g. the fingertip's centre): normal plus friction force, `r x f` plus the
-    /// torsional moment about the normal. Summed over a fingertip's contacts this is its
-    /// contact wrench \[N\], [N m].
-    pub fn wrench_about(&self, center: [f64; 3]) -> ([f64; 3], [f64; 3]) {
-        let (n, p) = (self.normal, self.point);
-        let f: [f64; 3] =
-            std::array::from_fn(|i| n[i] * self.normal_force + self.friction_force[i]);
-        let r: [f64; 3] = std::array::from_fn(|i| p[i] - center[i]);
-        let rxf = [
-            r[1] * f[2] - r[2] * f[1],
-            r[2] * f[0] - r[0] * f[2],
-            r[0] * f[1] - r[1] * f[0],
-        ];
-        let torque = std::array::from_fn(|i| rxf[i] + n[i] * self.torsional_moment);
-        (f, torque)
+    /// Sets what the contact's model says about it (after the model was chosen): the
+    /// counterpart and the patch's direction.
+    fn set_counterpart(&mut self) {
+        self.reading.counterpart = self.model.law.counterpart();
+        self.reading.patch_direction = patch_direction(&self.model, self.reading.normal);
     }
+}
+
+/// Unit vector, world, along the patch's first semi-axis: the model's (the counterpart's first
+/// principal direction), or for a disc the tangent to `normal` nearest the world's x axis (z
+/// when the normal is nearly x).
+fn patch_direction(model: &Model, normal: [f64; 3]) -> [f64; 3] {
+    let d = model.patch_direction;
+    if d.norm() > 0.0 {
+        return d.into();
+    }
+    let n = Vector3::from(normal);
+    let seed = if n.x.abs() < 0.9 {
+        Vector3::x()
+    } else {
+        Vector3::z()
+    };
+    let t = seed - n * n.dot(&seed);
+    (t / t.norm()).into()
 }
 
 /// Per-contact sums over the substeps of a step.
@@ -307,23 +239,27 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
         out.push(TipContact {
             fingertip: tip,
             other,
-            point: a.point.into(),
-            normal: a.normal.into(),
-            delta: a.delta_end,
-            x: a.delta_end / a.model.radius,
-            normal_force: a.jn / dt,
-            friction_force: (a.jt / dt).into(),
-            torsional_moment: a.jtw / dt,
-            stiffness: resp.stiffness,
-            level: resp.level,
-            regime: resp.regime,
-            sliding: a.sliding,
-            validity_exceeded: a.extended || resp.regime == Regime::Extended,
-            peak_normal_force: a.peak_force,
-            max_delta: a.max_delta,
-            max_x: a.max_delta / a.model.radius,
-            contact_duration: a.duration,
-            backing: a.model.backing,
+            reading: ContactReading {
+                point: a.point.into(),
+                normal: a.normal.into(),
+                delta: a.delta_end,
+                x: a.delta_end / a.model.radius,
+                normal_force: a.jn / dt,
+                friction_force: (a.jt / dt).into(),
+                torsional_moment: a.jtw / dt,
+                stiffness: resp.stiffness,
+                level: resp.level,
+                regime: resp.regime,
+                sliding: a.sliding,
+                validity_exceeded: a.extended || resp.regime == Regime::Extended,
+                peak_normal_force: a.peak_force,
+                max_delta: a.max_delta,
+                max_x: a.max_delta / a.model.radius,
+                contact_duration: a.duration,
+                backing: a.model.backing,
+                // Set below, from the row's final model.
+                ..ContactReading::default()
+            },
             model: a.model,
         });
         if let Some(last) = out.last_mut()
@@ -342,6 +278,9 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
     acc.clear();
     // Already sorted unless a split step found new contacts after its first substep.
     out.sort_by_key(|c| (raw(c.fingertip), raw(c.other)));
+    for c in out.iter_mut() {
+        c.set_counterpart();
+    }
 }
 
 /// A pair in series (`detect::Series`): rewrites `c` as its first fingertip's own contact
@@ -358,15 +297,16 @@ fn in_series(c: &mut TipContact, series: &Series) -> TipContact {
         (&mut second, &series.second, d2, m2),
     ] {
         let resp = model.law.response(delta);
-        row.delta = delta;
-        row.x = delta / model.radius;
-        row.max_delta = max_delta;
-        row.max_x = max_delta / model.radius;
-        row.stiffness = resp.stiffness;
-        row.level = resp.level;
-        row.validity_exceeded |= resp.regime == Regime::Extended;
-        row.regime = resp.regime;
-        row.backing = model.backing;
+        let r = &mut row.reading;
+        r.delta = delta;
+        r.x = delta / model.radius;
+        r.max_delta = max_delta;
+        r.max_x = max_delta / model.radius;
+        r.stiffness = resp.stiffness;
+        r.level = resp.level;
+        r.validity_exceeded |= resp.regime == Regime::Extended;
+        r.regime = resp.regime;
+        r.backing = model.backing;
         row.model = model.clone();
     }
     second
@@ -381,8 +321,11 @@ fn mirrored(c: &TipContact) -> TipContact {
     TipContact {
         fingertip: c.other,
         other: c.fingertip,
-        normal: neg(c.normal),
-        friction_force: neg(c.friction_force),
-        ..c.clone()
+        reading: ContactReading {
+            normal: neg(c.normal),
+            friction_force: neg(c.friction_force),
+            ..c.reading.clone()
+        },
+        model: c.model.clone(),
     }
 }

@@ -367,7 +367,7 @@ impl SoftContacts {
                 }
                 // The first semi-axis in pad coordinates: the image of a short step along it
                 // from the contact's point on the sphere.
-                let d = rotate_inverse(q, c.patch_direction());
+                let d = rotate_inverse(q, c.patch_direction);
                 let n = crate::tactile::norm(local);
                 let step: [f64; 3] = std::array::from_fn(|i| local[i] / n + 1e-6 * d[i]);
                 let Some(ahead) = image.grid.coordinates(step) else {

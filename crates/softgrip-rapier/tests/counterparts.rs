@@ -16,6 +16,7 @@ use rapier3d::parry::utils::Array2;
 use rapier3d::prelude::*;
 use softgrip_law::{Counterpart, CounterpartKind, Level};
 use softgrip_rapier::{SoftWorld, TipContact};
+use softgrip_testkit::icosphere::icosphere;
 
 const R: f64 = 0.01;
 /// The compression the fingertip is pressed to [m] (x = 0.15).
@@ -64,7 +65,7 @@ fn press(body: ColliderBuilder, point: [f64; 3], normal: [f64; 3]) -> (SoftWorld
 /// Checks one case: the counterpart read, and the force against the law on it.
 fn check(name: &str, body: ColliderBuilder, point: [f64; 3], normal: [f64; 3], expect: Expect) {
     let (_world, c) = press(body, point, normal);
-    let read = c.counterpart();
+    let read = c.counterpart;
     let law_on = |cp: Counterpart| c.law().with_counterpart(cp).unwrap();
     match expect {
         Expect::Exactly(want) => {
@@ -277,70 +278,6 @@ fn analytic_shapes() {
     );
 }
 
-/// An icosphere of radius `r`, subdivided `n` times.
-fn icosphere(r: f32, n: u32) -> (Vec<Vector>, Vec<[u32; 3]>) {
-    let t = (1.0 + 5f32.sqrt()) / 2.0;
-    let mut verts: Vec<Vector> = [
-        (-1.0, t, 0.0),
-        (1.0, t, 0.0),
-        (-1.0, -t, 0.0),
-        (1.0, -t, 0.0),
-        (0.0, -1.0, t),
-        (0.0, 1.0, t),
-        (0.0, -1.0, -t),
-        (0.0, 1.0, -t),
-        (t, 0.0, -1.0),
-        (t, 0.0, 1.0),
-        (-t, 0.0, -1.0),
-        (-t, 0.0, 1.0),
-    ]
-    .iter()
-    .map(|&(x, y, z)| v(x, y, z).normalize())
-    .collect();
-    let mut faces: Vec<[u32; 3]> = vec![
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ];
-    for _ in 0..n {
-        let mut next = Vec::new();
-        let mut mid = std::collections::HashMap::new();
-        let mut midpoint = |a: u32, b: u32, verts: &mut Vec<Vector>| {
-            *mid.entry((a.min(b), a.max(b))).or_insert_with(|| {
-                verts.push(((verts[a as usize] + verts[b as usize]) * 0.5).normalize());
-                verts.len() as u32 - 1
-            })
-        };
-        for [a, b, c] in faces {
-            let (ab, bc, ca) = (
-                midpoint(a, b, &mut verts),
-                midpoint(b, c, &mut verts),
-                midpoint(c, a, &mut verts),
-            );
-            next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
-        }
-        faces = next;
-    }
-    (verts.into_iter().map(|p| p * r).collect(), faces)
-}
-
 #[test]
 fn faceted_shapes() {
     let plane = Expect::Exactly(Counterpart::PLANE);
@@ -404,7 +341,7 @@ fn faceted_shapes() {
         edge,
     );
     // A sphere of 2 cm tessellated (icosphere, 5120 faces, edges ~ 1.6 mm): its curvature.
-    let (verts, faces) = icosphere(0.02, 4);
+    let (verts, faces) = icosphere(Vector::ZERO, 0.02, 4);
     let k = 1.0 / 0.02;
     let sphere = Expect::Sphere { k, tol: 0.03 };
     let mesh = || ColliderBuilder::trimesh(verts.clone(), faces.clone()).unwrap();

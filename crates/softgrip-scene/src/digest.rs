@@ -3,15 +3,15 @@
 
 use std::fmt;
 
-use softgrip_rapier::TipContact;
+use softgrip_law::ContactReading;
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;
 
 /// A 64-bit FNV-1a hash of the bit patterns of every soft contact's values, step by step:
-/// per step the number of contacts, then per contact (in the plugin's readout order) its
-/// normal force, compression, x, torsional moment, stiffness, peak normal force, friction
-/// force, point and normal (f64 bits, little-endian). Two runs have equal digests only if
+/// per step the number of contacts, then per contact (in the plugin's readout order) these
+/// fields of its [`ContactReading`]: normal force, compression, x, torsional moment,
+/// stiffness, peak normal force, friction force, point and normal (f64 bits, little-endian). Two runs have equal digests only if
 /// every one of these values is bit-identical at every step (up to a hash collision).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ContactDigest {
@@ -36,24 +36,33 @@ impl ContactDigest {
         Self::default()
     }
 
-    /// Adds one step's contacts (the plugin's readout after the step, in its order).
-    pub fn add_step<'a>(&mut self, contacts: impl ExactSizeIterator<Item = &'a TipContact>) {
+    /// Adds one step's contacts (the plugin's readout after the step, in its order: its
+    /// `TipContact`s, or their [`ContactReading`]s).
+    pub fn add_step<'a, C: AsRef<ContactReading> + 'a>(
+        &mut self,
+        contacts: impl ExactSizeIterator<Item = &'a C>,
+    ) {
         self.steps += 1;
         self.word(contacts.len() as u64);
         for c in contacts {
-            self.contacts += 1;
-            let scalars = [
-                c.normal_force,
-                c.delta,
-                c.x,
-                c.torsional_moment,
-                c.stiffness,
-                c.peak_normal_force,
-            ];
-            let vectors = [c.friction_force, c.point, c.normal];
-            for v in scalars.into_iter().chain(vectors.into_iter().flatten()) {
-                self.word(v.to_bits());
-            }
+            self.add_contact(c.as_ref());
+        }
+    }
+
+    /// Adds one contact's values.
+    fn add_contact(&mut self, c: &ContactReading) {
+        self.contacts += 1;
+        let scalars = [
+            c.normal_force,
+            c.delta,
+            c.x,
+            c.torsional_moment,
+            c.stiffness,
+            c.peak_normal_force,
+        ];
+        let vectors = [c.friction_force, c.point, c.normal];
+        for v in scalars.into_iter().chain(vectors.into_iter().flatten()) {
+            self.word(v.to_bits());
         }
     }
 

@@ -1,4 +1,5 @@
 #![doc = include_str!("../README.md")]
 
+pub mod icosphere;
 pub mod impact;
 pub mod scenes;

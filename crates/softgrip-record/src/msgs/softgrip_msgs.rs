@@ -1,7 +1,9 @@
 //! `softgrip_msgs` (the interface package in `ros2/softgrip_msgs/`): [`SoftContactMsg`] and
 //! [`SoftContactArrayMsg`].
 
-use softgrip_law::{Backing, BackingKind, Counterpart, CounterpartKind, LevelKind, Regime};
+use softgrip_law::{
+    Backing, BackingKind, ContactReading, Counterpart, CounterpartKind, LevelKind, Regime,
+};
 
 use super::geometry_msgs::{Point, Vector3};
 use super::std_msgs::Header;
@@ -189,5 +191,73 @@ impl SoftContactMsg {
     /// The law level, if `level` is a known code.
     pub fn level_kind(&self) -> Option<LevelKind> {
         LevelKind::from_code(self.level)
+    }
+
+    /// The message as the law's plain [`ContactReading`], its vectors as recorded: the one
+    /// conversion back from a recording (the inverse of
+    /// [`soft_contact_msg`](crate::soft_contact_msg)). Every number the message and
+    /// the reading share is copied as it is. What the message does not hold:
+    /// - `regime`: `Separated` at zero compression, else `Extended` when `validity_exceeded`,
+    ///   else `Valid` (`validity_exceeded` also flags an excursion within the step);
+    /// - `max_x`: `max_compression x / compression` (the radius from the message's own ratio),
+    ///   `ratio_x` at zero compression;
+    /// - `patch`: `None` (the recorded patch is the message's `contact_radius`,
+    ///   `contact_radius2` and pressures; the law's pressure shape is not recorded).
+    ///
+    /// A code this version does not know (another writer's, or a newer softgrip's) reads as
+    /// [`ContactReading::default`]'s level, construction or counterpart (`hertz`, `free`, a
+    /// plane): [`level_kind`](Self::level_kind), [`backing`](Self::backing) and
+    /// [`counterpart`](Self::counterpart) tell them apart.
+    ///
+    /// ```
+    /// use softgrip_law::{Backing, ContactReading, Counterpart, LevelKind, Regime};
+    /// use softgrip_record::{ContactSample, soft_contact_msg};
+    /// let reading = ContactReading {
+    ///     delta: 0.002,
+    ///     x: 0.2,
+    ///     normal_force: 5.0,
+    ///     level: LevelKind::Tabulated,
+    ///     regime: Regime::Valid,
+    ///     backing: Backing::Core { thickness: 0.004 },
+    ///     counterpart: Counterpart::try_cylinder(0.02).unwrap(),
+    ///     patch_direction: [0.0, 0.0, 1.0],
+    ///     ..ContactReading::default()
+    /// };
+    /// let sample = ContactSample { fingertip: "tip".into(), other: "box".into(), contact: reading.clone() };
+    /// assert_eq!(soft_contact_msg(&sample).reading(), reading);
+    /// ```
+    pub fn reading(&self) -> ContactReading {
+        let unknown = ContactReading::default();
+        let regime = match (self.compression > 0.0, self.validity_exceeded) {
+            (false, _) => Regime::Separated,
+            (true, true) => Regime::Extended,
+            (true, false) => Regime::Valid,
+        };
+        ContactReading {
+            point: self.point.to_array(),
+            normal: self.normal.to_array(),
+            delta: self.compression,
+            x: self.ratio_x,
+            normal_force: self.normal_force,
+            friction_force: self.friction_force.to_array(),
+            torsional_moment: self.torsional_moment,
+            stiffness: self.stiffness,
+            level: self.level_kind().unwrap_or(unknown.level),
+            regime,
+            validity_exceeded: self.validity_exceeded,
+            sliding: self.sliding,
+            peak_normal_force: self.peak_normal_force,
+            max_delta: self.max_compression,
+            max_x: if self.compression > 0.0 && self.ratio_x > 0.0 {
+                self.max_compression * (self.ratio_x / self.compression)
+            } else {
+                self.ratio_x
+            },
+            contact_duration: self.contact_duration,
+            backing: self.backing().unwrap_or(unknown.backing),
+            counterpart: self.counterpart().unwrap_or(unknown.counterpart),
+            patch_direction: self.patch_direction.to_array(),
+            patch: None,
+        }
     }
 }

@@ -5,6 +5,7 @@ use std::any::Any;
 use std::fmt::Debug;
 
 use crate::control::io::{Carrier, ControlIo};
+use crate::control::kinds::ControllerKind;
 
 /// The phase of a grasp (the parallel jaws' program and the grasp primitive).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -74,8 +75,9 @@ pub struct GraspView {
 pub trait Controller: Debug + Send + Sync {
     /// Its name (unique in the scene).
     fn name(&self) -> &str;
-    /// Its kind, as a scene file names it (`parallel_jaws`, `trajectory`, `grasp`, ...).
-    fn kind(&self) -> &'static str;
+    /// Its kind: a row of [`CONTROLLERS`](super::CONTROLLERS) (its name is what a scene
+    /// file's `type` says: `parallel_jaws`, `trajectory`, `grasp`, ...).
+    fn kind(&self) -> ControllerKind;
     /// One step: reads `io`'s state, writes its commands; returns what happened.
     fn update(&mut self, io: &mut ControlIo<'_>) -> Option<ControlEvent>;
     /// The grasp's phase, for a controller that runs a grasp.

@@ -7,6 +7,7 @@ use std::sync::{Arc, Mutex, PoisonError};
 
 use crate::control::controller::{ControlEvent, Controller, GoalResult};
 use crate::control::io::ControlIo;
+use crate::control::kinds::ControllerKind;
 use crate::robot::Robot;
 
 /// A joint command by name: a position target \[m or rad\] and/or a velocity target \[m/s or
@@ -193,8 +194,8 @@ impl Controller for JointCommands {
         &self.name
     }
 
-    fn kind(&self) -> &'static str {
-        "joint_commands"
+    fn kind(&self) -> ControllerKind {
+        ControllerKind::JointCommands
     }
 
     fn update(&mut self, io: &mut ControlIo<'_>) -> Option<ControlEvent> {

@@ -7,6 +7,7 @@ use std::any::Any;
 use crate::control::controller::{ControlEvent, Controller, GraspView, Phase};
 use crate::control::group::{check_position, resolve};
 use crate::control::io::{Carrier, ControlIo};
+use crate::control::kinds::ControllerKind;
 use crate::control::spec::GraspSpec;
 use crate::error::SceneError;
 use crate::format::MoveSpec;
@@ -280,8 +281,8 @@ impl Controller for Grasp {
         &self.name
     }
 
-    fn kind(&self) -> &'static str {
-        "grasp"
+    fn kind(&self) -> ControllerKind {
+        ControllerKind::Grasp
     }
 
     fn update(&mut self, io: &mut ControlIo<'_>) -> Option<ControlEvent> {

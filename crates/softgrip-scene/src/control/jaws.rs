@@ -9,6 +9,7 @@ use softgrip_rapier::SoftFingertip;
 
 use crate::control::controller::{ControlEvent, Controller, GraspView, Phase};
 use crate::control::io::{Carrier, ControlIo};
+use crate::control::kinds::ControllerKind;
 use crate::error::SceneError;
 use crate::format::{BodyKind, GripperSpec, MoveSpec, SceneFile};
 use crate::limits::{MAX_COORDINATE, MAX_SPEED, MAX_TIME};
@@ -395,8 +396,8 @@ impl Controller for ParallelJaws {
         &self.program.name
     }
 
-    fn kind(&self) -> &'static str {
-        "parallel_jaws"
+    fn kind(&self) -> ControllerKind {
+        ControllerKind::ParallelJaws
     }
 
     fn update(&mut self, io: &mut ControlIo<'_>) -> Option<ControlEvent> {

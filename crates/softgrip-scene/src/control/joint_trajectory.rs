@@ -5,6 +5,7 @@ use std::any::Any;
 use crate::control::controller::{ControlEvent, Controller};
 use crate::control::group::{check_position, resolve};
 use crate::control::io::ControlIo;
+use crate::control::kinds::ControllerKind;
 use crate::control::spec::TrajectorySpec;
 use crate::error::SceneError;
 use crate::limits::MAX_TIME;
@@ -108,8 +109,8 @@ impl Controller for JointTrajectory {
         &self.name
     }
 
-    fn kind(&self) -> &'static str {
-        "trajectory"
+    fn kind(&self) -> ControllerKind {
+        ControllerKind::Trajectory
     }
 
     fn update(&mut self, io: &mut ControlIo<'_>) -> Option<ControlEvent> {

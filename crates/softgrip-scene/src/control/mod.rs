@@ -1,7 +1,8 @@
 //! Control as one interface: every controller implements [`Controller`] (ros2_control's idea:
-//! robots are data, controllers are plug-ins loaded by name). The kinds: `parallel_jaws`
-//! ([`ParallelJaws`], the `[gripper]`), `trajectory` ([`JointTrajectory`]), `grasp`
-//! ([`Grasp`]), and each robot's commands from outside ([`JointCommands`]).
+//! robots are data, controllers are plug-ins loaded by name). The kinds are listed once, in
+//! [`CONTROLLERS`]: `parallel_jaws` ([`ParallelJaws`], the `[gripper]`), `trajectory`
+//! ([`JointTrajectory`]), `grasp` ([`Grasp`]), and each robot's commands from outside
+//! (`joint_commands`, [`JointCommands`]).
 
 mod controller;
 mod external;
@@ -10,6 +11,7 @@ mod group;
 mod io;
 mod jaws;
 mod joint_trajectory;
+mod kinds;
 mod set;
 mod spec;
 
@@ -24,9 +26,8 @@ pub use jaws::{
     GripperEvent, GripperProgram, GripperState, JawState, ParallelJaws, Squeeze, jaw_compressions,
 };
 pub use joint_trajectory::JointTrajectory;
+pub use kinds::{
+    CONTROLLERS, ControllerInfo, ControllerKind, ControllerSource, UnknownControllerKind,
+};
 pub use set::ControlSet;
 pub use spec::{ControllerSpec, GraspSpec, JointPointSpec, TrajectorySpec};
-
-/// The kinds of controller a scene file names (`[[controller]] type = ...`), and the kind a
-/// runner adds for every robot (`joint_commands`).
-pub const KINDS: [&str; 4] = ["parallel_jaws", "trajectory", "grasp", "joint_commands"];

@@ -1,14 +1,17 @@
 //! `[[controller]]` as written in a scene file (SCENES.md, "Controllers"): one table per
-//! controller, its kind in `type`.
+//! controller, its kind in `type`, read through the kinds' table ([`CONTROLLERS`](super::CONTROLLERS)).
 
 use serde::Deserialize;
+use serde::de::{Deserializer, Error as _};
 
+use crate::control::kinds::ControllerKind;
 use crate::exact::exact_opt;
 use crate::format::{GripperSpec, MoveSpec};
 
-/// A controller of a scene file, by kind.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case")]
+/// A controller of a scene file, by kind: `type` is looked up in
+/// [`CONTROLLERS`](super::CONTROLLERS) ([`ControllerKind::from_scene_name`]; an unknown name
+/// is an error listing the table), the other keys are the kind's fields.
+#[derive(Debug, Clone, PartialEq)]
 pub enum ControllerSpec {
     /// Kinematic jaws (the `[gripper]` table's controller).
     ParallelJaws(GripperSpec),
@@ -16,6 +19,53 @@ pub enum ControllerSpec {
     Trajectory(TrajectorySpec),
     /// Close a group of joints until a force or a position, hold, lift, open.
     Grasp(GraspSpec),
+}
+
+impl ControllerSpec {
+    /// Its kind.
+    pub fn kind(&self) -> ControllerKind {
+        match self {
+            Self::ParallelJaws(_) => ControllerKind::ParallelJaws,
+            Self::Trajectory(_) => ControllerKind::Trajectory,
+            Self::Grasp(_) => ControllerKind::Grasp,
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for ControllerSpec {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let mut table = toml::Table::deserialize(deserializer)?;
+        let kind = match table.remove("type") {
+            Some(toml::Value::String(name)) => {
+                ControllerKind::from_scene_name(&name).map_err(D::Error::custom)?
+            }
+            Some(other) => {
+                return Err(D::Error::custom(format!(
+                    "`type` must be a string naming a controller kind, not {}",
+                    other.type_str()
+                )));
+            }
+            None => return Err(D::Error::missing_field("type")),
+        };
+        let fields = toml::Value::Table(table);
+        match kind {
+            ControllerKind::ParallelJaws => fields.try_into().map(Self::ParallelJaws),
+            ControllerKind::Trajectory => fields.try_into().map(Self::Trajectory),
+            ControllerKind::Grasp => fields.try_into().map(Self::Grasp),
+            // `from_scene_name` gives only kinds a scene file names.
+            ControllerKind::JointCommands => {
+                return Err(D::Error::custom(
+                    "`joint_commands` is added for every robot, not written",
+                ));
+            }
+        }
+        .map_err(|e| {
+            D::Error::custom(format!(
+                "`[[controller]]` of type `{kind}`: {}",
+                e.message()
+            ))
+        })
+    }
 }
 
 /// `type = "trajectory"`: joint position targets at times, linear in between (the velocity
@@ -35,7 +85,7 @@ pub struct TrajectorySpec {
 }
 
 fn trajectory_name() -> String {
-    "trajectory".into()
+    ControllerKind::Trajectory.name().into()
 }
 
 /// A point of a joint trajectory.
@@ -88,7 +138,7 @@ pub struct GraspSpec {
 }
 
 fn grasp_name() -> String {
-    "grasp".into()
+    ControllerKind::Grasp.name().into()
 }
 fn settle() -> f64 {
     0.2

@@ -1,5 +1,7 @@
-//! A closed, outward-oriented sphere surface mesh (subdivided icosahedron), the input of
-//! rapier's tetrahedral fill `SoftBodyBuilder::volumetric`.
+//! A closed, outward-oriented sphere surface mesh (subdivided icosahedron): the input of
+//! rapier's tetrahedral fill `SoftBodyBuilder::volumetric` in `softgrip-bench`'s FEM table,
+//! and the tessellated sphere whose curvature `softgrip-rapier`'s `tests/counterparts.rs`
+//! reads.
 
 use std::collections::HashMap;
 
