@@ -34,7 +34,7 @@
 
 use std::collections::HashMap;
 
-use nalgebra::{DMatrix, DVector, Vector3};
+use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
 use rapier3d::prelude::{
     AngVector, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet, RigidBodyHandle,
     RigidBodySet, Vector,
@@ -49,9 +49,8 @@ pub(crate) struct Link {
     /// Table index of the body that holds the multibody's generalised mobility (the first of
     /// its links entered in the table; this body itself if it is that one).
     pub host: usize,
-    /// The link's jacobian (6 x n: the linear velocity of its centre of mass, then its angular
-    /// velocity, per generalised velocity), world frame.
-    pub jac: DMatrix<f64>,
+    /// The link's place in its multibody's `links` (and `blocks`).
+    pub slot: usize,
     /// On the host only: the multibody.
     pub multi: Option<Generalised>,
 }
@@ -67,6 +66,37 @@ pub(crate) struct Generalised {
     pub acc: DVector<f64>,
     /// Table indices of the multibody's links in the table (the host first).
     pub links: Vec<usize>,
+    /// Each link's jacobian (6 x n: the linear velocity of its centre of mass, then its
+    /// angular velocity, per generalised velocity), world frame, by slot.
+    pub jacs: Vec<DMatrix<f64>>,
+    /// `W J^T` of each link (n x 6), by slot.
+    pub wj: Vec<DMatrix<f64>>,
+    /// The links' spatial mobility blocks `J_a W J_b^T` (6 x 6), by slots `[a][b]`: what a
+    /// wrench on link `b` does to the velocity of link `a`.
+    pub blocks: Vec<Vec<Matrix6<f64>>>,
+}
+
+impl Generalised {
+    /// Adds a link of jacobian `jac` at table index `index`, returning its slot.
+    fn add(&mut self, index: usize, jac: DMatrix<f64>) -> usize {
+        let wj = &self.mobility * jac.transpose();
+        let block = |j: &DMatrix<f64>, w: &DMatrix<f64>| -> Matrix6<f64> {
+            let m = j * w;
+            Matrix6::from_fn(|r, c| m[(r, c)])
+        };
+        let slot = self.links.len();
+        for a in 0..slot {
+            let b = block(&self.jacs[a], &wj);
+            self.blocks[a].push(b);
+        }
+        let mut row: Vec<Matrix6<f64>> = (0..slot).map(|b| block(&jac, &self.wj[b])).collect();
+        row.push(block(&jac, &wj));
+        self.blocks.push(row);
+        self.links.push(index);
+        self.jacs.push(jac);
+        self.wj.push(wj);
+        slot
+    }
 }
 
 /// What a link's entry needs of the world.
@@ -86,15 +116,6 @@ pub(crate) struct LinkCtx<'a> {
 /// The multibodies already in a body table: their host's index.
 pub(crate) type Hosts = HashMap<MultibodyIndex, usize>;
 
-/// The generalised force `J^T [lin; ang]` of a wrench on a link.
-fn gen_force(jac: &DMatrix<f64>, lin: &Vector3<f64>, ang: &Vector3<f64>) -> DVector<f64> {
-    DVector::from_fn(jac.ncols(), |c, _| {
-        (0..3)
-            .map(|r| jac[(r, c)] * lin[r] + jac[(r + 3, c)] * ang[r])
-            .sum()
-    })
-}
-
 /// The link velocity (linear at its centre of mass, angular) of generalised velocity `q`.
 fn link_velocity(jac: &DMatrix<f64>, q: &DVector<f64>) -> (Vector3<f64>, Vector3<f64>) {
     let row = |r: usize| (0..jac.ncols()).map(|c| jac[(r, c)] * q[c]).sum::<f64>();
@@ -104,35 +125,31 @@ fn link_velocity(jac: &DMatrix<f64>, q: &DVector<f64>) -> (Vector3<f64>, Vector3
     )
 }
 
+/// The multibody of link `i` (held by its host) and the link's slot in it.
+fn multi_of(bodies: &[BodyState], i: usize) -> Option<(&Generalised, usize)> {
+    let link = bodies[i].link.as_deref()?;
+    let multi = bodies[link.host].link.as_deref()?.multi.as_ref()?;
+    Some((multi, link.slot))
+}
+
 /// Applies the wrench `[lin; ang]` (force at its centre of mass \[N s\], torque \[N m s\]) to
 /// link `i`: the multibody's generalised velocity changes by `W J^T f`, and every link of it in
-/// the table moves with it.
+/// the table moves with it (by its block `J_k W J_i^T f`).
 pub(crate) fn apply(bodies: &mut [BodyState], i: usize, lin: &Vector3<f64>, ang: &Vector3<f64>) {
-    let Some(link) = bodies[i].link.as_deref() else {
-        return;
-    };
-    let host = link.host;
-    let g = gen_force(&link.jac, lin, ang);
-    let Some(multi) = bodies[host].link.as_deref().and_then(|l| l.multi.as_ref()) else {
-        return;
-    };
-    let dq = &multi.mobility * g;
-    for k in 0..multi.links.len() {
-        let Some(multi) = bodies[host].link.as_deref().and_then(|l| l.multi.as_ref()) else {
+    let f = Vector6::new(lin.x, lin.y, lin.z, ang.x, ang.y, ang.z);
+    let count = multi_of(bodies, i).map(|(m, _)| m.links.len()).unwrap_or(0);
+    for k in 0..count {
+        let Some((b, d)) = multi_of(bodies, i).map(|(m, s)| (m.links[k], m.blocks[k][s] * f))
+        else {
             return;
         };
-        let b = multi.links[k];
-        let Some(l) = bodies[b].link.as_deref() else {
-            continue;
-        };
-        let (dv, dw) = link_velocity(&l.jac, &dq);
-        bodies[b].v += dv;
-        bodies[b].w += dw;
+        bodies[b].v += Vector3::new(d[0], d[1], d[2]);
+        bodies[b].w += Vector3::new(d[3], d[4], d[5]);
     }
 }
 
 /// The mobility between a wrench direction `(lin_x, ang_x)` on body `x` and `(lin_y, ang_y)`
-/// on body `y` if both are links of one multibody (`g_x^T W g_y`), else `None`.
+/// on body `y` if both are links of one multibody (`f_x^T J_x W J_y^T f_y`), else `None`.
 pub(crate) fn pair(
     bodies: &[BodyState],
     x: usize,
@@ -140,16 +157,14 @@ pub(crate) fn pair(
     y: usize,
     (lin_y, ang_y): (&Vector3<f64>, &Vector3<f64>),
 ) -> Option<f64> {
-    let (lx, ly) = (bodies[x].link.as_deref()?, bodies[y].link.as_deref()?);
-    if lx.host != ly.host {
+    if !same_multibody(bodies, x, y) {
         return None;
     }
-    let multi = bodies[lx.host].link.as_deref()?.multi.as_ref()?;
-    let (gx, gy) = (
-        gen_force(&lx.jac, lin_x, ang_x),
-        gen_force(&ly.jac, lin_y, ang_y),
-    );
-    Some(gx.dot(&(&multi.mobility * gy)))
+    let (multi, sx) = multi_of(bodies, x)?;
+    let sy = bodies[y].link.as_deref()?.slot;
+    let fx = Vector6::new(lin_x.x, lin_x.y, lin_x.z, ang_x.x, ang_x.y, ang_x.z);
+    let fy = Vector6::new(lin_y.x, lin_y.y, lin_y.z, ang_y.x, ang_y.y, ang_y.z);
+    Some(fx.dot(&(multi.blocks[sx][sy] * fy)))
 }
 
 /// Whether bodies `x` and `y` are links of one multibody.
@@ -195,7 +210,27 @@ pub(crate) fn link_state(
             .or_else(|| table[host].link.as_deref()?.multi.as_ref())?;
         (g.qdot.clone(), g.acc.clone())
     };
-    let (v, w) = link_velocity(&jac, &qdot);
+    let com = to_f64(rb.mass_properties().world_com);
+    let (mut v, mut w) = link_velocity(&jac, &qdot);
+    // A kinematic root (a lifted hand) carries its links along, one pipeline step late: rapier
+    // moves a multibody's links to its root body's pose at the start of its step
+    // (`forward_kinematics`), with no velocity. Over the coming step the links move by the
+    // root's pose minus where the multibody has it now.
+    let root = mb.root();
+    if let Some(rr) = bodies
+        .get(root.rigid_body_handle())
+        .filter(|r| r.is_kinematic())
+    {
+        let (now, frame) = (rr.position(), root.local_to_world());
+        let (axis, mut angle) = (now.rotation * frame.rotation.inverse()).to_axis_angle();
+        if angle > std::f32::consts::PI {
+            angle -= 2.0 * std::f32::consts::PI;
+        }
+        let wr = to_f64(axis * angle) / ctx.h;
+        let vr = to_f64(now.translation - frame.translation) / ctx.h;
+        v += vr + wr.cross(&(com - to_f64(frame.translation)));
+        w += wr;
+    }
     let (a_ext, _) = link_velocity(&jac, &acc);
     if !(v
         .iter()
@@ -205,32 +240,28 @@ pub(crate) fn link_state(
     {
         return None;
     }
-    match multi {
-        Some(_) => {
+    let (multi, slot) = match multi {
+        Some(mut g) => {
             hosts.insert(id.multibody, next);
+            let slot = g.add(next, jac);
+            (Some(g), slot)
         }
         None => {
-            if let Some(g) = table[host]
+            let g = table[host]
                 .link
                 .as_deref_mut()
-                .and_then(|l| l.multi.as_mut())
-            {
-                g.links.push(next);
-            }
+                .and_then(|l| l.multi.as_mut())?;
+            (None, g.add(next, jac))
         }
-    }
-    let multi = multi.map(|mut g| {
-        g.links.push(next);
-        g
-    });
+    };
     Some(BodyState {
         v,
         w,
         inv_m: Vector3::zeros(),
         inv_i: nalgebra::Matrix3::zeros(),
-        com: to_f64(rb.mass_properties().world_com),
+        com,
         a_ext,
-        link: Some(Box::new(Link { host, jac, multi })),
+        link: Some(Box::new(Link { host, slot, multi })),
     })
 }
 
@@ -311,6 +342,9 @@ fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Opti
         qdot,
         acc,
         links: Vec::with_capacity(2),
+        jacs: Vec::with_capacity(2),
+        wj: Vec::with_capacity(2),
+        blocks: Vec::with_capacity(2),
     })
 }
 
