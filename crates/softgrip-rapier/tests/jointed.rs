@@ -61,8 +61,9 @@ struct Scene {
 /// The table, the box on it, a fixed base and the jointed chain (`prismatic`: one prismatic
 /// joint along y, the tip below it; else two revolute joints about z along x, the tip at the
 /// end of the second link) with `pgs` internal PGS iterations per rapier solver pass
-/// (`IntegrationParameters::num_internal_pgs_iterations`, rapier's default 1).
-fn scene(build: Build, prismatic: bool, pgs: usize) -> Scene {
+/// (`IntegrationParameters::num_internal_pgs_iterations`, rapier's default 1); the links'
+/// gravity scale `link_gravity`.
+fn scene(build: Build, prismatic: bool, pgs: usize, link_gravity: f32) -> Scene {
     let mut world = SoftWorld::new();
     world
         .physics
@@ -110,7 +111,7 @@ fn scene(build: Build, prismatic: bool, pgs: usize) -> Scene {
         let body = world.physics.bodies.insert(
             RigidBodyBuilder::dynamic()
                 .translation(at)
-                .gravity_scale(0.0)
+                .gravity_scale(link_gravity)
                 .can_sleep(false),
         );
         // A light link along its offset.
@@ -274,8 +275,8 @@ impl Scene {
         }
     }
 
-    /// The contact force's joint-space projection at joint `i` (`J^T F`): its moment about
-    /// the joint's axis, or its component along it.
+    /// The load's joint-space projection at joint `i` (`J^T F`): the contact force's and the
+    /// links' weights' moment about the joint's axis, or their component along it.
     fn contact_effort(&self, i: usize) -> f64 {
         let j = &self.joints[i];
         let c = self.contact();
@@ -283,7 +284,21 @@ impl Scene {
         let (f, torque) = c.wrench_about([o.x as f64, o.y as f64, o.z as f64]);
         let a = [j.axis.x as f64, j.axis.y as f64, j.axis.z as f64];
         let v = if j.revolute { torque } else { f };
-        (0..3).map(|k| v[k] * a[k]).sum()
+        let contact: f64 = (0..3).map(|k| v[k] * a[k]).sum();
+        // The links' weight beyond the joint.
+        let p = &self.world.physics;
+        let g = p.gravity;
+        let weight: f64 = self.joints[i..]
+            .iter()
+            .map(|l| {
+                let rb = &p.bodies[l.child];
+                let w = g * (rb.mass() * rb.gravity_scale());
+                let arm = rb.center_of_mass() - o;
+                let e = if j.revolute { arm.cross(w) } else { w };
+                e.dot(j.axis) as f64
+            })
+            .sum();
+        contact + weight
     }
 
     fn contact(&self) -> &softgrip_rapier::TipContact {
@@ -380,16 +395,25 @@ const PGS: usize = 2;
 
 #[test]
 fn multibody_finger_presses_a_box_and_holds() {
-    let mut s = scene(Build::Multibody, false, PGS);
+    let mut s = scene(Build::Multibody, false, PGS, 0.0);
     let h = hold(&mut s, &FINGER, 240);
     assert_held("two-link multibody finger", &h);
+}
+
+/// The finger's links under gravity (the motors hold their weight too: the effort is `J^T`
+/// of the contact force and of the links' weights).
+#[test]
+fn multibody_finger_with_heavy_links_holds() {
+    let mut s = scene(Build::Multibody, false, PGS, 1.0);
+    let h = hold(&mut s, &FINGER, 240);
+    assert_held("two-link multibody finger, links under gravity", &h);
 }
 
 /// The same finger at rapier's default of one PGS iteration per solver pass: what it does
 /// today (crate README, Limits).
 #[test]
 fn multibody_finger_at_rapiers_default_iterations() {
-    let mut s = scene(Build::Multibody, false, 1);
+    let mut s = scene(Build::Multibody, false, 1, 0.0);
     let h = hold(&mut s, &FINGER, 240);
     println!("two-link multibody finger, 1 PGS iteration: {h:?}");
     assert!(h.force > 1.0, "{h:?}");
@@ -403,7 +427,7 @@ fn multibody_finger_at_rapiers_default_iterations() {
 #[test]
 fn multibody_prismatic_jaw_presses_a_box_and_holds() {
     for pgs in [1, PGS] {
-        let mut s = scene(Build::Multibody, true, pgs);
+        let mut s = scene(Build::Multibody, true, pgs, 0.0);
         let h = hold(&mut s, &[-0.0015], 240);
         assert_held(&format!("prismatic multibody jaw, {pgs} PGS"), &h);
     }
@@ -414,7 +438,7 @@ fn multibody_prismatic_jaw_presses_a_box_and_holds() {
 /// alone. What it does today (crate README, Limits).
 #[test]
 fn impulse_jointed_finger_today() {
-    let mut s = scene(Build::Impulse, false, PGS);
+    let mut s = scene(Build::Impulse, false, PGS, 0.0);
     let h = hold(&mut s, &FINGER, 240);
     println!("two-link impulse-jointed finger: {h:?}");
     // Measured: 0.004 N where the law asks for 6.3 N (the tip sinks into the box; the light
@@ -429,7 +453,7 @@ fn impulse_jointed_finger_today() {
 /// compression in the middle of the step (the mean of its start and end).
 #[test]
 fn multibody_finger_squeeze_follows_the_law() {
-    let mut s = scene(Build::Multibody, false, PGS);
+    let mut s = scene(Build::Multibody, false, PGS, 0.0);
     let steps = 1920;
     let (mut worst, mut peak) = (0.0f64, 0.0f64);
     let mut before: Option<f64> = None;
