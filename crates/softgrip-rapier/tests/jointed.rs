@@ -488,3 +488,175 @@ fn multibody_finger_squeeze_follows_the_law() {
     assert!(peak > 5.0, "{peak}");
     assert!(worst < 5e-3, "{worst}");
 }
+
+/// A parallel jaw as one multibody: two prismatic fingers along x on a fixed base, the right one
+/// coupled to the left by a mimic (`q_right = -q_left`, a dof coupling), only the left motored
+/// (2e4 N/m); a fingertip on each finger squeezes the box on the table from its sides. The two
+/// pads are rows on two links of one multibody (coupled through its mobility and the coupling).
+/// At rest each pad reads the law at its geometric compression, both the same force, and the
+/// left motor holds `J^T F` of both pads through the coupling (`2 F`).
+///
+/// Not right yet (session 10): the jaws do not settle. Every step is split (~460 substeps:
+/// the contacts read as dynamic), the pads read 2.1 and 2.4 N at about 0.42 mm (the law at
+/// the geometry is not met), the box creeps along z at ~0.25 mm/s and the motor's state says
+/// 11.6 N against `J^T F` = 4.5 N; at 8 PGS iterations the pads agree (5.48 N, 1e-5) but the
+/// steps stay split and the motor's state reads 19.4 N against 11.0 N. The shipped URDF gripper
+/// (`scenes/robots/parallel_gripper_box.toml`, a mimic finger, 2000 N/m) reaches 5.07 / 5.09 N
+/// against its 5 N. To investigate: the split-step path with a link's force per substep, the
+/// coupling fold (`multibody::couple`) against rapier's coupling row.
+#[test]
+#[ignore = "the mimic-coupled jaws do not settle yet (see the doc comment; crate README, Limits)"]
+fn multibody_mimic_jaws_squeeze_a_box() {
+    let mut world = SoftWorld::new();
+    world
+        .physics
+        .integration_parameters
+        .num_internal_pgs_iterations = PGS;
+    world
+        .physics
+        .colliders
+        .insert(ColliderBuilder::cuboid(0.2, 0.01, 0.2).translation(Vector::new(0.0, -0.01, 0.0)));
+    let box_body = world.physics.bodies.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, HALF, 0.0))
+            .can_sleep(false),
+    );
+    let box_col = world.physics.colliders.insert_with_parent(
+        ColliderBuilder::cuboid(HALF, HALF, HALF).density(500.0),
+        box_body,
+        &mut world.physics.bodies,
+    );
+    let y = HALF;
+    let base = world
+        .physics
+        .bodies
+        .insert(RigidBodyBuilder::fixed().translation(Vector::new(0.0, y + 0.05, 0.0)));
+    let open = HALF + R as f32 + GAP;
+    let mut fingers = Vec::new();
+    let mut tips = Vec::new();
+    for side in [-1.0f32, 1.0] {
+        let body = world.physics.bodies.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(side * open, y, 0.0))
+                .gravity_scale(0.0)
+                .can_sleep(false),
+        );
+        world.physics.colliders.insert_with_parent(
+            ColliderBuilder::cuboid(0.003, 0.02, 0.004)
+                .translation(Vector::new(side * 0.012, 0.02, 0.0))
+                .density(1000.0)
+                .collision_groups(InteractionGroups::none()),
+            body,
+            &mut world.physics.bodies,
+        );
+        let mut joint = PrismaticJointBuilder::new(Vector::X)
+            .local_anchor1(Vector::new(side * open, -0.05, 0.0))
+            .local_anchor2(Vector::ZERO);
+        if side < 0.0 {
+            joint = joint
+                .motor_position(0.0015, K_PRI, C_PRI)
+                .motor_model(MotorModel::ForceBased);
+        }
+        let data: GenericJoint = joint.build().into();
+        world
+            .physics
+            .multibody_joints
+            .insert(base, body, data, true)
+            .unwrap();
+        let tip = world.physics.colliders.insert_with_parent(
+            ColliderBuilder::ball(R as f32),
+            body,
+            &mut world.physics.bodies,
+        );
+        world
+            .register(tip, fingertip(Level::Calibrated, 0.5).build().unwrap())
+            .unwrap();
+        fingers.push(body);
+        tips.push(tip);
+    }
+    let links = fingers.map_links(&world);
+    {
+        let mb = world
+            .physics
+            .multibody_joints
+            .get_multibody_mut(links[0].multibody)
+            .unwrap();
+        mb.add_dof_coupling(MultibodyDofCoupling {
+            link1: links[0].id,
+            dof1: 0,
+            axis1: 0,
+            link2: links[1].id,
+            dof2: 0,
+            axis2: 0,
+            coeff: -1.0,
+            offset: 0.0,
+        });
+    }
+    let law = fingertip(Level::Calibrated, 0.5)
+        .build()
+        .unwrap()
+        .law()
+        .clone();
+    for _ in 0..240 {
+        world.step();
+    }
+    let p = &world.physics;
+    let rb = &p.bodies[box_body];
+    let mut forces = Vec::new();
+    let mut worst = 0.0f64;
+    let mut generalised = 0.0;
+    for (k, tip) in tips.iter().enumerate() {
+        let c = world
+            .soft
+            .contacts()
+            .iter()
+            .find(|c| c.fingertip == *tip && c.other == box_col)
+            .expect("each pad touches the box");
+        let centre = p.colliders[*tip].translation();
+        let side = if k == 0 { -1.0 } else { 1.0 };
+        let face = rb
+            .position()
+            .transform_point(Vector::new(side * HALF, 0.0, 0.0))
+            .x;
+        let delta = R - (side * (centre.x - face)) as f64;
+        worst = worst.max((c.normal_force / law.response(delta).force - 1.0).abs());
+        forces.push(c.normal_force);
+        let (f, _) = c.wrench_about([0.0; 3]);
+        // d q_k / d q_left: 1 for the left finger, the coupling's -1 for the right.
+        generalised += f[0] * if k == 0 { 1.0 } else { -1.0 };
+    }
+    let mb = p
+        .multibody_joints
+        .get_multibody(links[0].multibody)
+        .unwrap();
+    let left = mb.link(links[0].id).unwrap();
+    let (q, v) = (
+        left.joint().coords()[0] as f64,
+        mb.joint_velocity(left)[0] as f64,
+    );
+    let effort = K_PRI as f64 * (0.0015 - q) - C_PRI as f64 * v;
+    let effort_error = (effort / -generalised - 1.0).abs();
+    let balance = (forces[0] / forces[1] - 1.0).abs();
+    println!(
+        "mimic jaws: forces {forces:?} N, worst |F/F_law - 1| {worst:.2e}, pads differ \
+         {balance:.2e}, motor {effort:.4} N vs J^T F {:.4} N ({effort_error:.2e})",
+        -generalised
+    );
+    assert!(forces[0] > 1.0, "{forces:?}");
+    assert!(worst < 5e-3, "{worst}");
+    assert!(balance < 1e-3, "{balance}");
+    assert!(effort_error < 1e-2, "{effort_error}");
+}
+
+/// The multibody link ids of bodies.
+trait MapLinks {
+    fn map_links(&self, world: &SoftWorld) -> Vec<MultibodyLinkId>;
+}
+
+impl MapLinks for Vec<RigidBodyHandle> {
+    fn map_links(&self, world: &SoftWorld) -> Vec<MultibodyLinkId> {
+        self.iter()
+            .map(|b| *world.physics.multibody_joints.rigid_body_link(*b).unwrap())
+            .collect()
+    }
+}
