@@ -9,6 +9,7 @@ use rapier3d::prelude::{Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vect
 
 use crate::counters::SoftCounters;
 use crate::detect::{to_f32, to_f64};
+use crate::multibody::{self, Hosts, LinkCtx, SavedForce};
 use crate::rigid::RigidRow;
 use crate::solve::{BodyState, Row};
 
@@ -24,6 +25,8 @@ pub(crate) struct BodyTable {
     index: HashMap<RigidBodyHandle, usize>,
     pub table: Vec<BodyState>,
     pub handles: Vec<RigidBodyHandle>,
+    /// The multibodies in the table: the index of their host link (`multibody`).
+    hosts: Hosts,
 }
 
 impl BodyTable {
@@ -32,6 +35,7 @@ impl BodyTable {
         self.index.clear();
         self.table.clear();
         self.handles.clear();
+        self.hosts.clear();
     }
 }
 
@@ -89,18 +93,29 @@ pub(crate) fn gravity_kick(bodies: &mut RigidBodySet, gravity: Vector, tau: f64)
 }
 
 /// The body's row in the solver's table: for a dynamic body, its velocity with the external
-/// accelerations (gravity, user force and torque) integrated over `h_drift` \[s\] (see
-/// `SoftWorld::prepare`), its inverse mass and inertia.
+/// accelerations (gravity, user force and torque) integrated over `ctx.h_drift` \[s\] (see
+/// `SoftWorld::prepare`), its inverse mass and inertia; for an awake link of a multibody, its
+/// multibody's mobility (`multibody`).
 pub(crate) fn body_index(
     bodies: &RigidBodySet,
     handle: RigidBodyHandle,
-    h_drift: f64,
+    ctx: &LinkCtx<'_>,
     gravity: Vector,
     kin_vel: &KinematicVelocity,
     tb: &mut BodyTable,
 ) -> Option<usize> {
     if let Some(i) = tb.index.get(&handle) {
         return Some(*i);
+    }
+    let h_drift = ctx.h_drift;
+    let next = tb.table.len();
+    if let Some(state) =
+        multibody::link_state(bodies, ctx, handle, &mut tb.table, &mut tb.hosts, next)
+    {
+        tb.table.push(state);
+        tb.handles.push(handle);
+        tb.index.insert(handle, next);
+        return Some(next);
     }
     let rb = bodies.get(handle)?;
     let mp = rb.mass_properties();
@@ -132,6 +147,7 @@ pub(crate) fn body_index(
             inv_i,
             com,
             a_ext,
+            link: None,
         }
     } else if rb.is_kinematic() {
         let (v, w) = kin_vel
@@ -145,6 +161,7 @@ pub(crate) fn body_index(
             inv_i: Matrix3::zeros(),
             com,
             a_ext: Vector3::zeros(),
+            link: None,
         }
     } else {
         BodyState {
@@ -154,6 +171,7 @@ pub(crate) fn body_index(
             inv_i: Matrix3::zeros(),
             com,
             a_ext: Vector3::zeros(),
+            link: None,
         }
     };
     if !(state.v.iter().chain(state.w.iter()).all(|x| x.is_finite())) {
@@ -171,8 +189,11 @@ pub(crate) fn body_index(
 /// cancel: a cell (m = 1.2e-11 kg) held between two plates gets +-3e3 m/s per contact and
 /// per step, whose `f32` sum leaves up to 2.4e-4 m/s of rounding, an 8 um jump per step
 /// (half the cell's radius), measured in `tests/micro_cells_squeeze.rs`.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn apply_impulses(
     bodies: &mut RigidBodySet,
+    h: f64,
+    saved: &mut Vec<SavedForce>,
     table: &[BodyState],
     handles: &[RigidBodyHandle],
     rows: &[Row],
@@ -215,6 +236,10 @@ pub(crate) fn apply_impulses(
             rb.set_linvel(to_f32(&v), true);
             rb.set_angvel(to_f32(&w), true);
         }
+    }
+    // The multibody links: a force over the coming pipeline step (`multibody`).
+    if table.iter().any(|b| b.link.is_some()) {
+        counters.non_finite += multibody::apply_to_rapier(bodies, table, handles, net, h, saved);
     }
 }
 

@@ -41,6 +41,7 @@
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2, Vector3};
 
+use crate::multibody;
 use crate::solve::{BodyState, Row};
 
 /// One of rapier's touching contact points between a dynamic body `a` that the soft contacts
@@ -194,6 +195,10 @@ impl Scalar {
     fn apply(&self, bodies: &mut [BodyState], j: f64) {
         for (i, s, ang) in [(self.a, 1.0, self.ang_a), (self.b, -1.0, self.ang_b)] {
             if let Some(i) = i {
+                if bodies[i].link.is_some() {
+                    multibody::apply(bodies, i, &(self.lin * (s * j)), &(ang * (s * j)));
+                    continue;
+                }
                 let b = &mut bodies[i];
                 b.v += b.inv_m.component_mul(&self.lin) * (s * j);
                 b.w += b.inv_i * ang * (s * j);
@@ -202,10 +207,22 @@ impl Scalar {
     }
 }
 
-/// Mobility between two scalar rows (sum over the bodies they share).
+/// Mobility between two scalar rows (sum over the bodies they share; the links of one
+/// multibody are one body).
 fn mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
     let mut m = 0.0;
     for i in [x.a, x.b].into_iter().flatten() {
+        if bodies[i].link.is_some() {
+            let (sx, lx, ax) = x.on(i).unwrap_or((0.0, Vector3::zeros(), Vector3::zeros()));
+            for k in [y.a, y.b].into_iter().flatten() {
+                if let Some((sy, ly, ay)) = y.on(k)
+                    && let Some(w) = multibody::pair(bodies, i, (&lx, &ax), k, (&ly, &ay))
+                {
+                    m += sx * sy * w;
+                }
+            }
+            continue;
+        }
         if let (Some((sx, lx, ax)), Some((sy, ly, ay))) = (x.on(i), y.on(i)) {
             let b = &bodies[i];
             m += sx * sy * (lx.dot(&b.inv_m.component_mul(&ly)) + ax.dot(&(b.inv_i * ay)));
@@ -597,10 +614,10 @@ pub(crate) fn solve_coupled(
     let base: Vec<BodyState> = bodies.to_vec();
     build(bodies, &[], rigid, &[], h, scalars, &mut first);
     let Some(rest) = solve_scalars(bodies, scalars, h, state) else {
-        bodies.copy_from_slice(&base);
+        bodies.clone_from_slice(&base);
         return false;
     };
-    bodies.copy_from_slice(&base);
+    bodies.clone_from_slice(&base);
     // rapier's normal impulse of each rigid row (its friction goes with it: see `Kind::Tangent`).
     let mut rest_n = Vec::with_capacity(rigid.len());
     let mut k = 0;
@@ -611,7 +628,7 @@ pub(crate) fn solve_coupled(
     // Everything.
     build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
     let Some(j) = solve_scalars(bodies, scalars, h, state) else {
-        bodies.copy_from_slice(&base);
+        bodies.clone_from_slice(&base);
         return false;
     };
     for (k, r) in soft.iter_mut().enumerate() {

@@ -28,10 +28,11 @@
 
 use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, Vector2, Vector3};
 
+use crate::multibody::{self, Link};
 use crate::rigid::{self, CoupledScratch, RigidRow};
 
 /// Velocity state and inverse mass of one body as the solver sees it.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub(crate) struct BodyState {
     /// Linear velocity [m/s].
     pub v: Vector3<f64>,
@@ -45,6 +46,9 @@ pub(crate) struct BodyState {
     pub com: Vector3<f64>,
     /// External acceleration (gravity, user force / m) [m/s^2]; zero if not dynamic.
     pub a_ext: Vector3<f64>,
+    /// A link of a multibody: its response comes from the multibody (`multibody`; `inv_m`
+    /// and `inv_i` are then zero). `None`: a free, fixed or kinematic body.
+    pub link: Option<Box<Link>>,
 }
 
 impl BodyState {
@@ -73,8 +77,9 @@ impl BodyState {
         dir_i.dot(&(self.inv_m.component_mul(dir_k) + dw.cross(&ri)))
     }
 
-    fn is_dynamic(&self) -> bool {
-        self.inv_m.iter().any(|m| *m > 0.0)
+    /// Whether impulses move the body (a free dynamic body or a multibody link).
+    pub(crate) fn is_dynamic(&self) -> bool {
+        self.inv_m.iter().any(|m| *m > 0.0) || self.link.is_some()
     }
 }
 
@@ -155,21 +160,28 @@ fn rel_spin(bodies: &[BodyState], r: &Row) -> f64 {
 }
 
 fn apply_linear(bodies: &mut [BodyState], r: &Row, imp: &Vector3<f64>) {
-    if let Some(a) = r.a {
-        bodies[a].apply(&r.p, imp);
-    }
-    if let Some(b) = r.b {
-        bodies[b].apply(&r.p, &-imp);
+    for (i, imp) in [(r.a, *imp), (r.b, -imp)] {
+        let Some(i) = i else { continue };
+        if bodies[i].link.is_some() {
+            let arm = (r.p - bodies[i].com).cross(&imp);
+            multibody::apply(bodies, i, &imp, &arm);
+        } else {
+            bodies[i].apply(&r.p, &imp);
+        }
     }
 }
 
 fn apply_torque(bodies: &mut [BodyState], r: &Row, t: f64) {
     let tv = r.n * t;
-    if let Some(a) = r.a {
-        bodies[a].w += bodies[a].inv_i * tv;
-    }
-    if let Some(b) = r.b {
-        bodies[b].w -= bodies[b].inv_i * tv;
+    for (i, sign) in [(r.a, 1.0), (r.b, -1.0)] {
+        let Some(i) = i else { continue };
+        if bodies[i].link.is_some() {
+            multibody::apply(bodies, i, &Vector3::zeros(), &(tv * sign));
+        } else if sign > 0.0 {
+            bodies[i].w += bodies[i].inv_i * tv;
+        } else {
+            bodies[i].w -= bodies[i].inv_i * tv;
+        }
     }
 }
 
@@ -184,10 +196,19 @@ fn pair_mobility(
     let mut m = 0.0;
     for (bi, si) in [(ri.a, 1.0), (ri.b, -1.0)] {
         for (bk, sk) in [(rk.a, 1.0), (rk.b, -1.0)] {
-            if let (Some(x), Some(y)) = (bi, bk)
-                && x == y
-            {
+            let (Some(x), Some(y)) = (bi, bk) else {
+                continue;
+            };
+            if x == y && bodies[x].link.is_none() {
                 m += si * sk * bodies[x].mobility(&ri.p, di, &rk.p, dk);
+            } else if let Some(w) = multibody::pair(
+                bodies,
+                x,
+                (di, &(ri.p - bodies[x].com).cross(di)),
+                y,
+                (dk, &(rk.p - bodies[y].com).cross(dk)),
+            ) {
+                m += si * sk * w;
             }
         }
     }
@@ -307,12 +328,23 @@ fn friction_mobility(bodies: &[BodyState], r: &Row) -> (Option<Matrix2<f64>>, f6
         pair_mobility(bodies, r, &t2, r, &t2),
     );
     let k_inv = k.try_inverse().filter(|_| k.trace() > 0.0);
-    let kt = body(bodies, r.a)
-        .map(|b| r.n.dot(&(b.inv_i * r.n)))
+    let zero = Vector3::zeros();
+    let spin = |i: Option<usize>| {
+        i.map(
+            |i| match multibody::pair(bodies, i, (&zero, &r.n), i, (&zero, &r.n)) {
+                Some(w) => w,
+                None => r.n.dot(&(bodies[i].inv_i * r.n)),
+            },
+        )
         .unwrap_or(0.0)
-        + body(bodies, r.b)
-            .map(|b| r.n.dot(&(b.inv_i * r.n)))
-            .unwrap_or(0.0);
+    };
+    let mut kt = spin(r.a) + spin(r.b);
+    if let (Some(a), Some(b)) = (r.a, r.b)
+        && multibody::same_multibody(bodies, a, b)
+    {
+        // One multibody on both sides: the cross term (rows on a and b have opposite signs).
+        kt -= 2.0 * multibody::pair(bodies, a, (&zero, &r.n), b, (&zero, &r.n)).unwrap_or(0.0);
+    }
     (k_inv, kt)
 }
 
@@ -440,6 +472,15 @@ pub(crate) fn solve(
     } = scratch;
     parent.clear();
     parent.extend(0..nb);
+    // The links of one multibody are one body of the union.
+    for (i, b) in bodies.iter().enumerate() {
+        if let Some(l) = b.link.as_deref() {
+            let (ra, rb) = (find(parent, i), find(parent, l.host));
+            if ra != rb {
+                parent[ra.max(rb)] = ra.min(rb);
+            }
+        }
+    }
     let dynamic = |i: Option<usize>| i.filter(|&i| bodies[i].is_dynamic());
     let links = rows
         .iter()
@@ -564,11 +605,26 @@ pub(crate) fn solve(
     failed
 }
 
+/// Restores body `i` to `base` (a multibody link: every link of its multibody in the table).
+pub(crate) fn restore_body(bodies: &mut [BodyState], base: &[BodyState], i: usize) {
+    let Some(host) = bodies[i].link.as_deref().map(|l| l.host) else {
+        bodies[i].clone_from(&base[i]);
+        return;
+    };
+    let links = match base[host].link.as_deref().and_then(|l| l.multi.as_ref()) {
+        Some(g) => g.links.clone(),
+        None => vec![i],
+    };
+    for k in links {
+        bodies[k].clone_from(&base[k]);
+    }
+}
+
 /// Restores the bodies of `rows` to `base`.
 fn restore(bodies: &mut [BodyState], base: &[BodyState], rows: &[Row]) {
     for r in rows {
         for i in [r.a, r.b].into_iter().flatten() {
-            bodies[i] = base[i];
+            restore_body(bodies, base, i);
         }
     }
 }

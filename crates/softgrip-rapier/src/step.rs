@@ -28,6 +28,7 @@ use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpol
 use crate::contacts::{PairState, Scratch, SoftContacts};
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance, to_f32, to_f64};
 use crate::hooks::{SoftEvents, SoftHooks};
+use crate::multibody::{self, LinkCtx};
 use crate::readout;
 use crate::rigid::RigidRow;
 use crate::solve::{self, Row};
@@ -205,6 +206,9 @@ impl Step<'_> {
             let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
             self.substep_contacts(h, &kin_vel, fresh, scratch);
             self.pipeline_step(h);
+            if !scratch.link_forces.is_empty() {
+                multibody::restore_forces(&mut self.physics.bodies, &mut scratch.link_forces);
+            }
         }
     }
 
@@ -228,6 +232,13 @@ impl Step<'_> {
             .num_solver_iterations
             .max(1) as f64;
         let h_drift = h * (passes + 1.0) / (2.0 * passes);
+        let ctx = LinkCtx {
+            multibodies: &self.physics.multibody_joints,
+            h,
+            h_drift,
+            passes: passes as usize,
+            gravity: to_f64(self.physics.gravity),
+        };
         for (gi, g) in geoms.iter().enumerate() {
             let Some(model) = self.soft.model(g) else {
                 if compression_from_signed_distance(g.dist) > 0.0 {
@@ -239,7 +250,7 @@ impl Step<'_> {
                 body_index(
                     &self.physics.bodies,
                     b,
-                    h_drift,
+                    &ctx,
                     self.physics.gravity,
                     kin_vel,
                     tb,
@@ -249,7 +260,7 @@ impl Step<'_> {
                 body_index(
                     &self.physics.bodies,
                     b,
-                    h_drift,
+                    &ctx,
                     self.physics.gravity,
                     kin_vel,
                     tb,
@@ -271,7 +282,7 @@ impl Step<'_> {
             s.mobility.push(w);
         }
         self.soft.geoms = geoms;
-        self.prepare_rigid(h_drift, kin_vel, s);
+        self.prepare_rigid(h, h_drift, kin_vel, s);
     }
 
     /// rapier's touching rigid contacts of every dynamic body a soft contact moves, and of the
@@ -282,7 +293,13 @@ impl Step<'_> {
     /// manifolds without solver contacts (a pair the user's hooks keep out of rapier's solver)
     /// and points farther apart than rapier's allowed linear error. Joints are not rows: a
     /// jointed body is seen as free.
-    fn prepare_rigid(&mut self, h_drift: f64, kin_vel: &KinematicVelocity, s: &mut Scratch) {
+    fn prepare_rigid(
+        &mut self,
+        h: f64,
+        h_drift: f64,
+        kin_vel: &KinematicVelocity,
+        s: &mut Scratch,
+    ) {
         s.rigid.clear();
         if s.rows.is_empty() {
             return;
@@ -299,13 +316,20 @@ impl Step<'_> {
             }
             for i in [row.a, row.b].into_iter().flatten() {
                 let handle = tb.handles[i];
-                if tb.table[i].inv_m != Vector3::zeros() && !queue.contains(&handle) {
+                if tb.table[i].is_dynamic() && !queue.contains(&handle) {
                     queue.push(handle);
                 }
             }
         }
         let w = &*self.physics;
         let slop = w.integration_parameters.allowed_linear_error() as f64;
+        let ctx = LinkCtx {
+            multibodies: &w.multibody_joints,
+            h,
+            h_drift,
+            passes: w.integration_parameters.num_solver_iterations.max(1),
+            gravity: to_f64(w.gravity),
+        };
         let mut next = 0;
         while next < queue.len() && s.rigid.len() < MAX_RIGID_ROWS {
             let body = queue[next];
@@ -329,13 +353,12 @@ impl Step<'_> {
                     // This body's side: the row's normal points from the other side to it
                     // (rapier's manifold normal points from collider 1 to collider 2).
                     let (sign, other) = if c1 == ch { (-1.0, co2) } else { (1.0, co1) };
-                    let Some(a) = body_index(&w.bodies, body, h_drift, w.gravity, kin_vel, tb)
-                    else {
+                    let Some(a) = body_index(&w.bodies, body, &ctx, w.gravity, kin_vel, tb) else {
                         continue;
                     };
                     let b = other.parent().and_then(|ob| {
-                        let i = body_index(&w.bodies, ob, h_drift, w.gravity, kin_vel, tb)?;
-                        if tb.table[i].inv_m != Vector3::zeros() && !queue.contains(&ob) {
+                        let i = body_index(&w.bodies, ob, &ctx, w.gravity, kin_vel, tb)?;
+                        if tb.table[i].is_dynamic() && !queue.contains(&ob) {
                             queue.push(ob);
                         }
                         Some(i)
@@ -456,6 +479,8 @@ impl Step<'_> {
         }
         bodies::apply_impulses(
             &mut self.physics.bodies,
+            h,
+            &mut s.link_forces,
             &s.body_table.table,
             &s.body_table.handles,
             &s.rows,

@@ -16,7 +16,7 @@ impl Step<'_> {
         let base = s.body_table.table.clone();
         for pass in 0..MAX_ONSET_PASSES {
             if pass > 0 {
-                s.body_table.table.copy_from_slice(&base);
+                s.body_table.table.clone_from_slice(&base);
                 self.soft.counters.onset_solves += 1;
             }
             let failed = solve::solve(

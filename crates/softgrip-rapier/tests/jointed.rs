@@ -1,0 +1,662 @@
+//! A fingertip on a jointed body pressing a box that rests on a fixed table (issue 23, item 4):
+//! the last link of a two-link finger (two revolute joints with position motors) and a
+//! prismatic jaw with a position motor, built as rapier multibodies (reduced coordinates: a
+//! URDF hand's default) and, for the finger, as impulse joints.
+//!
+//! At rest the soft contact must carry the law's force at the compression the geometry gives
+//! (the tip's centre against the box's top face), each motor must hold the joint-space
+//! projection of the contact force (`J^T F`: the moment of the contact force about the joint's
+//! axis, or its component along a prismatic axis), and the box must be still. A squeeze
+//! driven by a joint motor's target must follow the law all the way.
+//!
+//! `cargo test -p softgrip-rapier --test jointed -- --nocapture` prints the numbers.
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+use rapier3d::prelude::*;
+use softgrip_law::{ContactLaw, Level};
+use softgrip_rapier::SoftWorld;
+use softgrip_testkit::scenes::{RADIUS as R, fingertip};
+
+/// Half extent of the box \[m\] (a 2 cm box on the table, its top face at y = 2 HALF).
+const HALF: f32 = 0.01;
+/// Length of the finger's first and second link \[m\].
+const L1: f32 = 0.05;
+const L2: f32 = 0.04;
+/// Gap between the tip and the box before the motors press \[m\].
+const GAP: f32 = 0.0005;
+/// The motors' stiffness [N m/rad] (revolute) or [N/m] (prismatic) and damping.
+const K_REV: f32 = 40.0;
+const C_REV: f32 = 0.05;
+const K_PRI: f32 = 2.0e4;
+const C_PRI: f32 = 200.0;
+
+/// How the jointed body is built.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Build {
+    Multibody,
+    Impulse,
+}
+
+/// One joint of the scene: the child body, the joint's origin on it (its body origin) and its
+/// axis (world), revolute or prismatic.
+#[derive(Debug, Clone, Copy)]
+struct Joint {
+    child: RigidBodyHandle,
+    axis: Vector,
+    revolute: bool,
+    stiffness: f32,
+    handle: Option<ImpulseJointHandle>,
+}
+
+struct Scene {
+    world: SoftWorld,
+    build: Build,
+    joints: Vec<Joint>,
+    box_body: RigidBodyHandle,
+    box_col: ColliderHandle,
+    law: ContactLaw,
+}
+
+/// The table, the box on it, a fixed base and the jointed chain (`prismatic`: one prismatic
+/// joint along y, the tip below it; else two revolute joints about z along x, the tip at the
+/// end of the second link) with `pgs` internal PGS iterations per rapier solver pass
+/// (`IntegrationParameters::num_internal_pgs_iterations`, rapier's default 1); the links'
+/// gravity scale `link_gravity`.
+fn scene(build: Build, prismatic: bool, pgs: usize, link_gravity: f32) -> Scene {
+    let mut world = SoftWorld::new();
+    world
+        .physics
+        .integration_parameters
+        .num_internal_pgs_iterations = pgs;
+    world
+        .physics
+        .colliders
+        .insert(ColliderBuilder::cuboid(0.2, 0.01, 0.2).translation(Vector::new(0.0, -0.01, 0.0)));
+    let tip_x = if prismatic { 0.0 } else { L1 + L2 };
+    let box_body = world.physics.bodies.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(tip_x, HALF, 0.0))
+            .can_sleep(false),
+    );
+    let box_col = world.physics.colliders.insert_with_parent(
+        ColliderBuilder::cuboid(HALF, HALF, HALF).density(500.0),
+        box_body,
+        &mut world.physics.bodies,
+    );
+    let y0 = 2.0 * HALF + R as f32 + GAP;
+    let base_pos = if prismatic {
+        Vector::new(0.0, y0 + 0.03, 0.0)
+    } else {
+        Vector::new(0.0, y0, 0.0)
+    };
+    let base = world
+        .physics
+        .bodies
+        .insert(RigidBodyBuilder::fixed().translation(base_pos));
+    // The chain: (joint origin, axis, revolute, offset from the joint to the next point).
+    let chain: Vec<(Vector, bool, Vector)> = if prismatic {
+        vec![(Vector::Y, false, Vector::new(0.0, -0.03, 0.0))]
+    } else {
+        vec![
+            (Vector::Z, true, Vector::new(L1, 0.0, 0.0)),
+            (Vector::Z, true, Vector::new(L2, 0.0, 0.0)),
+        ]
+    };
+    let mut parent = base;
+    let mut at = base_pos;
+    let mut anchor_on_parent = Vector::ZERO;
+    let mut joints = Vec::new();
+    for (axis, revolute, offset) in chain {
+        let body = world.physics.bodies.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(at)
+                .gravity_scale(link_gravity)
+                .can_sleep(false),
+        );
+        // A light link along its offset.
+        let half = (offset.length() * 0.5).max(0.003);
+        world.physics.colliders.insert_with_parent(
+            ColliderBuilder::cuboid(half, 0.004, 0.004)
+                .translation(offset * 0.5)
+                .density(1000.0)
+                .collision_groups(InteractionGroups::none()),
+            body,
+            &mut world.physics.bodies,
+        );
+        let (stiffness, damping) = if revolute {
+            (K_REV, C_REV)
+        } else {
+            (K_PRI, C_PRI)
+        };
+        let data: GenericJoint = if revolute {
+            RevoluteJointBuilder::new(axis)
+                .local_anchor1(anchor_on_parent)
+                .local_anchor2(Vector::ZERO)
+                .motor_position(0.0, stiffness, damping)
+                .motor_model(MotorModel::ForceBased)
+                .build()
+                .into()
+        } else {
+            PrismaticJointBuilder::new(axis)
+                .local_anchor1(anchor_on_parent)
+                .local_anchor2(Vector::ZERO)
+                .motor_position(0.0, stiffness, damping)
+                .motor_model(MotorModel::ForceBased)
+                .build()
+                .into()
+        };
+        let handle = match build {
+            Build::Multibody => {
+                world
+                    .physics
+                    .multibody_joints
+                    .insert(parent, body, data, true)
+                    .unwrap();
+                None
+            }
+            Build::Impulse => Some(
+                world
+                    .physics
+                    .impulse_joints
+                    .insert(parent, body, data, true),
+            ),
+        };
+        joints.push(Joint {
+            child: body,
+            axis,
+            revolute,
+            stiffness,
+            handle,
+        });
+        parent = body;
+        at += offset;
+        anchor_on_parent = offset;
+    }
+    let tip = world.physics.colliders.insert_with_parent(
+        ColliderBuilder::ball(R as f32).translation(anchor_on_parent),
+        parent,
+        &mut world.physics.bodies,
+    );
+    let ft = fingertip(Level::Calibrated, 0.5).build().unwrap();
+    let law = ft.law().clone();
+    world.register(tip, ft).unwrap();
+    // The box settles on the table.
+    for _ in 0..30 {
+        world.step();
+    }
+    Scene {
+        world,
+        build,
+        joints,
+        box_body,
+        box_col,
+        law,
+    }
+}
+
+impl Scene {
+    /// Sets every motor's target: `targets[i]` for joint `i` [rad or m].
+    fn set_targets(&mut self, targets: &[f32]) {
+        let p = &mut self.world.physics;
+        for (j, &t) in self.joints.iter().zip(targets) {
+            let axis = if j.revolute {
+                JointAxis::AngX
+            } else {
+                JointAxis::LinX
+            };
+            let (stiffness, damping) = if j.revolute {
+                (K_REV, C_REV)
+            } else {
+                (K_PRI, C_PRI)
+            };
+            match self.build {
+                Build::Multibody => {
+                    let link = *p.multibody_joints.rigid_body_link(j.child).unwrap();
+                    let mb = p
+                        .multibody_joints
+                        .get_multibody_mut(link.multibody)
+                        .unwrap();
+                    let joint = &mut mb.link_mut(link.id).unwrap().joint.data;
+                    joint.set_motor_position(axis, t, stiffness, damping);
+                }
+                Build::Impulse => {
+                    let joint = p.impulse_joints.get_mut(j.handle.unwrap(), true).unwrap();
+                    joint.data.set_motor_position(axis, t, stiffness, damping);
+                }
+            }
+        }
+    }
+
+    /// Joint `i`'s position [rad or m] and velocity, and its motor's target.
+    fn joint_state(&self, i: usize) -> (f64, f64, f64) {
+        let p = &self.world.physics;
+        let j = &self.joints[i];
+        let k = if j.revolute { 3 } else { 0 };
+        match self.build {
+            Build::Multibody => {
+                let link = *p.multibody_joints.rigid_body_link(j.child).unwrap();
+                let mb = p.multibody_joints.get_multibody(link.multibody).unwrap();
+                let l = mb.link(link.id).unwrap();
+                let q = l.joint().coords()[k] as f64;
+                let v = mb.joint_velocity(l)[0] as f64;
+                let t = l.joint().data.motors[k].target_pos as f64;
+                (q, v, t)
+            }
+            Build::Impulse => {
+                let joint = p.impulse_joints.get(j.handle.unwrap()).unwrap();
+                (f64::NAN, f64::NAN, joint.data.motors[k].target_pos as f64)
+            }
+        }
+    }
+
+    /// Joint `i`'s motor effort [N m or N] (along the joint's positive axis, on the child):
+    /// a multibody's from rapier's force-based motor law at the joint's state (rapier 0.36 does
+    /// not write a multibody motor's impulse back), an impulse joint's from its impulse.
+    fn motor_effort(&self, i: usize) -> f64 {
+        let j = &self.joints[i];
+        match self.build {
+            Build::Multibody => {
+                let (q, v, t) = self.joint_state(i);
+                let damping = if j.revolute { C_REV } else { C_PRI } as f64;
+                j.stiffness as f64 * (t - q) - damping * v
+            }
+            Build::Impulse => {
+                let joint = self
+                    .world
+                    .physics
+                    .impulse_joints
+                    .get(j.handle.unwrap())
+                    .unwrap();
+                let k = if j.revolute { 3 } else { 0 };
+                let dt = self.world.physics.integration_parameters.dt as f64;
+                joint.data.motors[k].impulse as f64 / dt
+            }
+        }
+    }
+
+    /// The load's joint-space projection at joint `i` (`J^T F`): the contact force's and the
+    /// links' weights' moment about the joint's axis, or their component along it.
+    fn contact_effort(&self, i: usize) -> f64 {
+        let j = &self.joints[i];
+        let c = self.contact();
+        let o = self.world.physics.bodies[j.child].translation();
+        let (f, torque) = c.wrench_about([o.x as f64, o.y as f64, o.z as f64]);
+        let a = [j.axis.x as f64, j.axis.y as f64, j.axis.z as f64];
+        let v = if j.revolute { torque } else { f };
+        let contact: f64 = (0..3).map(|k| v[k] * a[k]).sum();
+        // The links' weight beyond the joint.
+        let p = &self.world.physics;
+        let g = p.gravity;
+        let weight: f64 = self.joints[i..]
+            .iter()
+            .map(|l| {
+                let rb = &p.bodies[l.child];
+                let w = g * (rb.mass() * rb.gravity_scale());
+                let arm = rb.center_of_mass() - o;
+                let e = if j.revolute { arm.cross(w) } else { w };
+                e.dot(j.axis) as f64
+            })
+            .sum();
+        contact + weight
+    }
+
+    fn contact(&self) -> &softgrip_rapier::TipContact {
+        self.world
+            .soft
+            .contacts()
+            .iter()
+            .find(|c| c.other == self.box_col)
+            .expect("the tip touches the box")
+    }
+
+    /// The compression from the geometry: the tip's centre against the box's top face \[m\].
+    fn geometric_delta(&self) -> f64 {
+        let p = &self.world.physics;
+        let tip = p.colliders[self.contact().fingertip].translation();
+        let rb = &p.bodies[self.box_body];
+        let top = rb.position().transform_point(Vector::new(0.0, HALF, 0.0)).y;
+
+        R - (tip.y as f64 - top as f64)
+    }
+
+    fn box_speed(&self, prev: &Pose) -> f64 {
+        let pose = *self.world.physics.bodies[self.box_body].position();
+        let dt = self.world.physics.integration_parameters.dt as f64;
+        ((pose.translation - prev.translation).length() as f64
+            + HALF as f64
+                * (pose.rotation * prev.rotation.inverse())
+                    .to_axis_angle()
+                    .1
+                    .abs() as f64)
+            / dt
+    }
+}
+
+/// What one hold measured.
+#[derive(Debug)]
+struct Held {
+    /// |F / F_law(delta_geometry) - 1| at the end.
+    law_error: f64,
+    /// The contact's normal force \[N\].
+    force: f64,
+    /// Per joint: the motor's effort and the contact's joint-space force.
+    efforts: Vec<(f64, f64)>,
+    /// The box's largest speed over the last half of the hold [m/s].
+    box_speed: f64,
+}
+
+/// Sets the motors' targets and holds for `steps`, measuring at the end.
+fn hold(s: &mut Scene, targets: &[f32], steps: usize) -> Held {
+    s.set_targets(targets);
+    let mut prev = *s.world.physics.bodies[s.box_body].position();
+    let mut box_speed = 0.0f64;
+    for i in 0..steps {
+        s.world.step();
+        let v = s.box_speed(&prev);
+        prev = *s.world.physics.bodies[s.box_body].position();
+        if i >= steps / 2 {
+            box_speed = box_speed.max(v);
+        }
+    }
+    let c = s.contact();
+    let delta = s.geometric_delta();
+    let force = c.normal_force;
+    let law_error = (force / s.law.response(delta).force - 1.0).abs();
+    let efforts: Vec<(f64, f64)> = (0..s.joints.len())
+        .map(|i| (s.motor_effort(i), s.contact_effort(i)))
+        .collect();
+    Held {
+        law_error,
+        force,
+        efforts,
+        box_speed,
+    }
+}
+
+/// The finger's motor targets: both joints turned down by `angle` [rad].
+const FINGER: [f32; 2] = [-0.02, -0.02];
+
+fn assert_held(name: &str, h: &Held) {
+    println!("{name}: {h:?}");
+    assert!(h.force > 1.0, "{name}: {h:?}");
+    assert!(h.law_error < 5e-3, "{name}: {h:?}");
+    for (motor, contact) in &h.efforts {
+        assert!((motor / -contact - 1.0).abs() < 1e-2, "{name}: {h:?}");
+    }
+    assert!(h.box_speed < 1e-6, "{name}: {h:?}");
+}
+
+/// rapier's internal PGS iterations per solver pass these tests use: its default (1) leaves
+/// the two coupled motor rows of the finger unconverged within a pass (at rest the first
+/// joint's stored velocity stays at -0.016 rad/s while it does not move), and the plugin's
+/// exact prediction of the motors then misses the force by 3.9 % (bounded below).
+const PGS: usize = 2;
+
+#[test]
+fn multibody_finger_presses_a_box_and_holds() {
+    let mut s = scene(Build::Multibody, false, PGS, 0.0);
+    let h = hold(&mut s, &FINGER, 240);
+    assert_held("two-link multibody finger", &h);
+}
+
+/// The finger's links under gravity (the motors hold their weight too: the effort is `J^T`
+/// of the contact force and of the links' weights).
+#[test]
+fn multibody_finger_with_heavy_links_holds() {
+    let mut s = scene(Build::Multibody, false, PGS, 1.0);
+    let h = hold(&mut s, &FINGER, 240);
+    assert_held("two-link multibody finger, links under gravity", &h);
+}
+
+/// The same finger at rapier's default of one PGS iteration per solver pass: what it does
+/// today (crate README, Limits).
+#[test]
+fn multibody_finger_at_rapiers_default_iterations() {
+    let mut s = scene(Build::Multibody, false, 1, 0.0);
+    let h = hold(&mut s, &FINGER, 240);
+    println!("two-link multibody finger, 1 PGS iteration: {h:?}");
+    assert!(h.force > 1.0, "{h:?}");
+    assert!(h.law_error < 0.06, "{h:?}");
+    for (motor, contact) in &h.efforts {
+        assert!((motor / -contact - 1.0).abs() < 1e-2, "{h:?}");
+    }
+    assert!(h.box_speed < 1e-6, "{h:?}");
+}
+
+#[test]
+fn multibody_prismatic_jaw_presses_a_box_and_holds() {
+    for pgs in [1, PGS] {
+        let mut s = scene(Build::Multibody, true, pgs, 0.0);
+        let h = hold(&mut s, &[-0.0015], 240);
+        assert_held(&format!("prismatic multibody jaw, {pgs} PGS"), &h);
+    }
+}
+
+/// The finger built with impulse joints: each link a free body to the soft solve (not yet
+/// seen as jointed), so the soft impulse on the last link is predicted with its own mass
+/// alone. What it does today (crate README, Limits).
+#[test]
+fn impulse_jointed_finger_today() {
+    let mut s = scene(Build::Impulse, false, PGS, 0.0);
+    let h = hold(&mut s, &FINGER, 240);
+    println!("two-link impulse-jointed finger: {h:?}");
+    // Measured: 0.004 N where the law asks for 6.3 N (the tip sinks into the box; the light
+    // link seen free is predicted to fly off), the box still.
+    assert!(h.force.is_finite() && h.force < 0.05, "{h:?}");
+    assert!(h.law_error > 0.99, "{h:?}");
+    assert!(h.box_speed < 1e-6, "{h:?}");
+}
+
+/// The squeeze: joint 1's target turns down slowly (by 0.04 rad over 32 s: the tip moves down
+/// at about 0.1 mm/s), the force read every step against the law at the geometry's
+/// compression in the middle of the step (the mean of its start and end).
+#[test]
+fn multibody_finger_squeeze_follows_the_law() {
+    let mut s = scene(Build::Multibody, false, PGS, 0.0);
+    let steps = 1920;
+    let (mut worst, mut peak) = (0.0f64, 0.0f64);
+    let mut before: Option<f64> = None;
+    for i in 0..steps {
+        let a = -0.01 - 0.04 * (i + 1) as f32 / steps as f32;
+        s.set_targets(&[a, 0.0]);
+        s.world.step();
+        let Some(c) = s
+            .world
+            .soft
+            .contacts()
+            .iter()
+            .find(|c| c.other == s.box_col)
+        else {
+            before = None;
+            continue;
+        };
+        let f = c.normal_force;
+        let after = s.geometric_delta();
+        // (past 2 N: the first 0.2 mm, where the lag of one step weighs most, measured 0.52 %
+        // at 1 N)
+        if let Some(b) = before
+            && f > 2.0
+        {
+            let e = (f / s.law.response(0.5 * (b + after)).force - 1.0).abs();
+            worst = worst.max(e);
+        }
+        before = Some(after);
+        peak = peak.max(f);
+    }
+    println!("squeeze by the motor: worst |F/F_law - 1| {worst:.3e}, peak {peak:.2} N");
+    assert!(peak > 5.0, "{peak}");
+    assert!(worst < 5e-3, "{worst}");
+}
+
+/// A parallel jaw as one multibody: two prismatic fingers along x on a fixed base, the right one
+/// coupled to the left by a mimic (`q_right = -q_left`, a dof coupling), only the left motored
+/// (2e4 N/m); a fingertip on each finger squeezes the box on the table from its sides. The two
+/// pads are rows on two links of one multibody (coupled through its mobility and the coupling).
+/// At rest each pad reads the law at its geometric compression, both the same force, and the
+/// left motor holds `J^T F` of both pads through the coupling (`2 F`).
+///
+/// Not right yet (session 10): the jaws do not settle. Every step is split (~460 substeps:
+/// the contacts read as dynamic), the pads read 2.1 and 2.4 N at about 0.42 mm (the law at
+/// the geometry is not met), the box creeps along z at ~0.25 mm/s and the motor's state says
+/// 11.6 N against `J^T F` = 4.5 N; at 8 PGS iterations the pads agree (5.48 N, 1e-5) but the
+/// steps stay split and the motor's state reads 19.4 N against 11.0 N. The shipped URDF gripper
+/// (`scenes/robots/parallel_gripper_box.toml`, a mimic finger, 2000 N/m) reaches 5.07 / 5.09 N
+/// against its 5 N. To investigate: the split-step path with a link's force per substep, the
+/// coupling fold (`multibody::couple`) against rapier's coupling row.
+#[test]
+#[ignore = "the mimic-coupled jaws do not settle yet (see the doc comment; crate README, Limits)"]
+fn multibody_mimic_jaws_squeeze_a_box() {
+    let mut world = SoftWorld::new();
+    world
+        .physics
+        .integration_parameters
+        .num_internal_pgs_iterations = PGS;
+    world
+        .physics
+        .colliders
+        .insert(ColliderBuilder::cuboid(0.2, 0.01, 0.2).translation(Vector::new(0.0, -0.01, 0.0)));
+    let box_body = world.physics.bodies.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, HALF, 0.0))
+            .can_sleep(false),
+    );
+    let box_col = world.physics.colliders.insert_with_parent(
+        ColliderBuilder::cuboid(HALF, HALF, HALF).density(500.0),
+        box_body,
+        &mut world.physics.bodies,
+    );
+    let y = HALF;
+    let base = world
+        .physics
+        .bodies
+        .insert(RigidBodyBuilder::fixed().translation(Vector::new(0.0, y + 0.05, 0.0)));
+    let open = HALF + R as f32 + GAP;
+    let mut fingers = Vec::new();
+    let mut tips = Vec::new();
+    for side in [-1.0f32, 1.0] {
+        let body = world.physics.bodies.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(side * open, y, 0.0))
+                .gravity_scale(0.0)
+                .can_sleep(false),
+        );
+        world.physics.colliders.insert_with_parent(
+            ColliderBuilder::cuboid(0.003, 0.02, 0.004)
+                .translation(Vector::new(side * 0.012, 0.02, 0.0))
+                .density(1000.0)
+                .collision_groups(InteractionGroups::none()),
+            body,
+            &mut world.physics.bodies,
+        );
+        let mut joint = PrismaticJointBuilder::new(Vector::X)
+            .local_anchor1(Vector::new(side * open, -0.05, 0.0))
+            .local_anchor2(Vector::ZERO);
+        if side < 0.0 {
+            joint = joint
+                .motor_position(0.0015, K_PRI, C_PRI)
+                .motor_model(MotorModel::ForceBased);
+        }
+        let data: GenericJoint = joint.build().into();
+        world
+            .physics
+            .multibody_joints
+            .insert(base, body, data, true)
+            .unwrap();
+        let tip = world.physics.colliders.insert_with_parent(
+            ColliderBuilder::ball(R as f32),
+            body,
+            &mut world.physics.bodies,
+        );
+        world
+            .register(tip, fingertip(Level::Calibrated, 0.5).build().unwrap())
+            .unwrap();
+        fingers.push(body);
+        tips.push(tip);
+    }
+    let links = fingers.map_links(&world);
+    {
+        let mb = world
+            .physics
+            .multibody_joints
+            .get_multibody_mut(links[0].multibody)
+            .unwrap();
+        mb.add_dof_coupling(MultibodyDofCoupling {
+            link1: links[0].id,
+            dof1: 0,
+            axis1: 0,
+            link2: links[1].id,
+            dof2: 0,
+            axis2: 0,
+            coeff: -1.0,
+            offset: 0.0,
+        });
+    }
+    let law = fingertip(Level::Calibrated, 0.5)
+        .build()
+        .unwrap()
+        .law()
+        .clone();
+    for _ in 0..240 {
+        world.step();
+    }
+    let p = &world.physics;
+    let rb = &p.bodies[box_body];
+    let mut forces = Vec::new();
+    let mut worst = 0.0f64;
+    let mut generalised = 0.0;
+    for (k, tip) in tips.iter().enumerate() {
+        let c = world
+            .soft
+            .contacts()
+            .iter()
+            .find(|c| c.fingertip == *tip && c.other == box_col)
+            .expect("each pad touches the box");
+        let centre = p.colliders[*tip].translation();
+        let side = if k == 0 { -1.0 } else { 1.0 };
+        let face = rb
+            .position()
+            .transform_point(Vector::new(side * HALF, 0.0, 0.0))
+            .x;
+        let delta = R - (side * (centre.x - face)) as f64;
+        worst = worst.max((c.normal_force / law.response(delta).force - 1.0).abs());
+        forces.push(c.normal_force);
+        let (f, _) = c.wrench_about([0.0; 3]);
+        // d q_k / d q_left: 1 for the left finger, the coupling's -1 for the right.
+        generalised += f[0] * if k == 0 { 1.0 } else { -1.0 };
+    }
+    let mb = p
+        .multibody_joints
+        .get_multibody(links[0].multibody)
+        .unwrap();
+    let left = mb.link(links[0].id).unwrap();
+    let (q, v) = (
+        left.joint().coords()[0] as f64,
+        mb.joint_velocity(left)[0] as f64,
+    );
+    let effort = K_PRI as f64 * (0.0015 - q) - C_PRI as f64 * v;
+    let effort_error = (effort / -generalised - 1.0).abs();
+    let balance = (forces[0] / forces[1] - 1.0).abs();
+    println!(
+        "mimic jaws: forces {forces:?} N, worst |F/F_law - 1| {worst:.2e}, pads differ \
+         {balance:.2e}, motor {effort:.4} N vs J^T F {:.4} N ({effort_error:.2e})",
+        -generalised
+    );
+    assert!(forces[0] > 1.0, "{forces:?}");
+    assert!(worst < 5e-3, "{worst}");
+    assert!(balance < 1e-3, "{balance}");
+    assert!(effort_error < 1e-2, "{effort_error}");
+}
+
+/// The multibody link ids of bodies.
+trait MapLinks {
+    fn map_links(&self, world: &SoftWorld) -> Vec<MultibodyLinkId>;
+}
+
+impl MapLinks for Vec<RigidBodyHandle> {
+    fn map_links(&self, world: &SoftWorld) -> Vec<MultibodyLinkId> {
+        self.iter()
+            .map(|b| *world.physics.multibody_joints.rigid_body_link(*b).unwrap())
+            .collect()
+    }
+}
