@@ -201,26 +201,37 @@ const FREE: [f64; 4] = [0.715605, -0.866304, 0.24444, -0.257074];
 /// Flat and core (a bonded pad): r0, r1, g0, g1.
 const BONDED: [f64; 4] = [0.830973, -1.294969, 0.335914, -0.480372];
 
-/// The map of a sharp edge: the plane law at `rho x`, scaled by `s` (module docs).
+/// The map of a sharp edge: the plane law at `rho x`, scaled by `s` (module docs), with one
+/// `(s, rho)` per construction.
 ///
 /// A right-angle ridge pressed along its bisector cuts into the fingertip along a line: at
-/// small x the force is Hertz's `x^(3/2)` times `s rho^(3/2)` = 0.452 (the FE: 0.46 of the
-/// plane's force at x = 0.01), and the stiffening follows the plane's at a smaller compression.
-/// Fitted on the one edge FE curve there is (the flat pad at nu = 0.48, to x = 0.4: 4.25 %; the
-/// plane law there was 2.2-3.2x the FE); taken for every construction and Poisson ratio until
-/// their FE lands (at small x the ridge's indentation is a local contact problem, the same for
-/// every construction). The patch is the plane's at `rho x` (axes 1): not validated (the FE's
-/// patch across the ridge is 0.13-0.28 of that, along it not resolved).
-fn edge_map(_nu: f64, _backing: Backing) -> CounterpartMap {
+/// small x the force is Hertz's `x^(3/2)` times `s rho^(3/2)` (0.452 bonded, 0.459 free: the
+/// FE's 0.46 of the plane's force at x = 0.01 for both; the ridge's indentation is a local
+/// contact problem, the same for every construction), and the stiffening follows the plane's at
+/// a smaller compression `rho x`: how much smaller depends on the construction (the free
+/// sphere's squeeze between two ridges, rho = 0.79, against the bonded pad's on one, 0.63;
+/// with the bonded pad's constants the free sphere was 11.9 % too soft at x = 0.42). Each pair
+/// is fitted on the one edge FE curve of its construction (nu = 0.48: flat to x = 0.4, 4.25 %;
+/// free to 0.42, 3.31 %; the plane law there was 2.2-3.2x the FE), taken for every Poisson
+/// ratio and, bonded, for the core until their FE lands. The patch is the plane's at `rho x`
+/// (axes 1): not validated (the FE's patch across the ridge is 0.13-0.28 of that, along it not
+/// resolved).
+fn edge_map(_nu: f64, backing: Backing) -> CounterpartMap {
+    let [force, rho] = if backing.is_free() {
+        EDGE_FREE
+    } else {
+        EDGE_BONDED
+    };
     CounterpartMap {
-        rho: EDGE_RHO,
-        force: EDGE_FORCE,
+        rho,
+        force,
         axes: [1.0, 1.0],
         tail: 0.0,
         reach: f64::INFINITY,
     }
 }
 
-/// `s` and `rho` of a right-angle edge (`tools/calibration/fit_counterpart.py`).
-const EDGE_FORCE: f64 = 0.906458;
-const EDGE_RHO: f64 = 0.628817;
+/// `s` and `rho` of a right-angle edge on the free sphere and on a bonded pad (flat, core)
+/// (`tools/calibration/fit_counterpart.py`).
+const EDGE_FREE: [f64; 2] = [0.648827, 0.794053];
+const EDGE_BONDED: [f64; 2] = [0.906458, 0.628817];
