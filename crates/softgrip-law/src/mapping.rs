@@ -51,7 +51,10 @@
 //!
 //! Constants `r0, r1, g0, g1` per construction (free; flat and core: a bonded pad),
 //! `tools/calibration/fit_counterpart.py` (ball curves at nu 0.3, 0.48, 0.499; held out: the
-//! ball of 0.7 R at nu = 0.4, 3.16 % free and 1.31 % bonded, and the cylinders). They act on
+//! ball of 0.7 R at nu = 0.4, 3.16 % free and 1.31 % bonded, of 6 R at nu = 0.4, 1.5 R at 0.45
+//! and 3 R at 0.35, 0.77-1.93 %, and the cylinders, 0.72-1.50 %; blind, landed after the fit:
+//! R2/R = 4 and 10 at nu 0.3-0.499, 0.63-2.83 % but 4.96 % free on 4 R at nu 0.3 past
+//! x = 0.65, where the compressible material collapses). They act on
 //! the fingertip's own law (`calibrated`, `auto`, `tabulated`, `custom`); the published levels
 //! (baselines) take the patch argument alone (`r = 1`, `g = 0`): on a ball `hertz` is Hertz's
 //! law with the effective radius at every x.
