@@ -372,6 +372,11 @@ def write_pressure(path, res, x):
     return True
 
 
+# The fewest rows a force file may have (softgrip-fe's tests: the thinnest, most incompressible
+# core skin stops at x = 0.04, 4 rows).
+MIN_ROWS = 4
+
+
 def cmd_export(a):
     done = {}
     for g, nu, t, h, role, cp, k in selected(a):
@@ -379,6 +384,12 @@ def cmd_export(a):
             continue
         res = load(a.runs, g, nu, t, h, role, cp, k)
         if res is None or not res["rows"]:
+            continue
+        if len(res["rows"]) < MIN_ROWS:
+            # A run that failed at its first steps (the bonded pad at nu = 0.499 on the ball of
+            # R/2 diverged at x = 0.02): no curve to export; the table says why it stopped.
+            print(f"{cp} k={k:g} {g} nu={nu:g} t={t:g}: not exported, {len(res['rows'])} "
+                  f"rows (reached x = {res['reached']:g}: {res['why']})")
             continue
         write_force(fname(g, nu, t, cp=cp, k=k), res)
         for x in PRESSURE_X:

@@ -42,7 +42,7 @@ fn percent(cell: &str) -> f64 {
 }
 
 #[test]
-fn quick_run_prints_every_level_and_writes_three_pngs() {
+fn quick_run_prints_every_level_and_writes_five_pngs() {
     let out_dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("bench_law_quick");
     let _ = std::fs::remove_dir_all(&out_dir);
     let out = Command::new(env!("CARGO_BIN_EXE_softgrip"))
@@ -98,22 +98,34 @@ fn quick_run_prints_every_level_and_writes_three_pngs() {
         }
     }
 
-    // Each counterpart has its own section; calibrated on it is within its README error of
-    // its FE (ball K = 1 free 1.10 %, cylinder K = 1 flat 1.11 %: fails at 2 %); the plane law
-    // would be 89 % off on that ball at x = 0.7 (the 'softgrip is too stiff').
-    for heading in [
-        "free on ball:1 nu = 0.48 ",
-        "free on ball:0.5 nu = 0.48 ",
-        "flat on ball:2 nu = 0.48 ",
-        "flat on cylinder:1 nu = 0.48 ",
+    // Each counterpart has its own section; calibrated on it is within its stated error of
+    // its FE (crates/softgrip-law/tests/counterpart_fe.rs: ball K = 1 free 1.55 %, R/2 free
+    // 1.17 %, 2R flat 1.21 %, cylinder K = 1 flat 1.11 %, K = 3 free 0.72 %: fails at 2 %;
+    // the edge 4.25 % flat, 3.31 % free: fails at 5 %; the stated misses, the free sphere on
+    // 4R at nu 0.3 4.96 %, the flat pad on R at nu 0.3 8.02 % and the held-out 0.7 R at
+    // nu 0.4 3.16 %, fail past their numbers); the plane law would be 89 % off on the ball of
+    // R at x = 0.7 (the 'softgrip is too stiff').
+    for (heading, limit) in [
+        ("free on ball:1 nu = 0.48 ", 2.0),
+        ("free on ball:0.5 nu = 0.48 ", 2.0),
+        ("flat on ball:2 nu = 0.48 ", 2.0),
+        ("flat on cylinder:1 nu = 0.48 ", 2.0),
+        ("free on cylinder:3 nu = 0.48 ", 2.0),
+        ("flat on edge nu = 0.48 ", 5.0),
+        ("free on edge nu = 0.48 ", 5.0),
+        ("free on ball:4 nu = 0.3 ", 5.2),
+        ("flat on ball:1 nu = 0.3 ", 8.3),
+        ("free on ball:0.7 nu = 0.4 ", 3.4),
     ] {
         let cal = section_cells(&table, heading, "calibrated");
-        assert!(percent(cal[5]) < 2.0, "{heading}: {cal:?}");
+        assert!(percent(cal[5]) < limit, "{heading}: {cal:?}");
     }
 
     for name in [
         "law_force_vs_x.png",
-        "law_force_vs_x_counterparts.png",
+        "law_force_vs_x_ball.png",
+        "law_force_vs_x_cylinder.png",
+        "law_force_vs_x_edge.png",
         "law_speed_vs_error.png",
     ] {
         let bytes = std::fs::read(out_dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));

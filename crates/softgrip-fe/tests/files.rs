@@ -171,7 +171,8 @@ fn counterpart_files_are_keyed_by_counterpart_construction_and_nu() {
 #[test]
 fn a_ball_is_hertz_with_the_effective_radius_at_small_x() {
     //! At x = 0.01 the free sphere on a ball of radius k R is Hertz with R_eff = R k / (1 + k):
-    //! F / F_H(R_eff) is 1-3 % above 1 (the plane's FE is 1-3.5 % above Hertz, MODEL.md). A ball
+    //! F / F_H(R_eff) is 1-3 % above 1 at nu >= 0.45 (the plane's FE is 1-3.5 % above Hertz,
+    //! MODEL.md), up to 4.2 % at nu = 0.3 (the plane's there: 4.5 %). A ball
     //! read as a plane (R_eff = R) would be 29 % off at k = 1. (flat is 4 % stiffer than free
     //! at x = 0.01 on a plane: the bond already matters; it is not checked here.)
     let mut seen = 0;
@@ -186,8 +187,15 @@ fn a_ball_is_hertz_with_the_effective_radius_at_small_x() {
         let r_eff = k / (1.0 + k);
         let hertz = 4.0 / 3.0 * r_eff.sqrt() * p.x.powf(1.5);
         let ratio = p.force_norm / hertz;
+        // The plane's own FE at nu = 0.3 is 4.5 % above Hertz at x = 0.01
+        // (`free/force_nu0.3.csv`), and a ball of 10 R is nearly a plane: 1.042 there.
+        let top = if f.nu.is_some_and(|nu| nu < 0.45) {
+            1.05
+        } else {
+            1.04
+        };
         assert!(
-            (1.0..1.04).contains(&ratio),
+            (1.0..top).contains(&ratio),
             "{}: F / F_H(R_eff) = {ratio}",
             f.path
         );

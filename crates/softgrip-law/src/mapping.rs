@@ -51,7 +51,10 @@
 //!
 //! Constants `r0, r1, g0, g1` per construction (free; flat and core: a bonded pad),
 //! `tools/calibration/fit_counterpart.py` (ball curves at nu 0.3, 0.48, 0.499; held out: the
-//! ball of 0.7 R at nu = 0.4, 3.16 % free and 1.31 % bonded, and the cylinders). They act on
+//! ball of 0.7 R at nu = 0.4, 3.16 % free and 1.31 % bonded, of 6 R at nu = 0.4, 1.5 R at 0.45
+//! and 3 R at 0.35, 0.77-1.93 %, and the cylinders, 0.72-1.50 %; blind, landed after the fit:
+//! R2/R = 4 and 10 at nu 0.3-0.499, 0.63-2.83 % but 4.96 % free on 4 R at nu 0.3 past
+//! x = 0.65, where the compressible material collapses). They act on
 //! the fingertip's own law (`calibrated`, `auto`, `tabulated`, `custom`); the published levels
 //! (baselines) take the patch argument alone (`r = 1`, `g = 0`): on a ball `hertz` is Hertz's
 //! law with the effective radius at every x.
@@ -201,26 +204,37 @@ const FREE: [f64; 4] = [0.715605, -0.866304, 0.24444, -0.257074];
 /// Flat and core (a bonded pad): r0, r1, g0, g1.
 const BONDED: [f64; 4] = [0.830973, -1.294969, 0.335914, -0.480372];
 
-/// The map of a sharp edge: the plane law at `rho x`, scaled by `s` (module docs).
+/// The map of a sharp edge: the plane law at `rho x`, scaled by `s` (module docs), with one
+/// `(s, rho)` per construction.
 ///
 /// A right-angle ridge pressed along its bisector cuts into the fingertip along a line: at
-/// small x the force is Hertz's `x^(3/2)` times `s rho^(3/2)` = 0.452 (the FE: 0.46 of the
-/// plane's force at x = 0.01), and the stiffening follows the plane's at a smaller compression.
-/// Fitted on the one edge FE curve there is (the flat pad at nu = 0.48, to x = 0.4: 4.25 %; the
-/// plane law there was 2.2-3.2x the FE); taken for every construction and Poisson ratio until
-/// their FE lands (at small x the ridge's indentation is a local contact problem, the same for
-/// every construction). The patch is the plane's at `rho x` (axes 1): not validated (the FE's
-/// patch across the ridge is 0.13-0.28 of that, along it not resolved).
-fn edge_map(_nu: f64, _backing: Backing) -> CounterpartMap {
+/// small x the force is Hertz's `x^(3/2)` times `s rho^(3/2)` (0.452 bonded, 0.459 free: the
+/// FE's 0.46 of the plane's force at x = 0.01 for both; the ridge's indentation is a local
+/// contact problem, the same for every construction), and the stiffening follows the plane's at
+/// a smaller compression `rho x`: how much smaller depends on the construction (the free
+/// sphere's squeeze between two ridges, rho = 0.79, against the bonded pad's on one, 0.63;
+/// with the bonded pad's constants the free sphere was 11.9 % too soft at x = 0.42). Each pair
+/// is fitted on the one edge FE curve of its construction (nu = 0.48: flat to x = 0.4, 4.25 %;
+/// free to 0.42, 3.31 %; the plane law there was 2.2-3.2x the FE), taken for every Poisson
+/// ratio and, bonded, for the core until their FE lands. The patch is the plane's at `rho x`
+/// (axes 1): not validated (the FE's patch across the ridge is 0.13-0.28 of that, along it not
+/// resolved).
+fn edge_map(_nu: f64, backing: Backing) -> CounterpartMap {
+    let [force, rho] = if backing.is_free() {
+        EDGE_FREE
+    } else {
+        EDGE_BONDED
+    };
     CounterpartMap {
-        rho: EDGE_RHO,
-        force: EDGE_FORCE,
+        rho,
+        force,
         axes: [1.0, 1.0],
         tail: 0.0,
         reach: f64::INFINITY,
     }
 }
 
-/// `s` and `rho` of a right-angle edge (`tools/calibration/fit_counterpart.py`).
-const EDGE_FORCE: f64 = 0.906458;
-const EDGE_RHO: f64 = 0.628817;
+/// `s` and `rho` of a right-angle edge on the free sphere and on a bonded pad (flat, core)
+/// (`tools/calibration/fit_counterpart.py`).
+const EDGE_FREE: [f64; 2] = [0.648827, 0.794053];
+const EDGE_BONDED: [f64; 2] = [0.906458, 0.628817];

@@ -47,10 +47,15 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
 
 /// Largest |F_law / F_FE - 1| over `0.01 <= x <= x_max` and the x range compared.
 fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
+    force_error_to(file, law, f64::INFINITY)
+}
+
+/// [`force_error`] over `0.01 <= x <= min(x_max, to)`.
+fn force_error_to(file: &FeFile, law: &ContactLaw, to: f64) -> (f64, f64) {
     let mut worst: f64 = 0.0;
     let mut top: f64 = 0.0;
     for p in file.points().expect("parses") {
-        if p.x < 0.01 - 1e-12 || p.x > law.x_max() {
+        if p.x < 0.01 - 1e-12 || p.x > law.x_max() || p.x > to + 1e-9 {
             continue;
         }
         worst = worst.max((law.response(p.x).force / p.force_norm - 1.0).abs());
@@ -62,29 +67,48 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
 /// (`r+g, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
-/// every fit: `ball/*/force_nu0.4_k0.7.csv`, `ball/free/force_nu0.499_k2.csv` and the cylinders
-/// (R2/R = 3 and the ball of 2R at nu 0.499 landed after the constants were fixed: blind).
+/// every fit: the campaign's held-out runs (`ball/*/force_nu0.4_k0.7.csv`,
+/// `ball/*/force_nu0.4_k6.csv`, `ball/flat/force_nu0.45_k1.5.csv`,
+/// `ball/free/force_nu0.35_k3.csv`), the cylinders, and every curve that landed after the
+/// constants were fixed (blind: `ball/free/force_nu0.499_k2.csv`, and the campaign's end of
+/// session 10, R2/R = 4 and 10 at nu 0.3, 0.48 (10), 0.499 and R/2 at nu 0.499).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/free/force_nu0.3_k0.5.csv" => 3.04,
         "ball/free/force_nu0.3_k1.csv" => 1.12,
         "ball/free/force_nu0.3_k2.csv" => 3.12,
+        "ball/free/force_nu0.3_k4.csv" => 4.96,
+        "ball/free/force_nu0.3_k10.csv" => 2.12,
+        "ball/free/force_nu0.35_k3.csv" => 1.93,
         "ball/free/force_nu0.48_k0.5.csv" => 1.17,
         "ball/free/force_nu0.48_k1.csv" => 1.55,
         "ball/free/force_nu0.48_k2.csv" => 0.85,
         "ball/free/force_nu0.48_k4.csv" => 1.66,
+        "ball/free/force_nu0.48_k10.csv" => 2.39,
+        "ball/free/force_nu0.499_k0.5.csv" => 2.65,
         "ball/free/force_nu0.499_k1.csv" => 1.72,
         "ball/free/force_nu0.499_k2.csv" => 1.43,
+        "ball/free/force_nu0.499_k4.csv" => 2.03,
+        "ball/free/force_nu0.499_k10.csv" => 0.90,
         "ball/free/force_nu0.4_k0.7.csv" => 3.16,
+        "ball/free/force_nu0.4_k6.csv" => 1.39,
+        "ball/flat/force_nu0.3_k0.5.csv" => 5.34,
         "ball/flat/force_nu0.3_k1.csv" => 8.02,
         "ball/flat/force_nu0.3_k2.csv" => 5.03,
-        "ball/flat/force_nu0.3_k0.5.csv" => 5.34,
+        "ball/flat/force_nu0.3_k4.csv" => 2.83,
+        "ball/flat/force_nu0.3_k10.csv" => 1.26,
+        "ball/flat/force_nu0.45_k1.5.csv" => 1.60,
         "ball/flat/force_nu0.48_k0.5.csv" => 1.91,
         "ball/flat/force_nu0.48_k1.csv" => 1.17,
         "ball/flat/force_nu0.48_k2.csv" => 1.21,
         "ball/flat/force_nu0.48_k4.csv" => 0.84,
+        "ball/flat/force_nu0.48_k10.csv" => 0.63,
         "ball/flat/force_nu0.499_k1.csv" => 1.28,
+        "ball/flat/force_nu0.499_k2.csv" => 2.82,
+        "ball/flat/force_nu0.499_k4.csv" => 2.10,
+        "ball/flat/force_nu0.499_k10.csv" => 1.37,
         "ball/flat/force_nu0.4_k0.7.csv" => 1.31,
+        "ball/flat/force_nu0.4_k6.csv" => 0.77,
         "cylinder/flat/force_nu0.48_k1.csv" => 1.11,
         "cylinder/flat/force_nu0.48_k3.csv" => 0.93,
         "cylinder/free/force_nu0.48_k1.csv" => 1.50,
@@ -97,27 +121,43 @@ fn stated_force_error(path: &str) -> f64 {
 
 /// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the balls of R/2
 /// (0.66, the bonded reach constant, of 0.68) and R (0.654, where the plane law ends at rho x,
-/// of 0.68), and on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69).
+/// of 0.68), on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69), and at nu = 0.499 on 2R, 4R and
+/// 10R (the plane law of the bonded pad ends at x = 0.44 at nu >= 0.48, at rho x: 0.62 of
+/// the FE's 0.65, 0.53 of 0.57, 0.48 of 0.53; the nearly incompressible pad on a large ball
+/// folds over its bonded edge later than on the plane, where the plane law was fitted).
 const RANGE_SHORT: &[&str] = &[
     "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.4_k0.7.csv",
+    "ball/flat/force_nu0.499_k2.csv",
+    "ball/flat/force_nu0.499_k4.csv",
+    "ball/flat/force_nu0.499_k10.csv",
 ];
 
 /// The curves the law misses the 3 % on (COUNTERPART.md), all at nu <= 0.4: the bonded
 /// pad at nu = 0.3 on balls of R/2, R and 2R (5.34, 8.02, 5.03 %: too stiff at moderate x,
 /// too soft at the end, which one (r, g) per nu cannot follow); the free sphere at nu = 0.3 on
-/// balls of R/2 (3.04 %) and 2R (3.12 %), both at x = 0.7, where the compressible material
-/// under the contact collapses (smallest element volume ratio 0.25-0.35, cut at 0.2); the
-/// held-out free ball of 0.7 R at nu = 0.4 (-3.2 % at x = 0.5: r and g linear in eps between
-/// nu 0.3 and 0.48).
+/// balls of R/2 (3.04 %), 2R (3.12 %) and 4R (4.96 %, blind), all past x = 0.65, where the
+/// compressible material under the contact collapses (smallest element volume ratio 0.25-0.35,
+/// cut at 0.2; [`WITHIN_TARGET_TO`] asserts 3 % below); the held-out free ball of 0.7 R at
+/// nu = 0.4 (-3.2 % at x = 0.5: r and g linear in eps between nu 0.3 and 0.48, and the plane
+/// law itself -1.0 to -1.7 % off the plane's FE at nu = 0.4).
 const KNOWN_MISSES: &[&str] = &[
     "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.3_k2.csv",
     "ball/free/force_nu0.3_k0.5.csv",
     "ball/free/force_nu0.3_k2.csv",
+    "ball/free/force_nu0.3_k4.csv",
     "ball/free/force_nu0.4_k0.7.csv",
+];
+
+/// The free misses at nu = 0.3 are the material's collapse past x = 0.65: below it each is
+/// within the 3 % (its error there; the test allows 0.2 % more).
+const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
+    ("ball/free/force_nu0.3_k0.5.csv", 0.65, 2.31),
+    ("ball/free/force_nu0.3_k2.csv", 0.65, 1.92),
+    ("ball/free/force_nu0.3_k4.csv", 0.65, 2.52),
 ];
 
 #[test]
@@ -149,9 +189,23 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
             law.x_max()
         );
         assert!(top > 0.0, "{}: nothing compared", file.path);
+        if let Some(&(_, to, pct)) = WITHIN_TARGET_TO.iter().find(|(p, _, _)| *p == file.path) {
+            let (below, _) = force_error_to(file, &law, to);
+            println!(
+                "{:38} force within {:5.2} % for x <= {to}",
+                "",
+                100.0 * below
+            );
+            assert!(
+                below <= (pct + 0.2) / 100.0 && below < 0.03,
+                "{}: {:.2} % to x = {to}",
+                file.path,
+                100.0 * below
+            );
+        }
         seen += 1;
     }
-    assert!(seen >= 23, "{seen} curves");
+    assert!(seen >= 39, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
@@ -208,9 +262,10 @@ fn contact_radius_on_a_ball_is_within_six_percent_of_the_fe() {
     }
 }
 
-/// A right-angle edge within its stated error of the FE (`fit_counterpart.py`: 4.25 %, fitted
-/// on this one curve; the target 10 %). The plane law there, what an edge was before,
-/// is 2.2-3.2x the FE.
+/// A right-angle edge within its stated error of the FE (`fit_counterpart.py`, one `(s, rho)`
+/// per construction, each fitted on its one curve: flat 4.25 %, free 3.31 %; the target
+/// 10 %; the free sphere with the bonded pad's constants was 11.87 %). The plane law there,
+/// what an edge was before, is 2.2-3.2x the FE.
 #[test]
 fn force_on_an_edge_is_within_its_stated_error_of_the_fe() {
     let mut seen = 0;
@@ -228,8 +283,13 @@ fn force_on_an_edge_is_within_its_stated_error_of_the_fe() {
             100.0 * err,
             100.0 * plane_err
         );
+        let stated = match file.path {
+            "edge/flat/force_nu0.48.csv" => 4.25,
+            "edge/free/force_nu0.48.csv" => 3.31,
+            _ => 9.8, // an edge not in COUNTERPART.md yet: the target
+        };
         assert!(
-            err <= 0.0445, // the stated 4.25 % + 0.2 %, inside the 10 %
+            err <= (stated + 0.2) / 100.0,
             "{}: {:.2} %",
             file.path,
             100.0 * err
@@ -239,5 +299,5 @@ fn force_on_an_edge_is_within_its_stated_error_of_the_fe() {
         assert!(law.x_max() >= fe_end, "{}", file.path);
         seen += 1;
     }
-    assert!(seen >= 1, "no edge curve");
+    assert!(seen >= 2, "{seen} edge curves");
 }
