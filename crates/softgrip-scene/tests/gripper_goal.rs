@@ -39,7 +39,11 @@ fn run_goal(run: &mut PlainRun, goal: GoalJoint, steps: usize) -> (GoalResult, u
         for (_, e) in run.events() {
             if let ControlEvent::GoalEnded(r) = e {
                 let results = std::mem::take(&mut inbox.lock().unwrap().results);
-                assert_eq!(results, [r.clone()], "the result is handed to the sender");
+                assert_eq!(
+                    results,
+                    std::slice::from_ref(r),
+                    "the result is handed to the sender"
+                );
                 return (r.clone(), k, q);
             }
         }

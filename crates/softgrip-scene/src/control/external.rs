@@ -348,7 +348,8 @@ impl Controller for JointCommands {
                 let goal = (self.running.as_ref())
                     .and_then(|r| r.entry(j))
                     .and_then(|g| g.max_velocity);
-                match (joint.velocity, goal) {
+                // A URDF `velocity` of 0 gives none.
+                match (joint.velocity.filter(|&v| v > 0.0), goal) {
                     (Some(a), Some(b)) => Some(a.min(b)),
                     (a, b) => a.or(b),
                 }
