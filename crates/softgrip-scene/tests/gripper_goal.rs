@@ -73,6 +73,41 @@ fn a_goal_opens_at_its_speed_and_is_reached() {
     assert!((speed - 0.05).abs() < 0.0025, "{speed} m/s");
 }
 
+/// A goal naming no joint it can move (unknown, mimic, or with a position that is not finite)
+/// ends at once, neither reached nor stalled, and moves nothing.
+#[test]
+fn a_goal_without_a_joint_to_move_ends_at_once() {
+    let scene = scene();
+    for (name, position) in [
+        ("no_such_joint", 0.01),
+        ("right_finger_joint", 0.01),
+        ("finger_joint", f64::NAN),
+    ] {
+        let mut run = PlainRun::new(&scene);
+        let goal = GoalJoint {
+            name: name.into(),
+            position,
+            max_velocity: None,
+            max_effort: None,
+        };
+        let (r, k, _) = run_goal(&mut run, goal, 10);
+        assert_eq!((r.reached_goal, r.stalled, k), (false, false, 0), "{name}");
+        assert!(r.joints.is_empty(), "{name}");
+        for _ in 0..10 {
+            run.step();
+        }
+        let robot = &scene.robots()[0];
+        let h = run.handles.robots[0].1.clone();
+        let j = robot.joint_index("finger_joint").unwrap();
+        let q = softgrip_scene::robot::joint_state(robot, &run.world.physics, &h, j, 1.0 / 60.0);
+        assert!(
+            (q.position - 0.028).abs() < 1e-4,
+            "{name}: moved to {}",
+            q.position
+        );
+    }
+}
+
 /// What a correct solve gives; on main the pad's push on a multibody link is lost (issue 23):
 /// the pad is squashed to x ~ 1 at ~1.2 N while the joint's motor reaches 5 N.
 #[test]

@@ -38,14 +38,16 @@ pub struct GripperGoal {
 /// One joint of a [`GripperGoal`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct GoalJoint {
-    /// The joint's URDF name (a moving, not mimic joint; others are ignored).
+    /// The joint's URDF name (a moving, not mimic joint; others are ignored, as is an entry
+    /// whose position is not finite: a sender checks its goals, as `softgrip run --ros2` does).
     pub name: String,
     /// Target position \[m or rad\] (clamped to the URDF limits).
     pub position: f64,
-    /// Largest speed of its target \[m/s or rad/s\], > 0 (`None`: the URDF `velocity`).
+    /// Largest speed of its target \[m/s or rad/s\], > 0 (`None`, or not finite and > 0: the
+    /// URDF `velocity`).
     pub max_velocity: Option<f64>,
     /// Largest effort \[N or N m\], > 0: the joint stops and holds once its effort reaches it
-    /// (`None`: no limit but the URDF `effort`).
+    /// (`None`, or not finite and > 0: no limit but the URDF `effort`).
     pub max_effort: Option<f64>,
 }
 
@@ -59,8 +61,7 @@ pub struct GoalFeedback {
     pub joints: Vec<(String, f64, f64, f64)>,
 }
 
-/// Position tolerance of a goal: reached within 1e-4 m or 1e-3 rad... as one number: a joint
-/// is at its target within this \[m or rad\].
+/// A goal's joint is at its position within this \[m or rad\] (1 mm, 1 mrad).
 pub const GOAL_TOLERANCE: f64 = 1e-3;
 /// A goal stalls when every joint short of its target is held (its motor target at the command,
 /// or frozen at its largest effort) and moved less than this speed times
@@ -256,7 +257,10 @@ impl JointCommands {
         let model = &io.robots()[self.robot];
         let (mut joints, mut entries) = (Vec::new(), Vec::new());
         for (e, g) in goal.joints.iter().enumerate() {
-            let Some(j) = model.joint_index(&g.name) else {
+            let Some(j) = model
+                .joint_index(&g.name)
+                .filter(|_| g.position.is_finite())
+            else {
                 continue;
             };
             let joint = &model.joints()[j];
@@ -274,6 +278,7 @@ impl JointCommands {
             joints.push(j);
             entries.push(e);
         }
+        let empty = joints.is_empty();
         self.running = Some(Running {
             goal,
             joints,
@@ -281,6 +286,10 @@ impl JointCommands {
             entries,
             still: 0.0,
         });
+        // A goal naming no joint it can move ends at once, neither reached nor stalled.
+        if empty {
+            return self.end(io, false, false).or(event);
+        }
         event
     }
 
@@ -291,7 +300,8 @@ impl JointCommands {
             return;
         };
         for &j in &r.joints {
-            let limit = r.entry(j).and_then(|g| g.max_effort);
+            let limit =
+                (r.entry(j).and_then(|g| g.max_effort)).filter(|e| e.is_finite() && *e > 0.0);
             if let (Some(limit), Some(applied)) = (limit, self.applied[j])
                 && io.joint(self.robot, j).effort.abs() >= limit
             {
@@ -347,7 +357,8 @@ impl Controller for JointCommands {
             .map(|(j, joint)| {
                 let goal = (self.running.as_ref())
                     .and_then(|r| r.entry(j))
-                    .and_then(|g| g.max_velocity);
+                    .and_then(|g| g.max_velocity)
+                    .filter(|v| v.is_finite() && *v > 0.0);
                 // A URDF `velocity` of 0 gives none.
                 match (joint.velocity.filter(|&v| v > 0.0), goal) {
                     (Some(a), Some(b)) => Some(a.min(b)),
