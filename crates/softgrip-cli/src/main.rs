@@ -7,6 +7,7 @@ mod counterpart_arg;
 mod curve;
 mod fe;
 mod files;
+mod gripper_action;
 mod joint_commands;
 mod level_arg;
 mod out;

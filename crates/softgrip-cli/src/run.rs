@@ -11,6 +11,7 @@ use softgrip_ecs::{Controllers, McapReport, McapSink, Physics, Simulation, Summa
 use softgrip_record::RecorderOptions;
 use softgrip_record::units::{si, sig};
 
+use crate::gripper_action::GripperActions;
 use crate::joint_commands::{CommandBridge, Routes};
 use softgrip_ros2::PublisherStats;
 use softgrip_scene::{ContactDigest, DEFAULT_SCENE, Scene};
@@ -117,10 +118,13 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
         scene.file().dt
     );
     sim.initialize();
-    let bridge = if args.ros2 {
-        start_commands(&mut sim, &args.joint_commands)?
+    let (bridge, actions) = if args.ros2 {
+        (
+            start_commands(&mut sim, &args.joint_commands)?,
+            start_gripper_actions(&mut sim)?,
+        )
     } else {
-        None
+        (None, None)
     };
     let mut digest = args.digest.then(ContactDigest::new);
     let done = step_loop(
@@ -147,6 +151,17 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
             c.messages,
             c.routed,
             c.unrouted
+        );
+    }
+    if let Some(a) = actions {
+        let names = a.names().join(", ");
+        let c = a.finish()?;
+        outln!(
+            "ros2: gripper actions {names}: {} goals accepted ({} reached, {} stalled), {} refused",
+            c.accepted,
+            c.reached,
+            c.stalled,
+            c.rejected
         );
     }
     if let (Some(out), Some(handle)) = (&args.out, sinks.recording) {
@@ -195,6 +210,23 @@ fn start_commands(sim: &mut Simulation, topic: &str) -> Result<Option<CommandBri
     let bridge = CommandBridge::start(topic, routes)?;
     outln!("ros2: joint commands from {topic} (sensor_msgs/JointState)");
     Ok(Some(bridge))
+}
+
+/// Serves `control_msgs/action/ParallelGripperCommand` for each gripper group (none: no robot).
+fn start_gripper_actions(sim: &mut Simulation) -> Result<Option<GripperActions>> {
+    let Some(mut controllers) = sim.world.get_resource_mut::<Controllers>() else {
+        return Ok(None);
+    };
+    let groups = crate::gripper_action::groups(&mut controllers.0);
+    if groups.is_empty() {
+        return Ok(None);
+    }
+    let actions = GripperActions::start(groups)?;
+    outln!(
+        "ros2: gripper actions {} (control_msgs/action/ParallelGripperCommand)",
+        actions.names().join(", ")
+    );
+    Ok(Some(actions))
 }
 
 /// What the sinks report after the run.

@@ -18,67 +18,10 @@ import dataclasses
 import json
 import sys
 import time
-from dataclasses import dataclass
+from pathlib import Path
 
-from cyclonedds.core import Policy, Qos
-from cyclonedds.domain import Domain, DomainParticipant
-from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.types import float64, int32, sequence, uint32
-from cyclonedds.pub import DataWriter
-from cyclonedds.sub import DataReader
-from cyclonedds.topic import Topic
-from cyclonedds.util import duration
-
-
-@dataclass
-class Time(IdlStruct, typename="builtin_interfaces::msg::dds_::Time_"):
-    sec: int32
-    nanosec: uint32
-
-
-@dataclass
-class Header(IdlStruct, typename="std_msgs::msg::dds_::Header_"):
-    stamp: Time
-    frame_id: str
-
-
-@dataclass
-class JointState(IdlStruct, typename="sensor_msgs::msg::dds_::JointState_"):
-    header: Header
-    name: sequence[str]
-    position: sequence[float64]
-    velocity: sequence[float64]
-    effort: sequence[float64]
-
-
-@dataclass
-class String(IdlStruct, typename="std_msgs::msg::dds_::String_"):
-    data: str
-
-
-CYCLONE_CONFIG = """<CycloneDDS><Domain id="any">
-  <General><Interfaces><NetworkInterface name="lo"/></Interfaces></General>
-  <Discovery><ParticipantIndex>auto</ParticipantIndex>
-    <Peers><Peer address="127.0.0.1"/></Peers></Discovery>
-</Domain></CycloneDDS>"""
-
-# softgrip_ros2::qos::data and ::tf_static (the description's class).
-DATA = Qos(
-    Policy.Reliability.Reliable(max_blocking_time=duration(milliseconds=100)),
-    Policy.History.KeepLast(10),
-    Policy.Durability.Volatile,
-    Policy.DataRepresentation(use_cdrv0_representation=True),
-)
-LATCHED = Qos(
-    Policy.Reliability.Reliable(max_blocking_time=duration(milliseconds=100)),
-    Policy.History.KeepLast(1),
-    Policy.Durability.TransientLocal,
-    Policy.DataRepresentation(use_cdrv0_representation=True),
-)
-
-
-def stamp_ns(header):
-    return header.stamp.sec * 1_000_000_000 + header.stamp.nanosec
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "softgrip-testkit" / "python"))
+from softgrip_dds import LATCHED, JointState, Participant, String, joint_state, stamp_ns  # noqa: E402
 
 
 def main():
@@ -91,11 +34,10 @@ def main():
     args = ap.parse_args()
     deadline = time.monotonic() + args.timeout
 
-    domain = Domain(args.domain, CYCLONE_CONFIG)  # keep alive: it holds the configuration
-    dp = DomainParticipant(args.domain)
-    states = DataReader(dp, Topic(dp, "rt/joint_states", JointState, qos=DATA), qos=DATA)
-    description = DataReader(dp, Topic(dp, "rt/robot_description", String, qos=LATCHED), qos=LATCHED)
-    writer = DataWriter(dp, Topic(dp, "rt" + args.topic, JointState, qos=DATA), qos=DATA)
+    p = Participant(args.domain)
+    states = p.reader("/joint_states", JointState)
+    description = p.reader("/robot_description", String, qos=LATCHED)
+    writer = p.writer(args.topic, JointState)
 
     received = {}
     urdf = None
@@ -118,10 +60,7 @@ def main():
             break
         now = time.monotonic()
         if received and (last_write is None or now - last_write >= 0.05):
-            writer.write(JointState(
-                header=Header(stamp=Time(sec=0, nanosec=0), frame_id=""),
-                name=[args.joint], position=[args.target], velocity=[], effort=[],
-            ))
+            writer.write(joint_state([args.joint], [args.target]))
             writes += 1
             last_write = now
         time.sleep(0.005)
@@ -136,7 +75,7 @@ def main():
         print(f"joint_commands.py: reached={reached}, description={'yes' if urdf else 'no'}, "
               f"{len(received)} states, {writes} commands", file=sys.stderr)
         sys.exit(2)
-    del domain
+    del p
 
 
 if __name__ == "__main__":

@@ -18,112 +18,16 @@ import dataclasses
 import json
 import sys
 import time
-from dataclasses import dataclass
+from pathlib import Path
 
-from cyclonedds.core import InstanceState, Policy, Qos, ReadCondition, SampleState, ViewState, WaitSet
-from cyclonedds.domain import Domain, DomainParticipant
-from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.types import float64, int32, sequence, uint8, uint32
-from cyclonedds.pub import DataWriter
-from cyclonedds.sub import DataReader
-from cyclonedds.topic import Topic
+from cyclonedds.core import InstanceState, ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.util import duration
 
-
-# ROS 2 types as DDS sees them (rosidl's IDL mapping: pkg::msg::dds_::Type_), field order and
-# types as in the .msg files. Only the top-level type name is compared when matching topics.
-@dataclass
-class Time(IdlStruct, typename="builtin_interfaces::msg::dds_::Time_"):
-    sec: int32
-    nanosec: uint32
-
-
-@dataclass
-class Header(IdlStruct, typename="std_msgs::msg::dds_::Header_"):
-    stamp: Time
-    frame_id: str
-
-
-@dataclass
-class Point(IdlStruct, typename="geometry_msgs::msg::dds_::Point_"):
-    x: float64
-    y: float64
-    z: float64
-
-
-@dataclass
-class Vector3(IdlStruct, typename="geometry_msgs::msg::dds_::Vector3_"):
-    x: float64
-    y: float64
-    z: float64
-
-
-@dataclass
-class Wrench(IdlStruct, typename="geometry_msgs::msg::dds_::Wrench_"):
-    force: Vector3
-    torque: Vector3
-
-
-@dataclass
-class WrenchStamped(IdlStruct, typename="geometry_msgs::msg::dds_::WrenchStamped_"):
-    header: Header
-    wrench: Wrench
-
-
-@dataclass
-class SoftContact(IdlStruct, typename="softgrip_msgs::msg::dds_::SoftContact_"):
-    header: Header
-    fingertip: str
-    other: str
-    point: Point
-    normal: Vector3
-    compression: float64
-    ratio_x: float64
-    normal_force: float64
-    friction_force: Vector3
-    torsional_moment: float64
-    contact_radius: float64
-    mean_pressure: float64
-    peak_pressure: float64
-    stiffness: float64
-    level: uint8
-    level_name: str
-    validity_exceeded: bool
-    sliding: bool
-    peak_normal_force: float64
-    max_compression: float64
-    contact_duration: float64
-    backing: uint8
-    core_thickness: float64
-    contact_radius2: float64
-    patch_direction: Vector3
-    counterpart: uint8
-    counterpart_curvature1: float64
-    counterpart_curvature2: float64
-
-
-@dataclass
-class SoftContactArray(IdlStruct, typename="softgrip_msgs::msg::dds_::SoftContactArray_"):
-    header: Header
-    contacts: sequence[SoftContact]
-
-
-# Cyclone on the namespace's loopback only, with unicast discovery to 127.0.0.1 (RustDDS also
-# announces itself to the well-known unicast discovery ports on 127.0.0.1).
-CYCLONE_CONFIG = """<CycloneDDS><Domain id="any">
-  <General><Interfaces><NetworkInterface name="lo"/></Interfaces></General>
-  <Discovery><ParticipantIndex>auto</ParticipantIndex>
-    <Peers><Peer address="127.0.0.1"/></Peers></Discovery>
-</Domain></CycloneDDS>"""
-
-# softgrip's data QoS (softgrip_ros2::qos::data): reliable, keep last 10, volatile; XCDR1, the
-# encoding ROS 2 uses.
-QOS = Qos(
-    Policy.Reliability.Reliable(max_blocking_time=duration(milliseconds=100)),
-    Policy.History.KeepLast(10),
-    Policy.Durability.Volatile,
-    Policy.DataRepresentation(use_cdrv0_representation=True),
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "softgrip-testkit" / "python"))
+from softgrip_dds import (  # noqa: E402
+    Header, Participant, SoftContactArray, Time, Vector3, Wrench, WrenchStamped, stamp_ns,
 )
+import softgrip_dds  # noqa: E402
 
 # The command sent back (the same literals are in src/bin/softgrip-ros2-probe/script.rs).
 COMMAND = WrenchStamped(
@@ -135,14 +39,8 @@ COMMAND = WrenchStamped(
 )
 
 
-def stamp_ns(header):
-    return header.stamp.sec * 1_000_000_000 + header.stamp.nanosec
-
-
 def fail(reason, partial):
-    print(json.dumps(partial))
-    print(f"dds_roundtrip.py: {reason}", file=sys.stderr)
-    sys.exit(2)
+    softgrip_dds.fail("dds_roundtrip.py", reason, partial)
 
 
 def main():
@@ -155,16 +53,14 @@ def main():
     args = ap.parse_args()
     deadline = time.monotonic() + args.timeout
 
-    domain = Domain(args.domain, CYCLONE_CONFIG)  # keep alive: it holds the configuration
-    dp = DomainParticipant(args.domain)
-    contacts_reader = DataReader(dp, Topic(dp, "rt/softgrip/contacts", SoftContactArray, qos=QOS), qos=QOS)
+    p = Participant(args.domain)  # keep alive: its Domain holds the configuration
+    contacts_reader = p.reader("/softgrip/contacts", SoftContactArray)
     wrench_readers = {
-        tip: DataReader(dp, Topic(dp, f"rt/softgrip/{tip}/wrench", WrenchStamped, qos=QOS), qos=QOS)
-        for tip in args.tips.split(",")
+        tip: p.reader(f"/softgrip/{tip}/wrench", WrenchStamped) for tip in args.tips.split(",")
     }
-    command_writer = DataWriter(dp, Topic(dp, "rt/softgrip/command", WrenchStamped, qos=QOS), qos=QOS)
+    command_writer = p.writer("/softgrip/command", WrenchStamped)
 
-    waitset = WaitSet(dp)
+    waitset = WaitSet(p.dp)
     mask = ViewState.Any | InstanceState.Any | SampleState.NotRead
     for reader in [contacts_reader, *wrench_readers.values()]:
         waitset.attach(ReadCondition(reader, mask))
@@ -210,7 +106,7 @@ def main():
 
     if args.no_command:
         print(json.dumps(result(0)))
-        del domain
+        del p
         return
 
     # 2. The command: write it (again every 100 ms: the probe's reader may match our writer
@@ -233,7 +129,7 @@ def main():
         drain()
 
     print(json.dumps(result(writes)))
-    del domain
+    del p
 
 
 if __name__ == "__main__":

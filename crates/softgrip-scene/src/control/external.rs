@@ -22,21 +22,52 @@ pub struct JointCommand {
     pub velocity: Option<f64>,
 }
 
-/// A gripper goal (`control_msgs/action/ParallelGripperCommand`): move the named joints to
-/// their positions with at most `max_effort` each, until reached or stalled.
+/// A gripper goal (`control_msgs/action/ParallelGripperCommand`): the grasp primitive for the
+/// named joints. Each joint's motor target moves toward its position at most at its largest
+/// speed (and the URDF `velocity`); a joint whose effort reaches its largest effort stops there
+/// and holds (its target frozen). The goal ends reached (every joint within [`GOAL_TOLERANCE`])
+/// or stalled (the joints short of their targets still for [`STALL_TIME`]); the joints then
+/// hold where the goal left them.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GripperGoal {
-    /// An id the sender chose (given back in the [`GoalResult`]).
+    /// An id the sender chose (given back in the [`GoalResult`] and the feedback).
     pub id: u64,
-    /// (joint name, target position \[m or rad\], largest effort \[N or N m\], if given).
-    pub joints: Vec<(String, f64, Option<f64>)>,
+    /// The joints.
+    pub joints: Vec<GoalJoint>,
 }
 
-/// Position tolerance of a goal: reached within 1e-4 m or 1e-3 rad... as one number: a joint
-/// is at its target within this \[m or rad\].
+/// One joint of a [`GripperGoal`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct GoalJoint {
+    /// The joint's URDF name (a moving, not mimic joint; others are ignored, as is an entry
+    /// whose position is not finite: a sender checks its goals, as `softgrip run --ros2` does).
+    pub name: String,
+    /// Target position \[m or rad\] (clamped to the URDF limits).
+    pub position: f64,
+    /// Largest speed of its target \[m/s or rad/s\], > 0 (`None`, or not finite and > 0: the
+    /// URDF `velocity`).
+    pub max_velocity: Option<f64>,
+    /// Largest effort \[N or N m\], > 0: the joint stops and holds once its effort reaches it
+    /// (`None`, or not finite and > 0: no limit but the URDF `effort`).
+    pub max_effort: Option<f64>,
+}
+
+/// The state of a running goal's joints, sent as its feedback.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GoalFeedback {
+    /// The goal's id.
+    pub id: u64,
+    /// Each joint's name, position \[m or rad\], velocity \[m/s or rad/s\] and effort \[N
+    /// or N m\] after the last step.
+    pub joints: Vec<(String, f64, f64, f64)>,
+}
+
+/// A goal's joint is at its position within this \[m or rad\] (1 mm, 1 mrad).
 pub const GOAL_TOLERANCE: f64 = 1e-3;
-/// A goal stalls when every joint short of its target moved slower than this \[m/s or rad/s\]
-/// for [`STALL_TIME`].
+/// A goal stalls when every joint short of its target is held (its motor target at the command,
+/// or frozen at its largest effort) and moved less than this speed times
+/// [`STALL_TIME`] over the last [`STALL_TIME`] \[m/s or rad/s\] (its mean speed: a joint held
+/// against a soft pad trembles at a few mm/s within a step's substeps).
 pub const STALL_SPEED: f64 = 1e-3;
 /// How long the joints must be still, short of the target, for a goal to stall \[s\].
 pub const STALL_TIME: f64 = 0.1;
@@ -51,6 +82,8 @@ pub struct CommandInbox {
     pub goals: Vec<GripperGoal>,
     /// Goals that ended, oldest first (taken by the sender).
     pub results: Vec<GoalResult>,
+    /// The running goal's state after the last step (replaced every step; taken by the sender).
+    pub feedback: Option<GoalFeedback>,
 }
 
 /// A shared [`CommandInbox`].
@@ -60,8 +93,23 @@ pub type SharedInbox = Arc<Mutex<CommandInbox>>;
 #[derive(Debug, Clone, PartialEq)]
 struct Running {
     goal: GripperGoal,
+    /// The goal's joints (robot indices), one per `goal.joints` entry that names a joint.
     joints: Vec<usize>,
+    /// The entry of `goal.joints` of each of `joints`.
+    entries: Vec<usize>,
+    /// Each joint's position when it was last seen moving \[m or rad\].
+    anchor: Vec<Option<f64>>,
+    /// Time since a joint short of its target last moved \[s\].
     still: f64,
+}
+
+impl Running {
+    /// The goal entry of robot joint `j`, if the goal drives it.
+    fn entry(&self, j: usize) -> Option<&GoalJoint> {
+        (self.joints.iter().zip(&self.entries))
+            .find(|(jj, _)| **jj == j)
+            .map(|(_, &e)| &self.goal.joints[e])
+    }
 }
 
 /// The commands from outside for one robot.
@@ -152,18 +200,43 @@ impl JointCommands {
         Some(ControlEvent::GoalEnded(result))
     }
 
-    /// Checks the running goal: reached, stalled, or still going.
+    /// Checks the running goal: reached, stalled, or still going; sends its feedback.
     fn watch(&mut self, io: &ControlIo<'_>) -> Option<ControlEvent> {
         let r = self.running.as_mut()?;
         let mut reached = true;
         let mut moving = false;
-        for (&j, (_, target, _)) in r.joints.iter().zip(&r.goal.joints) {
+        let mut feedback = Vec::with_capacity(r.joints.len());
+        let model = &io.robots()[self.robot];
+        for (k, (&j, &e)) in r.joints.iter().zip(&r.entries).enumerate() {
             let s = io.joint(self.robot, j);
+            feedback.push((
+                model.joints()[j].name.clone(),
+                s.position,
+                s.velocity,
+                s.effort,
+            ));
+            let [lo, hi] = model.joints()[j].limits;
+            let target = r.goal.joints[e].position.clamp(lo, hi);
             if (s.position - target).abs() > GOAL_TOLERANCE {
                 reached = false;
-                moving |= s.velocity.abs() > STALL_SPEED;
+                // Still closing: its target has not reached the command (nor been frozen at
+                // the effort limit), or the joint itself moved.
+                let advancing = self.targets[j].map(|t| t.0) != self.applied[j];
+                let anchor = r.anchor[k].get_or_insert(s.position);
+                if advancing || (s.position - *anchor).abs() > STALL_SPEED * STALL_TIME {
+                    *anchor = s.position;
+                    moving = true;
+                }
             }
         }
+        let id = r.goal.id;
+        self.inbox
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .feedback = Some(GoalFeedback {
+            id,
+            joints: feedback,
+        });
         if reached {
             return self.end(io, true, false);
         }
@@ -172,6 +245,70 @@ impl JointCommands {
             return self.end(io, false, true);
         }
         None
+    }
+
+    /// Starts `goal`: each named joint's target is its position (ending a running goal as
+    /// neither reached nor stalled).
+    fn start(&mut self, io: &ControlIo<'_>, goal: GripperGoal) -> Option<ControlEvent> {
+        let event = if self.running.is_some() {
+            self.end(io, false, false)
+        } else {
+            None
+        };
+        let model = &io.robots()[self.robot];
+        let (mut joints, mut entries) = (Vec::new(), Vec::new());
+        for (e, g) in goal.joints.iter().enumerate() {
+            let Some(j) = model
+                .joint_index(&g.name)
+                .filter(|_| g.position.is_finite())
+            else {
+                continue;
+            };
+            let joint = &model.joints()[j];
+            if !joint.kind.moves() || joint.mimic.is_some() || joints.contains(&j) {
+                continue;
+            }
+            self.apply(
+                model,
+                &JointCommand {
+                    name: g.name.clone(),
+                    position: Some(g.position),
+                    velocity: None,
+                },
+            );
+            joints.push(j);
+            entries.push(e);
+        }
+        let empty = joints.is_empty();
+        self.running = Some(Running {
+            goal,
+            joints,
+            anchor: vec![None; entries.len()],
+            entries,
+            still: 0.0,
+        });
+        // A goal naming no joint it can move ends at once, neither reached nor stalled.
+        if empty {
+            return self.end(io, false, false).or(event);
+        }
+        event
+    }
+
+    /// A running goal's joint whose effort reached its largest effort stops: its target is
+    /// frozen where its motor's target is now.
+    fn hold_at_effort(&mut self, io: &ControlIo<'_>) {
+        let Some(r) = &self.running else {
+            return;
+        };
+        for &j in &r.joints {
+            let limit =
+                (r.entry(j).and_then(|g| g.max_effort)).filter(|e| e.is_finite() && *e > 0.0);
+            if let (Some(limit), Some(applied)) = (limit, self.applied[j])
+                && io.joint(self.robot, j).effort.abs() >= limit
+            {
+                self.targets[j] = Some((applied, 0.0));
+            }
+        }
     }
 }
 
@@ -210,33 +347,25 @@ impl Controller for JointCommands {
         for c in &commands {
             self.apply(model, c);
         }
-        let mut event = None;
+        // The running goal's check and feedback read the state after the last step, before
+        // this step's targets change the motors (a multibody joint's effort is its motor's).
+        let mut event = self.watch(io);
         for goal in goals {
-            if self.running.is_some() {
-                event = self.end(io, false, false);
-            }
-            let model = &io.robots()[self.robot];
-            let joints: Vec<usize> = (goal.joints.iter())
-                .filter_map(|(name, _, _)| model.joint_index(name))
-                .collect();
-            for (name, p, _) in &goal.joints {
-                self.apply(
-                    model,
-                    &JointCommand {
-                        name: name.clone(),
-                        position: Some(*p),
-                        velocity: None,
-                    },
-                );
-            }
-            self.running = Some(Running {
-                goal,
-                joints,
-                still: 0.0,
-            });
+            event = self.start(io, goal).or(event);
         }
-        let limits: Vec<Option<f64>> = (io.robots()[self.robot].joints().iter())
-            .map(|j| j.velocity)
+        self.hold_at_effort(io);
+        let limits: Vec<Option<f64>> = (io.robots()[self.robot].joints().iter().enumerate())
+            .map(|(j, joint)| {
+                let goal = (self.running.as_ref())
+                    .and_then(|r| r.entry(j))
+                    .and_then(|g| g.max_velocity)
+                    .filter(|v| v.is_finite() && *v > 0.0);
+                // A URDF `velocity` of 0 gives none.
+                match (joint.velocity.filter(|&v| v > 0.0), goal) {
+                    (Some(a), Some(b)) => Some(a.min(b)),
+                    (a, b) => a.or(b),
+                }
+            })
             .collect();
         for (j, limit) in limits.into_iter().enumerate() {
             let Some((p, v)) = self.targets[j] else {
@@ -247,7 +376,7 @@ impl Controller for JointCommands {
             self.applied[j] = Some(p);
             io.set_joint(self.robot, j, p, v);
         }
-        event.or_else(|| self.watch(io))
+        event
     }
 
     fn as_any_mut(&mut self) -> &mut dyn Any {

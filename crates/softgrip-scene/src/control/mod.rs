@@ -17,8 +17,8 @@ mod spec;
 
 pub use controller::{ControlEvent, Controller, GoalResult, GraspView, Phase};
 pub use external::{
-    CommandInbox, GOAL_TOLERANCE, GripperGoal, JointCommand, JointCommands, STALL_SPEED,
-    STALL_TIME, SharedInbox,
+    CommandInbox, GOAL_TOLERANCE, GoalFeedback, GoalJoint, GripperGoal, JointCommand,
+    JointCommands, STALL_SPEED, STALL_TIME, SharedInbox,
 };
 pub use grasp::{Grasp, GraspState};
 pub use io::{Carrier, ControlIo};

@@ -1,0 +1,196 @@
+//! `softgrip run --ros2` serves `control_msgs/action/ParallelGripperCommand`: an action client
+//! softgrip did not write (Eclipse Cyclone DDS, PyPI `cyclonedds`, its own IDL of the action's
+//! Kilted types: crates/softgrip-cli/tests/python/gripper_action.py) sends the shipped parallel
+//! gripper (its scene without the scripted grasp) a goal to close at 10 mm/s with at most 5 N.
+//! The fingers close on the 40 mm box until the joint's effort reaches 5 N and hold: the result
+//! is stalled, not reached, at the box (both pads pressing), with the effort at the limit; the
+//! result, every feedback, every `/joint_states` and every `/softgrip/contacts` the client
+//! received equal the run's own MCAP recording.
+//!
+//! Both participants run inside a private network namespace (`unshare -n`, then `ip link set lo
+//! up`), on ROS domain 33 set only through `ROS_DOMAIN_ID`.
+
+mod common;
+
+use std::collections::HashMap;
+use std::process::Command;
+
+use serde_json::Value;
+use softgrip_record::msgs::sensor_msgs::JointState;
+use softgrip_record::{Message, Recording, topics};
+
+fn floats(v: &Value) -> Vec<f64> {
+    (v.as_array().expect("array").iter())
+        .map(|x| x.as_f64().expect("number"))
+        .collect()
+}
+
+fn stamp(h: &Value) -> u64 {
+    h["stamp"]["sec"].as_u64().expect("sec") * 1_000_000_000
+        + h["stamp"]["nanosec"].as_u64().expect("nanosec")
+}
+
+/// The gripper scene without its grasp, with absolute paths, written to `dir`.
+fn scene(dir: &std::path::Path) -> std::path::PathBuf {
+    let root = common::root();
+    let text = std::fs::read_to_string(root.join("scenes/robots/parallel_gripper_box.toml"))
+        .expect("gripper scene");
+    let (head, _grasp) = text
+        .split_once("[[controller]]")
+        .expect("a controller section");
+    let urdf = root.join("robots/parallel_gripper/parallel_gripper.urdf");
+    let head = head.replace(
+        "\"../../robots/parallel_gripper/parallel_gripper.urdf\"",
+        &format!("{:?}", urdf.display().to_string()),
+    );
+    let path = dir.join("gripper.toml");
+    std::fs::write(&path, head).expect("write scene");
+    path
+}
+
+/// Runs the scene with `--ros2` and the client; its JSON and the recording.
+fn run(dir: &std::path::Path) -> (Value, Recording, String) {
+    let py = common::python();
+    let scene = scene(dir);
+    let mcap = dir.join("run.mcap");
+    let json = dir.join("received.json");
+    let script = common::root().join("crates/softgrip-cli/tests/python/gripper_action.py");
+    let bin = env!("CARGO_BIN_EXE_softgrip");
+    let shell = format!(
+        "set -e; ip link set lo up; \
+         '{py}' '{script}' --domain 33 --action /gripper/gripper_cmd --joint finger_joint \
+           --position 0.0 --velocity 0.01 --effort 5.0 --timeout 60 > '{json}' & sub=$!; \
+         ROS_DOMAIN_ID=33 '{bin}' run '{scene}' --ros2 --every 1 --out '{mcap}'; \
+         wait $sub",
+        script = script.display(),
+        json = json.display(),
+        mcap = mcap.display(),
+        scene = scene.display(),
+    );
+    let out = Command::new("unshare")
+        .args(["-n", "bash", "-c", &shell])
+        .output()
+        .expect("unshare runs (util-linux; root or user namespaces needed)");
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "stdout:\n{stdout}\nstderr:\n{stderr}");
+    let received: Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).expect("json")).expect("valid json");
+    (
+        received,
+        Recording::open(&mcap).expect("the run's recording"),
+        stdout,
+    )
+}
+
+#[test]
+fn a_gripper_goal_closes_the_hand_on_the_box_and_holds_at_its_effort() {
+    let dir = common::temp_dir("ros2-gripper-action");
+    let (received, recording, stdout) = run(&dir);
+    assert!(
+        stdout.contains("ros2: gripper actions /gripper/gripper_cmd: 1 goals accepted (0 reached, 1 stalled), 0 refused"),
+        "{stdout}"
+    );
+    assert_eq!(received["answer"]["accepted"].as_bool(), Some(true));
+
+    let recorded: HashMap<u64, JointState> = (recording.on_topic(topics::JOINT_STATES))
+        .filter_map(|m| match &m.message {
+            Message::JointState(j) => Some((m.log_time_ns, j.clone())),
+            _ => None,
+        })
+        .collect();
+    // A (position, effort) of finger_joint the recording holds at some step.
+    let in_recording =
+        |q: f64, e: f64| (recorded.values()).any(|j| j.position[0] == q && j.effort[0] == e);
+
+    // The result: stalled at the box with the effort at its limit: the target froze the step
+    // the effort reached 5 N (at most one step's increment over it: stiffness 2000 N/m x 10
+    // mm/s x 1/60 s = 0.33 N), then the finger settles a little further into the pad.
+    let result = &received["result"];
+    assert_eq!(result["status"].as_i64(), Some(6), "aborted: not reached");
+    let r = &result["result"];
+    assert_eq!(r["stalled"].as_bool(), Some(true));
+    assert_eq!(r["reached_goal"].as_bool(), Some(false));
+    assert_eq!(r["state"]["name"][0].as_str(), Some("finger_joint"));
+    let (q, e) = (
+        floats(&r["state"]["position"])[0],
+        floats(&r["state"]["effort"])[0],
+    );
+    assert!((4.5..5.4).contains(&e.abs()), "result effort {e} N");
+    // Closed from its start (28 mm) and stopped short of the goal (0) by the box. Where exactly
+    // (the pads' squeeze at 5 N) is crates/softgrip-scene/tests/gripper_goal.rs's to check.
+    assert!(q > 0.005 && q < 0.0275, "result position {q} m");
+    assert!(
+        in_recording(q, e),
+        "the result ({q}, {e}) is no recorded state"
+    );
+
+    // Feedback: the joint's state after each step while the goal ran, as recorded.
+    let feedback = received["feedback"].as_array().expect("feedback");
+    assert!(feedback.len() >= 10, "{} feedback messages", feedback.len());
+    for f in feedback {
+        let s = &f["feedback"]["state"];
+        let (q, e) = (floats(&s["position"])[0], floats(&s["effort"])[0]);
+        assert!(
+            in_recording(q, e),
+            "feedback ({q}, {e}) is no recorded state"
+        );
+    }
+
+    // Every /joint_states received equals the recording's at its stamp.
+    let states = received["states"].as_array().expect("states");
+    assert!(states.len() >= 60, "{} joint states", states.len());
+    for s in states {
+        let t = stamp(&s["header"]);
+        let want = recorded
+            .get(&t)
+            .unwrap_or_else(|| panic!("no state at {t} ns"));
+        assert_eq!(floats(&s["position"]), want.position, "at {t} ns");
+        assert_eq!(floats(&s["velocity"]), want.velocity, "at {t} ns");
+        assert_eq!(floats(&s["effort"]), want.effort, "at {t} ns");
+    }
+
+    // Every /softgrip/contacts received equals the recording's; the last ones have both pads
+    // pressing the box.
+    let contacts: HashMap<u64, _> = (recording.messages.iter())
+        .filter_map(|m| match &m.message {
+            Message::Contacts(a) => Some((m.log_time_ns, a.clone())),
+            _ => None,
+        })
+        .collect();
+    let arrays = received["contacts"].as_array().expect("contacts");
+    let mut compared = 0;
+    for a in arrays {
+        let t = stamp(&a["header"]);
+        let want = contacts
+            .get(&t)
+            .unwrap_or_else(|| panic!("no contacts at {t} ns"));
+        let got = a["contacts"].as_array().expect("contacts");
+        assert_eq!(got.len(), want.contacts.len(), "at {t} ns");
+        for (g, w) in got.iter().zip(&want.contacts) {
+            assert_eq!(g["fingertip"].as_str(), Some(w.fingertip.as_str()));
+            assert_eq!(g["other"].as_str(), Some(w.other.as_str()));
+            for (key, value) in [
+                ("compression", w.compression),
+                ("normal_force", w.normal_force),
+                ("contact_radius", w.contact_radius),
+                ("peak_pressure", w.peak_pressure),
+            ] {
+                assert_eq!(g[key].as_f64(), Some(value), "{key} at {t} ns");
+            }
+            compared += 1;
+        }
+    }
+    assert!(compared >= 20, "compared {compared} contacts");
+    let last = arrays.last().expect("a contact array")["contacts"]
+        .as_array()
+        .expect("contacts");
+    let pressing: Vec<&str> = (last.iter())
+        .filter(|c| c["other"].as_str() == Some("box") && c["normal_force"].as_f64() > Some(0.0))
+        .map(|c| c["fingertip"].as_str().expect("name"))
+        .collect();
+    assert!(
+        pressing.contains(&"left_pad") && pressing.contains(&"right_pad"),
+        "{pressing:?}"
+    );
+}
