@@ -204,6 +204,7 @@ impl Step<'_> {
                 }
             }
             let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
+            multibody::carry_kinematic_roots(self.physics, kinematic, s as f32);
             self.substep_contacts(h, &kin_vel, fresh, scratch);
             self.pipeline_step(h);
             if !scratch.link_forces.is_empty() {
