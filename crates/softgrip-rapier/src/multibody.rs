@@ -36,8 +36,8 @@ use std::collections::HashMap;
 
 use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
 use rapier3d::prelude::{
-    AngVector, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet, PhysicsWorld,
-    RigidBodyHandle, RigidBodySet, Vector,
+    AngVector, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet, PhysicsWorld, Pose,
+    RigidBodyHandle, RigidBodySet, RigidBodyType, Vector,
 };
 
 use crate::bodies::{KinematicPath, interpolate};
@@ -205,6 +205,33 @@ pub(crate) fn carry_kinematic_roots(world: &mut PhysicsWorld, kinematic: &[Kinem
         }
         if let Some(rb) = world.bodies.get_mut(*handle) {
             rb.set_position(pose, true);
+        }
+    }
+}
+
+/// The kinematic target (`next_position`) of every position-based kinematic body that is the
+/// root of a multibody, for [`restore_root_targets`] after a pipeline step of rapier's that
+/// overwrites them (the plugin's first, zero-length one).
+pub(crate) fn kinematic_root_targets(world: &PhysicsWorld) -> Vec<(RigidBodyHandle, Pose)> {
+    world
+        .bodies
+        .iter()
+        .filter(|(h, rb)| {
+            rb.body_type() == RigidBodyType::KinematicPositionBased
+                && world
+                    .multibody_joints
+                    .rigid_body_link(*h)
+                    .is_some_and(|l| l.id == 0)
+        })
+        .map(|(h, rb)| (h, *rb.next_position()))
+        .collect()
+}
+
+/// Sets back the targets saved by [`kinematic_root_targets`].
+pub(crate) fn restore_root_targets(world: &mut PhysicsWorld, targets: &[(RigidBodyHandle, Pose)]) {
+    for (handle, pose) in targets {
+        if let Some(rb) = world.bodies.get_mut(*handle) {
+            rb.set_next_kinematic_position(*pose);
         }
     }
 }

@@ -724,3 +724,75 @@ impl MapLinks for Vec<RigidBodyHandle> {
             .collect()
     }
 }
+
+/// A multibody's kinematic root moved with `set_next_kinematic_translation` (a robot's base
+/// lifted) carries its links: rapier 0.36.1 alone overwrites the target at the start of its
+/// step and the base stays put; through the plugin the base ends each step at its target and
+/// its motored prismatic link rides along at its joint position (a fingertip on the link,
+/// in the air). Then rotated with `set_next_kinematic_position`: the link turns with it.
+#[test]
+fn kinematic_multibody_root_moves_to_its_target() {
+    let mut world = SoftWorld::new();
+    let base = world.physics.bodies.insert(
+        RigidBodyBuilder::kinematic_position_based().translation(Vector::new(0.0, 0.1, 0.0)),
+    );
+    let link = world.physics.bodies.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.03, 0.1, 0.0))
+            .gravity_scale(0.0),
+    );
+    world.physics.colliders.insert_with_parent(
+        ColliderBuilder::cuboid(0.003, 0.02, 0.004).density(1000.0),
+        link,
+        &mut world.physics.bodies,
+    );
+    let joint = PrismaticJointBuilder::new(Vector::X)
+        .local_anchor1(Vector::new(0.03, 0.0, 0.0))
+        .motor_position(0.0, K_PRI, C_PRI)
+        .motor_model(MotorModel::ForceBased);
+    let data: GenericJoint = joint.build().into();
+    world
+        .physics
+        .multibody_joints
+        .insert(base, link, data, true)
+        .unwrap();
+    let tip = world.physics.colliders.insert_with_parent(
+        ColliderBuilder::ball(R as f32),
+        link,
+        &mut world.physics.bodies,
+    );
+    world
+        .register(tip, fingertip(Level::Calibrated, 0.5).build().unwrap())
+        .unwrap();
+    let dt = world.physics.integration_parameters.dt;
+    let mut worst = 0.0f32;
+    for k in 1..=30 {
+        let y = 0.1 + 0.1 * dt * k as f32;
+        world.physics.bodies[base].set_next_kinematic_translation(Vector::new(0.0, y, 0.0));
+        world.step();
+        let (b, l) = (
+            world.physics.bodies[base].translation(),
+            world.physics.bodies[link].translation(),
+        );
+        worst = worst
+            .max((b.y - y).abs())
+            .max((l.y - y).abs())
+            .max((l.x - 0.03).abs());
+    }
+    println!("kinematic root lifted 5 cm: base and link off their targets by at most {worst:e} m");
+    assert!(worst < 1e-6, "{worst}");
+    // A quarter turn about y over 30 steps: the link (3 cm along x) ends at -z.
+    let top = *world.physics.bodies[base].position();
+    for k in 1..=30 {
+        let angle = std::f32::consts::FRAC_PI_2 * k as f32 / 30.0;
+        let pose = Pose::from_parts(top.translation, Rotation::from_rotation_y(angle));
+        world.physics.bodies[base].set_next_kinematic_position(pose);
+        world.step();
+    }
+    let l = world.physics.bodies[link].translation();
+    println!("after a quarter turn the link is at {l:?}");
+    assert!(
+        (l.x).abs() < 1e-5 && (l.z + 0.03).abs() < 1e-5 && (l.y - top.translation.y).abs() < 1e-6,
+        "{l:?}"
+    );
+}
