@@ -36,10 +36,11 @@ use std::collections::HashMap;
 
 use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
 use rapier3d::prelude::{
-    AngVector, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet, RigidBodyHandle,
-    RigidBodySet, Vector,
+    AngVector, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet, PhysicsWorld, Pose,
+    RigidBodyHandle, RigidBodySet, RigidBodyType, Vector,
 };
 
+use crate::bodies::{KinematicPath, interpolate};
 use crate::detect::{to_f32, to_f64};
 use crate::solve::BodyState;
 
@@ -176,6 +177,65 @@ pub(crate) fn same_multibody(bodies: &[BodyState], x: usize, y: usize) -> bool {
     }
 }
 
+/// Moves every position-based kinematic body of `kinematic` that is the root of a multibody
+/// to fraction `s` of its path now (a teleport; `set_position`).
+///
+/// rapier 0.36.1 starts its step by putting each multibody's root joint at its root body's
+/// *current* pose and writing every link's `next_position` from the multibody
+/// (`Multibody::forward_kinematics(bodies, true)` then `update_rigid_bodies_internal`), so a
+/// `set_next_kinematic_*` target on a multibody's root is overwritten and the robot's base
+/// never moves. Setting the root body's pose is the way rapier takes: the links follow at the
+/// start of the pipeline step, without a velocity of their own, and [`link_state`] gives the
+/// soft rows that displacement over the (sub)step. A rotation that does not change along the
+/// path is kept bit for bit (a slerp between equal rotations is off by an ulp, which reads as
+/// a spin of ~1e-3 rad over a 0.2 ms substep). Bodies that are not a multibody's root
+/// (impulse-jointed bases, free kinematic jaws) keep rapier's kinematic path.
+pub(crate) fn carry_kinematic_roots(world: &mut PhysicsWorld, kinematic: &[KinematicPath], s: f32) {
+    for (handle, start, target) in kinematic {
+        let is_root = world
+            .multibody_joints
+            .rigid_body_link(*handle)
+            .is_some_and(|l| l.id == 0);
+        if !is_root || start == target {
+            continue;
+        }
+        let mut pose = interpolate(start, target, s);
+        if start.rotation == target.rotation {
+            pose.rotation = target.rotation;
+        }
+        if let Some(rb) = world.bodies.get_mut(*handle) {
+            rb.set_position(pose, true);
+        }
+    }
+}
+
+/// The kinematic target (`next_position`) of every position-based kinematic body that is the
+/// root of a multibody, for [`restore_root_targets`] after a pipeline step of rapier's that
+/// overwrites them (the plugin's first, zero-length one).
+pub(crate) fn kinematic_root_targets(world: &PhysicsWorld) -> Vec<(RigidBodyHandle, Pose)> {
+    world
+        .bodies
+        .iter()
+        .filter(|(h, rb)| {
+            rb.body_type() == RigidBodyType::KinematicPositionBased
+                && world
+                    .multibody_joints
+                    .rigid_body_link(*h)
+                    .is_some_and(|l| l.id == 0)
+        })
+        .map(|(h, rb)| (h, *rb.next_position()))
+        .collect()
+}
+
+/// Sets back the targets saved by [`kinematic_root_targets`].
+pub(crate) fn restore_root_targets(world: &mut PhysicsWorld, targets: &[(RigidBodyHandle, Pose)]) {
+    for (handle, pose) in targets {
+        if let Some(rb) = world.bodies.get_mut(*handle) {
+            rb.set_next_kinematic_position(*pose);
+        }
+    }
+}
+
 /// The table entry of `handle` if it is an awake dynamic link of a multibody whose mobility
 /// rapier has computed (during its last step): its velocity from the multibody's free
 /// generalised velocity, its external acceleration, and its link record. `hosts` maps the
@@ -213,16 +273,17 @@ pub(crate) fn link_state(
     };
     let com = to_f64(rb.mass_properties().world_com);
     let (mut v, mut w) = link_velocity(&jac, &qdot);
-    // A kinematic root (a lifted hand) carries its links along, one pipeline step late: rapier
-    // moves a multibody's links to its root body's pose at the start of its step
-    // (`forward_kinematics`), with no velocity. Over the coming step the links move by the
-    // root's pose minus where the multibody has it now.
+    // A kinematic root (a lifted hand) carries its links along: rapier moves a multibody's
+    // links to its root body's pose at the start of its step (`forward_kinematics`), with no
+    // velocity, and the plugin moves the root there before each pipeline step
+    // ([`carry_kinematic_roots`]). Over the coming (sub)step the links move by the root's
+    // target pose minus where the multibody has it now.
     let root = mb.root();
     if let Some(rr) = bodies
         .get(root.rigid_body_handle())
         .filter(|r| r.is_kinematic())
     {
-        let (now, frame) = (rr.position(), root.local_to_world());
+        let (now, frame) = (rr.next_position(), root.local_to_world());
         let (axis, mut angle) = (now.rotation * frame.rotation.inverse()).to_axis_angle();
         if angle > std::f32::consts::PI {
             angle -= 2.0 * std::f32::consts::PI;

@@ -139,8 +139,11 @@ impl Step<'_> {
             return;
         }
         if !self.soft.started {
-            // Fill the broad phase and narrow phase before the first soft detection.
+            // Fill the broad phase and narrow phase before the first soft detection (a
+            // multibody root's kinematic target survives it: rapier's step overwrites it).
+            let targets = multibody::kinematic_root_targets(self.physics);
             self.pipeline_step(0.0);
+            multibody::restore_root_targets(self.physics, &targets);
             self.soft.started = true;
         }
         self.soft.counters.steps += 1;
@@ -204,6 +207,7 @@ impl Step<'_> {
                 }
             }
             let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
+            multibody::carry_kinematic_roots(self.physics, kinematic, s as f32);
             self.substep_contacts(h, &kin_vel, fresh, scratch);
             self.pipeline_step(h);
             if !scratch.link_forces.is_empty() {

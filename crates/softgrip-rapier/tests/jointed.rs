@@ -496,22 +496,74 @@ fn multibody_finger_squeeze_follows_the_law() {
 /// At rest each pad reads the law at its geometric compression, both the same force, and the
 /// left motor holds `J^T F` of both pads through the coupling (`2 F`).
 ///
-/// Not right yet (session 10): the jaws do not settle. Every step is split (~460 substeps:
-/// the contacts read as dynamic), the pads read 2.1 and 2.4 N at about 0.42 mm (the law at
-/// the geometry is not met), the box creeps along z at ~0.25 mm/s and the motor's state says
-/// 11.6 N against `J^T F` = 4.5 N; at 8 PGS iterations the pads agree (5.48 N, 1e-5) but the
-/// steps stay split and the motor's state reads 19.4 N against 11.0 N. The shipped URDF gripper
-/// (`scenes/robots/parallel_gripper_box.toml`, a mimic finger, 2000 N/m) reaches 5.07 / 5.09 N
-/// against its 5 N. To investigate: the split-step path with a link's force per substep, the
-/// coupling fold (`multibody::couple`) against rapier's coupling row.
+/// Not right yet at the suite's 2 PGS iterations: the jaws do not settle. Why (session 10):
+/// rapier solves the motor (a compliant row on the left dof) and the coupling (a hard row)
+/// by Gauss-Seidel in `num_internal_pgs_iterations` sweeps, while the plugin's mobility folds
+/// both in exactly (`multibody::couple`, a Schur complement: the converged answer). The
+/// right pad's force reaches the left motor only partly within 2 sweeps, so an unsplit step
+/// with 5.6 N on the pads throws both fingers 36 mm open where the plugin predicts 0.3 mm;
+/// the motor brings them back, the next contact is split (~460 substeps, 2.1 / 2.4 N), and
+/// the cycle repeats every 4 steps; the box creeps along z. At 8 sweeps the cycle is 2 steps
+/// (5.48 N unsplit, 3.8 N split, motor 19.4 N against `J^T F` 11.0 N); at 64 sweeps every
+/// step is unsplit and settled ([`multibody_mimic_jaws_settle_with_converged_pgs`]). The fix
+/// is a mobility that is rapier's PGS after its sweeps (or rapier's coupling carried as an
+/// exact elimination), not done. The shipped URDF gripper (a mimic finger at 2000 N/m)
+/// reaches 5.07 / 5.09 N against its 5 N, lifts and holds (softgrip-scene `robots`).
 #[test]
-#[ignore = "the mimic-coupled jaws do not settle yet (see the doc comment; crate README, Limits)"]
+#[ignore = "the mimic-coupled jaws do not settle at 2 PGS iterations (see the doc comment; crate README, Limits)"]
 fn multibody_mimic_jaws_squeeze_a_box() {
+    let m = mimic_jaws(PGS);
+    assert!(m.forces[0] > 1.0, "{:?}", m.forces);
+    assert!(m.worst < 5e-3, "{}", m.worst);
+    assert!(m.balance < 1e-3, "{}", m.balance);
+    assert!(m.effort_error < 1e-2, "{}", m.effort_error);
+}
+
+/// The mimic-coupled jaws of [`multibody_mimic_jaws_squeeze_a_box`] with rapier's PGS run to
+/// convergence (64 sweeps), where the plugin's exact fold of the motor and the coupling is
+/// what rapier does: every step of the hold unsplit, the two pads equal (3.1e-5), the motor's
+/// effort `J^T F` of both pads through the coupling (2.1e-5), both fingers where the coupling
+/// puts them (8e-10 m).
+#[test]
+fn multibody_mimic_jaws_settle_with_converged_pgs() {
+    let m = mimic_jaws(64);
+    assert!(m.forces[0] > 5.0 && m.forces[0] < 6.0, "{:?}", m.forces);
+    assert_eq!(m.max_substeps_hold, 1, "the hold's steps are split");
+    assert!(m.balance < 1e-4, "pads differ {}", m.balance);
+    assert!(m.effort_error < 1e-4, "motor vs J^T F {}", m.effort_error);
+    assert!(
+        m.mimic_error < 1e-8,
+        "the coupling is {} m off",
+        m.mimic_error
+    );
+    // Bounded at what it does: 2.96e-2 off the law at the geometry's compression, not yet
+    // understood (the single prismatic jaw is 1.5e-5 off; the contact's own compression is
+    // the law's, the box's pose against the pads' centres is not).
+    assert!(m.worst < 0.04, "{}", m.worst);
+}
+
+/// What [`mimic_jaws`] measured after its 240 steps.
+struct Mimic {
+    forces: Vec<f64>,
+    /// The worst `|F / F_law(delta_geometry) - 1|` of the two pads.
+    worst: f64,
+    /// `|F_left / F_right - 1|`.
+    balance: f64,
+    /// The left motor's effort against `J^T F` of both pads.
+    effort_error: f64,
+    /// The largest substep count over the last 60 steps.
+    max_substeps_hold: u32,
+    /// `|q_right + q_left|` \[m\].
+    mimic_error: f64,
+}
+
+/// The mimic-coupled jaws squeezing the box for 240 steps at `pgs` PGS iterations.
+fn mimic_jaws(pgs: usize) -> Mimic {
     let mut world = SoftWorld::new();
     world
         .physics
         .integration_parameters
-        .num_internal_pgs_iterations = PGS;
+        .num_internal_pgs_iterations = pgs;
     world
         .physics
         .colliders
@@ -597,8 +649,12 @@ fn multibody_mimic_jaws_squeeze_a_box() {
         .unwrap()
         .law()
         .clone();
-    for _ in 0..240 {
+    let mut max_substeps_hold = 0;
+    for i in 0..240 {
         world.step();
+        if i >= 180 {
+            max_substeps_hold = max_substeps_hold.max(world.soft.counters().substeps_last);
+        }
     }
     let p = &world.physics;
     let rb = &p.bodies[box_body];
@@ -637,15 +693,23 @@ fn multibody_mimic_jaws_squeeze_a_box() {
     let effort = K_PRI as f64 * (0.0015 - q) - C_PRI as f64 * v;
     let effort_error = (effort / -generalised - 1.0).abs();
     let balance = (forces[0] / forces[1] - 1.0).abs();
+    let right = mb.link(links[1].id).unwrap();
+    let mimic_error = (right.joint().coords()[0] as f64 + q).abs();
     println!(
-        "mimic jaws: forces {forces:?} N, worst |F/F_law - 1| {worst:.2e}, pads differ \
-         {balance:.2e}, motor {effort:.4} N vs J^T F {:.4} N ({effort_error:.2e})",
+        "mimic jaws at {pgs} PGS iterations: forces {forces:?} N, worst |F/F_law - 1| \
+         {worst:.2e}, pads differ {balance:.2e}, motor {effort:.4} N vs J^T F {:.4} N \
+         ({effort_error:.2e}), substeps in the hold <= {max_substeps_hold}, coupling off by \
+         {mimic_error:.2e} m",
         -generalised
     );
-    assert!(forces[0] > 1.0, "{forces:?}");
-    assert!(worst < 5e-3, "{worst}");
-    assert!(balance < 1e-3, "{balance}");
-    assert!(effort_error < 1e-2, "{effort_error}");
+    Mimic {
+        forces,
+        worst,
+        balance,
+        effort_error,
+        max_substeps_hold,
+        mimic_error,
+    }
 }
 
 /// The multibody link ids of bodies.
@@ -659,4 +723,76 @@ impl MapLinks for Vec<RigidBodyHandle> {
             .map(|b| *world.physics.multibody_joints.rigid_body_link(*b).unwrap())
             .collect()
     }
+}
+
+/// A multibody's kinematic root moved with `set_next_kinematic_translation` (a robot's base
+/// lifted) carries its links: rapier 0.36.1 alone overwrites the target at the start of its
+/// step and the base stays put; through the plugin the base ends each step at its target and
+/// its motored prismatic link rides along at its joint position (a fingertip on the link,
+/// in the air). Then rotated with `set_next_kinematic_position`: the link turns with it.
+#[test]
+fn kinematic_multibody_root_moves_to_its_target() {
+    let mut world = SoftWorld::new();
+    let base = world.physics.bodies.insert(
+        RigidBodyBuilder::kinematic_position_based().translation(Vector::new(0.0, 0.1, 0.0)),
+    );
+    let link = world.physics.bodies.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.03, 0.1, 0.0))
+            .gravity_scale(0.0),
+    );
+    world.physics.colliders.insert_with_parent(
+        ColliderBuilder::cuboid(0.003, 0.02, 0.004).density(1000.0),
+        link,
+        &mut world.physics.bodies,
+    );
+    let joint = PrismaticJointBuilder::new(Vector::X)
+        .local_anchor1(Vector::new(0.03, 0.0, 0.0))
+        .motor_position(0.0, K_PRI, C_PRI)
+        .motor_model(MotorModel::ForceBased);
+    let data: GenericJoint = joint.build().into();
+    world
+        .physics
+        .multibody_joints
+        .insert(base, link, data, true)
+        .unwrap();
+    let tip = world.physics.colliders.insert_with_parent(
+        ColliderBuilder::ball(R as f32),
+        link,
+        &mut world.physics.bodies,
+    );
+    world
+        .register(tip, fingertip(Level::Calibrated, 0.5).build().unwrap())
+        .unwrap();
+    let dt = world.physics.integration_parameters.dt;
+    let mut worst = 0.0f32;
+    for k in 1..=30 {
+        let y = 0.1 + 0.1 * dt * k as f32;
+        world.physics.bodies[base].set_next_kinematic_translation(Vector::new(0.0, y, 0.0));
+        world.step();
+        let (b, l) = (
+            world.physics.bodies[base].translation(),
+            world.physics.bodies[link].translation(),
+        );
+        worst = worst
+            .max((b.y - y).abs())
+            .max((l.y - y).abs())
+            .max((l.x - 0.03).abs());
+    }
+    println!("kinematic root lifted 5 cm: base and link off their targets by at most {worst:e} m");
+    assert!(worst < 1e-6, "{worst}");
+    // A quarter turn about y over 30 steps: the link (3 cm along x) ends at -z.
+    let top = *world.physics.bodies[base].position();
+    for k in 1..=30 {
+        let angle = std::f32::consts::FRAC_PI_2 * k as f32 / 30.0;
+        let pose = Pose::from_parts(top.translation, Rotation::from_rotation_y(angle));
+        world.physics.bodies[base].set_next_kinematic_position(pose);
+        world.step();
+    }
+    let l = world.physics.bodies[link].translation();
+    println!("after a quarter turn the link is at {l:?}");
+    assert!(
+        (l.x).abs() < 1e-5 && (l.z + 0.03).abs() < 1e-5 && (l.y - top.translation.y).abs() < 1e-6,
+        "{l:?}"
+    );
 }
