@@ -173,12 +173,12 @@ fn panda_loads_with_its_meshes_joints_limits_and_mimic() {
 
 /// The grasp closes the fingers at 10 mm/s until each pad presses 5 N, lifts the arm's base 5 cm
 /// and holds: the box rises with it, each pad holding about 5 N (the hold does not close
-/// further), the weight (1.96 N) carried by friction. The pads reach and hold their force since
-/// the solve sees multibody links (issue 23); the lift does not move the box yet: rapier 0.36
-/// overwrites a kinematic multibody root's pose from the multibody each step, so the base's
-/// scripted lift is lost (issue 25).
+/// further), the weight (1.96 N) carried by friction. Not right yet (issue 25): since the solve
+/// sees multibody links the pads reach 5 N, and since the plugin carries a kinematic multibody
+/// root the base lifts, but a pad reads 0 N in the hold (the box leaves a finger during the
+/// lift; not yet understood: the shipped gripper and hand hold theirs, `tests/robots.rs`).
 #[test]
-#[ignore = "the base's lift is lost: rapier overwrites a kinematic multibody root (issue 25)"]
+#[ignore = "a Panda pad loses the box in the lift (0 N in the hold): not yet understood (issue 25)"]
 fn panda_grasps_lifts_and_holds_the_box_with_soft_pads() {
     let scene = scene(true);
     let mut run = PlainRun::new(&scene);

@@ -398,13 +398,21 @@ fn three_finger_hand_closes_on_the_ball_symmetrically() {
                 .sum()
         };
         let f: Vec<f64> = pads.iter().map(|&h| force(h)).collect();
+        let k: f64 = (pads.iter())
+            .flat_map(|&h| run.world.soft.contacts_of(h).map(|c| c.stiffness))
+            .fold(0.0, f64::max);
         let touching = f.iter().filter(|&&x| x > 0.0).count();
         assert!(touching == 0 || touching == 3, "pads touching alone: {f:?}");
         if touching == 3 {
             touched += 1;
             let mean = f.iter().sum::<f64>() / 3.0;
             for x in &f {
-                assert!((x - mean).abs() <= 1e-3 * mean, "pad forces {f:?}");
+                // The fingers are rotated copies in f32: a pad's pole is placed to a few 1e-8 m
+                // (f32 steps at 0.1 m), worth K x 3e-8 of force at first touch (0.0039 N per
+                // pad, 2.6e-5 N apart). In the hold the pads stay within 0.15 % of their mean
+                // (1.3 N; the solve's friction sweeps visit them in order); 0.3 % bounds it.
+                let tol = 3e-3 * mean + k * 3e-8;
+                assert!((x - mean).abs() <= tol, "pad forces {f:?}");
             }
         }
         let p = run.world.physics.bodies[ball].translation();
