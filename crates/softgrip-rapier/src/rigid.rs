@@ -550,11 +550,6 @@ fn lu_pass(
     }
     let v0: Vec<f64> = lu.iter().map(|&i| rows[i].velocity(bodies)).collect();
     let w = DMatrix::from_fn(n, n, |r, c| cache.mob[(lu[r], lu[c])]);
-    // Position in `lu` of each row's normal (usize::MAX: not in it).
-    let mut pos = vec![usize::MAX; rows.len()];
-    for (r, &i) in lu.iter().enumerate() {
-        pos[i] = r;
-    }
     let (mut a, mut b) = (DMatrix::<f64>::zeros(n, n), DVector::<f64>::zeros(n));
     for (r, &i) in lu.iter().enumerate() {
         match rows[i].kind {
