@@ -39,7 +39,7 @@
 //! F / m` (6 m/s for a 16 g box under 6 N at 60 Hz) is only partly cancelled per solver pass by
 //! rapier's soft contact constraint, and the box sank into the table and was thrown out.
 
-use nalgebra::{DMatrix, DVector, Matrix2, Vector2, Vector3};
+use nalgebra::{DMatrix, DVector, Dyn, LU, Matrix2, Vector2, Vector3};
 
 use crate::multibody;
 use crate::solve::{BodyState, Row};
@@ -142,6 +142,10 @@ struct Scalar {
     target: f64,
     /// Diagonal compliance relative to the row's own mobility.
     compliance: f64,
+    /// The velocity change of body a (linear, angular) per unit impulse, and of body b per
+    /// unit impulse on it (`-1` times the row's), set by `build` (`set_response`): the
+    /// sweeps apply each row hundreds of times per solve.
+    response: [(Vector3<f64>, Vector3<f64>); 2],
 }
 
 impl Scalar {
@@ -163,6 +167,22 @@ impl Scalar {
             kind,
             target: 0.0,
             compliance: RIGID_COMPLIANCE,
+            response: Default::default(),
+        }
+    }
+
+    /// Sets `response` from the bodies' inverse mass and inertia (fixed over a solve).
+    fn set_response(&mut self, bodies: &[BodyState]) {
+        for (k, (i, ang)) in [(self.a, self.ang_a), (self.b, self.ang_b)]
+            .into_iter()
+            .enumerate()
+        {
+            self.response[k] = i
+                .map(|i| {
+                    let b = &bodies[i];
+                    (b.inv_m.component_mul(&self.lin), b.inv_i * ang)
+                })
+                .unwrap_or_default();
         }
     }
 
@@ -193,15 +213,18 @@ impl Scalar {
     }
 
     fn apply(&self, bodies: &mut [BodyState], j: f64) {
-        for (i, s, ang) in [(self.a, 1.0, self.ang_a), (self.b, -1.0, self.ang_b)] {
+        for (i, s, ang, (dv, dw)) in [
+            (self.a, 1.0, self.ang_a, self.response[0]),
+            (self.b, -1.0, self.ang_b, self.response[1]),
+        ] {
             if let Some(i) = i {
                 if bodies[i].link.is_some() {
                     multibody::apply(bodies, i, &(self.lin * (s * j)), &(ang * (s * j)));
                     continue;
                 }
                 let b = &mut bodies[i];
-                b.v += b.inv_m.component_mul(&self.lin) * (s * j);
-                b.w += b.inv_i * ang * (s * j);
+                b.v += dv * (s * j);
+                b.w += dw * (s * j);
             }
         }
     }
@@ -295,6 +318,7 @@ fn build(
                     },
                     target: 0.0,
                     compliance: SOFT_FRICTION_COMPLIANCE,
+                    response: Default::default(),
                 });
             }
         }
@@ -321,6 +345,9 @@ fn build(
                 base,
             ));
         }
+    }
+    for s in out.iter_mut() {
+        s.set_response(bodies);
     }
 }
 
@@ -367,16 +394,19 @@ fn solve_scalars(
     state: &mut Vec<State>,
 ) -> Option<Vec<f64>> {
     let m = rows.len();
+    // The rows' mutual mobility: the impulses change the bodies' velocities, never their mass,
+    // inertia or centre, so it is computed once per solve (was: once per LU pass).
+    let mob = DMatrix::from_fn(m, m, |r, c| mobility(bodies, &rows[r], &rows[c]));
     // The friction pairs' inverse 2 x 2 mobility.
     let pair_inv: Vec<Option<Matrix2<f64>>> = (0..m)
         .map(|i| match rows[i].kind {
             Kind::Tangent { other, .. } if other > i => {
                 let (x, y) = (&rows[i], &rows[other]);
                 let k = Matrix2::new(
-                    mobility(bodies, x, x) * (1.0 + x.compliance),
-                    mobility(bodies, x, y),
-                    mobility(bodies, y, x),
-                    mobility(bodies, y, y) * (1.0 + y.compliance),
+                    mob[(i, i)] * (1.0 + x.compliance),
+                    mob[(i, other)],
+                    mob[(other, i)],
+                    mob[(other, other)] * (1.0 + y.compliance),
                 );
                 k.try_inverse().filter(|_| k.trace() > 0.0)
             }
@@ -403,10 +433,15 @@ fn solve_scalars(
     state.resize(m, State::Active);
     let mut previous = j.clone();
     let mut previous_lu = Vec::with_capacity(m);
+    let mut cache = LuCache {
+        mob,
+        rows: Vec::new(),
+        lu: None,
+    };
     for _ in 0..OUTER {
-        lu_pass(bodies, rows, &mut j, &lu, h, state)?;
+        lu_pass(bodies, rows, &mut j, &lu, h, state, &mut cache)?;
         for _ in 0..SWEEPS {
-            sweep(bodies, rows, &pair_inv, &mut j)?;
+            sweep(bodies, rows, &cache.mob, &pair_inv, &mut j)?;
         }
         for &i in &lu {
             if let Kind::Tangent {
@@ -445,6 +480,7 @@ fn solve_scalars(
 fn sweep(
     bodies: &mut [BodyState],
     rows: &[Scalar],
+    mob: &DMatrix<f64>,
     pair_inv: &[Option<Matrix2<f64>>],
     j: &mut [f64],
 ) -> Option<()> {
@@ -463,8 +499,9 @@ fn sweep(
                 let old = Vector2::new(j[i], j[other]);
                 let mut new = old - k_inv * err;
                 let limit = mu * (j[normal] - base).max(0.0);
-                if new.norm() > limit {
-                    new *= limit / new.norm();
+                let norm = new.norm();
+                if norm > limit {
+                    new *= limit / norm;
                 }
                 if !(new.x.is_finite() && new.y.is_finite()) {
                     return None;
@@ -476,7 +513,7 @@ fn sweep(
             }
             Kind::Torsion { normal, arm } => {
                 let r = &rows[i];
-                let kt = mobility(bodies, r, r) * (1.0 + r.compliance);
+                let kt = mob[(i, i)] * (1.0 + r.compliance);
                 if !(kt > 0.0) {
                     continue;
                 }
@@ -492,6 +529,14 @@ fn sweep(
         }
     }
     Some(())
+}
+
+/// What the LU passes of one solve share: the rows' mutual mobility, and the last
+/// factorisation with the scalar rows it is of.
+struct LuCache {
+    mob: DMatrix<f64>,
+    rows: Vec<usize>,
+    lu: Option<LU<f64, Dyn, Dyn>>,
 }
 
 /// The normal row a row's friction belongs to (itself for a normal).
@@ -514,18 +559,14 @@ fn lu_pass(
     lu: &[usize],
     h: f64,
     state: &mut [State],
+    cache: &mut LuCache,
 ) -> Option<()> {
     let n = lu.len();
     for &i in lu {
         rows[i].apply(bodies, -j[i]);
     }
     let v0: Vec<f64> = lu.iter().map(|&i| rows[i].velocity(bodies)).collect();
-    let w = DMatrix::from_fn(n, n, |r, c| mobility(bodies, &rows[lu[r]], &rows[lu[c]]));
-    // Position in `lu` of each row's normal (usize::MAX: not in it).
-    let mut pos = vec![usize::MAX; rows.len()];
-    for (r, &i) in lu.iter().enumerate() {
-        pos[i] = r;
-    }
+    let w = DMatrix::from_fn(n, n, |r, c| cache.mob[(lu[r], lu[c])]);
     let (mut a, mut b) = (DMatrix::<f64>::zeros(n, n), DVector::<f64>::zeros(n));
     for (r, &i) in lu.iter().enumerate() {
         match rows[i].kind {
@@ -558,9 +599,18 @@ fn lu_pass(
         let idx: Vec<usize> = (0..n).filter(|&r| acts(r)).collect();
         x.iter_mut().for_each(|v| *v = 0.0);
         if !idx.is_empty() {
-            let sub = DMatrix::from_fn(idx.len(), idx.len(), |p, q| a[(idx[p], idx[q])]);
+            // The matrix of a set of rows is the same in every pass of a solve (the mobility
+            // and the rows' coefficients are fixed; only the right-hand side changes): its
+            // factorisation is reused while the set stays (the same arithmetic, so the same
+            // bits).
+            if !cache.rows.iter().copied().eq(idx.iter().map(|&r| lu[r])) || cache.lu.is_none() {
+                let sub = DMatrix::from_fn(idx.len(), idx.len(), |p, q| a[(idx[p], idx[q])]);
+                cache.rows.clear();
+                cache.rows.extend(idx.iter().map(|&r| lu[r]));
+                cache.lu = Some(sub.lu());
+            }
             let rhs = DVector::from_fn(idx.len(), |p, _| b[idx[p]]);
-            let sol = sub.lu().solve(&rhs)?;
+            let sol = cache.lu.as_ref()?.solve(&rhs)?;
             for (p, &r) in idx.iter().enumerate() {
                 x[r] = sol[p];
             }
