@@ -299,6 +299,16 @@ fn bad_joints_and_keys_are_errors_naming_the_joint_and_value() {
             "",
             "mass",
         ),
+        (
+            TWO_LINKS.to_string(),
+            "joints = \"impulse\"\nself_contacts = false",
+            "robot[0].self_contacts",
+        ),
+        (
+            TWO_LINKS.to_string(),
+            "self_contacts = 0",
+            "scene.toml:5:17: invalid type: integer `0`, expected a boolean",
+        ),
     ];
     for (urdf, extra, want) in cases {
         let (_d, s) = robot_scene(&urdf, extra, &[]);

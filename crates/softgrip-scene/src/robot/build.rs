@@ -80,7 +80,11 @@ impl Robot {
                     &mut w.bodies,
                     &mut w.colliders,
                     &mut w.multibody_joints,
-                    UrdfMultibodyOptions::empty(),
+                    if self.self_contacts() {
+                        UrdfMultibodyOptions::empty()
+                    } else {
+                        UrdfMultibodyOptions::DISABLE_SELF_CONTACTS
+                    },
                 );
                 let joints = (h.joints.iter())
                     .map(|j| {

@@ -91,6 +91,7 @@ pub struct Robot {
     joints: Vec<RobotJoint>,
     base: BaseKind,
     model: JointModel,
+    self_contacts: bool,
 }
 
 impl Robot {
@@ -107,6 +108,13 @@ impl Robot {
         let angle = spec.rotation.iter().map(|x| x * x).sum::<f64>().sqrt();
         if angle > crate::limits::MAX_ROTATION_ANGLE {
             return Err(c.invalid(f("rotation"), spec.rotation, "an angle <= 100 rad"));
+        }
+        if !spec.self_contacts && spec.joints != JointModel::Multibody {
+            return Err(c.invalid(
+                f("self_contacts"),
+                spec.self_contacts,
+                "true with joints = \"impulse\" (false needs joints = \"multibody\")",
+            ));
         }
         for (name, v) in [("stiffness", spec.stiffness), ("damping", spec.damping)] {
             c.range(f(name), v, (0.0, 1e12), "")?;
@@ -140,6 +148,7 @@ impl Robot {
             joints,
             base: spec.base,
             model: spec.joints,
+            self_contacts: spec.self_contacts,
         })
     }
 
@@ -196,6 +205,11 @@ impl Robot {
     /// How its joints are simulated.
     pub fn joint_model(&self) -> JointModel {
         self.model
+    }
+
+    /// Whether its links collide with each other ([`RobotSpec::self_contacts`]).
+    pub fn self_contacts(&self) -> bool {
+        self.self_contacts
     }
 
     /// The URDF mass of link `i` \[kg\] (0 where it gives none: its shapes then get

@@ -53,6 +53,19 @@ pub struct RobotSpec {
     /// Per-joint `[stiffness, damping]` overriding `stiffness` and `damping`.
     #[serde(default)]
     pub gains: BTreeMap<String, [f64; 2]>,
+    /// Whether two links of the robot collide with each other (default `true`). rapier skips
+    /// only the pairs joined directly by a joint, so links welded through a chain of fixed
+    /// joints (the Panda's link7 - link8 - hand) still collide where their collision shapes
+    /// overlap, and the multibody solve then fights its own fixed joints (the Panda blows up to
+    /// NaN). `false` turns every contact between the robot's links off
+    /// (`Multibody::set_self_contacts_enabled`; pybullet's and Gazebo's default); only with
+    /// `joints = "multibody"`.
+    #[serde(default = "default_self_contacts")]
+    pub self_contacts: bool,
+}
+
+fn default_self_contacts() -> bool {
+    true
 }
 
 fn default_stiffness() -> f64 {
