@@ -161,17 +161,32 @@ fn self_contacts_after_one_step(self_contacts: bool) -> Vec<(String, String, f32
 /// The cause of the Panda's blow-up: rapier skips contacts only between links joined directly
 /// by a joint, and panda_link7 and panda_hand are welded through link8 by two fixed joints
 /// while their collision hulls (link7.obj, hand.obj) overlap by 23 mm in every pose. With the
-/// robot's self-contacts on, that pair is an active contact the multibody solve pushes apart
+/// robot's self-contacts on, that pair was an active contact the multibody solve pushed apart
 /// against its own fixed joints each step; in the grasp the arm went to NaN (in the lift, step
-/// 94, at rapier's default 1 PGS iteration; in the settle, step 67, at 4). `self_contacts = false` (as pybullet and Gazebo
-/// load a URDF by default) leaves no pair of links in touch.
+/// 94, at rapier's default 1 PGS iteration; in the settle, step 67, at 4). Such a robot is now
+/// refused at load, naming both links, the depth and the remedy; `self_contacts = false` (as
+/// pybullet and Gazebo load a URDF by default) leaves no pair of links in touch.
 #[test]
-fn panda_link7_and_hand_overlap_unless_self_contacts_are_off() {
-    let on = self_contacts_after_one_step(true);
-    assert_eq!(on.len(), 1, "{on:?}");
-    let (a, b, depth) = &on[0];
-    assert_eq!((a.as_str(), b.as_str()), ("panda_link7", "panda_hand"));
-    assert!((-0.025..-0.021).contains(depth), "overlap {depth} m");
+fn panda_with_self_contacts_is_refused_naming_the_overlapping_links() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("panda.toml");
+    std::fs::write(&path, scene_text_with(false, true)).unwrap();
+    let e = Scene::from_file(&path).unwrap_err();
+    let msg = e.to_string();
+    assert_eq!(e.field(), Some("robot[0].self_contacts"), "{msg}");
+    assert!(msg.contains("`panda_link7` and `panda_hand`"), "{msg}");
+    assert!(msg.contains("self_contacts = false"), "{msg}");
+    // The depth as printed: the hulls overlap by 21-25 mm.
+    let mm: f64 = msg
+        .split("overlap by ")
+        .nth(1)
+        .unwrap()
+        .split(" mm")
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((21.0..25.0).contains(&mm), "{msg}");
     assert_eq!(self_contacts_after_one_step(false), []);
 }
 

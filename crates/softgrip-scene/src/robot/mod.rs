@@ -3,6 +3,7 @@
 
 mod build;
 mod model;
+mod overlap;
 mod spec;
 mod state;
 mod urdf;

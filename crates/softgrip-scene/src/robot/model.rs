@@ -140,6 +140,28 @@ impl Robot {
         );
         let rapier = UrdfRobot::from_robot(&urdf.robot, options, Path::new(""));
         let (links, joints) = links_and_joints(c, field, spec, &urdf, &rapier)?;
+        if spec.self_contacts
+            && let Some((a, b, depth)) =
+                crate::robot::overlap::fixed_overlap(&rapier, &links, &joints)
+        {
+            let remedy = match spec.joints {
+                JointModel::Multibody => {
+                    "set `self_contacts = false` (pybullet's and Gazebo's default)"
+                }
+                JointModel::Impulse => "use joints = \"multibody\" with `self_contacts = false`",
+            };
+            return Err(SceneError::Urdf {
+                origin: c.origin.to_string(),
+                field: f("self_contacts"),
+                path: urdf.path.clone(),
+                message: format!(
+                    "links `{a}` and `{b}` are held together by fixed joints but their collision \
+                     shapes overlap by {:.2} mm: they would be in contact at every pose (the solver \
+                     pushes them apart against the joints); {remedy}, or remove the overlap",
+                    depth * 1e3
+                ),
+            });
+        }
         Ok(Self {
             name: spec.name.clone(),
             urdf,
