@@ -128,9 +128,18 @@ fn a_goal_closes_on_the_box_and_stalls_at_its_effort_with_the_pads_pressing_it()
     // Each pad's pole 4 mm from the box at q = 28 mm: it touches at q = 24 mm and stops at
     // 24 mm less the pad's squeeze at 5 N (~1 mm for R = 10 mm Dragon Skin 30, flat).
     assert!((0.021..0.0238).contains(&q), "stopped at {q} m");
-    let total: f64 = run.world.soft.contacts().iter().map(|c| c.normal_force).sum();
+    let total: f64 = run
+        .world
+        .soft
+        .contacts()
+        .iter()
+        .map(|c| c.normal_force)
+        .sum();
     let rel = (total - effort.abs()).abs() / effort.abs();
-    assert!(rel < 0.01, "pads {total} N in all vs joint effort {effort} N");
+    assert!(
+        rel < 0.01,
+        "pads {total} N in all vs joint effort {effort} N"
+    );
     for c in run.world.soft.contacts() {
         assert!(c.x < 0.3, "pad squeezed to x = {}", c.x);
     }
