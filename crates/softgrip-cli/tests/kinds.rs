@@ -3,14 +3,16 @@
 //! their descriptions; a level's setting is checked by the law; and a run with a `tabulated`
 //! level records its curve, so that `softgrip inspect` and `softgrip_record` read back the
 //! same law (before, `inspect` said "unknown level"). A recording made before curves were
-//! recorded still inspects.
+//! recorded still inspects. A recording's metadata lists the run's controllers with their
+//! kinds' names and fixed codes from `softgrip_scene::CONTROLLERS`, and `inspect` prints them.
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
 mod common;
 
 use softgrip_law::{BACKINGS, ContactLaw, LEVELS, Level, LevelData, TabulatedCurve};
-use softgrip_record::Recording;
+use softgrip_record::{ControllerRecord, Recording};
+use softgrip_scene::control::{CONTROLLERS, ControllerKind};
 
 /// The `Possible values:` entries (`- name: description`) of one option in `--help`.
 fn possible_values(help: &str, option: &str) -> Vec<String> {
@@ -184,4 +186,90 @@ fn a_tabulated_recording_made_before_curves_still_inspects() {
         String::from_utf8_lossy(&o.stderr)
     );
     assert!(out.contains("left_tip: level=tabulated"), "{out}");
+}
+
+/// Runs `scene` (its text, written to `dir/NAME.toml`) for its duration into `dir/NAME.mcap`
+/// and returns the recording's controllers and `softgrip inspect`'s output.
+fn recorded_controllers(
+    dir: &std::path::Path,
+    name: &str,
+    scene: &str,
+) -> (Vec<ControllerRecord>, String) {
+    let scene_path = dir.join(format!("{name}.toml"));
+    std::fs::write(&scene_path, scene).unwrap();
+    let rec_path = dir.join(format!("{name}.mcap"));
+    let o = common::softgrip(&[
+        "run",
+        scene_path.to_str().unwrap(),
+        "--out",
+        rec_path.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let info = Recording::open(&rec_path).unwrap().info().unwrap().unwrap();
+    let o = common::softgrip(&["inspect", rec_path.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    (
+        info.controllers,
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+    )
+}
+
+/// The record of a controller named `name` of `kind`, from the kind's row of the table.
+fn row(name: &str, kind: ControllerKind) -> ControllerRecord {
+    let row = CONTROLLERS.iter().find(|r| r.kind == kind).unwrap();
+    ControllerRecord {
+        name: name.into(),
+        kind: row.name.into(),
+        code: row.code,
+    }
+}
+
+#[test]
+fn a_run_records_its_controllers_with_the_tables_names_and_codes() {
+    let dir = common::temp_dir("kinds-controllers");
+    // The default scene: its `[gripper]`, parallel_jaws (code 0).
+    let scene = std::fs::read_to_string(common::root().join("scenes/default.toml")).unwrap();
+    let scene = scene.replace("duration = 5.0", "duration = 0.1");
+    assert!(scene.contains("duration = 0.1") && scene.contains("[gripper]"));
+    let (got, out) = recorded_controllers(&dir, "default", &scene);
+    assert_eq!(got, vec![row("gripper", ControllerKind::ParallelJaws)]);
+    assert_eq!(got[0].code, 0, "a code written to files never changes");
+    assert!(
+        out.contains("controllers:\n  gripper: parallel_jaws (code 0)\n"),
+        "{out}"
+    );
+
+    // A robot scene: its `[[controller]] type = "grasp"` (code 2), then the robot's commands
+    // from outside (joint_commands, code 3), in the order they run.
+    let urdf = common::root().join("robots/parallel_gripper/parallel_gripper.urdf");
+    let urdf = format!("{:?}", urdf.to_str().unwrap());
+    let scene =
+        std::fs::read_to_string(common::root().join("scenes/robots/parallel_gripper_box.toml"))
+            .unwrap()
+            .replace("duration = 5.0", "duration = 0.05")
+            .replace(
+                "\"../../robots/parallel_gripper/parallel_gripper.urdf\"",
+                &urdf,
+            );
+    assert!(scene.contains("duration = 0.05") && scene.contains(&format!("urdf = {urdf}")));
+    let (got, out) = recorded_controllers(&dir, "robot", &scene);
+    assert_eq!(
+        got,
+        vec![
+            row("grasp", ControllerKind::Grasp),
+            row("gripper/commands", ControllerKind::JointCommands),
+        ]
+    );
+    assert_eq!(
+        (got[0].code, got[1].code),
+        (2, 3),
+        "codes written to files never change"
+    );
+    assert!(
+        out.contains(
+            "controllers:\n  grasp: grasp (code 2)\n  gripper/commands: joint_commands (code 3)\n"
+        ),
+        "{out}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -10,9 +10,9 @@ use softgrip_law::ContactPatch;
 use softgrip_rapier::rapier3d::prelude::{SharedShape, Vector};
 use softgrip_rapier::{SoftFingertip, TipContact};
 use softgrip_record::{
-    BodyFrame, ContactReading, FingertipInfo, FingertipLaw, JointSample, McapReport, McapSinkError,
-    RecorderOptions, RecordingStats, RobotInfo, RunSummary, SceneInfo, ShapeGeometry, ShapeInfo,
-    SinkError, StepFrame, StepSink, TactileSample, TipRunSummary, UpAxis,
+    BodyFrame, ContactReading, ControllerRecord, FingertipInfo, FingertipLaw, JointSample,
+    McapReport, McapSinkError, RecorderOptions, RecordingStats, RobotInfo, RunSummary, SceneInfo,
+    ShapeGeometry, ShapeInfo, SinkError, StepFrame, StepSink, TactileSample, TipRunSummary, UpAxis,
 };
 use softgrip_scene::ControlSet;
 use softgrip_scene::robot::{JointKind, joint_state, joint_target};
@@ -245,6 +245,7 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
             })
             .collect(),
         frames: frames(scene),
+        controllers: controller_records(scene),
         fingertips: scene
             .fingertips()
             .iter()
@@ -262,6 +263,21 @@ pub fn scene_info(scene: &Scene) -> SceneInfo {
             })
             .collect(),
     }
+}
+
+/// The scene's controllers in the order they run, each with its kind's name and fixed code
+/// from the one table of controller kinds (`softgrip_scene::CONTROLLERS`).
+fn controller_records(scene: &Scene) -> Vec<ControllerRecord> {
+    (scene.controllers().iter())
+        .map(|c| {
+            let row = c.kind().info();
+            ControllerRecord {
+                name: c.name().to_owned(),
+                kind: row.name.to_owned(),
+                code: row.code,
+            }
+        })
+        .collect()
 }
 
 /// The numbers of a plugin readout with its patch (radius and pressure; pass a patch with zero

@@ -37,5 +37,14 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("LEVELS", pyo3::types::PyTuple::new(m.py(), levels)?)?;
     let backings: Vec<&str> = softgrip_law::BACKINGS.iter().map(|row| row.name).collect();
     m.add("BACKINGS", pyo3::types::PyTuple::new(m.py(), backings)?)?;
+    // The controller kinds, from the scene's table (softgrip_scene::control::CONTROLLERS): the
+    // `kind` of each of a recording's `controllers`.
+    let controllers: Vec<&str> = (softgrip_scene::control::CONTROLLERS.iter())
+        .map(|row| row.name)
+        .collect();
+    m.add(
+        "CONTROLLERS",
+        pyo3::types::PyTuple::new(m.py(), controllers)?,
+    )?;
     Ok(())
 }

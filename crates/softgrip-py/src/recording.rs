@@ -98,6 +98,20 @@ fn laws<'py>(py: Python<'py>, info: Option<&RecordingInfo>) -> PyResult<Bound<'p
     Ok(out)
 }
 
+/// The run's controllers as recorded, in the order they ran: `{name, kind, code}` (none in
+/// recordings made before they were written).
+fn controllers<'py>(py: Python<'py>, info: Option<&RecordingInfo>) -> PyResult<Bound<'py, PyList>> {
+    let out = PyList::empty(py);
+    for c in info.map(|i| i.controllers.as_slice()).unwrap_or_default() {
+        let d = PyDict::new(py);
+        d.set_item("name", &c.name)?;
+        d.set_item("kind", &c.kind)?;
+        d.set_item("code", c.code)?;
+        out.append(d)?;
+    }
+    Ok(out)
+}
+
 fn summary<'py>(py: Python<'py>, s: Option<&RunSummary>) -> PyResult<Bound<'py, PyAny>> {
     let Some(s) = s else {
         return Ok(py.None().into_bound(py));
@@ -126,6 +140,7 @@ fn to_python<'py>(py: Python<'py>, path: &Path, o: Opened) -> PyResult<Bound<'py
     out.set_item("total_steps", info.map(|i| i.steps).filter(|&n| n > 0))?;
     out.set_item("frame", o.steps.axes.frame_name())?;
     out.set_item("laws", laws(py, info)?)?;
+    out.set_item("controllers", controllers(py, info)?)?;
     out.set_item("summary", summary(py, o.summary.as_ref())?)?;
     out.set_item("summary_steps", o.summary.as_ref().map(|s| s.steps))?;
     let channels = PyList::empty(py);

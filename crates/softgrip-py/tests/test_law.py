@@ -195,3 +195,5 @@ def test_kinds_are_the_law_tables(cli):
     assert list(softgrip.BACKINGS) == _possible_values(out, "backing")
     for level in softgrip.LEVELS:
         assert softgrip.law(level, 3e6, 0.45, 0.01).level == level
+    # softgrip.CONTROLLERS: softgrip-scene's table of controller kinds, in its order (codes 0..3).
+    assert softgrip.CONTROLLERS == ("parallel_jaws", "trajectory", "grasp", "joint_commands")

@@ -62,6 +62,9 @@ def test_a_run_equals_its_own_recording(tmp_path: Path, every):
     assert rec.tactile["left_tip"].shape == (len(rows), 16, 16)
     assert_run_equals_recording(run, rec, rows)
     assert rec.scene == softgrip.scenes.path("default").read_text()
+    # the run's controllers: the default scene's `[gripper]`, parallel_jaws (fixed code 0)
+    assert rec.controllers == [{"name": "gripper", "kind": "parallel_jaws", "code": 0}]
+    assert rec.controllers[0]["kind"] in softgrip.CONTROLLERS
 
 
 def test_two_contacts_per_fingertip_sum_as_in_a_run(tmp_path: Path):
@@ -98,6 +101,7 @@ def test_the_law_comes_back_from_the_metadata(tmp_path: Path):
 def test_committed_recordings_open(path: Path):
     rec = softgrip.open_recording(path)
     assert rec.recovery is None and rec.softgrip_version
+    assert rec.controllers == []  # recorded before the controllers were (session 10)
     assert len(rec.step) == rec.total_steps // rec.every
     assert set(rec.fingertips) == set(rec.laws) == set(rec.summary)
     for name, t in rec.fingertips.items():

@@ -27,8 +27,8 @@ pub use frames::{UpAxis, fingertip_frame};
 pub use mcap_sink::{McapReport, McapSink, McapSinkError};
 pub use message::RosMessage;
 pub use metadata::{
-    FingertipLaw, MetadataError, MetadataRecord, RecordingInfo, RunSummary, SOFTGRIP_VERSION,
-    TipRunSummary,
+    ControllerRecord, FingertipLaw, MetadataError, MetadataRecord, RecordingInfo, RunSummary,
+    SOFTGRIP_VERSION, TipRunSummary,
 };
 pub use recorder::{
     METADATA_NAME, OFFERED_QOS_PROFILES, RUN_SUMMARY_NAME, Recorder, RecorderOptions,

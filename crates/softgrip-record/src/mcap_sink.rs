@@ -185,6 +185,7 @@ impl McapSink {
             steps: info.steps,
             law: info.fingertips.iter().map(|t| t.law.clone()).collect(),
             gravity: info.up.vector(info.gravity),
+            controllers: info.controllers.clone(),
             ..RecordingInfo::default()
         };
         let path = path.as_ref();

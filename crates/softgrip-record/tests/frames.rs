@@ -86,6 +86,7 @@ fn scene() -> SceneInfo {
         gravity: [0.0, -9.81, 0.0],
         robots: Vec::new(),
         frames: Vec::new(),
+        controllers: Vec::new(),
     }
 }
 

@@ -1,5 +1,6 @@
 //! `softgrip inspect FILE.mcap`: topics, duration, per-fingertip peaks, slip events and
-//! validity excursions of a recording; says so when an unfinished file was recovered.
+//! validity excursions of a recording, its laws and controllers; says so when an unfinished
+//! file was recovered.
 
 use std::collections::HashMap;
 use std::fmt::Write as _;
@@ -67,6 +68,13 @@ fn report(name: &str, rec: &Recording) -> String {
         let _ = writeln!(out, "law:");
         for law in &info.law {
             let _ = writeln!(out, "  {law}");
+        }
+    }
+    // `name: kind (code N)`, in the order they ran (none in recordings made before session 10).
+    if !info.controllers.is_empty() {
+        let _ = writeln!(out, "controllers:");
+        for c in &info.controllers {
+            let _ = writeln!(out, "  {c}");
         }
     }
     out

@@ -53,6 +53,7 @@ __all__ = [
     "BACKINGS",
     "BODY_ARRAYS",
     "CONTACT_ROW_FIELDS",
+    "CONTROLLERS",
     "FINGERTIP_ARRAYS",
     "LEVELS",
     "Law",
@@ -89,6 +90,12 @@ parameters alone build (a measured curve is a scene's ``level = { tabulated = "t
 
 BACKINGS = _native.BACKINGS
 """The fingertip constructions ``law`` accepts."""
+
+CONTROLLERS = _native.CONTROLLERS
+"""The controller kinds: the names of softgrip-scene's table ``CONTROLLERS`` (``parallel_jaws``,
+the ``[gripper]``; ``trajectory``, ``grasp``, a scene's ``[[controller]] type``;
+``joint_commands``, every robot's commands from outside), the ``kind`` of each of a
+:class:`Recording`'s ``controllers``."""
 
 
 def law(

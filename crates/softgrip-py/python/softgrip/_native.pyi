@@ -13,6 +13,7 @@ import numpy.typing as npt
 __version__: str
 LEVELS: tuple[str, ...]
 BACKINGS: tuple[str, ...]
+CONTROLLERS: tuple[str, ...]
 
 _Number = Union[float, int, np.floating, np.integer]
 _Array = npt.NDArray[np.float64]

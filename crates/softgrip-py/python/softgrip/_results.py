@@ -197,6 +197,10 @@ class Recording:
     ``tolerance`` or ``match_x``, else None), ``youngs_modulus`` [Pa], ``poisson_ratio`` [-],
     ``radius`` [m], ``friction`` [-], ``restitution`` [-], ``backing``, ``core_thickness``
     [m] (None unless ``core``). :meth:`law` builds the :class:`softgrip.Law`."""
+    controllers: List[Dict[str, Any]]
+    """The run's controllers in the order they ran: ``name``, ``kind`` (one of
+    :data:`softgrip.CONTROLLERS`) and ``code`` (the kind's fixed code in files); empty for a
+    recording made before softgrip recorded them (session 10, 2026-12-05)."""
     contact_rows: Dict[str, Any]
     """Every recorded contact, column by column (:data:`CONTACT_ROW_FIELDS`)."""
     channels: List[Dict[str, Any]]

@@ -6,6 +6,7 @@ use std::collections::BTreeMap;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
+use super::controller::ControllerRecord;
 use super::json_text;
 use super::law::FingertipLaw;
 
@@ -61,6 +62,11 @@ pub const SOFTGRIP_VERSION: &str = env!("CARGO_PKG_VERSION");
 /// assert_eq!(map["scene"], "dt = 0.001"); // text as it is
 /// assert_eq!(map["dt"], "0.001"); // JSON
 /// assert_eq!(map["law"], "[]");
+/// assert_eq!(map["controllers"], "[]");
+/// // Written before the controllers were: read as none.
+/// let mut old = map.clone();
+/// old.remove("controllers");
+/// assert!(RecordingInfo::from_metadata(&old).unwrap().controllers.is_empty());
 /// assert_eq!(RecordingInfo::from_metadata(&map).unwrap(), info);
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -88,6 +94,11 @@ pub struct RecordingInfo {
     /// scene with gravity down its up axis; `[0, 0, 0]` when not given.
     #[serde(with = "json_text")]
     pub gravity: [f64; 3],
+    /// The run's controllers, in the order they run (name, kind, the kind's fixed code);
+    /// empty in recordings made before they were written (session 10) and in runs without
+    /// any.
+    #[serde(with = "json_text")]
+    pub controllers: Vec<ControllerRecord>,
 }
 
 impl Default for RecordingInfo {
@@ -101,6 +112,7 @@ impl Default for RecordingInfo {
             steps: 0,
             law: Vec::new(),
             gravity: [0.0; 3],
+            controllers: Vec::new(),
         }
     }
 }

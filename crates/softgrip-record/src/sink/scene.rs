@@ -1,7 +1,7 @@
 //! [`SceneInfo`]: what a sink learns once, before the first step.
 
 use crate::frames::UpAxis;
-use crate::metadata::FingertipLaw;
+use crate::metadata::{ControllerRecord, FingertipLaw};
 
 /// A fingertip of the scene: where it is mounted and its law.
 #[derive(Debug, Clone, PartialEq)]
@@ -98,6 +98,8 @@ pub struct SceneInfo {
     /// The bodies that are not children of the world frame on tf: robot links under their
     /// parent links.
     pub frames: Vec<BodyFrame>,
+    /// The controllers, in the order they run (the `softgrip` metadata's `controllers`).
+    pub controllers: Vec<ControllerRecord>,
 }
 
 /// A robot of the scene.
