@@ -2,7 +2,7 @@
 //! each gripper group, at `/<group>/gripper_cmd`. A group is a `grasp` controller's joints
 //! (named by the controller), or, for a robot no grasp controller names, the robot's moving
 //! joints but its mimic ones (named by the robot). A goal becomes a
-//! [`GripperGoal`](softgrip_ecs::scene::control::GripperGoal) in its robot's inbox: the robot's
+//! [`GripperGoal`] in its robot's inbox: the robot's
 //! `joint_commands` controller runs it (close at the goal's speed until each joint's effort
 //! reaches the goal's effort or the position is reached, then hold) and hands back its feedback
 //! and result, which a thread here sends.
