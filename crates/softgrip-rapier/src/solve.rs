@@ -482,8 +482,10 @@ pub(crate) fn solve(
         }
     }
     let dynamic = |i: Option<usize>| i.filter(|&i| bodies[i].is_dynamic());
+    // Only rows that can carry an impulse couple bodies (see [`carries_impulse`]).
     let links = rows
         .iter()
+        .filter(|r| carries_impulse(r, h))
         .map(|r| (r.a, r.b))
         .chain(rigid.iter().map(|r| (Some(r.a), r.b)));
     for (a, b) in links {
@@ -500,6 +502,10 @@ pub(crate) fn solve(
     group.clear();
     let mut groups = 0usize;
     for r in rows.iter() {
+        if !carries_impulse(r, h) {
+            group.push(usize::MAX);
+            continue;
+        }
         let g = match dynamic(r.a).or(dynamic(r.b)) {
             Some(b) => {
                 let root = find(parent, b);
@@ -532,18 +538,18 @@ pub(crate) fn solve(
     // Counting sort of the rows by group (stable).
     starts.clear();
     starts.resize(groups + 1, 0);
-    for &g in group.iter() {
+    for &g in group.iter().filter(|g| **g != usize::MAX) {
         starts[g + 1] += 1;
     }
     for g in 0..groups {
         starts[g + 1] += starts[g];
     }
     order.clear();
-    order.resize(n, 0);
+    order.resize(starts[groups], 0);
     // Fill `order` using `root_group` as the per-group cursor (it is no longer needed).
     root_group.clear();
     root_group.extend_from_slice(&starts[..groups]);
-    for (i, &g) in group.iter().enumerate() {
+    for (i, &g) in group.iter().enumerate().filter(|(_, g)| **g != usize::MAX) {
         order[root_group[g]] = i;
         root_group[g] += 1;
     }
@@ -602,7 +608,32 @@ pub(crate) fn solve(
             failed += 1;
         }
     }
+    // The rows that carry no impulse: none, and their end velocity for the onset check
+    // (their bodies are final: every group that moves them has been solved).
+    for (r, _) in rows
+        .iter_mut()
+        .zip(group.iter())
+        .filter(|(_, g)| **g == usize::MAX)
+    {
+        r.jn = 0.0;
+        r.jt = Vector3::zeros();
+        r.jtw = 0.0;
+        r.vn_end = normal_velocity(bodies, r);
+    }
     failed
+}
+
+/// Whether a row can carry an impulse in this solve. Its normal equation is
+/// `j = h [F - D v(end)]` (`D = theta K h + c`, [`solve_normal`]): a row with `F = 0` and
+/// `D = 0` (a detected pair whose gap is open at the step's start, not linearised for an onset
+/// within the step: its law's response is zero) has the identity as its line of the system
+/// and a zero right-hand side, so its impulse is exactly zero whatever the other rows do, and
+/// no friction either (`mu j_n = 0`). Such a row must not couple bodies into one group: the
+/// grid of resting fingertips, whose neighbours are within the detection's prediction
+/// distance, was otherwise one dense group of all its rows. If the solved motion closes the gap
+/// within the step, `step::onset` linearises the row and the next solve includes it.
+fn carries_impulse(r: &Row, h: f64) -> bool {
+    r.force != 0.0 || r.theta * r.stiffness * h + r.damping != 0.0
 }
 
 /// Restores body `i` to `base` (a multibody link: every link of its multibody in the table).
