@@ -1,7 +1,8 @@
 //! [`FILES`]: the one table of the embedded FE files on a plane. Adding a file is one row
-//! here; the files on other counterparts are [`COUNTERPART_FILES`], written by
-//! `tools/fe/fe_campaign.py export`.
+//! here; the files on other counterparts are [`COUNTERPART_FILES`] and, for a skin on a core,
+//! [`CORE_COUNTERPART_FILES`], written by `tools/fe/fe_campaign.py export`.
 
+pub use crate::core_counterpart_files::CORE_COUNTERPART_FILES;
 use crate::counterpart::Counterpart;
 pub use crate::counterpart_files::COUNTERPART_FILES;
 use crate::fe_file::{FeFile, Schema};
@@ -341,9 +342,13 @@ pub const FILES: &[FeFile] = &[
     ),
 ];
 
-/// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`].
+/// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
+/// [`CORE_COUNTERPART_FILES`].
 pub fn all() -> impl Iterator<Item = &'static FeFile> {
-    FILES.iter().chain(COUNTERPART_FILES.iter())
+    FILES
+        .iter()
+        .chain(COUNTERPART_FILES.iter())
+        .chain(CORE_COUNTERPART_FILES.iter())
 }
 
 /// The file at `path` (relative to `tests/data/fe/`), if it is embedded.
