@@ -617,7 +617,8 @@ def cmd_table(a):
         d = os.path.join(a.runs, case.name)
         three_d = getattr(case, "dim", 2) == 3
         what = (("3D " if three_d and cp == "plane" else "") + cp +
-                (f" k={k:g}" if cp in ("ball", "cylinder") else "") + f" {g} nu={nu:g}")
+                (f" k={k:g}" if cp in ("ball", "cylinder") else "") + f" {g} nu={nu:g}" +
+                (f" t/R={t:g}" if g == "core" else ""))
         if role == "facets":
             what += f" (facet sag {case.cp.sag():.2g} mm)"
         mesh = f"R/{h:g}" + (" (pole)" if three_d else "")
