@@ -74,6 +74,8 @@ def cases():
     # incompressibility (nu = 0.499, K/mu = 500) a reduced-integration mesh can lock, and nu =
     # 0.4 is where the core law's residual at t/R = 0.2 has the other sign
     c += [("core", 0.499, 0.2, 60, "conv"), ("core", 0.4, 0.2, 60, "conv")]
+    # a third held-out set (session 11): thin skins, one below the thinnest fitted (t/R 0.15)
+    c += [("core", 0.47, 0.15, 40, "heldout"), ("core", 0.42, 0.25, 40, "heldout")]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
 

@@ -340,6 +340,22 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.35)
     ),
+    fe_file!(
+        "core/force_nu0.47_t0.15.csv",
+        Force,
+        Some(0.47),
+        "held out of every fit (the third set, session 11): skin t/R = 0.15 over a rigid core, nu = 0.47, x = 0.01..0.08",
+        "core",
+        Some(0.15)
+    ),
+    fe_file!(
+        "core/force_nu0.42_t0.25.csv",
+        Force,
+        Some(0.42),
+        "held out of every fit (the third set, session 11): skin t/R = 0.25 over a rigid core, nu = 0.42, x = 0.01..0.18",
+        "core",
+        Some(0.25)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
