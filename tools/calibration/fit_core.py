@@ -63,7 +63,8 @@ increasing, chi_core -> chi_flat as t -> R, chi decreasing in t/R at fixed x).
 
 Result (this script, 14 fitted curves, session 10): e0 = 0.849512, l0 = 0.676765, l1 = 1.022037,
 k0 = 0.266768, k1 = -1.622115, m = 1.470321, lc = 0.234092. Fitted max 2.48 % (each curve to its FE
-reach, delta/t up to 0.8); held out (both sets, ten files) 1.05-2.37 % ((0.33, 0.25) at x = 0.15);
+reach, delta/t up to 0.8); held out (both sets, ten files) 1.05-2.37 % ((0.33, 0.25) at x = 0.15;
+the third set of session 11, run after: 1.86 % (0.47, 0.15), 1.62 % (0.42, 0.25));
 each t/R held out in turn 10.34 % (0.2, an extrapolation), 4.70 % (0.4), 3.31 % (0.6), 2.04 %
 (0.8); each nu 5.80 % (0.3, an extrapolation), 2.74 % (0.4), 2.19 % (0.48), 2.60 % (0.499); each
 fitted curve held out within 2.93 % except (0.3, 0.4) 3.73 % and (0.3, 0.2) 6.17 %. The session-7
