@@ -74,6 +74,8 @@ def cases():
     # incompressibility (nu = 0.499, K/mu = 500) a reduced-integration mesh can lock, and nu =
     # 0.4 is where the core law's residual at t/R = 0.2 has the other sign
     c += [("core", 0.499, 0.2, 60, "conv"), ("core", 0.4, 0.2, 60, "conv")]
+    # a third held-out set (session 11): thin skins, one below the thinnest fitted (t/R 0.15)
+    c += [("core", 0.47, 0.15, 40, "heldout"), ("core", 0.42, 0.25, 40, "heldout")]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
 
@@ -91,7 +93,14 @@ def curved_cases():
     held = [("free", 0.4, 0.7), ("flat", 0.4, 0.7), ("free", 0.4, 6), ("flat", 0.4, 6),
             ("flat", 0.45, 1.5), ("free", 0.35, 3)]
     c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held]
-    return c + cases_3d()
+    return c + core_ball_cases() + cases_3d()
+
+
+def core_ball_cases():
+    """Issue 24 item 2 for the third construction (session 11): a skin of t/R 0.3 and 0.5 over a
+    rigid core (nu 0.48, R/40) on rigid balls of R and 3R, to x = 0.6 (the plane's core FE
+    never passed delta/t = 0.8). Run under /work/fe-scratch/runs/core-s11."""
+    return [("core", 0.48, t, 40, "main", "ball", k) for t in (0.3, 0.5) for k in (1, 3)]
 
 
 def cases_3d():
@@ -131,8 +140,9 @@ def make(geometry, nu, t, h, role="main", cp="plane", k=0.0):
 
 def make_curved(geometry, nu, t, h, role, cp, k):
     """A curved counterpart's case. Axisymmetric (ball): the plane's increments (free <= 0.0025
-    to x = 0.1, flat <= 0.005; nu = 0.499 <= 0.005 beyond 0.2), to x = 0.7 (checks to 0.5);
-    role "facets" is the same case on a master with 1/16 of the facet sag (facets 4x shorter).
+    to x = 0.1, flat and core <= 0.005; nu = 0.499 <= 0.005 beyond 0.2), to x = 0.7 (checks to
+    0.5; a core to 0.6); role "facets" is the same case on a master with 1/16 of the facet sag
+    (facets 4x shorter).
     3D (cylinder, edge; role "check3d": the plane in 3D, checked against the axisymmetric
     model): h is n, the element edge at the pole R/n; increments <= 0.005 to x = 0.1, 0.01 to
     0.2, 0.02 beyond (output at each), to x = 0.6 (checks to 0.3)."""
@@ -143,6 +153,12 @@ def make_curved(geometry, nu, t, h, role, cp, k):
     tend = TEND if role in ("main", "heldout") else 0.5
     dt_small = 0.0025 if geometry == "free" else 0.005
     late_dt = 0.005 if nu >= 0.499 else 0.01
+    if geometry == "core":
+        tend = 0.6  # the skin over the core's pole: delta/t = 0.8 is x = 0.4 at t/R = 0.5
+        if t <= 0.3:
+            # the thin skin under a ball: with <= 0.005 to x = 0.1 and 0.01 beyond, t/R 0.3 on
+            # R diverged at x = 0.14 (delta/t = 0.47; session 11): half the increments
+            dt_small, late_dt = 0.0025, 0.005
     case = fe_run.make_case(geometry, nu, t, h, tend, dt_small=dt_small, late_dt=late_dt,
                             counterpart=cp, k=k)
     if role == "facets":
@@ -603,7 +619,8 @@ def cmd_table(a):
         d = os.path.join(a.runs, case.name)
         three_d = getattr(case, "dim", 2) == 3
         what = (("3D " if three_d and cp == "plane" else "") + cp +
-                (f" k={k:g}" if cp in ("ball", "cylinder") else "") + f" {g} nu={nu:g}")
+                (f" k={k:g}" if cp in ("ball", "cylinder") else "") + f" {g} nu={nu:g}" +
+                (f" t/R={t:g}" if g == "core" else ""))
         if role == "facets":
             what += f" (facet sag {case.cp.sag():.2g} mm)"
         mesh = f"R/{h:g}" + (" (pole)" if three_d else "")

@@ -1,7 +1,8 @@
 //! [`FILES`]: the one table of the embedded FE files on a plane. Adding a file is one row
-//! here; the files on other counterparts are [`COUNTERPART_FILES`], written by
-//! `tools/fe/fe_campaign.py export`.
+//! here; the files on other counterparts are [`COUNTERPART_FILES`] and, for a skin on a core,
+//! [`CORE_COUNTERPART_FILES`], written by `tools/fe/fe_campaign.py export`.
 
+pub use crate::core_counterpart_files::CORE_COUNTERPART_FILES;
 use crate::counterpart::Counterpart;
 pub use crate::counterpart_files::COUNTERPART_FILES;
 use crate::fe_file::{FeFile, Schema};
@@ -339,11 +340,31 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.35)
     ),
+    fe_file!(
+        "core/force_nu0.47_t0.15.csv",
+        Force,
+        Some(0.47),
+        "held out of every fit (the third set, session 11): skin t/R = 0.15 over a rigid core, nu = 0.47, x = 0.01..0.08",
+        "core",
+        Some(0.15)
+    ),
+    fe_file!(
+        "core/force_nu0.42_t0.25.csv",
+        Force,
+        Some(0.42),
+        "held out of every fit (the third set, session 11): skin t/R = 0.25 over a rigid core, nu = 0.42, x = 0.01..0.18",
+        "core",
+        Some(0.25)
+    ),
 ];
 
-/// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`].
+/// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
+/// [`CORE_COUNTERPART_FILES`].
 pub fn all() -> impl Iterator<Item = &'static FeFile> {
-    FILES.iter().chain(COUNTERPART_FILES.iter())
+    FILES
+        .iter()
+        .chain(COUNTERPART_FILES.iter())
+        .chain(CORE_COUNTERPART_FILES.iter())
 }
 
 /// The file at `path` (relative to `tests/data/fe/`), if it is embedded.

@@ -116,6 +116,22 @@ fn bench_levels(c: &mut Criterion) {
             })
         });
     }
+    // A skin on a core on a ball builds its own table when bound (`core_map`).
+    let core = ContactLaw::try_new(
+        params
+            .with_backing(Backing::Core { thickness: 0.004 })
+            .expect("valid backing"),
+        Level::Calibrated,
+    )
+    .expect("level builds");
+    let ball = Counterpart::try_ball(0.01).expect("valid ball");
+    bind.bench_function("calibrated-core-ball", |b| {
+        b.iter(|| {
+            core.with_counterpart(black_box(ball))
+                .expect("binds")
+                .x_max()
+        })
+    });
     bind.finish();
 
     let mut patch = c.benchmark_group("with_radius_pressure");

@@ -2,7 +2,8 @@
 
 use std::sync::Arc;
 
-use crate::counterpart::Counterpart;
+use crate::core_map::core_on_counterpart;
+use crate::counterpart::{Counterpart, CounterpartKind};
 use crate::curve::{Curve, finite_non_negative};
 use crate::error::{Error, Result};
 use crate::level::{Level, LevelKind};
@@ -260,8 +261,19 @@ impl ContactLaw {
             p.backing(),
             calibrated,
         )?;
+        // A skin on a core: its own curve on a curved counterpart (`core_map`).
+        let curved = counterpart.kind() == CounterpartKind::Curved;
+        let was_curved_core = self.counterpart.kind() == CounterpartKind::Curved
+            && matches!(self.curve, Curve::Backed(_))
+            && !p.backing().is_free();
+        let (curve, map, replaced) = match core_on_counterpart(self.level, p, &map, curved)? {
+            Some((curve, map)) => (curve, map, true),
+            // Away from a curved counterpart: the plane's own table again.
+            None if was_curved_core => (Curve::try_new(self.level, p)?, map, true),
+            None => (self.curve.clone(), map, false),
+        };
         let (e, r) = (p.effective_modulus(), p.radius());
-        let x_max = self.curve.as_dyn().x_max();
+        let x_max = curve.as_dyn().x_max();
         // The curve's own range, in rho x, or the counterpart's reach in x, whichever ends
         // first; a plane keeps its own.
         let edge_x = if counterpart.is_plane() {
@@ -270,16 +282,16 @@ impl ContactLaw {
             let reach = reach(p.backing(), p.thickness_ratio()).min(map.reach);
             x_max.min(map.rho * reach)
         };
-        let edge = if edge_x == self.edge.x {
+        let edge = if edge_x == self.edge.x && !replaced {
             self.edge
         } else {
-            Edge::at(&self.curve, edge_x)
+            Edge::at(&curve, edge_x)
         };
         let s = map.force;
         let law = Self {
             params: self.params,
             level: self.level,
-            curve: self.curve.clone(),
+            curve,
             inv_radius: 1.0 / r,
             x_scale: map.rho / r,
             force_scale: s * e * r * r,

@@ -2,6 +2,7 @@
 
 mod backing;
 mod backing_table;
+mod core_map;
 mod counterpart;
 mod curve;
 mod elliptic;

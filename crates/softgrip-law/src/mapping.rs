@@ -49,6 +49,10 @@
 //!   argument at large x while a ball twice its size is stiffer. It ends the law where the
 //!   Hertz patch reaches the counterpart's radius (`mu x <= 1`, [`CounterpartMap::reach`]).
 //!
+//! A calibrated core does not take this map whole: its layer excess follows Hertz's patch and
+//! its pole's thinning the true `delta/t` (`crate::core_map`, its own table when bound); only
+//! its hemisphere's stiffening and the tail take `rho` and `g` below.
+//!
 //! Constants `r0, r1, g0, g1` per construction (free; flat and core: a bonded pad),
 //! `tools/calibration/fit_counterpart.py` (ball curves at nu 0.3, 0.48, 0.499; held out: the
 //! ball of 0.7 R at nu = 0.4, 3.16 % free and 1.31 % bonded, of 6 R at nu = 0.4, 1.5 R at 0.45
@@ -71,14 +75,15 @@ use crate::error::Result;
 /// Where a fingertip's law on a counterpart other than a plane stops, in `x = delta/R`
 /// (whatever `rho`): where the FE of curved counterparts stops for the construction (the
 /// free sphere between two balls ran to the end of its load, x = 0.7; the flat pad to
-/// x = 0.66), and for a core `0.6 t/R` (the skin over the core's pole is squeezed by delta
-/// whatever the counterpart: the plane's bound `delta/t <= 0.6`). The plane law's own range,
+/// x = 0.66), and for a core `0.8 t/R` (the skin over the core's pole is squeezed by delta
+/// whatever the counterpart: the plane's bound `delta/t <= 0.8`; the FE of a core on balls,
+/// session 11, reaches it or stops before). The plane law's own range,
 /// `x_max/rho` in x, may end first (a concave counterpart, a backed pad on a nearly flat one).
 pub(crate) fn reach(backing: Backing, tau: Option<f64>) -> f64 {
     match backing {
         Backing::Free => REACH_FREE,
         Backing::Flat => REACH_FLAT,
-        Backing::Core { .. } => REACH_FLAT.min(0.6 * tau.unwrap_or(1.0)),
+        Backing::Core { .. } => REACH_FLAT.min(0.8 * tau.unwrap_or(1.0)),
     }
 }
 

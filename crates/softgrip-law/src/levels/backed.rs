@@ -515,12 +515,19 @@ struct ChiForm {
     /// Core only.
     core: Option<CoreForce>,
     radius: RadiusForm,
+    /// On a curved counterpart (`crate::core_map`), a core only: the plane's compression that
+    /// carries the hemisphere's stiffening (`rho`, the counterpart map's) and the one that
+    /// makes the same patch (`rho_H`, Hertz's: the layer excess, a function of the patch);
+    /// the skin over the core's pole is squeezed by the true `delta/t`. 1 and 1 on a plane.
+    x_hemisphere: f64,
+    x_layer: f64,
 }
 
 impl ChiForm {
     /// `chi` at `s = sqrt(x)`: analytic in `s` on `(-0.9, 0.9)` (`s < 0` only for the slope
     /// stencil at `s = 0`).
-    fn chi(&self, s: f64) -> f64 {
+    fn chi(&self, s_true: f64) -> f64 {
+        let s = s_true * self.x_hemisphere.sqrt();
         let x = s * s;
         let w = 1.0 - x;
         let n = w + x * x / 3.0;
@@ -531,13 +538,17 @@ impl ChiForm {
         };
         // The layer of depth t h under the patch of the core's radius, less the layer of depth
         // R under the flat hemisphere's patch that chi_flat already carries.
-        let (a_flat, a) = self.radius.radii(s);
+        let s_layer = s_true * self.x_layer.sqrt();
+        let x_layer = s_layer * s_layer;
+        let (a_flat, a) = self.radius.radii(s_layer);
         // Each confined over lengths beyond l = depth sqrt(kappa/mu): E = eps (a_H/t)^2 for
         // the skin (the radius's E), eps (a_H/R)^2 = eps x for the hemisphere.
-        let conf = core.eps * x;
+        let conf = core.eps * x_layer;
         let excess = core.layer(a * core.inv_tau_h, conf * core.inv_tau2)
             - core.layer(a_flat * core.inv_h, conf);
-        let thinning = 1.0 + core.thinning * x + core.confined * confined(x * core.inv_tau);
+        let squeeze = s_true * s_true;
+        let thinning =
+            1.0 + core.thinning * squeeze + core.confined * confined(squeeze * core.inv_tau);
         flat + excess * thinning * (-core.k * (flat - 1.0)).exp()
     }
 
@@ -567,6 +578,9 @@ pub(crate) struct Backed {
     /// Shape: `tau = t/R` (core), 0 for flat.
     tau: f64,
     x_max: f64,
+    /// The plane's compression whose patch (radius, pressure shape) this law's `x` makes:
+    /// `rho` on a curved counterpart (`crate::core_map`), 1 on a plane.
+    x_patch: f64,
 }
 
 /// `x_max` of a flat-backed hemisphere at `nu`: where the FE stops.
@@ -587,6 +601,18 @@ fn flat_x_max(nu: f64) -> f64 {
 impl Backed {
     /// `backing` is `Flat` or `Core` (with `tau = t/R` in (0, 1)), `0.3 <= nu <= 0.5`.
     pub(crate) fn try_new(backing: Backing, tau: Option<f64>, nu: f64) -> Result<Self> {
+        Self::try_new_on(backing, tau, nu, 1.0, 1.0)
+    }
+
+    /// [`Backed::try_new`] with the hemisphere's part at `rho x` and the layer excess at
+    /// `rho_layer x` (`crate::core_map`; 1 and 1: the plane).
+    pub(crate) fn try_new_on(
+        backing: Backing,
+        tau: Option<f64>,
+        nu: f64,
+        rho: f64,
+        rho_layer: f64,
+    ) -> Result<Self> {
         if !(0.3..=0.5).contains(&nu) {
             return Err(Error::IncompatibleLevel {
                 level: LevelKind::Calibrated,
@@ -636,7 +662,13 @@ impl Backed {
                     confined: lc * eps / (1.0 + 4.0 * eps / 3.0),
                     k: k0 + k1 * eps,
                 };
-                (radius, Some(core), flat_x_max(nu).min(CORE_SQUEEZE * tau))
+                (
+                    radius,
+                    Some(core),
+                    // The hemisphere's and the layer's patch inside the plane's range
+                    // (a concave counterpart: rho_layer > rho > 1), the pole's true squeeze.
+                    (flat_x_max(nu) / rho.max(rho_layer)).min(CORE_SQUEEZE * tau),
+                )
             }
             None => {
                 let radius = RadiusForm {
@@ -656,6 +688,8 @@ impl Backed {
             b2: b * b * eps,
             core,
             radius,
+            x_hemisphere: rho,
+            x_layer: rho_layer,
         };
         Ok(Self {
             table: Arc::new(ChiTable::new(
@@ -673,6 +707,7 @@ impl Backed {
             eps,
             tau: tau.unwrap_or(0.0),
             x_max,
+            x_patch: rho,
         })
     }
 }
@@ -692,7 +727,7 @@ impl NormalisedLaw for Backed {
     }
 
     fn radius(&self, x: f64) -> f64 {
-        self.radius.radii(x.sqrt()).1
+        self.radius.radii((self.x_patch * x).sqrt()).1
     }
 
     fn x_max(&self) -> f64 {
@@ -708,7 +743,8 @@ impl NormalisedLaw for Backed {
     }
 
     /// `(m, b)` with the core's layer share computed once (it costs four `ln` and an `exp`).
-    fn pressure_profile(&self, x: f64) -> (f64, f64) {
+    fn pressure_profile(&self, x_true: f64) -> (f64, f64) {
+        let x = self.x_patch * x_true;
         let [a0, a1, a2, a3] = SHAPE;
         let flat = 0.5 + (a0 + a1 * self.eps) * x.sqrt() + (a2 + a3 * x) * x;
         if self.tau == 0.0 {

@@ -1,0 +1,40 @@
+//! [`CORE_COUNTERPART_FILES`]: every embedded FE file of a skin on a core pressed on a
+//! ball.
+//!
+//! Written by `tools/fe/fe_campaign.py export` (tools/fe/fe_table.py) from the files of
+//! `tests/data/fe/ball/core/`; do not edit by hand.
+
+use crate::counterpart::Counterpart;
+use crate::fe_file::{FeFile, Schema};
+
+/// One row: path (relative to `tests/data/fe/`), schema, nu, t/R, counterpart, description.
+macro_rules! core_counterpart_file {
+    ($path:literal, $schema:ident, $nu:expr, $t:expr, $cp:expr, $about:literal) => {
+        FeFile {
+            path: $path,
+            schema: Schema::$schema,
+            nu: Some($nu),
+            about: $about,
+            geometry: "core",
+            thickness_ratio: Some($t),
+            counterpart: $cp,
+            text: include_str!(concat!("../../../tests/data/fe/", $path)),
+        }
+    };
+}
+
+/// Every embedded file of a skin on a rigid core pressed on a rigid ball (tools/fe:
+/// CalculiX 2.20, gmsh 4.15.2; each file's provenance line says how it was made).
+#[rustfmt::skip]
+pub const CORE_COUNTERPART_FILES: &[FeFile] = &[
+    core_counterpart_file!("ball/core/force_nu0.48_t0.3_k1.csv", Force, 0.48, 0.3, Counterpart::Ball { k: 1.0 }, "ball k = 1, core t/R = 0.3, nu = 0.48, x = 0.01..0.2"),
+    core_counterpart_file!("ball/core/force_nu0.48_t0.3_k3.csv", Force, 0.48, 0.3, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.3, nu = 0.48, x = 0.01..0.2"),
+    core_counterpart_file!("ball/core/force_nu0.48_t0.5_k1.csv", Force, 0.48, 0.5, Counterpart::Ball { k: 1.0 }, "ball k = 1, core t/R = 0.5, nu = 0.48, x = 0.01..0.38"),
+    core_counterpart_file!("ball/core/force_nu0.48_t0.5_k3.csv", Force, 0.48, 0.5, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.5, nu = 0.48, x = 0.01..0.38"),
+    core_counterpart_file!("ball/core/pressure_nu0.48_t0.3_k1_d0.1.csv", Pressure, 0.48, 0.3, Counterpart::Ball { k: 1.0 }, "ball k = 1, core t/R = 0.3, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("ball/core/pressure_nu0.48_t0.3_k3_d0.1.csv", Pressure, 0.48, 0.3, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.3, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("ball/core/pressure_nu0.48_t0.5_k1_d0.1.csv", Pressure, 0.48, 0.5, Counterpart::Ball { k: 1.0 }, "ball k = 1, core t/R = 0.5, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("ball/core/pressure_nu0.48_t0.5_k1_d0.3.csv", Pressure, 0.48, 0.5, Counterpart::Ball { k: 1.0 }, "ball k = 1, core t/R = 0.5, nu = 0.48, pressure at x = 0.3"),
+    core_counterpart_file!("ball/core/pressure_nu0.48_t0.5_k3_d0.1.csv", Pressure, 0.48, 0.5, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.5, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("ball/core/pressure_nu0.48_t0.5_k3_d0.3.csv", Pressure, 0.48, 0.5, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.5, nu = 0.48, pressure at x = 0.3"),
+];

@@ -1,0 +1,166 @@
+//! A skin on a rigid core pressed on a rigid ball, against softgrip's FE of it
+//! (`tests/data/fe/ball/core/`, `tools/fe`, session 11: t/R 0.3 and 0.5 at nu 0.48 on balls of
+//! R and 3R): force per curve against the number this test prints, with the 3 % as the
+//! ceiling, and the law's range against the FE's reach.
+//!
+//! `cargo test -p softgrip-law --test core_counterpart_fe -- --nocapture` prints every number.
+
+mod common;
+
+use common::Smooth;
+use softgrip_fe::{CORE_COUNTERPART_FILES, Counterpart as FeCounterpart, FeFile, Schema};
+use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level};
+
+/// The calibrated core law (E* = 1 Pa, R = 1 m) of the file's t/R and Poisson ratio on its ball.
+fn law_of(file: &FeFile) -> ContactLaw {
+    let nu = file.nu.expect("a Poisson ratio");
+    let thickness = file.thickness_ratio.expect("a core file has t/R");
+    let FeCounterpart::Ball { k } = file.counterpart else {
+        panic!("{}: a core file is on a ball", file.path);
+    };
+    let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+        .and_then(|p| p.with_backing(Backing::Core { thickness }))
+        .expect("valid params");
+    ContactLaw::try_new(p, Level::Calibrated)
+        .and_then(|l| l.with_counterpart(Counterpart::try_ball(k).expect("a ball")))
+        .expect("the law binds")
+}
+
+/// The force files.
+fn curves() -> impl Iterator<Item = &'static FeFile> {
+    CORE_COUNTERPART_FILES
+        .iter()
+        .filter(|f| f.schema == Schema::Force)
+}
+
+/// Largest |F_law / F_FE - 1| over `0.01 <= x <= min(x_max, FE's end, to)` and the last x
+/// compared.
+fn force_error(file: &FeFile, law: &ContactLaw, to: f64) -> (f64, f64) {
+    let mut worst: f64 = 0.0;
+    let mut top: f64 = 0.0;
+    for p in file.points().expect("parses") {
+        if p.x < 0.01 - 1e-12 || p.x > law.x_max() || p.x > to + 1e-9 {
+            continue;
+        }
+        worst = worst.max((law.response(p.x).force / p.force_norm - 1.0).abs());
+        top = top.max(p.x);
+    }
+    (worst, top)
+}
+
+/// The largest force error each curve is allowed to the FE's end: what this test printed
+/// when the law was fixed (session 11), rounded up by 0.2 % (so a real change of the law
+/// breaks it). No constant of the law was fitted on these curves (`core_map`: the bonded
+/// pad's map, Hertz's patch and the true squeeze).
+fn stated_force_error(path: &str) -> f64 {
+    let pct = match path {
+        "ball/core/force_nu0.48_t0.3_k1.csv" => 3.01,
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 1.94,
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 5.85,
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 4.35,
+        // A curve that landed after: the target.
+        _ => 2.8,
+    };
+    (pct + 0.2) / 100.0
+}
+
+/// The curves the law misses the 3 % on, each within it below an x (its error there,
+/// the test allows 0.2 % more): t/R 0.5 past delta/t = 0.6 on both balls, too soft as the FE
+/// nears its end (-5.9 % on R and -4.4 % on 3R at x = 0.38: the plane law at t/R 0.5 is
+/// itself 2 % soft at x = 0.15-0.2 and recovers by its end, on the ball it does not); t/R 0.3
+/// on R, 3.01 % too stiff at x = 0.16 (the plane law at t/R 0.3 is itself up to 1.9 % too stiff
+/// there, nu 0.49).
+const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
+    ("ball/core/force_nu0.48_t0.3_k1.csv", 0.15, 2.82),
+    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.30, 2.83),
+    ("ball/core/force_nu0.48_t0.5_k3.csv", 0.33, 2.92),
+];
+
+#[test]
+fn a_skin_on_a_core_on_a_ball_is_within_its_stated_error_of_the_fe() {
+    let mut seen = 0;
+    for file in curves() {
+        let law = law_of(file);
+        let (err, top) = force_error(file, &law, f64::INFINITY);
+        let fe_end = file.points().expect("parses").last().expect("points").x;
+        println!(
+            "{:38} force within {:5.2} % for 0.01 <= x <= {top:.2} (law's x_max {:.3}, FE's end {fe_end})",
+            file.path,
+            100.0 * err,
+            law.x_max()
+        );
+        let miss = WITHIN_TARGET_TO.iter().find(|(p, _, _)| *p == file.path);
+        assert!(
+            err <= stated_force_error(file.path) && (err < 0.03 || miss.is_some()),
+            "{}: {:.2} %",
+            file.path,
+            100.0 * err
+        );
+        if let Some(&(_, to, pct)) = miss {
+            let (below, _) = force_error(file, &law, to);
+            println!(
+                "{:38} force within {:5.2} % for x <= {to}",
+                "",
+                100.0 * below
+            );
+            assert!(
+                below <= (pct + 0.2) / 100.0 && below < 0.03,
+                "{}: {:.2} % to x = {to}",
+                file.path,
+                100.0 * below
+            );
+        }
+        // The law's range reaches the FE's (within one FE step).
+        assert!(
+            law.x_max() >= fe_end - 0.011,
+            "{}: the law ends at x = {} of the FE's {fe_end}",
+            file.path,
+            law.x_max()
+        );
+        seen += 1;
+    }
+    assert!(seen >= 4, "{seen} curves");
+}
+
+/// The contact radius on the ball against the FE's (its column smoothed plus the lag of half an
+/// element, R/40: as `counterpart_fe.rs` and the plane's `radius_pressure.rs`), for
+/// `0.1 <= x <= min(0.4, x_max, FE's end)`.
+#[test]
+fn a_skin_on_a_core_on_a_ball_has_the_fe_contact_radius() {
+    let mut seen = 0;
+    for file in curves() {
+        let law = law_of(file);
+        let points = file.points().expect("parses");
+        let end = points.last().expect("points").x;
+        let fe = Smooth::fit(
+            &points
+                .iter()
+                .map(|p| (p.x, 0.0, p.radius_norm))
+                .collect::<Vec<_>>(),
+        );
+        let lag = 0.485 / 40.0;
+        let mut worst: f64 = 0.0;
+        for i in 0..=30 {
+            let x = 0.1 + 0.01 * f64::from(i);
+            if x > law.x_max().min(end) + 1e-9 {
+                break;
+            }
+            let p = law.patch(x);
+            assert_eq!(p.radius, p.radius2, "a ball's patch is a disc");
+            worst = worst.max((p.radius / (fe.at(x) + lag) - 1.0).abs());
+        }
+        println!("{:38} radius within {:5.2} %", file.path, 100.0 * worst);
+        assert!(
+            worst < RADIUS_TOLERANCE,
+            "{}: {:.2} %",
+            file.path,
+            100.0 * worst
+        );
+        seen += 1;
+    }
+    assert!(seen >= 4, "{seen} curves");
+}
+
+/// The radius's largest error seen on these curves (1.32-2.14 %, session 11), rounded up by
+/// 0.3 % (the plane's core radius is within 2.23 % of its FE; the target: 5 %).
+const RADIUS_TOLERANCE: f64 = 0.0245;

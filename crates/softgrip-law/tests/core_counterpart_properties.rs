@@ -1,0 +1,120 @@
+//! Property tests of the calibrated skin-on-core law on curved counterparts (`core_map`: its
+//! own table when bound): F(0) = 0, positive, monotone, finite for any input; the stiffness
+//! is the derivative of the force, the energy its integral, the inverse the inverse; binding
+//! is the same from any starting counterpart, and back on the plane it is the plane's law bit
+//! for bit.
+
+use proptest::prelude::*;
+use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level, Material};
+
+/// A calibrated core law (E*, R, nu, t/R random) and a counterpart in `kappa R`: balls and
+/// cylinders of R2/R 0.05-100, or two curvatures, concave to -0.99/R.
+fn core_law() -> impl Strategy<Value = (ContactLaw, Counterpart)> {
+    (
+        1e3f64..1e9,
+        0.3f64..0.4999,
+        1e-4f64..0.1,
+        0.05f64..0.95,
+        prop_oneof![
+            (-3.0f64..2.0).prop_map(|l| (10f64.powf(-l), 10f64.powf(-l))),
+            (-3.0f64..2.0).prop_map(|l| (0.0, 10f64.powf(-l))),
+            (-0.99f64..20.0, -0.99f64..20.0),
+        ],
+    )
+        .prop_filter_map("law binds", |(e, nu, r, tau, (k1, k2))| {
+            let p = ContactParams::try_new(Material::try_new(e, nu).ok()?, r)
+                .ok()?
+                .with_backing(Backing::Core { thickness: tau * r })
+                .ok()?;
+            let law = ContactLaw::try_new(p, Level::Calibrated).ok()?;
+            let cp = Counterpart::try_curved(k1 / r, k2 / r).ok()?;
+            Some((law.with_counterpart(cp).ok()?, cp))
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn force_is_zero_at_contact_positive_and_monotone(
+        (law, _) in core_law(), a in 1e-6f64..1.5, b in 1e-6f64..1.5,
+    ) {
+        prop_assert_eq!(law.response(0.0).force, 0.0);
+        prop_assert_eq!(law.energy(0.0), 0.0);
+        let d = law.delta_max();
+        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+        let (rl, rh) = (law.response(lo * d), law.response(hi * d));
+        prop_assert!(rl.force > 0.0 && rl.force.is_finite() && rl.stiffness > 0.0);
+        prop_assert!(rl.force <= rh.force && law.energy(lo * d) <= law.energy(hi * d));
+    }
+
+    #[test]
+    fn hot_path_is_finite_for_any_input((law, _) in core_law(), delta in prop::num::f64::ANY) {
+        let r = law.response(delta);
+        prop_assert!(r.force.is_finite() && r.force >= 0.0);
+        prop_assert!(r.stiffness.is_finite() && r.stiffness >= 0.0);
+        prop_assert!(law.energy(delta).is_finite());
+        let p = law.patch(delta);
+        prop_assert!(p.radius.is_finite() && p.radius2.is_finite() && p.peak_pressure.is_finite());
+    }
+
+    /// K = dF/d delta against a central difference (relative step 1e-6).
+    #[test]
+    fn stiffness_is_the_derivative_of_force((law, _) in core_law(), s in 0.01f64..0.97) {
+        let delta = s * law.delta_max();
+        let h = 1e-6 * delta;
+        let fd = (law.response(delta + h).force - law.response(delta - h).force) / (2.0 * h);
+        let k = law.response(delta).stiffness;
+        prop_assert!((k - fd).abs() <= 1e-5 * k, "K {} fd {} at {}", k, fd, delta);
+    }
+
+    /// W(delta) against Simpson's rule in u = sqrt(delta).
+    #[test]
+    fn energy_is_the_integral_of_force((law, _) in core_law(), s in 0.05f64..1.3) {
+        let delta = s * law.delta_max();
+        let n = 2000;
+        let top = delta.sqrt();
+        let h = top / f64::from(n);
+        let g = |u: f64| 2.0 * u * law.response(u * u).force;
+        let mut q = g(0.0) + g(top);
+        for i in 1..n {
+            q += if i % 2 == 1 { 4.0 } else { 2.0 } * g(f64::from(i) * h);
+        }
+        q *= h / 3.0;
+        let w = law.energy(delta);
+        prop_assert!((w / q - 1.0).abs() < 1e-6, "W {} quadrature {}", w, q);
+    }
+
+    #[test]
+    fn inverse_is_the_inverse((law, _) in core_law(), s in 0.001f64..1.0) {
+        let f = s * law.force_max();
+        let delta = law.compression_for_force(f).expect("inside the range");
+        prop_assert!((law.response(delta).force / f - 1.0).abs() < 1e-6);
+    }
+
+    /// Binding from the plane, from another counterpart or twice gives the same law; back on
+    /// the plane, the plane's law bit for bit (the core's own table is rebuilt both ways).
+    #[test]
+    fn binding_does_not_depend_on_the_previous_counterpart(
+        (law, cp) in core_law(), s in 0.01f64..1.0,
+    ) {
+        let plane = ContactLaw::try_new(*law.params(), Level::Calibrated).expect("builds");
+        let other = Counterpart::try_ball(3.0 * law.params().radius()).expect("a ball");
+        let via = plane.with_counterpart(other).and_then(|l| l.with_counterpart(cp)).expect("binds");
+        let again = law.with_counterpart(cp).expect("binds");
+        let back = law.with_counterpart(Counterpart::PLANE).expect("binds");
+        let d = s * law.delta_max();
+        let bits = |l: &ContactLaw| {
+            let r = l.response(d);
+            (r.force.to_bits(), r.stiffness.to_bits(), l.energy(d).to_bits(), l.delta_max().to_bits())
+        };
+        prop_assert_eq!(bits(&via), bits(&law));
+        prop_assert_eq!(bits(&again), bits(&law));
+        let dp = s * plane.delta_max();
+        let pb = |l: &ContactLaw| {
+            let r = l.response(dp);
+            (r.force.to_bits(), r.stiffness.to_bits(), l.energy(dp).to_bits(), l.patch(dp).radius.to_bits())
+        };
+        prop_assert_eq!(pb(&back), pb(&plane));
+    }
+}

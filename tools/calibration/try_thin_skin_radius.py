@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Session 11: why thin skins miss the 2 % (tools/calibration/CORE_FORM.md, "Thin skins: the
+patch at small a/t"), an experiment, not the law. The core law's layer excess L takes the law's
+own contact radius a_core; on a thin skin at small x that radius is extrapolated (the radius
+form is fitted at x >= 0.1, u = a_H/t >= 1.6 for t/R 0.2) and widens the patch over the flat
+one by 24-25 % at x = 0.01 (t/R 0.2) where the bonded layer's first order (Dimitriadis: a
+uniform displacement of the surface, so a^2 = R delta (1 + (2/3) d1 a/h) and
+a/a_H = 1 + (d1/3) a_H/(t h)) gives 15-17 %. The FE's radius at x <= 0.04 (R/40, one node
+step) is below the law's as well. Here L is given the widening of the first-order theory at
+small u, the law's saturation beyond, blended as t1 w / sqrt(t1^2 + w^2) (t1 = (d1/3) u_h,
+w the law's widening; no new constant), the seven force constants refitted:
+
+    base:  fitted 2.48 %, held out 2.37 % (today's law)
+    min:   fitted 2.37 %, held out 3.47 % (the widening capped at the first order)
+    blend: fitted 2.23 %, held out 2.28 % (t/R 0.15 at nu 0.47: 2.28 %)
+
+The direction holds (the small-x excess on thin skins shrinks) but not to 2 %: the radius form
+itself (fit_radius_pressure.py) would have to take the first order, and the force be refitted
+on it; not done in session 11.
+
+usage: cd tools/calibration && target/fe-venv/bin/python try_thin_skin_radius.py base|min|blend
+"""
+import sys
+
+import numpy as np
+
+import fit_core as f
+
+ORIGINAL = f.radius
+
+
+def radius(x, nu, tau, mode):
+    af, ac = ORIGINAL(x, nu, tau)
+    h = 1 + tau * tau / (1 - tau)
+    t1 = f.dimitriadis_d1(nu) / 3 * np.sqrt(x) / (tau * h)
+    w = ac / af - 1
+    if mode == "min":
+        w = np.minimum(w, t1)
+    elif mode == "blend":
+        w = t1 * w / np.sqrt(t1 ** 2 + w ** 2)
+    return af, af * (1 + w)
+
+
+def main(mode):
+    f.radius = lambda x, nu, tau: radius(x, nu, tau, mode)  # noqa: E731
+    curves = f.load()
+    train = [c for c in curves if not c["held"]]
+    held = [c for c in curves if c["held"]]
+    p = f.fit(train)
+    print(f"{mode}: constants {np.round(p, 4)}; fitted max "
+          f"{max(f.worst(p, c)[0] for c in train):.2f} %, held out max "
+          f"{max(f.worst(p, c)[0] for c in held):.2f} %")
+    for c in curves:
+        if c["tau"] <= 0.25:
+            w, x = f.worst(p, c)
+            print(f"  {c['name']}: {w:.2f} % at x = {x:g}{' (held out)' if c['held'] else ''}")
+    print("check: " + f.check(p))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "blend")
