@@ -71,7 +71,10 @@ fn force_error_to(file: &FeFile, law: &ContactLaw, to: f64) -> (f64, f64) {
 /// `ball/*/force_nu0.4_k6.csv`, `ball/flat/force_nu0.45_k1.5.csv`,
 /// `ball/free/force_nu0.35_k3.csv`), the cylinders, and every curve that landed after the
 /// constants were fixed (blind: `ball/free/force_nu0.499_k2.csv`, and the campaign's end of
-/// session 10, R2/R = 4 and 10 at nu 0.3, 0.48 (10), 0.499 and R/2 at nu 0.499).
+/// session 10, R2/R = 4 and 10 at nu 0.3, 0.48 (10), 0.499 and R/2 at nu 0.499), and session
+/// 11's runs at nu and R2/R no other run has (`ball/free/force_nu0.42_k1.5.csv`,
+/// `ball/flat/force_nu0.35_k0.7.csv`: each stopped at the FE's wall-clock limit, x = 0.56 and
+/// 0.63).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/free/force_nu0.3_k0.5.csv" => 1.96,
@@ -92,6 +95,9 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/free/force_nu0.499_k10.csv" => 0.90,
         "ball/free/force_nu0.4_k0.7.csv" => 2.42,
         "ball/free/force_nu0.4_k6.csv" => 1.35,
+        // Session 11's held-out runs (blind: run after the constants were fixed).
+        "ball/free/force_nu0.42_k1.5.csv" => 1.22,
+        "ball/flat/force_nu0.35_k0.7.csv" => 1.53,
         "ball/flat/force_nu0.3_k0.5.csv" => 3.76,
         "ball/flat/force_nu0.3_k1.csv" => 5.05,
         "ball/flat/force_nu0.3_k2.csv" => 3.44,
@@ -197,7 +203,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         }
         seen += 1;
     }
-    assert!(seen >= 39, "{seen} curves");
+    assert!(seen >= 41, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
