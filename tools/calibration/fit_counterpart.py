@@ -164,28 +164,40 @@ def load(data):
 
 
 # ---------------------------------------------------------------- the map
+LAW = "r+g+q, eps"
+# The order in eps of the plane law's compressible softening (its denominator's b^2 eps x^2
+# bonded, (b eps)^2 x^2 free): the collapse term's.
+COLLAPSE_ORDER = {"free": 2, "flat": 1}
+# Sneddon's shrink of the patch by the counterpart's quartic, a = a_H (1 - (a/R2)^2/6) for a
+# rigid sphere on a half-space, weighted by the compressibility eps/eps(0.3) (no constant fitted).
+SNEDDON_SHRINK = 1 / 6
+EPS_VALIDATED = 3 * (1 - 0.6) / (2 * 1.3)
 FORMS = {
     # name: (free parameters, description)
     "theory": "rho = rho_H (r = 1), no counterpart size (g = 0): the patch argument alone",
     "r": "r fitted, g = 0",
     "r+g": "r and g fitted, one pair per construction (the law's form at nu = 0.48 only)",
-    "r+g, eps": "r = r0 + r1 eps, g = g0 + g1 eps (the law's form)",
+    "r+g, eps": "r = r0 + r1 eps, g = g0 + g1 eps (the law up to session 10)",
+    LAW: "r+g, eps and the collapse term q eps^n (1 - rho_H) x^(7/2) (the law's form)",
 }
 
 
 def unpack(form, p):
-    """(r0, r1, g0, g1) of a form's parameter vector."""
+    """(r0, r1, g0, g1, q) of a form's parameter vector."""
     if form == "theory":
-        return (1.0, 0.0, 0.0, 0.0)
+        return (1.0, 0.0, 0.0, 0.0, 0.0)
     if form == "r":
-        return (p[0], 0.0, 0.0, 0.0)
+        return (p[0], 0.0, 0.0, 0.0, 0.0)
     if form == "r+g":
-        return (p[0], 0.0, p[1], 0.0)
+        return (p[0], 0.0, p[1], 0.0, 0.0)
+    if form == "r+g, eps":
+        return tuple(p) + (0.0,)
     return tuple(p)
 
 
 def start(form):
-    return {"theory": [], "r": [0.8], "r+g": [0.8, 0.2], "r+g, eps": [0.8, 0.0, 0.2, 0.0]}[form]
+    return {"theory": [], "r": [0.8], "r+g": [0.8, 0.2], "r+g, eps": [0.8, 0.0, 0.2, 0.0],
+            LAW: [0.8, 0.0, 0.2, 0.0, 0.0]}[form]
 
 
 def geometry(c):
@@ -208,16 +220,27 @@ def law(c, x, coef):
         f = s * f_plane(rho * x, c.nu, c.construction)
         top = min(x_max_plane(c.nu, c.construction) / rho, REACH[c.construction])
         return f, None, rho, top
-    r0, r1, g0, g1 = coef[c.construction]
+    r0, r1, g0, g1, q = coef[c.construction]
+    eps = min(eps, EPS_VALIDATED)
     r, g = r0 + r1 * eps, g0 + g1 * eps
     h, alpha, beta, mu = geometry(c)
     rho_h = h * h
     rho = 1 / (1 + r * (1 / rho_h - 1))
     f = h / rho ** 1.5 * f_plane(rho * x, c.nu, c.construction) - 4 / 3 * h * g * mu * x ** 2.5
+    # The collapse: the plane law's compressible softening (order eps^n) changed in proportion
+    # to how much the counterpart narrows the patch (1 - rho_H).
+    f = f + 4 / 3 * h * q * eps ** COLLAPSE_ORDER[c.construction] * (1 - rho_h) * x ** 3.5
     ap = a_plane(rho * x, c.nu, c.construction) / np.sqrt(rho)
     reach = 1 / mu if mu > 0 else np.inf
     top = min(x_max_plane(c.nu, c.construction) / rho, REACH[c.construction], reach)
-    return f, (alpha * ap, beta * ap), rho, top
+    # Sneddon's shrink per semi-axis, (a_i kappa_i)^2 = alpha_i^2 k_i |k_i| x, weighted by
+    # eps/eps(0.3); not for the patch argument alone (theory: r = 1, g = 0).
+    k1, k2 = (1 / c.k, 1 / c.k) if c.kind == "ball" else (0.0, 1 / c.k)
+    gamma = 0.0 if (r0, r1, g0, g1) == (1.0, 0.0, 0.0, 0.0) else SNEDDON_SHRINK * eps / EPS_VALIDATED
+    xs = np.minimum(x, top)
+    axes = (alpha * ap * (1 - gamma * alpha ** 2 * k1 * abs(k1) * xs),
+            beta * ap * (1 - gamma * beta ** 2 * k2 * abs(k2) * xs))
+    return f, axes, rho, top
 
 
 def errors(c, coef):
@@ -380,22 +403,22 @@ def main():
                 continue
             tag = "held out" if c.held_out else "fitted"
             print(f"  {c.name():32s} {tag:8s} force {100 * worst(c, coef):6.2f} %")
-        if form == "r+g, eps":
+        if form == LAW:
             best = coef
     # Leave-one-out of the law's form: each fitted curve out of its construction's fit.
-    print("\n## the law (`r+g, eps`): its validity range against the FE's reach")
+    print(f"\n## the law (`{LAW}`): its validity range against the FE's reach")
     for c in curves:
         if c.kind == "edge":
             continue
         _, _, rho, top = law(c, c.x, best)
         print(f"  {c.name():32s} rho = {rho:.3f}, law to x = {min(top, c.x.max()):.3f}, "
               f"FE to {c.x.max():.2f}")
-    print("\n## `r+g, eps`, each curve left out of the fit in turn (the only curve at its nu and construction: then an extrapolation in nu; nan: the law ends before x = 0.01)")
+    print(f"\n## `{LAW}`, each curve left out of the fit in turn (the only curve at its nu and construction: then an extrapolation in nu; nan: the law ends before x = 0.01)")
     for c in fitted:
         if c.kind == "edge":
             continue
         rest = [o for o in fitted if o is not c]
-        coef = {c.construction: fit(rest, c.construction, "r+g, eps")}
+        coef = {c.construction: fit(rest, c.construction, LAW)}
         print(f"  {c.name():32s} force {100 * worst(c, coef):6.2f} %")
     for cons in ("free", "flat"):
         e = fit_edge(fitted, cons)
@@ -405,13 +428,13 @@ def main():
             for c in curves:
                 if c.kind == "edge" and c.construction == cons:
                     print(f"  {c.name():32s} force {100 * worst(c, best):6.2f} %")
-    print("\n## radius (law `r+g, eps`) against the FE estimate a* (a_lin smoothed + 0.485 R/N), 0.1 <= x <= 0.4")
+    print(f"\n## radius (law `{LAW}`) against the FE estimate a* (a_lin smoothed + 0.485 R/N), 0.1 <= x <= 0.4")
     for c in curves:
         for which, e in zip(("a", "b"), radius_errors(c, best)):
             if not len(e):
                 continue
             print(f"  {c.name():32s} {which}: {100 * np.max(np.abs(e)):6.2f} % (mean {100 * np.mean(e):+.2f} %)")
-    print("\n## cylinder semi-axes (law `r+g, eps`) against the 3D FE (last node in contact, smoothed), "
+    print(f"\n## cylinder semi-axes (law `{LAW}`) against the 3D FE (last node in contact, smoothed), "
           "0.1 <= x <= 0.4, raw and with the 3D mesh's bias on a plane removed")
     correct = plane_bias_3d(args.data)
     for c in curves:

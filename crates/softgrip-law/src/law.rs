@@ -14,6 +14,7 @@ use crate::material::ContactParams;
 use crate::pressure::ContactPatch;
 use crate::root::{Probe, Stop, newton_bracketed};
 use crate::tabulated::TabulatedCurve;
+use crate::tail::Tail;
 
 /// Where a hot-path evaluation fell.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -136,9 +137,9 @@ pub struct ContactLaw {
     stiffness_scale: f64,
     /// `R/rho` \[m\]: the energy is `w force_scale R/rho`.
     energy_length: f64,
-    /// The counterpart's own finite size (`mapping`): `tau E* R^2` \[N\], the force
-    /// `tail x^(5/2)` subtracted from the mapped plane law (0 on a plane and an edge).
-    tail: f64,
+    /// The counterpart's terms (`mapping`, `tail`): the force `t5 x^(5/2) + t7 x^(7/2)` \[N\]
+    /// subtracted from the mapped plane law (0 on a plane and an edge).
+    tail: Tail,
     /// The counterpart and its map ([`with_counterpart`](Self::with_counterpart)).
     counterpart: Counterpart,
     map: CounterpartMap,
@@ -215,7 +216,7 @@ impl ContactLaw {
             force_scale: e * r * r,
             stiffness_scale: e * r,
             energy_length: r,
-            tail: 0.0,
+            tail: Tail::ZERO,
             counterpart: Counterpart::PLANE,
             map: CounterpartMap::IDENTITY,
             edge,
@@ -297,7 +298,10 @@ impl ContactLaw {
             force_scale: s * e * r * r,
             stiffness_scale: s * map.rho * e * r,
             energy_length: r / map.rho,
-            tail: map.tail * e * r * r,
+            tail: Tail {
+                t5: map.tail[0] * e * r * r,
+                t7: map.tail[1] * e * r * r,
+            },
             counterpart,
             map,
             edge,
@@ -312,7 +316,7 @@ impl ContactLaw {
     /// between two stiff samples would be missed (the property tests check the monotonicity
     /// over random counterparts down to R2 = R/20).
     fn without_softening(mut self) -> Self {
-        if self.tail <= 0.0 {
+        if !self.tail.may_soften() {
             return self;
         }
         const SAMPLES: u32 = 16;
@@ -381,13 +385,21 @@ impl ContactLaw {
 
     /// Largest compression of the validity range, `x_max R` \[m\].
     pub fn delta_max(&self) -> f64 {
-        self.edge.x * self.params.radius() / self.map.rho
+        let d = self.edge.x * self.params.radius() / self.map.rho;
+        // On a counterpart, rounding can put `x_max R/rho` one ulp past the range once mapped
+        // back by `rho/R` (seen on a bowl of 2R at nu = 0.49): step down so that
+        // `evaluate(delta_max())` holds. A plane keeps its value bit for bit (recordings store it).
+        if !self.counterpart.is_plane() && d * self.x_scale > self.edge.x {
+            d.next_down()
+        } else {
+            d
+        }
     }
 
     /// Force at the end of the validity range \[N\].
     pub fn force_max(&self) -> f64 {
         let f = self.edge.f * self.force_scale;
-        if self.tail == 0.0 {
+        if self.tail.is_zero() {
             return f;
         }
         f - self.tail_at(self.edge.x / self.map.rho).0
@@ -427,7 +439,7 @@ impl ContactLaw {
         if x > 0.0 && x <= self.edge.x {
             let (f, k, level) = self.curve.force_stiffness(x);
             let (mut force, mut stiffness) = (f * self.force_scale, k * self.stiffness_scale);
-            if self.tail != 0.0 {
+            if !self.tail.is_zero() {
                 let (tf, tk) = self.tail_at(delta * self.inv_radius);
                 force -= tf;
                 stiffness -= tk;
@@ -442,15 +454,10 @@ impl ContactLaw {
         self.response_outside(x)
     }
 
-    /// The counterpart's finite-size term at `x = delta/R`: its force `tail x^(5/2)` \[N\] and
-    /// stiffness `(5/2) tail x^(3/2) / R` \[N/m\].
+    /// The counterpart's terms at `x = delta/R`: their force \[N\] and stiffness \[N/m\].
     #[inline(always)]
     fn tail_at(&self, x: f64) -> (f64, f64) {
-        let s = x.sqrt();
-        (
-            self.tail * x * x * s,
-            2.5 * self.tail * x * s * self.inv_radius,
-        )
+        self.tail.at(x, self.inv_radius)
     }
 
     /// Separated, extended or non-finite: off the hot path.
@@ -467,7 +474,7 @@ impl ContactLaw {
             (e.f + e.k * (X_FROZEN - e.x), 0.0, Regime::Extended)
         };
         let (mut force, mut stiffness) = (f * self.force_scale, k * self.stiffness_scale);
-        if self.tail != 0.0 && regime == Regime::Extended {
+        if !self.tail.is_zero() && regime == Regime::Extended {
             // The tail extended by its tangent at the edge, frozen with the rest.
             let (xe, xc) = (e.x / self.map.rho, x.min(X_FROZEN) / self.map.rho);
             let (tf, tk) = self.tail_at(xe);
@@ -500,14 +507,14 @@ impl ContactLaw {
             e.w + e.f * dx + 0.5 * e.k * dx * dx
         };
         let energy = w * self.force_scale * self.energy_length;
-        if self.tail == 0.0 {
+        if self.tail.is_zero() {
             return energy;
         }
-        // The tail's integral, tail R x^(7/2)/(7/2), and past the edge its tangent's.
+        // The tail's integral, and past the edge its tangent's.
         let r = self.params.radius();
         let (xp, xe) = (x.min(X_FROZEN) / self.map.rho, e.x / self.map.rho);
         let inside = xp.min(xe);
-        let mut w_tail = self.tail * r * inside.powi(3) * inside.sqrt() / 3.5;
+        let mut w_tail = self.tail.integral(inside, r);
         if xp > xe {
             let (tf, tk) = self.tail_at(xe);
             let d = xp - xe;
@@ -540,8 +547,16 @@ impl ContactLaw {
         if self.counterpart.is_plane() {
             ContactPatch::with_profile(force, a, m, b)
         } else {
+            // The counterpart's shrink of each semi-axis, frozen at the range's edge.
+            let xs = (delta * self.inv_radius).min(e.x / self.map.rho);
             let [c1, c2] = self.map.axes;
-            ContactPatch::with_ellipse(force, [c1 * a, c2 * a], m, b)
+            let [s1, s2] = self.map.shrink;
+            ContactPatch::with_ellipse(
+                force,
+                [c1 * a * (1.0 - s1 * xs), c2 * a * (1.0 - s2 * xs)],
+                m,
+                b,
+            )
         }
     }
 
@@ -610,7 +625,7 @@ impl ContactLaw {
             });
         }
         let f_target = force / self.force_scale;
-        let beyond = if self.tail == 0.0 {
+        let beyond = if self.tail.is_zero() {
             f_target > self.edge.f
         } else {
             force > self.force_max()
@@ -626,7 +641,7 @@ impl ContactLaw {
         if f_target == 0.0 {
             return Ok(0.0);
         }
-        if self.tail != 0.0 {
+        if !self.tail.is_zero() {
             return Ok(self.compression_with_tail(force));
         }
         let x = match &self.curve {

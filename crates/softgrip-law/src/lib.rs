@@ -23,6 +23,7 @@ mod recorded_curve;
 mod root;
 mod setting;
 mod tabulated;
+mod tail;
 
 pub use backing::{Backing, MIN_CORE_THICKNESS_RATIO};
 pub use backing_table::{BACKINGS, BackingInfo, BackingKind, BackingParameter};

@@ -65,53 +65,59 @@ fn force_error_to(file: &FeFile, law: &ContactLaw, to: f64) -> (f64, f64) {
 }
 
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
-/// (`r+g, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
+/// (`r+g+q, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
 /// every fit: the campaign's held-out runs (`ball/*/force_nu0.4_k0.7.csv`,
 /// `ball/*/force_nu0.4_k6.csv`, `ball/flat/force_nu0.45_k1.5.csv`,
 /// `ball/free/force_nu0.35_k3.csv`), the cylinders, and every curve that landed after the
 /// constants were fixed (blind: `ball/free/force_nu0.499_k2.csv`, and the campaign's end of
-/// session 10, R2/R = 4 and 10 at nu 0.3, 0.48 (10), 0.499 and R/2 at nu 0.499).
+/// session 10, R2/R = 4 and 10 at nu 0.3, 0.48 (10), 0.499 and R/2 at nu 0.499), and session
+/// 11's runs at nu and R2/R no other run has (`ball/free/force_nu0.42_k1.5.csv`,
+/// `ball/flat/force_nu0.35_k0.7.csv`: each stopped at the FE's wall-clock limit, x = 0.56 and
+/// 0.63).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/free/force_nu0.3_k0.5.csv" => 3.04,
-        "ball/free/force_nu0.3_k1.csv" => 1.12,
-        "ball/free/force_nu0.3_k2.csv" => 3.12,
-        "ball/free/force_nu0.3_k4.csv" => 4.96,
-        "ball/free/force_nu0.3_k10.csv" => 2.12,
-        "ball/free/force_nu0.35_k3.csv" => 1.93,
-        "ball/free/force_nu0.48_k0.5.csv" => 1.17,
-        "ball/free/force_nu0.48_k1.csv" => 1.55,
-        "ball/free/force_nu0.48_k2.csv" => 0.85,
-        "ball/free/force_nu0.48_k4.csv" => 1.66,
-        "ball/free/force_nu0.48_k10.csv" => 2.39,
-        "ball/free/force_nu0.499_k0.5.csv" => 2.65,
-        "ball/free/force_nu0.499_k1.csv" => 1.72,
-        "ball/free/force_nu0.499_k2.csv" => 1.43,
-        "ball/free/force_nu0.499_k4.csv" => 2.03,
+        "ball/free/force_nu0.3_k0.5.csv" => 1.96,
+        "ball/free/force_nu0.3_k1.csv" => 0.95,
+        "ball/free/force_nu0.3_k2.csv" => 1.93,
+        "ball/free/force_nu0.3_k4.csv" => 3.64,
+        "ball/free/force_nu0.3_k10.csv" => 1.99,
+        "ball/free/force_nu0.35_k3.csv" => 0.94,
+        "ball/free/force_nu0.48_k0.5.csv" => 1.21,
+        "ball/free/force_nu0.48_k1.csv" => 1.52,
+        "ball/free/force_nu0.48_k2.csv" => 0.86,
+        "ball/free/force_nu0.48_k4.csv" => 1.71,
+        "ball/free/force_nu0.48_k10.csv" => 2.43,
+        "ball/free/force_nu0.499_k0.5.csv" => 1.62,
+        "ball/free/force_nu0.499_k1.csv" => 1.66,
+        "ball/free/force_nu0.499_k2.csv" => 1.41,
+        "ball/free/force_nu0.499_k4.csv" => 1.64,
         "ball/free/force_nu0.499_k10.csv" => 0.90,
-        "ball/free/force_nu0.4_k0.7.csv" => 3.16,
-        "ball/free/force_nu0.4_k6.csv" => 1.39,
-        "ball/flat/force_nu0.3_k0.5.csv" => 5.34,
-        "ball/flat/force_nu0.3_k1.csv" => 8.02,
-        "ball/flat/force_nu0.3_k2.csv" => 5.03,
-        "ball/flat/force_nu0.3_k4.csv" => 2.83,
-        "ball/flat/force_nu0.3_k10.csv" => 1.26,
-        "ball/flat/force_nu0.45_k1.5.csv" => 1.60,
-        "ball/flat/force_nu0.48_k0.5.csv" => 1.91,
-        "ball/flat/force_nu0.48_k1.csv" => 1.17,
-        "ball/flat/force_nu0.48_k2.csv" => 1.21,
-        "ball/flat/force_nu0.48_k4.csv" => 0.84,
-        "ball/flat/force_nu0.48_k10.csv" => 0.63,
-        "ball/flat/force_nu0.499_k1.csv" => 1.28,
-        "ball/flat/force_nu0.499_k2.csv" => 2.82,
-        "ball/flat/force_nu0.499_k4.csv" => 2.10,
-        "ball/flat/force_nu0.499_k10.csv" => 1.37,
-        "ball/flat/force_nu0.4_k0.7.csv" => 1.31,
-        "ball/flat/force_nu0.4_k6.csv" => 0.77,
-        "cylinder/flat/force_nu0.48_k1.csv" => 1.11,
-        "cylinder/flat/force_nu0.48_k3.csv" => 0.93,
-        "cylinder/free/force_nu0.48_k1.csv" => 1.50,
+        "ball/free/force_nu0.4_k0.7.csv" => 2.42,
+        "ball/free/force_nu0.4_k6.csv" => 1.35,
+        // Session 11's held-out runs (blind: run after the constants were fixed).
+        "ball/free/force_nu0.42_k1.5.csv" => 1.22,
+        "ball/flat/force_nu0.35_k0.7.csv" => 1.53,
+        "ball/flat/force_nu0.3_k0.5.csv" => 3.76,
+        "ball/flat/force_nu0.3_k1.csv" => 5.05,
+        "ball/flat/force_nu0.3_k2.csv" => 3.44,
+        "ball/flat/force_nu0.3_k4.csv" => 2.52,
+        "ball/flat/force_nu0.3_k10.csv" => 1.21,
+        "ball/flat/force_nu0.45_k1.5.csv" => 1.81,
+        "ball/flat/force_nu0.48_k0.5.csv" => 2.27,
+        "ball/flat/force_nu0.48_k1.csv" => 1.27,
+        "ball/flat/force_nu0.48_k2.csv" => 1.48,
+        "ball/flat/force_nu0.48_k4.csv" => 1.06,
+        "ball/flat/force_nu0.48_k10.csv" => 0.73,
+        "ball/flat/force_nu0.499_k1.csv" => 1.25,
+        "ball/flat/force_nu0.499_k2.csv" => 2.32,
+        "ball/flat/force_nu0.499_k4.csv" => 1.80,
+        "ball/flat/force_nu0.499_k10.csv" => 1.24,
+        "ball/flat/force_nu0.4_k0.7.csv" => 1.75,
+        "ball/flat/force_nu0.4_k6.csv" => 0.55,
+        "cylinder/flat/force_nu0.48_k1.csv" => 1.13,
+        "cylinder/flat/force_nu0.48_k3.csv" => 0.94,
+        "cylinder/free/force_nu0.48_k1.csv" => 1.47,
         "cylinder/free/force_nu0.48_k3.csv" => 0.72,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
@@ -134,31 +140,23 @@ const RANGE_SHORT: &[&str] = &[
     "ball/flat/force_nu0.499_k10.csv",
 ];
 
-/// The curves the law misses the 3 % on (COUNTERPART.md), all at nu <= 0.4: the bonded
-/// pad at nu = 0.3 on balls of R/2, R and 2R (5.34, 8.02, 5.03 %: too stiff at moderate x,
-/// too soft at the end, which one (r, g) per nu cannot follow); the free sphere at nu = 0.3 on
-/// balls of R/2 (3.04 %), 2R (3.12 %) and 4R (4.96 %, blind), all past x = 0.65, where the
-/// compressible material under the contact collapses (smallest element volume ratio 0.25-0.35,
-/// cut at 0.2; [`WITHIN_TARGET_TO`] asserts 3 % below); the held-out free ball of 0.7 R at
-/// nu = 0.4 (-3.2 % at x = 0.5: r and g linear in eps between nu 0.3 and 0.48, and the plane
-/// law itself -1.0 to -1.7 % off the plane's FE at nu = 0.4).
+/// The curves the law misses the 3 % on (COUNTERPART.md), all at nu = 0.3: the bonded
+/// pad on balls of R/2, R and 2R (3.76, 5.05, 3.44 %; 5.34, 8.02, 5.03 % before the collapse
+/// term: mid-x the ball of R/2 wants the law softer where R and 2R want it stiffer, which no
+/// term of one sign in K follows), and the free sphere on the ball of 4R (3.64 %, blind; 4.96 %
+/// before), past x = 0.65, where the compressible material under the contact collapses
+/// (smallest element volume ratio 0.25-0.35, cut at 0.2; [`WITHIN_TARGET_TO`] asserts 3 %
+/// below).
 const KNOWN_MISSES: &[&str] = &[
     "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.3_k2.csv",
-    "ball/free/force_nu0.3_k0.5.csv",
-    "ball/free/force_nu0.3_k2.csv",
     "ball/free/force_nu0.3_k4.csv",
-    "ball/free/force_nu0.4_k0.7.csv",
 ];
 
-/// The free misses at nu = 0.3 are the material's collapse past x = 0.65: below it each is
-/// within the 3 % (its error there; the test allows 0.2 % more).
-const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
-    ("ball/free/force_nu0.3_k0.5.csv", 0.65, 2.31),
-    ("ball/free/force_nu0.3_k2.csv", 0.65, 1.92),
-    ("ball/free/force_nu0.3_k4.csv", 0.65, 2.52),
-];
+/// The free miss at nu = 0.3 is the material's collapse past x = 0.65: below it within the
+/// issue's 3 % (its error there; the test allows 0.2 % more).
+const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[("ball/free/force_nu0.3_k4.csv", 0.65, 2.16)];
 
 #[test]
 fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
@@ -205,7 +203,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         }
         seen += 1;
     }
-    assert!(seen >= 39, "{seen} curves");
+    assert!(seen >= 41, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
@@ -226,10 +224,11 @@ fn fe_semi_axes(file: &FeFile) -> (Smooth, Option<Smooth>, f64) {
     (Smooth::fit(&across), along.map(|a| Smooth::fit(&a)), lag)
 }
 
-/// A ball's contact radius within 5 % of the FE's for 0.1 <= x <= 0.4 (seen: 0.7-5.7 %,
-/// the flat pad on the smallest ball the worst).
+/// A ball's contact radius within 5 % of the FE's for 0.1 <= x <= 0.4 (`fit_counterpart.py`:
+/// 0.9-4.6 %, the flat pad on R/2 at nu = 0.48 the worst; the ball of R/2 at nu = 0.3 was
+/// 8.85 % free and 9.00 % flat before Sneddon's shrink of the patch, `mapping`'s `gamma`).
 #[test]
-fn contact_radius_on_a_ball_is_within_six_percent_of_the_fe() {
+fn contact_radius_on_a_ball_is_within_five_percent_of_the_fe() {
     for file in curves().filter(|f| matches!(f.counterpart, FeCounterpart::Ball { .. })) {
         let end = file.points().expect("parses").last().expect("points").x;
         if end < 0.4 {
@@ -251,14 +250,7 @@ fn contact_radius_on_a_ball_is_within_six_percent_of_the_fe() {
             worst = worst.max((p.radius / (fe.at(x) + lag) - 1.0).abs());
         }
         println!("{:38} radius within {:5.2} %", file.path, 100.0 * worst);
-        // The ball of R/2 at nu = 0.3: 8.85 % free, 9.00 % flat (the law wider by about 5 % on
-        // average), a stated miss of the 5 % target (COUNTERPART.md).
-        let limit = if file.path.ends_with("force_nu0.3_k0.5.csv") {
-            0.095
-        } else {
-            0.06
-        };
-        assert!(worst < limit, "{}: {:.2} %", file.path, 100.0 * worst);
+        assert!(worst < 0.05, "{}: {:.2} %", file.path, 100.0 * worst);
     }
 }
 
