@@ -21,8 +21,10 @@ PINS=(
 )
 PACKAGES=(ros2/softgrip_msgs ros2/pypi/control_msgs)
 
+# The pinned wheels are CPython 3.11 builds (cp311 manylinux_2_28 x86_64).
 if [ ! -x "$VENV/bin/python" ]; then
-  python3 -m venv "$VENV" >&2
+  PY311=$(command -v python3.11 || command -v python3)
+  "$PY311" -m venv "$VENV" >&2
 fi
 VENV_ABS="$PWD/$VENV"
 FROZEN=$("$VENV/bin/python" -m pip freeze 2>/dev/null || true)
