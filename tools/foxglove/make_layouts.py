@@ -4,9 +4,10 @@
 - softgrip-micro.json: contacts_micro.ts (plots of the cells' forces in uN and radii in um);
 - softgrip-sphere.json (written from softgrip-micro.json): the millimetre sphere between plates
   (scenes/ecoflex_sphere.toml), grid 200 times larger, camera 400 times farther, plots in N and m;
-- softgrip-hand.json (written from softgrip.json): hand scenes (scenes/robots/), the pads of
-  HAND_TIPS (normal force per pad, tactile image per pad) and the joints' positions and efforts
-  from /joint_states in place of the contact radii.
+- softgrip-hand.json, softgrip-hand3.json (written from softgrip.json): the parallel gripper's
+  and the three-finger hand's scenes (scenes/robots/): the pads of HAND_TIPS / HAND3_TIPS
+  (normal force per pad, tactile image per pad) and the joints' positions and efforts from
+  /joint_states (two plots) in place of the contact radii.
 
 usage: python3 tools/foxglove/make_layouts.py          # rewrite both layouts in place
        python3 tools/foxglove/make_layouts.py --check  # exit 1 if a layout is stale
@@ -21,10 +22,13 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 TIPS = ["left_tip", "right_tip"]
-# The shipped parallel gripper's pads (scenes/robots/parallel_gripper_box.toml) and how many
-# joints /joint_states lists for it (finger_joint and its mimic).
+# The shipped parallel gripper's pads (scenes/robots/parallel_gripper_*.toml) and the joints
+# /joint_states lists for it, in its order (the URDF's).
 HAND_TIPS = ["left_pad", "right_pad"]
-HAND_JOINTS = 2
+HAND_JOINTS = ["finger_joint", "right_finger_joint"]
+# The shipped three-finger hand's (scenes/robots/three_finger_hand_*.toml).
+HAND3_TIPS = ["f0_pad", "f1_pad", "f2_pad"]
+HAND3_JOINTS = [f"f{f}_{j}_joint" for f in range(3) for j in ("proximal", "distal")]
 
 
 def script(tip: str) -> dict:
@@ -106,25 +110,75 @@ def build_sphere(_old: dict) -> dict:
     return layout
 
 
-def build_hand(_old: dict) -> dict:
-    """softgrip.json with HAND_TIPS' pads, and the joints' positions and efforts."""
+def build_hand_for(tips: list, joints: list) -> dict:
+    """softgrip.json with a hand's pads (a normal force plot and a tactile image per pad) and
+    its joints (as /joint_states lists them) in two plots: positions [m or rad] and efforts
+    [N or N m] (one plot for both hid the positions: 0.02 m beside -10 N)."""
     text = (HERE / "softgrip.json").read_text()
-    for old, new in zip(TIPS, HAND_TIPS):
+    for old, new in zip(TIPS, tips):
         text = text.replace(old, new)
     layout = json.loads(text)
-    cfg = layout["configById"]["Plot!radius"]
-    cfg["paths"] = [
+    plot = layout["configById"]["Plot!force"]
+    plot["paths"] = [
         {
-            "value": f"/joint_states.{field}[{j}]",
+            "value": f'/softgrip/contacts.contacts[:]{{fingertip=="{tip}"}}.normal_force',
             "enabled": True,
             "timestampMethod": "receiveTime",
-            "label": f"joint {j} {field}",
+            "label": f"{tip} normal_force",
         }
-        for field in ("position", "effort")
-        for j in range(HAND_JOINTS)
+        for tip in tips
     ]
-    cfg["title"] = "joints: position [m or rad], effort [N or N m]"
+    base = layout["configById"]["Plot!radius"]
+    for panel, field, title in [
+        ("Plot!radius", "position", "joint positions [m or rad]"),
+        ("Plot!effort", "effort", "joint efforts [N or N m]"),
+    ]:
+        cfg = json.loads(json.dumps(base))
+        cfg["paths"] = [
+            {
+                "value": f"/joint_states.{field}[{j}]",
+                "enabled": True,
+                "timestampMethod": "receiveTime",
+                "label": name,
+            }
+            for j, name in enumerate(joints)
+        ]
+        cfg["title"] = title
+        cfg["sidebarDimension"] = 40 + 12 * len(joints)
+        layout["configById"][panel] = cfg
+    images = [f"ImageViewPanel!{tip}" for tip in tips]
+    for tip in tips[len(TIPS):]:
+        layout["configById"][f"ImageViewPanel!{tip}"] = dict(
+            layout["configById"][f"ImageViewPanel!{tips[0]}"],
+            cameraTopic=f"/studio_script/softgrip/{tip}/tactile_turbo",
+        )
+        layout["userNodes"][f"tactile-turbo-{tip}"] = script(tip)
+    row = images[-1]
+    for k in reversed(range(len(images) - 1)):
+        # Equal widths: the first of the n - k images left takes 1 / (n - k) of the row.
+        share = round(100.0 / (len(images) - k), 3)
+        row = {"first": images[k], "second": row, "direction": "row", "splitPercentage": share}
+    layout["layout"]["second"] = {
+        "first": {
+            "first": "Plot!force",
+            "second": {"first": "Plot!radius", "second": "Plot!effort", "direction": "row"},
+            "direction": "column",
+        },
+        "second": row,
+        "direction": "column",
+        "splitPercentage": 60,
+    }
     return layout
+
+
+def build_hand(_old: dict) -> dict:
+    """The parallel gripper's scenes (scenes/robots/parallel_gripper_*.toml)."""
+    return build_hand_for(HAND_TIPS, HAND_JOINTS)
+
+
+def build_hand3(_old: dict) -> dict:
+    """The three-finger hand's scenes (scenes/robots/three_finger_hand_*.toml)."""
+    return build_hand_for(HAND3_TIPS, HAND3_JOINTS)
 
 
 def main() -> int:
@@ -134,6 +188,7 @@ def main() -> int:
         ("softgrip-micro.json", build_micro),
         ("softgrip-sphere.json", build_sphere),
         ("softgrip-hand.json", build_hand),
+        ("softgrip-hand3.json", build_hand3),
     ]:
         path = HERE / name
         old = path.read_text() if path.exists() else "{}"

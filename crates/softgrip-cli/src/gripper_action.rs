@@ -8,18 +8,17 @@
 //! and result, which a thread here sends.
 
 use std::collections::HashMap;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{PoisonError, mpsc};
-use std::thread::JoinHandle;
+use std::sync::PoisonError;
 use std::time::Duration;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use softgrip_ecs::scene::control::{
     ControlSet, GoalJoint, GoalResult, Grasp, GripperGoal, SharedInbox,
 };
 use softgrip_record::msgs::sensor_msgs::JointState;
 use softgrip_ros2::{GoalKey, GripperActionServer, NodeOptions, ParallelGripperResult};
+
+use crate::worker::Worker;
 
 /// How often the thread looks for goals, result requests and the simulation's answers.
 const POLL: Duration = Duration::from_millis(5);
@@ -219,8 +218,7 @@ fn lock(
 
 /// The action servers' thread.
 pub struct GripperActions {
-    stop: Arc<AtomicBool>,
-    thread: Option<JoinHandle<Result<Counts>>>,
+    worker: Worker<Counts>,
     names: Vec<String>,
 }
 
@@ -228,54 +226,41 @@ impl GripperActions {
     /// Serves each group's action on the domain of `ROS_DOMAIN_ID`; returns once every server
     /// exists (the first error, if one cannot).
     pub fn start(groups: Vec<Group>) -> Result<Self> {
-        let stop = Arc::new(AtomicBool::new(false));
         let names = (groups.iter())
             .map(|g| format!("/{}/{}", g.name, softgrip_ros2::GRIPPER_ACTION_SUFFIX))
             .collect();
-        let (ready_tx, ready_rx) = mpsc::channel::<Result<()>>();
-        let flag = Arc::clone(&stop);
-        let thread = std::thread::Builder::new()
-            .name("ros2-gripper-action".into())
-            .spawn(move || -> Result<Counts> {
-                let mut servers = Vec::new();
-                for g in groups {
-                    let options = NodeOptions {
-                        name: format!("softgrip_{}", g.name),
-                        ..NodeOptions::default()
-                    };
-                    match GripperActionServer::new(&options, &g.name) {
-                        Ok(s) => servers.push((s, g)),
-                        Err(e) => {
-                            let _ = ready_tx.send(Err(anyhow::anyhow!("{e}")));
-                            return Ok(Counts::default());
-                        }
+        let what = "serving control_msgs/action/ParallelGripperCommand";
+        let worker = Worker::start("ros2-gripper-action", what, move |stop, ready| {
+            let mut servers = Vec::new();
+            for g in groups {
+                let options = NodeOptions {
+                    name: format!("softgrip_{}", g.name),
+                    ..NodeOptions::default()
+                };
+                match GripperActionServer::new(&options, &g.name) {
+                    Ok(s) => servers.push((s, g)),
+                    Err(e) => {
+                        let _ = ready.send(Err(anyhow::anyhow!("{e}")));
+                        return Ok(Counts::default());
                     }
                 }
-                let _ = ready_tx.send(Ok(()));
-                let mut bridge = Bridge {
-                    servers,
-                    running: HashMap::new(),
-                    next_id: 0,
-                    counts: Counts::default(),
-                };
-                while !flag.load(Ordering::Relaxed) {
-                    bridge.step()?;
-                    std::thread::sleep(POLL);
-                }
-                // The simulation's last answers (a goal that ended in the last step).
+            }
+            let _ = ready.send(Ok(()));
+            let mut bridge = Bridge {
+                servers,
+                running: HashMap::new(),
+                next_id: 0,
+                counts: Counts::default(),
+            };
+            while !stop.stopped() {
                 bridge.step()?;
-                Ok(bridge.counts)
-            })
-            .context("starting the gripper action thread")?;
-        ready_rx
-            .recv()
-            .context("the gripper action thread ended at its start")?
-            .context("serving control_msgs/action/ParallelGripperCommand")?;
-        Ok(Self {
-            stop,
-            thread: Some(thread),
-            names,
-        })
+                std::thread::sleep(POLL);
+            }
+            // The simulation's last answers (a goal that ended in the last step).
+            bridge.step()?;
+            Ok(bridge.counts)
+        })?;
+        Ok(Self { worker, names })
     }
 
     /// The actions served.
@@ -284,22 +269,8 @@ impl GripperActions {
     }
 
     /// Stops the thread and returns what it did.
-    pub fn finish(mut self) -> Result<Counts> {
-        self.stop.store(true, Ordering::Relaxed);
-        match self.thread.take().map(JoinHandle::join) {
-            Some(Ok(counts)) => counts,
-            Some(Err(_)) => Err(anyhow::anyhow!("the gripper action thread panicked")),
-            None => Ok(Counts::default()),
-        }
-    }
-}
-
-impl Drop for GripperActions {
-    fn drop(&mut self) {
-        self.stop.store(true, Ordering::Relaxed);
-        if let Some(t) = self.thread.take() {
-            let _ = t.join();
-        }
+    pub fn finish(self) -> Result<Counts> {
+        self.worker.finish()
     }
 }
 

@@ -5,16 +5,14 @@
 //! `joint_commands` controller applies them at the next step (clamped to the URDF limits;
 //! unknown, fixed and mimic joints ignored).
 
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc;
-use std::thread::JoinHandle;
 use std::time::Duration;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use softgrip_ecs::scene::control::{JointCommand, SharedInbox};
 use softgrip_record::msgs::sensor_msgs::JointState;
 use softgrip_ros2::{NodeOptions, Ros2Subscriber};
+
+use crate::worker::Worker;
 
 /// The default command topic: `joint_state_topic_hardware_interface`'s (topic_based_ros2_control)
 /// default `joint_commands_topic`.
@@ -71,8 +69,7 @@ pub fn route(msg: &JointState, routes: &Routes, counts: &mut Counts) {
 
 /// The subscription's thread.
 pub struct CommandBridge {
-    stop: Arc<AtomicBool>,
-    thread: Option<JoinHandle<Result<Counts>>>,
+    worker: Worker<Counts>,
     topic: String,
 }
 
@@ -80,42 +77,33 @@ impl CommandBridge {
     /// Subscribes to `topic` (absolute) on the domain of `ROS_DOMAIN_ID` and routes what comes
     /// to `routes`; returns once the subscription exists (its error, if it cannot).
     pub fn start(topic: &str, routes: Routes) -> Result<Self> {
-        let stop = Arc::new(AtomicBool::new(false));
-        let (ready_tx, ready_rx) = mpsc::channel::<Result<()>>();
-        let (flag, name) = (Arc::clone(&stop), topic.to_owned());
-        let thread = std::thread::Builder::new()
-            .name("ros2-joint-commands".into())
-            .spawn(move || -> Result<Counts> {
-                let sub = match Ros2Subscriber::<JointState>::new(
-                    &NodeOptions::default(),
-                    &name,
-                    softgrip_ros2::qos::data(),
-                ) {
-                    Ok(s) => {
-                        let _ = ready_tx.send(Ok(()));
-                        s
-                    }
-                    Err(e) => {
-                        let _ = ready_tx.send(Err(anyhow::anyhow!("{e}")));
-                        return Ok(Counts::default());
-                    }
-                };
-                let mut counts = Counts::default();
-                while !flag.load(Ordering::Relaxed) {
-                    if let Some(msg) = sub.recv_timeout(POLL)? {
-                        route(&msg, &routes, &mut counts);
-                    }
+        let name = topic.to_owned();
+        let what = format!("subscribing to joint commands on {topic}");
+        let worker = Worker::start("ros2-joint-commands", &what, move |stop, ready| {
+            let sub = match Ros2Subscriber::<JointState>::new(
+                &NodeOptions::default(),
+                &name,
+                softgrip_ros2::qos::data(),
+            ) {
+                Ok(s) => {
+                    let _ = ready.send(Ok(()));
+                    s
                 }
-                Ok(counts)
-            })
-            .context("starting the joint command thread")?;
-        ready_rx
-            .recv()
-            .context("the joint command thread ended at its start")?
-            .with_context(|| format!("subscribing to joint commands on {topic}"))?;
+                Err(e) => {
+                    let _ = ready.send(Err(anyhow::anyhow!("{e}")));
+                    return Ok(Counts::default());
+                }
+            };
+            let mut counts = Counts::default();
+            while !stop.stopped() {
+                if let Some(msg) = sub.recv_timeout(POLL)? {
+                    route(&msg, &routes, &mut counts);
+                }
+            }
+            Ok(counts)
+        })?;
         Ok(Self {
-            stop,
-            thread: Some(thread),
+            worker,
             topic: topic.to_owned(),
         })
     }
@@ -126,22 +114,8 @@ impl CommandBridge {
     }
 
     /// Stops the thread and returns what came in.
-    pub fn finish(mut self) -> Result<Counts> {
-        self.stop.store(true, Ordering::Relaxed);
-        match self.thread.take().map(JoinHandle::join) {
-            Some(Ok(counts)) => counts,
-            Some(Err(_)) => Err(anyhow::anyhow!("the joint command thread panicked")),
-            None => Ok(Counts::default()),
-        }
-    }
-}
-
-impl Drop for CommandBridge {
-    fn drop(&mut self) {
-        self.stop.store(true, Ordering::Relaxed);
-        if let Some(t) = self.thread.take() {
-            let _ = t.join();
-        }
+    pub fn finish(self) -> Result<Counts> {
+        self.worker.finish()
     }
 }
 

@@ -18,6 +18,7 @@ mod run;
 mod signals;
 mod sweep;
 mod timing;
+mod worker;
 mod xrange;
 
 use std::process::ExitCode;

@@ -11,12 +11,37 @@ use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::{Message, Recording, topics};
 
 /// (recording, scene file).
-const RECORDINGS: [(&str, &str); 5] = [
+const RECORDINGS: [(&str, &str); 11] = [
     ("default.mcap", "scenes/default.toml"),
     ("ecoflex_sphere.mcap", "scenes/ecoflex_sphere.toml"),
     ("cell_live_hmsc.mcap", "scenes/cell_live_hmsc.toml"),
     ("cell_fixed_stained.mcap", "scenes/cell_fixed_stained.toml"),
     ("cell_live_stained.mcap", "scenes/cell_live_stained.toml"),
+    // The shipped hands (issue 25): each grasps a box, a ball and a cylinder.
+    (
+        "parallel_gripper_box.mcap",
+        "scenes/robots/parallel_gripper_box.toml",
+    ),
+    (
+        "parallel_gripper_ball.mcap",
+        "scenes/robots/parallel_gripper_ball.toml",
+    ),
+    (
+        "parallel_gripper_cylinder.mcap",
+        "scenes/robots/parallel_gripper_cylinder.toml",
+    ),
+    (
+        "three_finger_hand_box.mcap",
+        "scenes/robots/three_finger_hand_box.toml",
+    ),
+    (
+        "three_finger_hand_ball.mcap",
+        "scenes/robots/three_finger_hand_ball.toml",
+    ),
+    (
+        "three_finger_hand_cylinder.mcap",
+        "scenes/robots/three_finger_hand_cylinder.toml",
+    ),
 ];
 
 fn contacts(rec: &Recording) -> Vec<(u64, SoftContactMsg)> {

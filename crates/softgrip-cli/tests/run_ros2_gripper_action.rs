@@ -11,94 +11,36 @@
 //! up`), on ROS domain 33 set only through `ROS_DOMAIN_ID`.
 
 mod common;
+mod gripper_ros2;
 
 use std::collections::HashMap;
-use std::process::Command;
 
-use serde_json::Value;
-use softgrip_record::msgs::sensor_msgs::JointState;
-use softgrip_record::{Message, Recording, topics};
-
-fn floats(v: &Value) -> Vec<f64> {
-    (v.as_array().expect("array").iter())
-        .map(|x| x.as_f64().expect("number"))
-        .collect()
-}
-
-fn stamp(h: &Value) -> u64 {
-    h["stamp"]["sec"].as_u64().expect("sec") * 1_000_000_000
-        + h["stamp"]["nanosec"].as_u64().expect("nanosec")
-}
-
-/// The gripper scene without its grasp, with absolute paths, written to `dir`.
-fn scene(dir: &std::path::Path) -> std::path::PathBuf {
-    let root = common::root();
-    let text = std::fs::read_to_string(root.join("scenes/robots/parallel_gripper_box.toml"))
-        .expect("gripper scene");
-    let (head, _grasp) = text
-        .split_once("[[controller]]")
-        .expect("a controller section");
-    let urdf = root.join("robots/parallel_gripper/parallel_gripper.urdf");
-    let head = head.replace(
-        "\"../../robots/parallel_gripper/parallel_gripper.urdf\"",
-        &format!("{:?}", urdf.display().to_string()),
-    );
-    let path = dir.join("gripper.toml");
-    std::fs::write(&path, head).expect("write scene");
-    path
-}
-
-/// Runs the scene with `--ros2` and the client; its JSON and the recording.
-fn run(dir: &std::path::Path) -> (Value, Recording, String) {
-    let py = common::python();
-    let scene = scene(dir);
-    let mcap = dir.join("run.mcap");
-    let json = dir.join("received.json");
-    let script = common::root().join("crates/softgrip-cli/tests/python/gripper_action.py");
-    let bin = env!("CARGO_BIN_EXE_softgrip");
-    let shell = format!(
-        "set -e; ip link set lo up; \
-         '{py}' '{script}' --domain 33 --action /gripper/gripper_cmd --joint finger_joint \
-           --position 0.0 --velocity 0.01 --effort 5.0 --timeout 60 > '{json}' & sub=$!; \
-         ROS_DOMAIN_ID=33 '{bin}' run '{scene}' --ros2 --every 1 --out '{mcap}'; \
-         wait $sub",
-        script = script.display(),
-        json = json.display(),
-        mcap = mcap.display(),
-        scene = scene.display(),
-    );
-    let out = Command::new("unshare")
-        .args(["-n", "bash", "-c", &shell])
-        .output()
-        .expect("unshare runs (util-linux; root or user namespaces needed)");
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "stdout:\n{stdout}\nstderr:\n{stderr}");
-    let received: Value =
-        serde_json::from_str(&std::fs::read_to_string(&json).expect("json")).expect("valid json");
-    (
-        received,
-        Recording::open(&mcap).expect("the run's recording"),
-        stdout,
-    )
-}
+use gripper_ros2::{check_joint_states, floats, recorded_joint_states, stamp};
+use softgrip_record::Message;
 
 #[test]
 fn a_gripper_goal_closes_the_hand_on_the_box_and_holds_at_its_effort() {
     let dir = common::temp_dir("ros2-gripper-action");
-    let (received, recording, stdout) = run(&dir);
+    let py = common::python();
+    let script = common::root().join("crates/softgrip-cli/tests/python/gripper_action.py");
+    let client = format!(
+        "'{py}' '{}' --domain 33 --action /gripper/gripper_cmd --joint finger_joint \
+         --position 0.0 --velocity 0.01 --effort 5.0 --timeout 60",
+        script.display()
+    );
+    let scene = gripper_ros2::gripper_scene(&dir, 5.0);
+    let gripper_ros2::Ros2Run {
+        received,
+        recording,
+        stdout,
+    } = gripper_ros2::run_beside(&dir, &scene, 33, &client);
     assert!(
         stdout.contains("ros2: gripper actions /gripper/gripper_cmd: 1 goals accepted (0 reached, 1 stalled), 0 refused"),
         "{stdout}"
     );
     assert_eq!(received["answer"]["accepted"].as_bool(), Some(true));
 
-    let recorded: HashMap<u64, JointState> = (recording.on_topic(topics::JOINT_STATES))
-        .filter_map(|m| match &m.message {
-            Message::JointState(j) => Some((m.log_time_ns, j.clone())),
-            _ => None,
-        })
-        .collect();
+    let recorded = recorded_joint_states(&recording);
     // A (position, effort) of finger_joint the recording holds at some step.
     let in_recording =
         |q: f64, e: f64| (recorded.values()).any(|j| j.position[0] == q && j.effort[0] == e);
@@ -138,17 +80,8 @@ fn a_gripper_goal_closes_the_hand_on_the_box_and_holds_at_its_effort() {
     }
 
     // Every /joint_states received equals the recording's at its stamp.
-    let states = received["states"].as_array().expect("states");
-    assert!(states.len() >= 60, "{} joint states", states.len());
-    for s in states {
-        let t = stamp(&s["header"]);
-        let want = recorded
-            .get(&t)
-            .unwrap_or_else(|| panic!("no state at {t} ns"));
-        assert_eq!(floats(&s["position"]), want.position, "at {t} ns");
-        assert_eq!(floats(&s["velocity"]), want.velocity, "at {t} ns");
-        assert_eq!(floats(&s["effort"]), want.effort, "at {t} ns");
-    }
+    let states = check_joint_states(&received, "states", &recording);
+    assert!(states >= 60, "{states} joint states");
 
     // Every /softgrip/contacts received equals the recording's; the last ones have both pads
     // pressing the box.

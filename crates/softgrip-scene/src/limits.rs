@@ -30,6 +30,8 @@ pub const MAX_DT: f64 = 1.0;
 pub const MAX_TIME: f64 = 1.0e9;
 /// Largest speed of the gripper's moves [m/s].
 pub const MAX_SPEED: f64 = 1.0e4;
+/// Largest acceleration of a grasp's lift \[m/s^2\].
+pub const MAX_ACCELERATION: f64 = 1.0e6;
 /// The default cap on a run's step count `duration / dt` (10 million steps: ~2 min of a warm
 /// default scene in a release build). Raise it with the scene key `max_steps`.
 pub const DEFAULT_MAX_STEPS: u64 = 10_000_000;

@@ -8,10 +8,9 @@ use crate::control::controller::{ControlEvent, Controller, GraspView, Phase};
 use crate::control::group::{check_position, resolve};
 use crate::control::io::{Carrier, ControlIo};
 use crate::control::kinds::ControllerKind;
-use crate::control::spec::GraspSpec;
+use crate::control::spec::{GraspSpec, LiftSpec};
 use crate::error::SceneError;
-use crate::format::MoveSpec;
-use crate::limits::{MAX_COORDINATE, MAX_SPEED, MAX_TIME};
+use crate::limits::{MAX_ACCELERATION, MAX_COORDINATE, MAX_SPEED, MAX_TIME};
 use crate::robot::{BaseKind, Robot};
 use crate::validate::Checker;
 
@@ -37,7 +36,7 @@ pub struct Grasp {
     /// Wait after the grip \[s\].
     pub settle: f64,
     /// Lift of the base.
-    pub lift: MoveSpec,
+    pub lift: LiftSpec,
     /// Lift direction (unit).
     pub up: [f64; 3],
     /// Hold \[s\].
@@ -64,6 +63,8 @@ pub struct GraspState {
     pub progress: f64,
     /// The base's position \[m\] (the lift's), once the lift has started.
     pub base: Option<[f64; 3]>,
+    /// The lift's speed over the last step \[m/s\].
+    pub lift_speed: f64,
 }
 
 impl Grasp {
@@ -130,6 +131,10 @@ impl Grasp {
         )?;
         c.positive(f("lift.speed"), spec.lift.speed, "m/s")?;
         c.range(f("lift.speed"), spec.lift.speed, (0.0, MAX_SPEED), "m/s")?;
+        if let Some(a) = spec.lift.acceleration {
+            c.positive(f("lift.acceleration"), a, "m/s^2")?;
+            c.range(f("lift.acceleration"), a, (0.0, MAX_ACCELERATION), "m/s^2")?;
+        }
         if spec.lift.distance > 0.0 && robot.base() != BaseKind::Kinematic {
             return Err(c.name(
                 f("lift"),
@@ -168,6 +173,7 @@ impl Grasp {
                 targets,
                 progress: 0.0,
                 base: None,
+                lift_speed: 0.0,
             },
             joints,
         })
@@ -234,6 +240,22 @@ impl Grasp {
         let closed = self.closed.clone();
         self.move_targets(&closed, io.dt);
         None
+    }
+
+    /// The lift's advance over the coming step \[m\]: at `lift.speed`, or with
+    /// `lift.acceleration` a trapezoid: the speed grows by `a dt` a step up to `lift.speed` and
+    /// never exceeds `sqrt(2 a d)`, `d` the distance left, so it reaches 0 at the top.
+    fn lift_step(&mut self, dt: f64) -> f64 {
+        let left = (self.lift.distance - self.state.progress).max(0.0);
+        let v = match self.lift.acceleration {
+            None => self.lift.speed,
+            Some(a) => (self.state.lift_speed + a * dt)
+                .min(self.lift.speed)
+                .min((2.0 * a * left).sqrt()),
+        };
+        let s = (v * dt).min(left);
+        self.state.lift_speed = if dt > 0.0 { s / dt } else { 0.0 };
+        s
     }
 
     /// The robot's root link (the base the lift moves).
@@ -308,9 +330,7 @@ impl Controller for Grasp {
                     .state
                     .base
                     .get_or_insert_with(|| io.position(root).unwrap_or_default());
-                let s = (self.lift.speed * io.dt)
-                    .min(self.lift.distance - self.state.progress)
-                    .max(0.0);
+                let s = self.lift_step(io.dt);
                 self.state.progress += s;
                 let p = [0, 1, 2].map(|i| base[i] + self.state.progress * self.up[i]);
                 io.set_translation(root, p);

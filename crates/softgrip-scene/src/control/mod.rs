@@ -30,4 +30,4 @@ pub use kinds::{
     CONTROLLERS, ControllerInfo, ControllerKind, ControllerSource, UnknownControllerKind,
 };
 pub use set::ControlSet;
-pub use spec::{ControllerSpec, GraspSpec, JointPointSpec, TrajectorySpec};
+pub use spec::{ControllerSpec, GraspSpec, JointPointSpec, LiftSpec, TrajectorySpec};

@@ -6,7 +6,7 @@ use serde::de::{Deserializer, Error as _};
 
 use crate::control::kinds::ControllerKind;
 use crate::exact::exact_opt;
-use crate::format::{GripperSpec, MoveSpec};
+use crate::format::GripperSpec;
 
 /// A controller of a scene file, by kind: `type` is looked up in
 /// [`CONTROLLERS`](super::CONTROLLERS) ([`ControllerKind::from_scene_name`]; an unknown name
@@ -129,12 +129,28 @@ pub struct GraspSpec {
     #[serde(default = "settle")]
     pub settle: f64,
     /// Lift of the base along `up` after the settle.
-    pub lift: MoveSpec,
+    pub lift: LiftSpec,
     /// Lift direction (normalised; default opposite to gravity).
     #[serde(default, deserialize_with = "exact_opt")]
     pub up: Option<[f64; 3]>,
     /// Hold at the top \[s\], >= 0.
     pub hold: f64,
+}
+
+/// A grasp's lift: `distance` \[m\] at `speed` \[m/s\], starting and stopping at
+/// `acceleration` \[m/s^2\] (a trapezoidal speed profile) or, without it, at full speed from
+/// the first step to the last.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LiftSpec {
+    /// Length of the lift \[m\], finite and >= 0.
+    pub distance: f64,
+    /// Top speed \[m/s\], finite and > 0.
+    pub speed: f64,
+    /// Acceleration and deceleration \[m/s^2\], finite and > 0 (default: none, the speed
+    /// steps from 0 to `speed` and back in one step each).
+    #[serde(default)]
+    pub acceleration: Option<f64>,
 }
 
 fn grasp_name() -> String {

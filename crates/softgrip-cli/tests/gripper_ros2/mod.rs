@@ -1,0 +1,125 @@
+//! What the ROS 2 robot tests share (`run_ros2_joints`, `run_ros2_gripper_action`, and any
+//! other client driving the shipped gripper): the gripper scene without its scripted grasp,
+//! a run of `softgrip run --ros2` beside a client in a private network namespace, and the
+//! JSON readers of what the client received. Use with `mod common; mod gripper_ros2;`.
+
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use serde_json::Value;
+use softgrip_record::msgs::sensor_msgs::JointState;
+use softgrip_record::{Message, Recording, topics};
+
+use crate::common;
+
+/// The shipped URDF gripper's scene (`scenes/robots/parallel_gripper_box.toml`) without its
+/// grasp controller (only commands from outside move it), its URDF path made absolute, with
+/// `duration` [s], written to `dir`.
+pub fn gripper_scene(dir: &Path, duration: f64) -> PathBuf {
+    let root = common::root();
+    let text = std::fs::read_to_string(root.join("scenes/robots/parallel_gripper_box.toml"))
+        .expect("gripper scene");
+    let (head, _grasp) = text
+        .split_once("[[controller]]")
+        .expect("a controller section");
+    let urdf = root.join("robots/parallel_gripper/parallel_gripper.urdf");
+    let head = head
+        .replace(
+            "\"../../robots/parallel_gripper/parallel_gripper.urdf\"",
+            &format!("{:?}", urdf.display().to_string()),
+        )
+        .replace("duration = 5.0", &format!("duration = {duration:?}"));
+    let path = dir.join("gripper.toml");
+    std::fs::write(&path, head).expect("write scene");
+    path
+}
+
+/// What a namespaced run gave: the client's JSON, the run's recording (every step) and the
+/// run's stdout.
+pub struct Ros2Run {
+    /// What the client printed (JSON).
+    pub received: Value,
+    /// The run's own recording.
+    pub recording: Recording,
+    /// softgrip's stdout.
+    pub stdout: String,
+}
+
+/// Runs `client` (a shell command printing JSON; started first, in the background) and
+/// `softgrip run SCENE --ros2 --every 1 --out run.mcap` on ROS domain `domain`, both inside a
+/// private network namespace (`unshare -n`, loopback up), in `dir`; waits for both. Panics with
+/// both outputs if either fails.
+pub fn run_beside(dir: &Path, scene: &Path, domain: u32, client: &str) -> Ros2Run {
+    let mcap = dir.join("run.mcap");
+    let json = dir.join("received.json");
+    let bin = env!("CARGO_BIN_EXE_softgrip");
+    let shell = format!(
+        "set -e; ip link set lo up; \
+         {client} > '{json}' & sub=$!; \
+         ROS_DOMAIN_ID={domain} '{bin}' run '{scene}' --ros2 --every 1 --out '{mcap}'; \
+         wait $sub",
+        json = json.display(),
+        mcap = mcap.display(),
+        scene = scene.display(),
+    );
+    let out = Command::new("unshare")
+        .args(["-n", "bash", "-c", &shell])
+        .output()
+        .expect("unshare runs (util-linux; root or user namespaces needed)");
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "stdout:\n{stdout}\nstderr:\n{stderr}");
+    let received: Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).expect("json")).expect("valid json");
+    Ros2Run {
+        received,
+        recording: Recording::open(&mcap).expect("the run's recording"),
+        stdout,
+    }
+}
+
+/// A JSON array of numbers.
+pub fn floats(v: &Value) -> Vec<f64> {
+    (v.as_array().expect("array").iter())
+        .map(|x| x.as_f64().expect("number"))
+        .collect()
+}
+
+/// A JSON `std_msgs/Header`'s stamp \[ns\].
+pub fn stamp(h: &Value) -> u64 {
+    h["stamp"]["sec"].as_u64().expect("sec") * 1_000_000_000
+        + h["stamp"]["nanosec"].as_u64().expect("nanosec")
+}
+
+/// The recording's `/joint_states` by log time \[ns\].
+pub fn recorded_joint_states(rec: &Recording) -> std::collections::HashMap<u64, JointState> {
+    (rec.on_topic(topics::JOINT_STATES))
+        .filter_map(|m| match &m.message {
+            Message::JointState(j) => Some((m.log_time_ns, j.clone())),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Every `/joint_states` the client received (`received[key]`) equals the recording's at its
+/// stamp (floats exactly: the same f64s through CDR); returns how many.
+pub fn check_joint_states(received: &Value, key: &str, rec: &Recording) -> usize {
+    let recorded = recorded_joint_states(rec);
+    let states = received[key].as_array().expect("states");
+    for s in states {
+        let t = stamp(&s["header"]);
+        let want = recorded
+            .get(&t)
+            .unwrap_or_else(|| panic!("no recorded joint state at {t} ns"));
+        let names: Vec<_> = (s["name"].as_array().expect("names").iter())
+            .map(|n| n.as_str().expect("name"))
+            .collect();
+        assert_eq!(names, want.name, "at {t} ns");
+        assert_eq!(floats(&s["position"]), want.position, "at {t} ns");
+        assert_eq!(floats(&s["velocity"]), want.velocity, "at {t} ns");
+        assert_eq!(floats(&s["effort"]), want.effort, "at {t} ns");
+    }
+    states.len()
+}

