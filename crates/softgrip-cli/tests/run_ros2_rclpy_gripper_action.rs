@@ -12,14 +12,18 @@
 //! fails (it never skips).
 
 mod common;
+mod gripper_ros2;
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 
 use serde_json::Value;
 use softgrip_record::msgs::sensor_msgs::JointState;
-use softgrip_record::{Message, Recording, topics};
+use softgrip_record::{Message, Recording};
+
+use gripper_ros2::{
+    Ros2Run, check_joint_states, floats, gripper_scene, recorded_joint_states, run_beside, stamp,
+};
 
 /// rcl_action's GoalStatus ABORTED: what the server answers a stalled goal with.
 const STATUS_ABORTED: i64 = 6;
@@ -35,79 +39,22 @@ fn rclpy_python() -> String {
     })
 }
 
-fn floats(v: &Value) -> Vec<f64> {
-    (v.as_array().expect("array").iter())
-        .map(|x| x.as_f64().expect("number"))
-        .collect()
-}
-
-fn stamp(h: &Value) -> u64 {
-    h["stamp"]["sec"].as_u64().expect("sec") * 1_000_000_000
-        + h["stamp"]["nanosec"].as_u64().expect("nanosec")
-}
-
-/// The gripper scene without its grasp, with absolute paths, written to `dir`.
-fn scene(dir: &Path) -> PathBuf {
-    let root = common::root();
-    let text = std::fs::read_to_string(root.join("scenes/robots/parallel_gripper_box.toml"))
-        .expect("gripper scene");
-    let (head, _grasp) = text
-        .split_once("[[controller]]")
-        .expect("a controller section");
-    let urdf = root.join("robots/parallel_gripper/parallel_gripper.urdf");
-    let head = head.replace(
-        "\"../../robots/parallel_gripper/parallel_gripper.urdf\"",
-        &format!("{:?}", urdf.display().to_string()),
-    );
-    let path = dir.join("gripper.toml");
-    std::fs::write(&path, head).expect("write scene");
-    path
-}
-
-/// Runs the scene with `--ros2` and the rclpy node; the node's JSON, the recording, stdout.
-fn run(dir: &Path) -> (Value, Recording, String) {
+/// Runs the scene with `--ros2` and the rclpy node beside it (domain 35).
+fn run(dir: &Path) -> Ros2Run {
     let py = rclpy_python();
-    let scene = scene(dir);
-    let mcap = dir.join("run.mcap");
-    let json = dir.join("received.json");
+    let scene = gripper_scene(dir, 5.0);
     let script = common::root().join("crates/softgrip-cli/tests/python/rclpy_gripper_action.py");
-    let bin = env!("CARGO_BIN_EXE_softgrip");
-    let shell = format!(
-        "set -e; ip link set lo up; export ROS_DOMAIN_ID=35; \
-         '{py}' '{script}' --action /gripper/gripper_cmd --joint finger_joint \
-           --position 0.0 --velocity 0.01 --effort 5.0 --timeout 90 > '{json}' & sub=$!; \
-         trap 'kill $sub 2>/dev/null || true' EXIT; \
-         '{bin}' run '{scene}' --ros2 --every 1 --out '{mcap}'; \
-         wait $sub",
+    let client = format!(
+        "ROS_DOMAIN_ID=35 '{py}' '{script}' --action /gripper/gripper_cmd --joint finger_joint \
+         --position 0.0 --velocity 0.01 --effort 5.0 --timeout 90",
         script = script.display(),
-        json = json.display(),
-        mcap = mcap.display(),
-        scene = scene.display(),
     );
-    let out = Command::new("unshare")
-        .args(["-n", "bash", "-c", &shell])
-        .output()
-        .expect("unshare runs (util-linux; root or user namespaces needed)");
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "stdout:\n{stdout}\nstderr:\n{stderr}");
-    let text = std::fs::read_to_string(&json).expect("the node's json");
-    let received: Value = serde_json::from_str(&text).expect("valid json");
-    (
-        received,
-        Recording::open(&mcap).expect("the run's recording"),
-        stdout,
-    )
+    run_beside(dir, &scene, 35, &client)
 }
 
-/// The recorded `/joint_states` by log time [ns].
+/// The recorded `/joint_states` by log time [ns], in order.
 fn recorded_states(recording: &Recording) -> BTreeMap<u64, JointState> {
-    (recording.on_topic(topics::JOINT_STATES))
-        .filter_map(|m| match &m.message {
-            Message::JointState(j) => Some((m.log_time_ns, j.clone())),
-            _ => None,
-        })
-        .collect()
+    recorded_joint_states(recording).into_iter().collect()
 }
 
 /// The result: stalled at the box with the effort at its limit, a recorded state, and the
@@ -192,7 +139,11 @@ fn check_contacts(received: &Value, recording: &Recording) {
 #[test]
 fn an_rclpy_action_client_closes_the_gripper_on_the_box_and_reads_what_was_recorded() {
     let dir = common::temp_dir("ros2-rclpy-gripper-action");
-    let (received, recording, stdout) = run(&dir);
+    let Ros2Run {
+        received,
+        recording,
+        stdout,
+    } = run(&dir);
     assert!(
         stdout.contains("ros2: gripper actions /gripper/gripper_cmd: 1 goals accepted (0 reached, 1 stalled), 0 refused"),
         "{stdout}"
@@ -215,19 +166,8 @@ fn an_rclpy_action_client_closes_the_gripper_on_the_box_and_reads_what_was_recor
     }
 
     // Every /joint_states received equals the recording's at its stamp (f64 both ways: exact).
-    let states = received["states"].as_array().expect("states");
-    assert!(states.len() >= 60, "{} joint states", states.len());
-    for s in states {
-        let t = stamp(&s["header"]);
-        let want = (recorded.get(&t)).unwrap_or_else(|| panic!("no state at {t} ns"));
-        let names: Vec<&str> = (s["name"].as_array().expect("names").iter())
-            .map(|n| n.as_str().expect("name"))
-            .collect();
-        assert_eq!(names, want.name, "at {t} ns");
-        assert_eq!(floats(&s["position"]), want.position, "at {t} ns");
-        assert_eq!(floats(&s["velocity"]), want.velocity, "at {t} ns");
-        assert_eq!(floats(&s["effort"]), want.effort, "at {t} ns");
-    }
+    let states = check_joint_states(&received, "states", &recording);
+    assert!(states >= 60, "{states} joint states");
 
     check_contacts(&received, &recording);
 }
