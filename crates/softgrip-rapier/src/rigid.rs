@@ -268,6 +268,9 @@ enum State {
 pub(crate) struct CoupledScratch {
     scalars: Vec<Scalar>,
     state: Vec<State>,
+    /// Full coupled solves, their outer passes and those that did not settle, total
+    /// (`SoftCounters::coupled_*`).
+    pub stats: [u64; 3],
 }
 
 /// The scalar rows of soft rows `soft` and rigid rows `rigid` (`rigid` only: `soft` empty),
@@ -392,6 +395,7 @@ fn solve_scalars(
     rows: &[Scalar],
     h: f64,
     state: &mut Vec<State>,
+    passes: &mut usize,
 ) -> Option<Vec<f64>> {
     let m = rows.len();
     // The rows' mutual mobility: the impulses change the bodies' velocities, never their mass,
@@ -438,7 +442,8 @@ fn solve_scalars(
         rows: Vec::new(),
         lu: None,
     };
-    for _ in 0..OUTER {
+    *passes = OUTER + 1;
+    for pass in 0..OUTER {
         lu_pass(bodies, rows, &mut j, &lu, h, state, &mut cache)?;
         for _ in 0..SWEEPS {
             sweep(bodies, rows, &cache.mob, &pair_inv, &mut j)?;
@@ -469,6 +474,7 @@ fn solve_scalars(
             .zip(&previous)
             .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
         if lu == previous_lu && moved <= CONVERGED * scale {
+            *passes = pass + 1;
             break;
         }
         previous.copy_from_slice(&j);
@@ -659,11 +665,16 @@ pub(crate) fn solve_coupled(
     scratch: &mut CoupledScratch,
 ) -> bool {
     let mut first = Vec::with_capacity(soft.len());
-    let CoupledScratch { scalars, state } = scratch;
+    let CoupledScratch {
+        scalars,
+        state,
+        stats,
+    } = scratch;
+    let mut passes = 0;
     // rapier's part: the rigid rows alone.
     let base: Vec<BodyState> = bodies.to_vec();
     build(bodies, &[], rigid, &[], h, scalars, &mut first);
-    let Some(rest) = solve_scalars(bodies, scalars, h, state) else {
+    let Some(rest) = solve_scalars(bodies, scalars, h, state, &mut passes) else {
         bodies.clone_from_slice(&base);
         return false;
     };
@@ -677,10 +688,13 @@ pub(crate) fn solve_coupled(
     }
     // Everything.
     build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
-    let Some(j) = solve_scalars(bodies, scalars, h, state) else {
+    let Some(j) = solve_scalars(bodies, scalars, h, state, &mut passes) else {
         bodies.clone_from_slice(&base);
         return false;
     };
+    stats[0] += 1;
+    stats[1] += passes.min(OUTER) as u64;
+    stats[2] += u64::from(passes > OUTER);
     for (k, r) in soft.iter_mut().enumerate() {
         let i = first[k];
         r.jn = j[i].max(0.0);
