@@ -15,9 +15,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     };
     let mut run = PlainRun::new(&scene);
     let mut digest = ContactDigest::new();
+    // The largest substep normal force of each fingertip (the summary's peak force) [N].
+    let mut peaks: Vec<(String, f64)> = Vec::new();
     let t = Instant::now();
     run.run(scene.steps(), |r| {
-        digest.add_step(r.world.soft.contacts().iter())
+        digest.add_step(r.world.soft.contacts().iter());
+        for c in r.world.soft.contacts() {
+            let name = format!("{:?}", c.fingertip);
+            match peaks.iter_mut().find(|(n, _)| *n == name) {
+                Some((_, p)) => *p = p.max(c.peak_normal_force),
+                None => peaks.push((name, c.peak_normal_force)),
+            }
+        }
     });
     let wall = t.elapsed().as_secs_f64();
     let c = run.world.soft.counters();
@@ -42,6 +51,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         c.coupled_passes as f64 / c.coupled_solves.max(1) as f64,
         c.coupled_unsettled
     );
+    for (name, peak) in &peaks {
+        println!("fingertip {name}: peak force {peak:.4} N");
+    }
     println!("{digest}");
     Ok(())
 }
