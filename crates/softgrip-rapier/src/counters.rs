@@ -28,6 +28,12 @@ pub struct SoftCounters {
     /// Contacts on a counterpart the fingertip's law cannot take (a groove or bowl tighter
     /// than the fingertip), computed as on a plane instead (one per contact per substep).
     pub counterpart_fallbacks: u64,
+    /// Coupled solves of soft contacts on rigid supports (`rigid::solve_coupled`), total.
+    pub coupled_solves: u64,
+    /// Outer passes (a dense LU, then friction sweeps) of those solves, total.
+    pub coupled_passes: u64,
+    /// Coupled solves that used every pass allowed without settling, total.
+    pub coupled_unsettled: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the impulse solve.

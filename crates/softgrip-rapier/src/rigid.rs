@@ -34,7 +34,12 @@
 //! **Who applies what.** The rigid rows' normal impulses without any soft contact (the
 //! bodies' weight on the table, `rest`, scaled down to the row's impulse with the soft
 //! contacts: a box lifted off the table gets none) are rapier's: its own solver makes them and
-//! their friction (the rigid friction rows' disk is `mu (j_n - rest)`). The part the soft
+//! their friction (the rigid friction rows' disk is `mu (j_n - rest)`). The hard rows'
+//! compliance pulls a rigid normal towards `rest`, not towards 0 (`Scalar::prox`): among
+//! redundant rows (the table's normal and a wall's friction both able to hold the weight) the
+//! answer is the one closest to what rapier makes anyway. Pulled towards 0, the wall's friction
+//! took part of the weight that rapier still carried on the table, and a box pressed against a
+//! wall rattled at 1.4 cm/s, 0.56 % off the law (now 2e-7 m/s, 8e-5). The part the soft
 //! contacts add is applied by the plugin with the soft impulses: left to rapier, a kick of `h
 //! F / m` (6 m/s for a 16 g box under 6 N at 60 Hz) is only partly cancelled per solver pass by
 //! rapier's soft contact constraint, and the box sank into the table and was thrown out.
@@ -142,6 +147,8 @@ struct Scalar {
     target: f64,
     /// Diagonal compliance relative to the row's own mobility.
     compliance: f64,
+    /// The impulse the compliance pulls towards (rapier's own part of a hard normal) \[N s\].
+    prox: f64,
     /// The velocity change of body a (linear, angular) per unit impulse, and of body b per
     /// unit impulse on it (`-1` times the row's), set by `build` (`set_response`): the
     /// sweeps apply each row hundreds of times per solve.
@@ -167,6 +174,7 @@ impl Scalar {
             kind,
             target: 0.0,
             compliance: RIGID_COMPLIANCE,
+            prox: 0.0,
             response: Default::default(),
         }
     }
@@ -268,6 +276,9 @@ enum State {
 pub(crate) struct CoupledScratch {
     scalars: Vec<Scalar>,
     state: Vec<State>,
+    /// Full coupled solves, their outer passes and those that did not settle, total
+    /// (`SoftCounters::coupled_*`).
+    pub stats: [u64; 3],
 }
 
 /// The scalar rows of soft rows `soft` and rigid rows `rigid` (`rigid` only: `soft` empty),
@@ -318,6 +329,7 @@ fn build(
                     },
                     target: 0.0,
                     compliance: SOFT_FRICTION_COMPLIANCE,
+                    prox: 0.0,
                     response: Default::default(),
                 });
             }
@@ -325,14 +337,9 @@ fn build(
     }
     for (ri, r) in rigid.iter().enumerate() {
         let nrm = out.len();
-        out.push(Scalar::point(
-            bodies,
-            Some(r.a),
-            r.b,
-            &r.p,
-            &r.n,
-            Kind::HardNormal,
-        ));
+        let mut normal = Scalar::point(bodies, Some(r.a), r.b, &r.p, &r.n, Kind::HardNormal);
+        normal.prox = rest_n.get(ri).copied().unwrap_or(0.0);
+        out.push(normal);
         if r.mu > 0.0 {
             let base = rest_n.get(ri).copied().unwrap_or(0.0);
             out.extend(friction_pair(
@@ -392,6 +399,7 @@ fn solve_scalars(
     rows: &[Scalar],
     h: f64,
     state: &mut Vec<State>,
+    passes: &mut usize,
 ) -> Option<Vec<f64>> {
     let m = rows.len();
     // The rows' mutual mobility: the impulses change the bodies' velocities, never their mass,
@@ -438,7 +446,8 @@ fn solve_scalars(
         rows: Vec::new(),
         lu: None,
     };
-    for _ in 0..OUTER {
+    *passes = OUTER + 1;
+    for pass in 0..OUTER {
         lu_pass(bodies, rows, &mut j, &lu, h, state, &mut cache)?;
         for _ in 0..SWEEPS {
             sweep(bodies, rows, &cache.mob, &pair_inv, &mut j)?;
@@ -469,6 +478,7 @@ fn solve_scalars(
             .zip(&previous)
             .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
         if lu == previous_lu && moved <= CONVERGED * scale {
+            *passes = pass + 1;
             break;
         }
         previous.copy_from_slice(&j);
@@ -583,7 +593,9 @@ fn lu_pass(
                     a[(r, c)] = w[(r, c)];
                 }
                 a[(r, r)] += rows[i].compliance * w[(r, r)];
-                b[r] = rows[i].target - v0[r];
+                // The compliance acts on the change from rapier's own part (`prox`): among
+                // redundant rows it picks the answer closest to what rapier makes anyway.
+                b[r] = rows[i].target - v0[r] + rows[i].compliance * w[(r, r)] * rows[i].prox;
             }
         }
     }
@@ -659,11 +671,16 @@ pub(crate) fn solve_coupled(
     scratch: &mut CoupledScratch,
 ) -> bool {
     let mut first = Vec::with_capacity(soft.len());
-    let CoupledScratch { scalars, state } = scratch;
+    let CoupledScratch {
+        scalars,
+        state,
+        stats,
+    } = scratch;
+    let mut passes = 0;
     // rapier's part: the rigid rows alone.
     let base: Vec<BodyState> = bodies.to_vec();
     build(bodies, &[], rigid, &[], h, scalars, &mut first);
-    let Some(rest) = solve_scalars(bodies, scalars, h, state) else {
+    let Some(rest) = solve_scalars(bodies, scalars, h, state, &mut passes) else {
         bodies.clone_from_slice(&base);
         return false;
     };
@@ -677,10 +694,13 @@ pub(crate) fn solve_coupled(
     }
     // Everything.
     build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
-    let Some(j) = solve_scalars(bodies, scalars, h, state) else {
+    let Some(j) = solve_scalars(bodies, scalars, h, state, &mut passes) else {
         bodies.clone_from_slice(&base);
         return false;
     };
+    stats[0] += 1;
+    stats[1] += passes.min(OUTER) as u64;
+    stats[2] += u64::from(passes > OUTER);
     for (k, r) in soft.iter_mut().enumerate() {
         let i = first[k];
         r.jn = j[i].max(0.0);

@@ -423,6 +423,13 @@ pub(crate) struct SolveScratch {
     coupled: CoupledScratch,
 }
 
+impl SolveScratch {
+    /// Full coupled solves, their outer passes and those that did not settle, total.
+    pub(crate) fn coupled_stats(&self) -> [u64; 3] {
+        self.coupled.stats
+    }
+}
+
 fn find(parent: &mut [usize], mut i: usize) -> usize {
     while parent[i] != i {
         parent[i] = parent[parent[i]];

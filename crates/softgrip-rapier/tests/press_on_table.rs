@@ -226,19 +226,21 @@ fn tip_presses_a_stack_of_two_boxes() {
     }
 }
 
-/// A box on the table pressed sideways into a wall with 60 N: the force follows the law within
-/// 1 % (seen 0.56 %) and nothing explodes, but the hold is not yet at rest: the box rattles at
-/// ~1.4 cm/s and its centre moves by up to 0.32 mm (a known limit, crate README "Limits"; the
-/// bounds below are what it does today, so a regression breaks them; the target is the table
-/// cases' micrometres).
+/// A box on the table pressed sideways into a wall with 60 N: the force follows the law and the
+/// box is still in the hold. Before the rigid rows' compliance pulled towards rapier's own part
+/// (`src/rigid.rs`, `Scalar::prox`), the least-impulse answer let the wall's friction carry
+/// part of the weight rapier carries on the table anyway: the box rattled at ~1.4 cm/s (its
+/// centre moved by up to 0.32 mm) and the force was 0.56 % off the law.
+// Measured (`-- --nocapture`): worst 8.1e-5, 60.69 N, moved 0.22 mm (the approach: the box
+// slides until it meets the wall), 1.4 cm/s at most (then), 2.0e-7 m/s in the hold.
 #[test]
 fn tip_presses_a_box_against_a_wall() {
     let mut p = scene(1, true, Backing::Free);
     let m = press(&mut p, 0.002, 120);
     println!("free tip, box against a wall, 2 mm: {m:?}");
-    assert!(m.worst < 1e-2, "{m:?}");
-    assert!(m.force > 5.0, "{m:?}");
+    assert!(m.worst < 1e-3, "{m:?}");
+    assert!(m.force > 50.0, "{m:?}");
     assert!(m.moved < 5e-4, "{m:?}");
     assert!(m.speed < 0.02, "{m:?}");
-    assert!(m.speed_hold < 0.02, "{m:?}");
+    assert!(m.speed_hold < 1e-6, "{m:?}");
 }

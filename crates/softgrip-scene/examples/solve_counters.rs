@@ -1,0 +1,59 @@
+//! The default grasp (`scenes/default.toml`, or the scene file given) on the plain plugin: its
+//! wall time, the plugin's own timers and how its coupled solves settled
+//! (`SoftCounters::coupled_*`), and the golden digest line, to compare solver changes.
+//!
+//! `cargo run --release -p softgrip-scene --example solve_counters [scene.toml]`
+
+use std::time::Instant;
+
+use softgrip_scene::{ContactDigest, PlainRun, Scene};
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let scene = match std::env::args().nth(1) {
+        Some(path) => Scene::from_file(std::path::Path::new(&path))?,
+        None => Scene::default_scene(),
+    };
+    let mut run = PlainRun::new(&scene);
+    let mut digest = ContactDigest::new();
+    // The largest substep normal force of each fingertip (the summary's peak force) [N].
+    let mut peaks: Vec<(String, f64)> = Vec::new();
+    let t = Instant::now();
+    run.run(scene.steps(), |r| {
+        digest.add_step(r.world.soft.contacts().iter());
+        for c in r.world.soft.contacts() {
+            let name = format!("{:?}", c.fingertip);
+            match peaks.iter_mut().find(|(n, _)| *n == name) {
+                Some((_, p)) => *p = p.max(c.peak_normal_force),
+                None => peaks.push((name, c.peak_normal_force)),
+            }
+        }
+    });
+    let wall = t.elapsed().as_secs_f64();
+    let c = run.world.soft.counters();
+    let dt = f64::from(run.world.physics.integration_parameters.dt);
+    println!(
+        "{} steps in {:.1} ms ({:.1} us/step, {:.0}x real time)",
+        c.steps,
+        wall * 1e3,
+        wall * 1e6 / c.steps as f64,
+        c.steps as f64 * dt / wall
+    );
+    println!(
+        "detect {:.1} ms, solve {:.1} ms, pipeline {:.1} ms",
+        c.detect_time.as_secs_f64() * 1e3,
+        c.solve_time.as_secs_f64() * 1e3,
+        c.pipeline_time.as_secs_f64() * 1e3
+    );
+    println!(
+        "coupled solves {}, passes {} ({:.2} per solve), unsettled {}",
+        c.coupled_solves,
+        c.coupled_passes,
+        c.coupled_passes as f64 / c.coupled_solves.max(1) as f64,
+        c.coupled_unsettled
+    );
+    for (name, peak) in &peaks {
+        println!("fingertip {name}: peak force {peak:.4} N");
+    }
+    println!("{digest}");
+    Ok(())
+}
