@@ -13,11 +13,11 @@
 //!   frame 1's along the locked axes), or the relative spin about it, is zero at the end of the
 //!   step (rapier's joint softness, 1e6 Hz by default, and its position bias, removed in its
 //!   unbiased pass, are left out);
-//! - a **motor** of a free axis is rapier's compliant row, per solver pass `cfm_s lambda_s = g V
-//!   + rhs_s` with `MotorModel::combine_coefficients` and `cfm_s = dot_jj cfm_coeff + cfm_gain`
-//!   (`dot_jj` the row's free-body mobility): over the `N` passes of a step it reads `a L + b g
-//!   V(end) = c` (`multibody::motor_fold`, whose derivation is the same), the step's impulse `L`
-//!   along `+g`;
+//! - a **motor** of a free axis is rapier's compliant row, per solver pass
+//!   `cfm_s lambda_s = g V + rhs_s` with `MotorModel::combine_coefficients` and
+//!   `cfm_s = dot_jj cfm_coeff + cfm_gain` (`dot_jj` the row's free-body mobility): over the
+//!   `N` passes of a step it reads `a L + b g V(end) = c` (`multibody::motor_fold`, whose
+//!   derivation is the same), the step's impulse `L` along `+g`;
 //! - an active **limit** (the joint at or past it, as rapier enables it) is a hard one-sided
 //!   row: `g V(end) = 0` with an impulse that pushes away from the limit only. Which limit rows
 //!   act is decided on the motion without the soft impulses (an active set on the assembly's
