@@ -172,29 +172,7 @@ pub(crate) fn assembly_states(
         .map(|h| bodies.get(*h).map(|rb| member(rb, *h)))
         .collect::<Option<_>>()?;
     let n = 6 * ms.len();
-    let mut minv = DMatrix::<f64>::zeros(n, n);
-    let mut v_star = DVector::<f64>::zeros(n);
-    let mut force = DVector::<f64>::zeros(n);
-    for (k, m) in ms.iter().enumerate() {
-        let rb = bodies.get(m.handle)?;
-        let o = 6 * k;
-        for r in 0..3 {
-            minv[(o + r, o + r)] = m.inv_m[r];
-            for c in 0..3 {
-                minv[(o + 3 + r, o + 3 + c)] = m.inv_i[(r, c)];
-            }
-        }
-        let f = to_f64(rb.user_force()) + ctx.gravity * (rb.gravity_scale() * rb.mass()) as f64;
-        let t = to_f64(rb.user_torque());
-        let (v, w) = (to_f64(rb.linvel()), to_f64(rb.angvel()));
-        let (dv, dw) = (m.inv_m.component_mul(&f), m.inv_i * t);
-        for r in 0..3 {
-            force[o + r] = f[r];
-            force[o + 3 + r] = t[r];
-            v_star[o + r] = v[r] + dv[r] * ctx.h;
-            v_star[o + 3 + r] = w[r] + dw[r] * ctx.h;
-        }
-    }
+    let (minv, v_star, force) = free_motion(bodies, ctx, &ms)?;
     let mut rows = Vec::new();
     let mut seen = Vec::new();
     for m in &ms {
@@ -242,6 +220,41 @@ pub(crate) fn assembly_states(
     }
     out[0].1.link.as_deref_mut()?.multi = Some(g);
     Some(out)
+}
+
+/// The members' free inverse mass and inertia (`6k x 6k`, block diagonal), their velocity with
+/// gravity and the user's forces over the whole (sub)step, and those forces (per member: the
+/// force at the centre of mass, then the torque).
+fn free_motion(
+    bodies: &RigidBodySet,
+    ctx: &LinkCtx<'_>,
+    ms: &[Member],
+) -> Option<(DMatrix<f64>, DVector<f64>, DVector<f64>)> {
+    let n = 6 * ms.len();
+    let mut minv = DMatrix::<f64>::zeros(n, n);
+    let mut v_star = DVector::<f64>::zeros(n);
+    let mut force = DVector::<f64>::zeros(n);
+    for (k, m) in ms.iter().enumerate() {
+        let rb = bodies.get(m.handle)?;
+        let o = 6 * k;
+        for r in 0..3 {
+            minv[(o + r, o + r)] = m.inv_m[r];
+            for c in 0..3 {
+                minv[(o + 3 + r, o + 3 + c)] = m.inv_i[(r, c)];
+            }
+        }
+        let f = to_f64(rb.user_force()) + ctx.gravity * (rb.gravity_scale() * rb.mass()) as f64;
+        let t = to_f64(rb.user_torque());
+        let (v, w) = (to_f64(rb.linvel()), to_f64(rb.angvel()));
+        let (dv, dw) = (m.inv_m.component_mul(&f), m.inv_i * t);
+        for r in 0..3 {
+            force[o + r] = f[r];
+            force[o + 3 + r] = t[r];
+            v_star[o + r] = v[r] + dv[r] * ctx.h;
+            v_star[o + 3 + r] = w[r] + dw[r] * ctx.h;
+        }
+    }
+    Some((minv, v_star, force))
 }
 
 /// The assembly's mobility and free velocity with the rows `use_row` selects (see the module's
@@ -365,7 +378,104 @@ impl Frame {
     }
 }
 
-/// The rows of one impulse joint between rapier's `bodies` (body 1, body 2), appended to `out`.
+/// What the rows of one joint need: the world, the assembly and the joint's frames.
+struct Sides<'a> {
+    bodies: &'a RigidBodySet,
+    kin_vel: &'a KinematicVelocity,
+    ms: &'a [Member],
+    /// The assembly's coordinates (`6k`).
+    n: usize,
+    /// rapier's body 1 and body 2.
+    pair: (RigidBodyHandle, RigidBodyHandle),
+    frame: Frame,
+}
+
+impl Sides<'_> {
+    /// rapier's row velocity `J (v2 - v1)` along (0-2) or about (3-5) axis `i`: its
+    /// coefficients on the assembly's coordinates, and the part a fixed or kinematic side
+    /// contributes (known).
+    fn row(&self, i: usize) -> (DVector<f64>, f64) {
+        let axis = self.frame.axes[i % 3];
+        let mut g = DVector::<f64>::zeros(self.n);
+        let mut known = 0.0;
+        for (handle, anchor, s) in [
+            (self.pair.1, self.frame.anchor2, 1.0),
+            (self.pair.0, self.frame.anchor1, -1.0),
+        ] {
+            let Some(rb) = self.bodies.get(handle) else {
+                continue;
+            };
+            let com = to_f64(rb.mass_properties().world_com);
+            let (lin, ang) = if i < 3 {
+                (axis, (anchor - com).cross(&axis))
+            } else {
+                (Vector3::zeros(), axis)
+            };
+            if let Some(k) = self.ms.iter().position(|m| m.handle == handle) {
+                for r in 0..3 {
+                    g[6 * k + r] += s * lin[r];
+                    g[6 * k + 3 + r] += s * ang[r];
+                }
+            } else if !rb.is_fixed() {
+                let (v, w) = self
+                    .kin_vel
+                    .get(&handle)
+                    .copied()
+                    .unwrap_or((to_f64(rb.linvel()), to_f64(rb.angvel())));
+                known += s * (lin.dot(&v) + ang.dot(&w));
+            }
+        }
+        (g, known)
+    }
+
+    /// A hard row along or about axis `i`.
+    fn hard(&self, i: usize, sign: Sign, locked: bool) -> JointRow {
+        let (g, known) = self.row(i);
+        JointRow {
+            g,
+            known,
+            compliance: 0.0,
+            target: 0.0,
+            sign,
+            locked,
+        }
+    }
+
+    /// The compliant row of `motor` on axis `i` at the joint's position `q`, its target
+    /// velocity clamped by a linear axis' `limits` as rapier does; `None` if it has no
+    /// compliance (`multibody::motor_fold`).
+    fn motor(
+        &self,
+        i: usize,
+        motor: &JointMotor,
+        q: f64,
+        limits: Option<[f32; 2]>,
+        minv: &DMatrix<f64>,
+        ctx: &LinkCtx<'_>,
+    ) -> Option<JointRow> {
+        let (g, known) = self.row(i);
+        let w = g.dot(&(minv * &g));
+        let mut motor = *motor;
+        if i >= 3 {
+            // rapier aims an angular motor the shorter way round.
+            motor.target_pos = (q - smallest_abs_diff(q, motor.target_pos as f64)) as f32;
+        }
+        let lim = limits
+            .filter(|_| i < 3)
+            .map(|[lo, hi]| [lo as f64, hi as f64]);
+        let (b_a, c_a) = motor_fold(&motor, q, lim, w, ctx)?;
+        Some(JointRow {
+            g,
+            known,
+            compliance: 1.0 / b_a,
+            target: c_a / b_a,
+            sign: Sign::Free,
+            locked: false,
+        })
+    }
+}
+
+/// The rows of one impulse joint between rapier's `pair` (body 1, body 2), appended to `out`.
 #[allow(clippy::too_many_arguments)]
 fn joint_rows(
     bodies: &RigidBodySet,
@@ -381,104 +491,50 @@ fn joint_rows(
         return;
     };
     let data = &joint.data;
-    let locked = data.locked_axes.bits();
-    let coupled = data.coupled_axes.bits();
-    let frame = Frame::new(
-        &(*rb1.position() * data.local_frame1),
-        &(*rb2.position() * data.local_frame2),
-        locked,
-    );
-    // `sign` times rapier's row velocity `J (v2 - v1)` along (0-2) or about (3-5) axis `i`.
-    let row = |i: usize, sign: f64| -> (DVector<f64>, f64) {
-        let axis = frame.axes[i % 3];
-        let mut g = DVector::<f64>::zeros(minv.nrows());
-        let mut known = 0.0;
-        for (handle, anchor, s) in [
-            (pair.1, frame.anchor2, sign),
-            (pair.0, frame.anchor1, -sign),
-        ] {
-            let Some(rb) = bodies.get(handle) else {
-                continue;
-            };
-            let com = to_f64(rb.mass_properties().world_com);
-            let (lin, ang) = if i < 3 {
-                (axis, (anchor - com).cross(&axis))
-            } else {
-                (Vector3::zeros(), axis)
-            };
-            if let Some(k) = ms.iter().position(|m| m.handle == handle) {
-                for r in 0..3 {
-                    g[6 * k + r] += s * lin[r];
-                    g[6 * k + 3 + r] += s * ang[r];
-                }
-            } else if !rb.is_fixed() {
-                let (v, w) = kin_vel
-                    .get(&handle)
-                    .copied()
-                    .unwrap_or((to_f64(rb.linvel()), to_f64(rb.angvel())));
-                known += s * (lin.dot(&v) + ang.dot(&w));
-            }
-        }
-        (g, known)
-    };
-    let hard = |(g, known): (DVector<f64>, f64), sign: Sign, locked: bool| JointRow {
-        g,
-        known,
-        compliance: 0.0,
-        target: 0.0,
-        sign,
-        locked,
+    let (locked, coupled) = (data.locked_axes.bits(), data.coupled_axes.bits());
+    let sides = Sides {
+        bodies,
+        kin_vel,
+        ms,
+        n: minv.nrows(),
+        pair,
+        frame: Frame::new(
+            &(*rb1.position() * data.local_frame1),
+            &(*rb2.position() * data.local_frame2),
+            locked,
+        ),
     };
     for i in 0..6usize {
         let bit = 1u8 << i;
         if locked & bit != 0 {
-            out.push(hard(row(i, 1.0), Sign::Free, true));
+            out.push(sides.hard(i, Sign::Free, true));
             continue;
         }
         if coupled & bit != 0 {
             continue;
         }
-        let q = frame.position(i);
+        let q = sides.frame.position(i);
         let limits =
             (data.limit_axes.bits() & bit != 0).then(|| [data.limits[i].min, data.limits[i].max]);
         if data.motor_axes.bits() & bit != 0 {
-            let (g, known) = row(i, 1.0);
-            let w = g.dot(&(minv * &g));
-            let mut motor: JointMotor = data.motors[i];
-            if i >= 3 {
-                // rapier aims an angular motor the shorter way round.
-                motor.target_pos = (q - smallest_abs_diff(q, motor.target_pos as f64)) as f32;
-            }
-            let lim = limits
-                .filter(|_| i < 3)
-                .map(|[lo, hi]| [lo as f64, hi as f64]);
-            if let Some((b_a, c_a)) = motor_fold(&motor, q, lim, w, ctx) {
-                out.push(JointRow {
-                    g,
-                    known,
-                    compliance: 1.0 / b_a,
-                    target: c_a / b_a,
-                    sign: Sign::Free,
-                    locked: false,
-                });
-            }
+            out.extend(sides.motor(i, &data.motors[i], q, limits, minv, ctx));
         }
-        if let Some([lo, hi]) = limits {
-            let (lo, hi) = (lo as f64, hi as f64);
-            let (x, lo, hi) = if i < 3 {
-                (q, lo, hi)
-            } else {
-                match frame.recentered(i, lo, hi) {
-                    Some((x, half)) => (x, -half, half),
-                    None => continue,
-                }
-            };
-            if x <= lo {
-                out.push(hard(row(i, 1.0), Sign::NonNegative, false));
+        let Some([lo, hi]) = limits.map(|[lo, hi]| [lo as f64, hi as f64]) else {
+            continue;
+        };
+        let (x, lo, hi) = if i < 3 {
+            (q, lo, hi)
+        } else {
+            match sides.frame.recentered(i, lo, hi) {
+                Some((x, half)) => (x, -half, half),
+                None => continue,
             }
-            if x >= hi {
-                out.push(hard(row(i, 1.0), Sign::NonPositive, false));
-            }
+        };
+        if x <= lo {
+            out.push(sides.hard(i, Sign::NonNegative, false));
+        }
+        if x >= hi {
+            out.push(sides.hard(i, Sign::NonPositive, false));
         }
     }
 }
