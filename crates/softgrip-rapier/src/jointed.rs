@@ -54,8 +54,8 @@ use crate::multibody::{Generalised, Link, LinkCtx, motor_fold};
 use crate::solve::BodyState;
 
 /// The most bodies one jointed assembly may hold: one. A body whose impulse joints attach it
-/// only to fixed or kinematic bodies (a prismatic jaw or a revolute link on a base) is seen
-/// jointed; a chain of dynamic bodies (a two-link finger) is seen as free bodies, as before.
+/// only to fixed or kinematic bodies (a prismatic jaw; a revolute link on a base, not
+/// measured) is seen jointed; a chain of dynamic bodies (a two-link finger) is seen as free bodies, as before.
 /// Why: rapier's own solve of such a chain does not carry a load of the kind a pressing tip
 /// makes. Measured in plain rapier 0.36.1 (no plugin), the suite's impulse-jointed two-link
 /// finger (3 g links, 40 N m/rad motors, dt = 1/60 s) with a constant 0.5 N force at its tip
