@@ -9,6 +9,7 @@ use rapier3d::prelude::{Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vect
 
 use crate::counters::SoftCounters;
 use crate::detect::{to_f32, to_f64};
+use crate::jointed;
 use crate::multibody::{self, Hosts, LinkCtx, SavedForce};
 use crate::rigid::RigidRow;
 use crate::solve::{BodyState, Row};
@@ -95,7 +96,8 @@ pub(crate) fn gravity_kick(bodies: &mut RigidBodySet, gravity: Vector, tau: f64)
 /// The body's row in the solver's table: for a dynamic body, its velocity with the external
 /// accelerations (gravity, user force and torque) integrated over `ctx.h_drift` \[s\] (see
 /// `SoftWorld::prepare`), its inverse mass and inertia; for an awake link of a multibody, its
-/// multibody's mobility (`multibody`).
+/// multibody's mobility (`multibody`); for a body held by impulse joints, its assembly's
+/// (`jointed`: every member enters the table at once).
 pub(crate) fn body_index(
     bodies: &RigidBodySet,
     handle: RigidBodyHandle,
@@ -115,6 +117,15 @@ pub(crate) fn body_index(
         tb.table.push(state);
         tb.handles.push(handle);
         tb.index.insert(handle, next);
+        return Some(next);
+    }
+    // A body held by impulse joints: its whole assembly enters, the first its host (`jointed`).
+    if let Some(states) = jointed::assembly_states(bodies, ctx, kin_vel, handle, next) {
+        for (h, state) in states {
+            tb.index.insert(h, tb.table.len());
+            tb.table.push(state);
+            tb.handles.push(h);
+        }
         return Some(next);
     }
     let rb = bodies.get(handle)?;

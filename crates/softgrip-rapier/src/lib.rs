@@ -11,6 +11,7 @@ mod detect;
 mod error;
 mod fingertip;
 mod hooks;
+mod jointed;
 mod multibody;
 mod presets;
 mod readout;

@@ -36,8 +36,8 @@ use std::collections::HashMap;
 
 use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
 use rapier3d::prelude::{
-    AngVector, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet, PhysicsWorld, Pose,
-    RigidBodyHandle, RigidBodySet, RigidBodyType, Vector,
+    AngVector, ImpulseJointSet, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet,
+    PhysicsWorld, Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector,
 };
 
 use crate::bodies::{KinematicPath, interpolate};
@@ -78,8 +78,22 @@ pub(crate) struct Generalised {
 }
 
 impl Generalised {
+    /// A generalised body of mobility `mobility`, free velocity `qdot` and external
+    /// acceleration `acc`, with no links yet ([`Generalised::add`]).
+    pub(crate) fn new(mobility: DMatrix<f64>, qdot: DVector<f64>, acc: DVector<f64>) -> Self {
+        Self {
+            mobility,
+            qdot,
+            acc,
+            links: Vec::with_capacity(2),
+            jacs: Vec::with_capacity(2),
+            wj: Vec::with_capacity(2),
+            blocks: Vec::with_capacity(2),
+        }
+    }
+
     /// Adds a link of jacobian `jac` at table index `index`, returning its slot.
-    fn add(&mut self, index: usize, jac: DMatrix<f64>) -> usize {
+    pub(crate) fn add(&mut self, index: usize, jac: DMatrix<f64>) -> usize {
         let wj = &self.mobility * jac.transpose();
         let block = |j: &DMatrix<f64>, w: &DMatrix<f64>| -> Matrix6<f64> {
             let m = j * w;
@@ -104,6 +118,8 @@ impl Generalised {
 pub(crate) struct LinkCtx<'a> {
     /// rapier's multibodies.
     pub multibodies: &'a MultibodyJointSet,
+    /// rapier's impulse joints (`jointed`).
+    pub impulse_joints: &'a ImpulseJointSet,
     /// The (sub)step \[s\].
     pub h: f64,
     /// A free body's drift time `h (N + 1) / (2N)` \[s\] (`SoftWorld::prepare`; the body
@@ -401,15 +417,7 @@ fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Opti
     if !finite.into_iter().all(|x| x.is_finite()) {
         return None;
     }
-    Some(Generalised {
-        mobility,
-        qdot,
-        acc,
-        links: Vec::with_capacity(2),
-        jacs: Vec::with_capacity(2),
-        wj: Vec::with_capacity(2),
-        blocks: Vec::with_capacity(2),
-    })
+    Some(Generalised::new(mobility, qdot, acc))
 }
 
 /// The multibody's dof couplings (a URDF `<mimic>`: `qdot_2 = coeff qdot_1`, a hard row of
@@ -509,7 +517,8 @@ fn motors(
 /// One motor at joint position `q` \[rad or m\] as `(b / a, c / a)` (see the module's docs),
 /// with the dof's own mobility `w` and the joint's `limits` (which clamp its target velocity,
 /// as rapier does); `None` if it has no compliance to fold (zero stiffness and damping).
-fn motor_fold(
+/// Also an impulse joint's motor (`jointed`), `w` its row's free-body mobility.
+pub(crate) fn motor_fold(
     motor: &JointMotor,
     q: f64,
     limits: Option<[f64; 2]>,

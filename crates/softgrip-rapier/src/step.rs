@@ -238,6 +238,7 @@ impl Step<'_> {
         let h_drift = h * (passes + 1.0) / (2.0 * passes);
         let ctx = LinkCtx {
             multibodies: &self.physics.multibody_joints,
+            impulse_joints: &self.physics.impulse_joints,
             h,
             h_drift,
             passes: passes as usize,
@@ -329,6 +330,7 @@ impl Step<'_> {
         let slop = w.integration_parameters.allowed_linear_error() as f64;
         let ctx = LinkCtx {
             multibodies: &w.multibody_joints,
+            impulse_joints: &w.impulse_joints,
             h,
             h_drift,
             passes: w.integration_parameters.num_solver_iterations.max(1),
