@@ -423,6 +423,17 @@ pub(crate) struct SolveScratch {
     coupled: CoupledScratch,
 }
 
+impl SolveScratch {
+    /// The most soft rows of one group in the last [`solve`] (0 if it had none).
+    pub(crate) fn largest_group(&self) -> usize {
+        self.starts
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .max()
+            .unwrap_or(0)
+    }
+}
+
 fn find(parent: &mut [usize], mut i: usize) -> usize {
     while parent[i] != i {
         parent[i] = parent[parent[i]];
