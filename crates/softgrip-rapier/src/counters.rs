@@ -34,6 +34,12 @@ pub struct SoftCounters {
     pub coupled_passes: u64,
     /// Coupled solves that used every pass allowed without settling, total.
     pub coupled_unsettled: u64,
+    /// The most soft contacts solved together in one coupled group (contacts sharing a
+    /// dynamic body, What one step does, 4), over all solves so far (0 before any contact).
+    /// Resting fingertips apart from each other are groups of one: a larger figure says the
+    /// solve is coupling contacts it need not (its cost grows with the cube of a group's
+    /// size).
+    pub largest_group: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the impulse solve.

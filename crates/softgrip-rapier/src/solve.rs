@@ -428,6 +428,15 @@ impl SolveScratch {
     pub(crate) fn coupled_stats(&self) -> [u64; 3] {
         self.coupled.stats
     }
+
+    /// The most soft rows of one group in the last [`solve`] (0 if it had none).
+    pub(crate) fn largest_group(&self) -> usize {
+        self.starts
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .max()
+            .unwrap_or(0)
+    }
 }
 
 fn find(parent: &mut [usize], mut i: usize) -> usize {

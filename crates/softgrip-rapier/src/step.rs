@@ -396,7 +396,13 @@ impl Step<'_> {
     /// contacts' memory (friction anchors): started for new contacts, ended for pairs that are
     /// no longer in contact.
     fn prepare_state(&mut self, h: f64, s: &mut Scratch) {
-        let capped = self.soft.counters.substeps_last >= substep::MAX_SUBSTEPS;
+        // Implicit (damped, never gaining energy) where the step is not resolved: at the
+        // substep cap, and in an unsplit step, whose touching contacts were judged at rest by
+        // their velocity. A turning point of a bounce is at rest too: taken nearly explicit
+        // (`omega dt = 0.58`) between split steps, each such step gained energy, and a 4.6 mm
+        // ball of E = 194 kPa dropped 1.7 um at dt = 0.8 ms rose 65 % above its start.
+        let substeps = self.soft.counters.substeps_last;
+        let capped = substeps >= substep::MAX_SUBSTEPS || substeps == 1;
         s.stamp = s.stamp.wrapping_add(1);
         let stamp = s.stamp;
         let soft = &mut self.soft;

@@ -26,6 +26,9 @@ impl Step<'_> {
                 h,
                 &mut s.solve,
             );
+            let largest = s.solve.largest_group() as u64;
+            let counters = &mut self.soft.counters;
+            counters.largest_group = counters.largest_group.max(largest);
             let mut again = false;
             for ((row, model), (&gi, &w)) in s
                 .rows
