@@ -158,6 +158,25 @@ pub enum SceneError {
         /// The fingertip's radius R \[m\].
         radius: f64,
     },
+    /// A robot's link starts inside a dynamic body deeper than rapier's allowed linear error:
+    /// rapier would push the two apart in the first steps, through whatever holds the body.
+    #[error(
+        "{origin}: `{link}` starts {} m inside `{other}` (more than rapier's allowed linear error, {} m; rapier would push the body out through whatever holds it): move the body or the robot (SCENES.md, \"Starting in contact\")",
+        softgrip_law::Shortest(*depth),
+        softgrip_law::Shortest(*allowed)
+    )]
+    StartOverlap {
+        /// The file.
+        origin: String,
+        /// The robot's link shape, e.g. `robot[0] (`gripper`) link `base_link` collision[0]`.
+        link: String,
+        /// The body's shape, e.g. `body[1].shape[0] (`cylinder`)`.
+        other: String,
+        /// Penetration depth at the start \[m\].
+        depth: f64,
+        /// rapier's allowed linear error (the depth it leaves alone) \[m\].
+        allowed: f64,
+    },
     /// A fingertip starts pressed into another body deeper than its law's validity range.
     #[error(
         "{origin}: `{fingertip}` starts {depth:.4e} m inside `{other}` (x = {x:.4}, past the law's validity x <= {x_max:.4}): move the bodies apart (SCENES.md, \"Starting in contact\")"

@@ -1,14 +1,17 @@
 //! The start of a run: a fingertip may start touching or slightly pressed into a body (the
 //! plugin pushes it out through the law), but not deeper than the law's validity range (a
 //! fingertip starting inside the box gave 44 kN at x = 1.52). That is an error naming the
-//! pair and the depth ([`SceneError::StartPenetration`]), checked on the built world.
+//! pair and the depth ([`SceneError::StartPenetration`]), checked on the built world. A robot's
+//! link must not start inside a dynamic body either ([`SceneError::StartOverlap`]): a cylinder
+//! started 15 mm inside a gripper's palm was pushed 14.5 mm into the table in one step and
+//! toppled.
 
 use std::collections::HashMap;
 
-use softgrip_rapier::rapier3d::parry::bounding_volume::Aabb;
+use softgrip_rapier::rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
 use softgrip_rapier::rapier3d::parry::partitioning::{Bvh, BvhBuildStrategy};
 use softgrip_rapier::rapier3d::parry::query;
-use softgrip_rapier::rapier3d::prelude::{Collider, ColliderHandle, Vector};
+use softgrip_rapier::rapier3d::prelude::{Collider, ColliderHandle, Pose, Vector};
 use softgrip_rapier::softgrip_law::{ContactLaw, ContactParams};
 
 use crate::build::SceneHandles;
@@ -24,6 +27,7 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
     let built = scene.build();
     let (world, h) = (&built.world, &built.handles);
     let labels = labels(scene, h);
+    check_links(c, scene, &built)?;
     let tip_of: HashMap<ColliderHandle, usize> = h
         .fingertips
         .iter()
@@ -34,7 +38,10 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
     // Bounded boxes go into the BVH; an unbounded shape (a plane) is a candidate of every tip.
     let boxes: Vec<Aabb> = labels
         .iter()
-        .map(|(ch, _)| colliders[*ch].compute_aabb())
+        .map(|(ch, _)| {
+            let co = &colliders[*ch];
+            co.shape().compute_aabb(&start_pose(world, co))
+        })
         .collect();
     let bounded = |b: &Aabb| b.mins.is_finite() && b.maxs.is_finite() && b.volume().is_finite();
     let (mut finite, mut unbounded) = (Vec::new(), Vec::new());
@@ -49,7 +56,8 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
     let bvh = Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves);
     let mut candidates = Vec::new();
     for (i, (_, tip_h)) in h.fingertips.iter().enumerate() {
-        let tip_box = colliders[*tip_h].compute_aabb();
+        let tip_co = &colliders[*tip_h];
+        let tip_box = tip_co.shape().compute_aabb(&start_pose(world, tip_co));
         candidates.clear();
         candidates.extend(
             bvh.intersect_aabb(&tip_box)
@@ -69,6 +77,82 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
                 other_label,
                 &tip_of,
             )?;
+        }
+    }
+    Ok(())
+}
+
+/// A collider's pose at the scene's start: its parent body's pose times its pose on the body.
+/// The built world's colliders still sit where their bodies were inserted until rapier's first
+/// step syncs them, and a robot's links were moved to their start joint positions after that
+/// (forward kinematics of the bodies only): read from the collider, a pad on a finger was
+/// checked where the finger is at joint position 0.
+fn start_pose(world: &softgrip_rapier::SoftWorld, co: &Collider) -> Pose {
+    match (co.parent(), co.position_wrt_parent()) {
+        (Some(b), Some(rel)) => match world.physics.bodies.get(b) {
+            Some(body) => *body.position() * *rel,
+            None => *co.position(),
+        },
+        _ => *co.position(),
+    }
+}
+
+/// Every robot link's collision shape against every shape of a dynamic body at the start poses
+/// (their bounding boxes first): deeper than rapier's allowed linear error is an error naming
+/// both shapes and the depth. A robot's link against a fixed or kinematic body (a hand's base on
+/// its table) is left to rapier.
+fn check_links(
+    c: &Checker,
+    scene: &Scene,
+    built: &crate::build::BuiltScene,
+) -> Result<(), SceneError> {
+    let (world, h) = (&built.world, &built.handles);
+    if h.robots.is_empty() {
+        return Ok(());
+    }
+    let colliders = &world.physics.colliders;
+    let allowed = world.physics.integration_parameters.allowed_linear_error() as f64;
+    let f = scene.file();
+    let mut shapes = h.shapes.iter();
+    let mut dynamic = Vec::new();
+    for (j, b) in f.bodies.iter().enumerate() {
+        for k in 0..b.shapes.len() {
+            let Some((_, s)) = shapes.next() else { break };
+            if b.kind == crate::format::BodyKind::Dynamic {
+                dynamic.push((*s, format!("body[{j}].shape[{k}] (`{}`)", b.name)));
+            }
+        }
+    }
+    for (i, ((name, rh), robot)) in h.robots.iter().zip(scene.robots()).enumerate() {
+        for (l, link_colliders) in rh.colliders.iter().enumerate() {
+            for (k, lh) in link_colliders.iter().enumerate() {
+                let lc = &colliders[*lh];
+                let lpose = start_pose(world, lc);
+                let lbox = lc.shape().compute_aabb(&lpose);
+                for (bh, label) in &dynamic {
+                    let bc = &colliders[*bh];
+                    let bpose = start_pose(world, bc);
+                    if !lbox.intersects(&bc.shape().compute_aabb(&bpose)) {
+                        continue;
+                    }
+                    let Ok(Some(contact)) =
+                        query::contact(&lpose, lc.shape(), &bpose, bc.shape(), 0.0)
+                    else {
+                        continue;
+                    };
+                    let depth = -(contact.dist as f64);
+                    if depth > allowed {
+                        let link = &robot.links()[l].name;
+                        return Err(SceneError::StartOverlap {
+                            origin: c.origin.to_string(),
+                            link: format!("robot[{i}] (`{name}`) link `{link}` collision[{k}]"),
+                            other: label.clone(),
+                            depth,
+                            allowed,
+                        });
+                    }
+                }
+            }
         }
     }
     Ok(())
@@ -129,10 +213,11 @@ fn check_pair(
     if other_tip.is_some_and(|j| j < i) {
         return Ok(());
     }
+    let (other_pose, tip_pose) = (start_pose(world, other_co), start_pose(world, tip_co));
     let Ok(Some(contact)) = query::contact(
-        other_co.position(),
+        &other_pose,
         other_co.shape(),
-        tip_co.position(),
+        &tip_pose,
         tip_co.shape(),
         0.0,
     ) else {
@@ -141,9 +226,9 @@ fn check_pair(
     // Behind a backed fingertip's flat face is its rigid finger: rapier's contact, which
     // pushes out from any depth.
     let n = contact.normal1;
-    let behind = |t: &softgrip_rapier::SoftFingertip, co: &Collider, sign: f32| {
+    let behind = |t: &softgrip_rapier::SoftFingertip, pose: &Pose, sign: f32| {
         t.facing().is_some_and(|[x, y, z]| {
-            let f = co.position().rotation * Vector::new(x as f32, y as f32, z as f32);
+            let f = pose.rotation * Vector::new(x as f32, y as f32, z as f32);
             sign * f.dot(n) < 0.0
         })
     };
@@ -152,10 +237,10 @@ fn check_pair(
     // being behind, while 2.5R was refused).
     let depth = -(contact.dist as f64);
     let backs = [
-        behind(tip, tip_co, -1.0).then_some((i, tip)),
+        behind(tip, &tip_pose, -1.0).then_some((i, tip)),
         other_tip
             .map(|j| (j, &scene.fingertips()[j]))
-            .filter(|(_, t)| behind(t, other_co, 1.0)),
+            .filter(|(_, t)| behind(t, &other_pose, 1.0)),
     ];
     if backs.iter().any(Option::is_some) {
         if let Some((k, t)) = backs

@@ -370,3 +370,41 @@ fn a_bad_lift_acceleration_is_an_error_naming_it() {
         assert!(e.contains("controller[0].lift.acceleration"), "{bad}: {e}");
     }
 }
+
+/// A body that starts inside a robot's link is refused, naming both and the depth: the
+/// gripper's cylinder stood up (its top at 80 mm) starts 15 mm inside the palm (`base_link`
+/// from 65 mm at this pose); run, rapier pushed it 14.5 mm into the table in the first step
+/// and it toppled. Lying (the shipped scene) it clears the palm by 25 mm and loads.
+#[test]
+fn a_body_starting_inside_a_link_is_an_error_naming_both_and_the_depth() {
+    let path = repo().join("scenes/robots/parallel_gripper_cylinder.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    Scene::parse(&text, "c.toml", path.parent().unwrap()).expect("the lying cylinder loads");
+    let standing = text
+        .replace(
+            "rotation = [1.5707963267948966, 0.0, 0.0] # lying",
+            "# standing",
+        )
+        .replace("position = [0.0, 0.02, 0.0]", "position = [0.0, 0.04, 0.0]");
+    assert_ne!(standing, text);
+    let e = Scene::parse(&standing, "c.toml", path.parent().unwrap()).unwrap_err();
+    let softgrip_scene::SceneError::StartOverlap {
+        link,
+        other,
+        depth,
+        allowed,
+        ..
+    } = &e
+    else {
+        panic!("{e}");
+    };
+    assert!(link.contains("`base_link`"), "{e}");
+    assert!(other.contains("`cylinder`"), "{e}");
+    assert!((depth - 0.015).abs() < 1e-5, "depth {depth} m: {e}");
+    assert!(*allowed < 0.015, "{e}");
+    let message = e.to_string();
+    assert!(
+        message.contains("0.015") && message.contains("cylinder"),
+        "{message}"
+    );
+}
