@@ -235,15 +235,19 @@ pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
         if a.jn <= 0.0 && a.delta_end <= 0.0 {
             continue;
         }
-        let resp = a.model.law.response(a.delta_end);
+        // A contact that carried an impulse but opened within the step reads its end-of-step
+        // compression as 0 (separated), never the gap: `delta >= 0` (ContactReading), its force
+        // the step's average (a three-finger hand's pad read -0.51 mm with 3.5e-5 N).
+        let delta = a.delta_end.max(0.0);
+        let resp = a.model.law.response(delta);
         out.push(TipContact {
             fingertip: tip,
             other,
             reading: ContactReading {
                 point: a.point.into(),
                 normal: a.normal.into(),
-                delta: a.delta_end,
-                x: a.delta_end / a.model.radius,
+                delta,
+                x: delta / a.model.radius,
                 normal_force: a.jn / dt,
                 friction_force: (a.jt / dt).into(),
                 torsional_moment: a.jtw / dt,
