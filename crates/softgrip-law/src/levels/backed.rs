@@ -613,6 +613,20 @@ impl Backed {
         rho: f64,
         rho_layer: f64,
     ) -> Result<Self> {
+        Self::try_new_capped(backing, tau, nu, rho, rho_layer, 1.0)
+    }
+
+    /// [`Backed::try_new_on`] with the compressible cap (the denominator's `b^2 eps x^2`)
+    /// scaled by `cap` in (0, 1]: for the flat pad on a curved counterpart the area it presses
+    /// over the plane's, `rho_H` (`crate::cap_map`); 1 on a plane.
+    pub(crate) fn try_new_capped(
+        backing: Backing,
+        tau: Option<f64>,
+        nu: f64,
+        rho: f64,
+        rho_layer: f64,
+        cap: f64,
+    ) -> Result<Self> {
         if !(0.3..=0.5).contains(&nu) {
             return Err(Error::IncompatibleLevel {
                 level: LevelKind::Calibrated,
@@ -685,7 +699,7 @@ impl Backed {
             c: c0 + c1 * eps,
             d,
             e: e0 + e1 * eps,
-            b2: b * b * eps,
+            b2: cap * b * b * eps,
             core,
             radius,
             x_hemisphere: rho,
