@@ -236,7 +236,7 @@ def law(c, x, coef):
     rho = 1 / (1 + r * (1 / rho_h - 1))
     # The compressible cap of the plane law scaled by the area the counterpart presses, rho_H
     # of the plane's at the same delta (a^2 = R_eff delta): the volume that can collapse.
-    cap = rho_h if cap_on else 1.0
+    cap = min(rho_h, 1.0) if cap_on else 1.0  # a concave counterpart keeps the plane's (cap_map.rs)
     f = h / rho ** 1.5 * f_plane(rho * x, c.nu, c.construction, cap) - 4 / 3 * h * g * mu * x ** 2.5
     # The collapse: the plane law's compressible softening (order eps^n) changed in proportion
     # to how much the counterpart narrows the patch (1 - rho_H).

@@ -17,6 +17,12 @@
 //! `r+g+q, eps, cap`): the flat pad at nu = 0.3 on balls of R/2, R, 2R went from 3.76, 5.05,
 //! 3.44 % to 2.22, 3.46, 2.69 %, the free sphere on 4R (blind) from 3.64 to 2.97 %.
 //!
+//! A concave counterpart (a bowl, `rho_H > 1`) keeps the plane's cap: it presses more than the
+//! plane's area, but no FE of a concave counterpart says how much more volume collapses, and
+//! `rho_H B` grows without bound as the bowl approaches the fingertip's own radius (at
+//! `kappa R = -0.999`, `rho_H = 1000`: the free sphere at nu = 0.3 softened from x = 0.01 and its
+//! range ended there, against x = 0.51 with the plane's cap).
+//!
 //! Only the calibrated plane laws carry the cap as a term; `auto`, `tabulated` and `custom`
 //! take the map alone (their plane curve is a table). A core keeps session 11's map
 //! (`crate::core_map`). The hot path is unchanged (the same curve type); binding the flat pad

@@ -141,8 +141,8 @@ pub(crate) struct CounterpartMap {
     /// Where the counterpart's own size ends the law, in `x` (its Hertz patch as wide as the
     /// counterpart's radius; infinite for a plane, an edge and a concave counterpart).
     pub reach: f64,
-    /// The plane law's compressible cap over the plane's (`rho_H` for the calibrated free
-    /// sphere and flat pad on a curved counterpart, `crate::cap_map`; 1 otherwise).
+    /// The plane law's compressible cap over the plane's (`min(rho_H, 1)` for the calibrated
+    /// free sphere and flat pad on a curved counterpart, `crate::cap_map`; 1 otherwise).
     pub cap: f64,
 }
 
@@ -208,8 +208,9 @@ impl CounterpartMap {
                     ],
                     shrink: quartic.map(|m| form.shrink * m),
                     reach: if mu > 0.0 { 1.0 / mu } else { f64::INFINITY },
-                    // The pressed area over the plane's at the same delta.
-                    cap: if form.cap { h * h } else { 1.0 },
+                    // The pressed area over the plane's at the same delta; a concave
+                    // counterpart (rho_H > 1) keeps the plane's cap (`cap_map`).
+                    cap: if form.cap { (h * h).min(1.0) } else { 1.0 },
                 })
             }
             CounterpartKind::Edge => Ok(edge_map(nu, backing)),
