@@ -123,6 +123,7 @@ def cases_3d():
     # session 12 (law-curved): the cylinder away from nu = 0.48, held out of every fit (the law
     # must hold at every nu); run under /work/fe-scratch/runs/law-curved-s12/
     c += [("free", 0.3, 0, 20, "heldout", "cylinder", k) for k in (1, 3)]
+    c += [("flat", 0.3, 0, 20, "heldout", "cylinder", 3)]
     return c
 
 
