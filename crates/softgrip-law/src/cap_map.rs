@@ -24,7 +24,8 @@
 //! range ended there, against x = 0.51 with the plane's cap).
 //!
 //! Only the calibrated plane laws carry the cap as a term; `auto`, `tabulated` and `custom`
-//! take the map alone (their plane curve is a table). A core keeps session 11's map
+//! take the map alone (their plane curve is a table) with session 11's constants, fitted
+//! without the cap (`crate::mapping`). A core keeps session 11's map
 //! (`crate::core_map`). The hot path is unchanged (the same curve type); binding the flat pad
 //! builds its table once (`cargo bench -p softgrip-law --bench law -- with_counterpart`).
 

@@ -264,6 +264,8 @@ impl ContactLaw {
             p.poisson_ratio(),
             p.backing(),
             calibrated,
+            // Only `calibrated`'s own plane forms carry the compressible cap (`cap_map`).
+            matches!(self.level, Level::Calibrated),
         )?;
         // A skin on a core: its own curve on a curved counterpart (`core_map`); the free
         // sphere and the flat pad: the plane's with its compressible cap scaled (`cap_map`).

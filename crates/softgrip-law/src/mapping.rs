@@ -164,13 +164,16 @@ impl CounterpartMap {
     /// `calibrated`: the FE-calibrated form (for `calibrated`, `auto`, `tabulated` and
     /// `custom`: the fingertip's own law); else the patch argument alone (`r = 1`, `g = 0`,
     /// for the published levels, baselines: on a ball `hertz` is then Hertz's law with the
-    /// effective radius at every x).
+    /// effective radius at every x). `capped`: the fingertip's plane curve carries the cap
+    /// `rho_H B` (`calibrated`'s free sphere and flat pad, `crate::cap_map`): session 12's
+    /// constants; else (`auto`, `tabulated`, `custom`, a core) session 11's, fitted without it.
     pub(crate) fn try_new(
         counterpart: &Counterpart,
         radius: f64,
         nu: f64,
         backing: Backing,
         calibrated: bool,
+        capped: bool,
     ) -> Result<Self> {
         match counterpart.kind() {
             CounterpartKind::Plane => Ok(Self::IDENTITY),
@@ -183,7 +186,7 @@ impl CounterpartMap {
                 let hertz = HertzEllipse::new(a_hat, b_hat);
                 let h = hertz.force_factor;
                 let form = if calibrated {
-                    Form::of(nu, backing)
+                    Form::of(nu, backing, capped)
                 } else {
                     Form::THEORY
                 };
@@ -249,12 +252,14 @@ impl Form {
     /// The constants at Poisson ratio `nu`. Below nu = 0.3, where no FE of a curved
     /// counterpart is, they stay at their nu = 0.3 values (the linear form in `eps` carried
     /// further would turn `r` negative for a bonded pad by nu = 0.2).
-    fn of(nu: f64, backing: Backing) -> Self {
+    /// `capped`: the plane curve carries the cap (module docs); else session 11's constants.
+    fn of(nu: f64, backing: Backing, capped: bool) -> Self {
         let eps = (3.0 * (1.0 - 2.0 * nu) / (2.0 * (1.0 + nu))).min(EPS_VALIDATED);
-        let ([r0, r1, g0, g1], (q, order), cap) = match backing {
-            Backing::Free => (FREE, COLLAPSE_FREE, true),
-            Backing::Flat => (FLAT, COLLAPSE_FLAT, true),
-            Backing::Core { .. } => (CORE, COLLAPSE_CORE, false),
+        let ([r0, r1, g0, g1], (q, order), cap) = match (backing, capped) {
+            (Backing::Free, true) => (FREE, COLLAPSE_FREE, true),
+            (Backing::Flat, true) => (FLAT, COLLAPSE_FLAT, true),
+            (Backing::Free, false) => (FREE_11, COLLAPSE_FREE_11, false),
+            (Backing::Flat | Backing::Core { .. }, _) => (BONDED_11, COLLAPSE_BONDED_11, false),
         };
         Self {
             r: r0 + r1 * eps,
@@ -278,11 +283,13 @@ const EPS_VALIDATED: f64 = 3.0 * (1.0 - 0.6) / (2.0 * 1.3);
 /// Sneddon's rigid sphere on a half-space: `a = a_H (1 - (a/R2)^2/6)` (module docs).
 const SNEDDON_SHRINK: f64 = 1.0 / 6.0;
 
-/// `q` and the order `n` of the collapse term `q eps^n (1 - rho_H) x^(7/2)` (module docs): free,
-/// flat and core (a bonded pad, session 11's constants).
+/// `q` and the order `n` of the collapse term `q eps^n (1 - rho_H) x^(7/2)` (module docs): free
+/// and flat with the cap (session 12); free and bonded without it (session 11: `auto`,
+/// `tabulated`, `custom`, and the core).
 const COLLAPSE_FREE: (f64, i32) = (-4.536498, 2);
 const COLLAPSE_FLAT: (f64, i32) = (2.196058, 1);
-const COLLAPSE_CORE: (f64, i32) = (3.981922, 1);
+const COLLAPSE_FREE_11: (f64, i32) = (-6.337107, 2);
+const COLLAPSE_BONDED_11: (f64, i32) = (3.981922, 1);
 
 /// Free sphere: r0, r1, g0, g1 of `r = r0 + r1 eps`, `g = g0 + g1 eps`
 /// (`eps = mu/kappa`; fitted on the ball curves at nu = 0.3, 0.48 and 0.499 with the collapse
@@ -291,9 +298,13 @@ const COLLAPSE_CORE: (f64, i32) = (3.981922, 1);
 const FREE: [f64; 4] = [0.717102, -0.918761, 0.259604, -0.719838];
 /// Flat pad: r0, r1, g0, g1 (as [`FREE`]).
 const FLAT: [f64; 4] = [0.832134, -0.872566, 0.332105, -0.173477];
-/// Core (a bonded pad, its hemisphere's cap not scaled): session 11's bonded constants, form
-/// `r+g+q, eps` of `fit_counterpart.py`, which `crate::core_map` was validated with.
-const CORE: [f64; 4] = [0.840368, -0.991587, 0.328077, 0.225198];
+/// Without the cap (`auto`, `tabulated`, `custom`, whose plane curve is a table, and the core,
+/// whose hemisphere's cap is not scaled): session 11's constants, form `r+g+q, eps` of
+/// `fit_counterpart.py` (`crate::core_map` was validated with the bonded ones). With session
+/// 12's constants and no cap the free sphere would be 6.61 % and the flat pad 11.47 % off at
+/// nu = 0.3 (against 3.64 and 5.05 %).
+const FREE_11: [f64; 4] = [0.723783, -1.10834, 0.256014, -0.648758];
+const BONDED_11: [f64; 4] = [0.840368, -0.991587, 0.328077, 0.225198];
 
 /// The map of a sharp edge: the plane law at `rho x`, scaled by `s` (module docs), with one
 /// `(s, rho)` per construction.
