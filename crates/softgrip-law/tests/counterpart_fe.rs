@@ -118,9 +118,11 @@ fn stated_force_error(path: &str) -> f64 {
         "cylinder/flat/force_nu0.48_k1.csv" => 1.13,
         "cylinder/flat/force_nu0.48_k3.csv" => 0.94,
         // Session 12, blind (run after the constants were fixed): the free cylinders of R and
-        // 3R at nu = 0.3, the first away from nu = 0.48 (session 11's law: 1.91 and 1.09 %).
+        // 3R and the flat pad on 3R at nu = 0.3, the first away from nu = 0.48 (session 11's
+        // law: 1.91, 1.09 and 1.58 %).
         "cylinder/free/force_nu0.3_k1.csv" => 1.91,
         "cylinder/free/force_nu0.3_k3.csv" => 1.13,
+        "cylinder/flat/force_nu0.3_k3.csv" => 1.49,
         "cylinder/free/force_nu0.48_k1.csv" => 1.48,
         "cylinder/free/force_nu0.48_k3.csv" => 0.72,
         // A curve not in COUNTERPART.md yet: the target.
@@ -204,7 +206,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         }
         seen += 1;
     }
-    assert!(seen >= 43, "{seen} curves");
+    assert!(seen >= 44, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
