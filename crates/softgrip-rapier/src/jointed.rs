@@ -42,6 +42,18 @@
 //! gravity. The prediction is what that converged solve does, so at rest the contact carries
 //! the law's force and each motor `J^T F`. Applied as a velocity change instead, a light link's
 //! kick has to be taken back by the joints within the step (as a multibody link's was).
+//!
+//! **When the solve sees an assembly.** The prediction is rapier's *converged* joint solve, and
+//! rapier reaches it only if its Gauss-Seidel sweeps over the joint rows converge within a
+//! solver pass. The solve sees an assembly only where they do ([`SWEEP_TOLERANCE`] on the
+//! rate of [`sweep_rate`]): a body on a fixed or kinematic base whose motor acts through its
+//! centre of mass (a prismatic jaw) at any number of sweeps; a chain of light links with an
+//! offset centre of mass (the suite's two-link finger, rate 0.948) from 214 sweeps
+//! (`num_internal_pgs_iterations`). Otherwise its bodies are free bodies to the solve, as
+//! before session 12. Why rapier's chain needs so many (crate README, Limits; plain rapier,
+//! `tests/impulse_chain_plain.rs`): a motor row is solved against the body's free inertia
+//! about its centre of mass and not orthogonalised against the joint's locked rows, so each
+//! sweep passes only part of the load between the motor and the locked anchor.
 
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use rapier3d::prelude::{
@@ -53,17 +65,25 @@ use crate::detect::to_f64;
 use crate::multibody::{Generalised, Link, LinkCtx, motor_fold};
 use crate::solve::BodyState;
 
-/// The most bodies one jointed assembly may hold: one. A body whose impulse joints attach it
-/// only to fixed or kinematic bodies (a prismatic jaw; a revolute link on a base, not
-/// measured) is seen jointed; a chain of dynamic bodies (a two-link finger) is seen as free bodies, as before.
-/// Why: rapier's own solve of such a chain does not carry a load of the kind a pressing tip
-/// makes. Measured in plain rapier 0.36.1 (no plugin), the suite's impulse-jointed two-link
-/// finger (3 g links, 40 N m/rad motors, dt = 1/60 s) with a constant 0.5 N force at its tip
-/// flails (joint speeds ~100 rad/s) at 2 PGS iterations, and at 500 it creeps away from the
-/// motors' equilibrium (0.05 rad off, still moving); with the assembly seen, the plugin's
-/// predicted 6.4 N on the tip threw the finger 0.6 rad open in every unsplit step. The rows
-/// and the mobility below are written for any number of bodies (`6k x 6k`, dense).
-pub(crate) const MAX_ASSEMBLY_BODIES: usize = 1;
+/// The most bodies one jointed assembly may hold (its rows and mobility are dense, `6k x 6k`);
+/// a larger one is seen as free bodies.
+pub(crate) const MAX_ASSEMBLY_BODIES: usize = 8;
+
+/// How far rapier's own Gauss-Seidel sweeps over an assembly's joint rows must converge within
+/// one solver pass for the solve to see the assembly: `rate^sweeps <= SWEEP_TOLERANCE`
+/// ([`sweep_rate`], `sweeps` = `num_internal_pgs_iterations`). The plugin predicts what the
+/// *converged* joint solve does; rapier's joint rows are not warm-started by default and a
+/// motor row is not orthogonalised against the locked ones (its impulse bounds are finite), so
+/// where the sweeps do not converge rapier's joints do not carry what the plugin predicts and
+/// the prediction throws the bodies (a two-link finger 0.6 rad open in one step at 2 sweeps).
+/// An assembly that fails the test is seen as free bodies (the soft force comes out small and
+/// the tip sinks; nothing is thrown). The value is measured, on the suite's two-link finger
+/// (`rate` 0.948, `tests/jointed.rs`): `|F / F_law - 1|` at rest 0.32 / 0.048 / 5.3e-3 /
+/// 3.9e-4 at 128 / 160 / 200 / 256 sweeps, `rate^sweeps` 1.0e-3 / 1.8e-4 / 2.1e-5 / 1.0e-6:
+/// the force's error about 300 `rate^sweeps`. 1e-5 admits the finger from 214 sweeps. A body
+/// on a fixed base whose motor acts through its centre of mass (a prismatic jaw) has rate ~0
+/// and is seen at one sweep.
+const SWEEP_TOLERANCE: f64 = 1e-5;
 
 /// Relative diagonal compliance of a hard joint row (keeps `S` invertible when rows are
 /// redundant, a closed loop of joints).
@@ -94,6 +114,8 @@ struct JointRow {
     sign: Sign,
     /// A locked axis (the external acceleration is taken through these alone).
     locked: bool,
+    /// The joint's index among the assembly's joints (rapier solves a joint's rows together).
+    joint: usize,
 }
 
 /// Whether `handle` can be a member: an awake, enabled dynamic body that is not a multibody
@@ -181,8 +203,16 @@ pub(crate) fn assembly_states(
                 continue;
             }
             seen.push(jh);
+            let first = rows.len();
             joint_rows(bodies, ctx, kin_vel, &ms, &minv, (b1, b2), joint, &mut rows);
+            for r in &mut rows[first..] {
+                r.joint = seen.len() - 1;
+            }
         }
+    }
+    let rate = sweep_rate(&minv, &rows)?;
+    if rate.powi(ctx.sweeps.min(i32::MAX as usize) as i32) > SWEEP_TOLERANCE {
+        return None;
     }
     let (mobility, qdot) = constrained(&minv, &rows, &v_star, |_| true)?;
     let (locked_mobility, _) = constrained(&minv, &rows, &v_star, |r| r.locked)?;
@@ -438,6 +468,7 @@ impl Sides<'_> {
             target: 0.0,
             sign,
             locked,
+            joint: 0,
         }
     }
 
@@ -471,6 +502,7 @@ impl Sides<'_> {
             target: c_a / b_a,
             sign: Sign::Free,
             locked: false,
+            joint: 0,
         })
     }
 }
@@ -544,4 +576,45 @@ fn smallest_abs_diff(a: f64, b: f64) -> f64 {
     let e = a - b;
     let other = e - e.signum() * std::f64::consts::TAU;
     if e.abs() < other.abs() { e } else { other }
+}
+
+/// The rate at which rapier's Gauss-Seidel sweeps over the assembly's joint rows converge: the
+/// spectral radius of the error's propagation over one sweep, `E = I - (D + L)^-1 S` with `S =
+/// G M^-1 G^T + A`, in rapier's order (per joint its motor rows one by one, then its hard rows
+/// as one block: rapier orthogonalises a joint's unbounded rows, which solves them together).
+/// `None` if not finite.
+fn sweep_rate(minv: &DMatrix<f64>, rows: &[JointRow]) -> Option<f64> {
+    let mut order: Vec<usize> = (0..rows.len()).collect();
+    order.sort_by_key(|&i| (rows[i].joint, rows[i].compliance == 0.0, i));
+    let k = order.len();
+    if k == 0 {
+        return Some(0.0);
+    }
+    let g = DMatrix::from_fn(k, minv.nrows(), |r, c| rows[order[r]].g[c]);
+    let mut s = &g * minv * g.transpose();
+    for (r, &i) in order.iter().enumerate() {
+        s[(r, r)] += rows[i].compliance + HARD_COMPLIANCE * s[(r, r)].abs().max(1e-300);
+    }
+    // The block of row r: rows of one joint that are hard share one block.
+    let block = |r: usize| {
+        let row = &rows[order[r]];
+        (
+            row.joint,
+            if row.compliance == 0.0 { usize::MAX } else { r },
+        )
+    };
+    let lower = DMatrix::from_fn(k, k, |r, c| {
+        if c <= r || block(r) == block(c) {
+            s[(r, c)]
+        } else {
+            0.0
+        }
+    });
+    let e = DMatrix::identity(k, k) - lower.lu().solve(&s)?;
+    let rate = e
+        .complex_eigenvalues()
+        .iter()
+        .map(|z| z.norm())
+        .fold(0.0f64, f64::max);
+    rate.is_finite().then_some(rate)
 }
