@@ -60,7 +60,7 @@ use rapier3d::prelude::{
     ImpulseJoint, JointMotor, Pose, RigidBody, RigidBodyHandle, RigidBodySet, Vector,
 };
 
-use crate::bodies::KinematicVelocity;
+use crate::bodies::{KinematicVelocity, free_mobility};
 use crate::detect::to_f64;
 use crate::multibody::{Generalised, Link, LinkCtx, motor_fold};
 use crate::solve::BodyState;
@@ -158,23 +158,12 @@ fn members(
 }
 
 fn member(rb: &RigidBody, handle: RigidBodyHandle) -> Member {
-    let mp = rb.mass_properties();
-    let ii = &mp.effective_world_inv_inertia;
+    let (inv_m, inv_i) = free_mobility(rb);
     Member {
         handle,
-        inv_m: to_f64(mp.effective_inv_mass),
-        inv_i: Matrix3::new(
-            ii.m11 as f64,
-            ii.m12 as f64,
-            ii.m13 as f64,
-            ii.m12 as f64,
-            ii.m22 as f64,
-            ii.m23 as f64,
-            ii.m13 as f64,
-            ii.m23 as f64,
-            ii.m33 as f64,
-        ),
-        com: to_f64(mp.world_com),
+        inv_m,
+        inv_i,
+        com: to_f64(rb.mass_properties().world_com),
     }
 }
 

@@ -131,6 +131,52 @@ fn motored_joint(kind: JointKind, axis: Vector, anchor1: Vector, target: f32) ->
     }
 }
 
+/// A light dynamic link (awake, its own gravity scale `gravity`) with its origin at `at`: a
+/// 1000 kg/m^3 cuboid of half extents `half` centred at `centre` in its frame, colliding with
+/// nothing.
+fn light_link(
+    world: &mut SoftWorld,
+    at: Vector,
+    gravity: f32,
+    half: Vector,
+    centre: Vector,
+) -> RigidBodyHandle {
+    let p = &mut world.physics;
+    let body = p.bodies.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(at)
+            .gravity_scale(gravity)
+            .can_sleep(false),
+    );
+    p.colliders.insert_with_parent(
+        ColliderBuilder::cuboid(half.x, half.y, half.z)
+            .translation(centre)
+            .density(1000.0)
+            .collision_groups(InteractionGroups::none()),
+        body,
+        &mut p.bodies,
+    );
+    body
+}
+
+/// The suite's fingertip (`R`, calibrated, e = 0.5) on `body` at `offset` in its frame: its
+/// collider and its law.
+fn soft_tip(
+    world: &mut SoftWorld,
+    body: RigidBodyHandle,
+    offset: Vector,
+) -> (ColliderHandle, ContactLaw) {
+    let tip = world.physics.colliders.insert_with_parent(
+        ColliderBuilder::ball(R as f32).translation(offset),
+        body,
+        &mut world.physics.bodies,
+    );
+    let ft = fingertip(Level::Calibrated, 0.5).build().unwrap();
+    let law = ft.law().clone();
+    world.register(tip, ft).unwrap();
+    (tip, law)
+}
+
 /// The table, the box on it, a fixed base and the jointed chain (`prismatic`: one prismatic
 /// joint along y, the tip below it; else two revolute joints about z along x, the tip at the
 /// end of the second link) with `pgs` internal PGS iterations per rapier solver pass
@@ -167,21 +213,14 @@ fn scene(build: Build, prismatic: bool, pgs: usize, link_gravity: f32) -> Scene 
     let mut anchor_on_parent = Vector::ZERO;
     let mut joints = Vec::new();
     for (axis, kind, offset) in chain {
-        let body = world.physics.bodies.insert(
-            RigidBodyBuilder::dynamic()
-                .translation(at)
-                .gravity_scale(link_gravity)
-                .can_sleep(false),
-        );
         // A light link along its offset.
         let half = (offset.length() * 0.5).max(0.003);
-        world.physics.colliders.insert_with_parent(
-            ColliderBuilder::cuboid(half, 0.004, 0.004)
-                .translation(offset * 0.5)
-                .density(1000.0)
-                .collision_groups(InteractionGroups::none()),
-            body,
-            &mut world.physics.bodies,
+        let body = light_link(
+            &mut world,
+            at,
+            link_gravity,
+            Vector::new(half, 0.004, 0.004),
+            offset * 0.5,
         );
         let data = motored_joint(kind, axis, anchor_on_parent, 0.0);
         let handle = match build {
@@ -210,14 +249,7 @@ fn scene(build: Build, prismatic: bool, pgs: usize, link_gravity: f32) -> Scene 
         at += offset;
         anchor_on_parent = offset;
     }
-    let tip = world.physics.colliders.insert_with_parent(
-        ColliderBuilder::ball(R as f32).translation(anchor_on_parent),
-        parent,
-        &mut world.physics.bodies,
-    );
-    let ft = fingertip(Level::Calibrated, 0.5).build().unwrap();
-    let law = ft.law().clone();
-    world.register(tip, ft).unwrap();
+    let (_, law) = soft_tip(&mut world, parent, anchor_on_parent);
     // The box settles on the table.
     for _ in 0..30 {
         world.step();
@@ -704,20 +736,14 @@ fn mimic_jaws(pgs: usize) -> Mimic {
     let open = HALF + R as f32 + GAP;
     let mut fingers = Vec::new();
     let mut tips = Vec::new();
+    let mut laws = Vec::new();
     for side in [-1.0f32, 1.0] {
-        let body = world.physics.bodies.insert(
-            RigidBodyBuilder::dynamic()
-                .translation(Vector::new(side * open, y, 0.0))
-                .gravity_scale(0.0)
-                .can_sleep(false),
-        );
-        world.physics.colliders.insert_with_parent(
-            ColliderBuilder::cuboid(0.003, 0.02, 0.004)
-                .translation(Vector::new(side * 0.012, 0.02, 0.0))
-                .density(1000.0)
-                .collision_groups(InteractionGroups::none()),
-            body,
-            &mut world.physics.bodies,
+        let body = light_link(
+            &mut world,
+            Vector::new(side * open, y, 0.0),
+            0.0,
+            Vector::new(0.003, 0.02, 0.004),
+            Vector::new(side * 0.012, 0.02, 0.0),
         );
         let anchor = Vector::new(side * open, -0.05, 0.0);
         let data: GenericJoint = if side < 0.0 {
@@ -734,14 +760,8 @@ fn mimic_jaws(pgs: usize) -> Mimic {
             .multibody_joints
             .insert(base, body, data, true)
             .unwrap();
-        let tip = world.physics.colliders.insert_with_parent(
-            ColliderBuilder::ball(R as f32),
-            body,
-            &mut world.physics.bodies,
-        );
-        world
-            .register(tip, fingertip(Level::Calibrated, 0.5).build().unwrap())
-            .unwrap();
+        let (tip, law) = soft_tip(&mut world, body, Vector::ZERO);
+        laws.push(law);
         fingers.push(body);
         tips.push(tip);
     }
@@ -763,11 +783,7 @@ fn mimic_jaws(pgs: usize) -> Mimic {
             offset: 0.0,
         });
     }
-    let law = fingertip(Level::Calibrated, 0.5)
-        .build()
-        .unwrap()
-        .law()
-        .clone();
+    let law = &laws[0];
     let mut max_substeps_hold = 0;
     for i in 0..240 {
         world.step();
@@ -855,15 +871,12 @@ fn kinematic_multibody_root_moves_to_its_target() {
     let base = world.physics.bodies.insert(
         RigidBodyBuilder::kinematic_position_based().translation(Vector::new(0.0, 0.1, 0.0)),
     );
-    let link = world.physics.bodies.insert(
-        RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.03, 0.1, 0.0))
-            .gravity_scale(0.0),
-    );
-    world.physics.colliders.insert_with_parent(
-        ColliderBuilder::cuboid(0.003, 0.02, 0.004).density(1000.0),
-        link,
-        &mut world.physics.bodies,
+    let link = light_link(
+        &mut world,
+        Vector::new(0.03, 0.1, 0.0),
+        0.0,
+        Vector::new(0.003, 0.02, 0.004),
+        Vector::ZERO,
     );
     let data = motored_joint(
         JointKind::Prismatic,
@@ -876,14 +889,7 @@ fn kinematic_multibody_root_moves_to_its_target() {
         .multibody_joints
         .insert(base, link, data, true)
         .unwrap();
-    let tip = world.physics.colliders.insert_with_parent(
-        ColliderBuilder::ball(R as f32),
-        link,
-        &mut world.physics.bodies,
-    );
-    world
-        .register(tip, fingertip(Level::Calibrated, 0.5).build().unwrap())
-        .unwrap();
+    soft_tip(&mut world, link, Vector::ZERO);
     let dt = world.physics.integration_parameters.dt;
     let mut worst = 0.0f32;
     for k in 1..=30 {
