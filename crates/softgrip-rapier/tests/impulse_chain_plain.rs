@@ -117,11 +117,13 @@ fn run(cfg: Cfg) -> Run {
         at += Vector::new(l, 0.0, 0.0);
         anchor = Vector::new(l, 0.0, 0.0);
     }
-    let mut ip = IntegrationParameters::default();
-    ip.dt = cfg.dt;
-    ip.num_internal_pgs_iterations = cfg.pgs;
-    ip.num_solver_iterations = cfg.solver_iters;
-    ip.warmstart_joints = cfg.warm;
+    let ip = IntegrationParameters {
+        dt: cfg.dt,
+        num_internal_pgs_iterations: cfg.pgs,
+        num_solver_iterations: cfg.solver_iters,
+        warmstart_joints: cfg.warm,
+        ..Default::default()
+    };
     let mut pipeline = PhysicsPipeline::new();
     let mut islands = IslandManager::new();
     let mut bp = DefaultBroadPhase::new();
