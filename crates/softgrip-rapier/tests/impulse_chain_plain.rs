@@ -240,7 +240,7 @@ fn one_link_is_held_only_with_its_centre_of_mass_on_the_axis() {
 fn sweep() {
     let b = BASE;
     let mut cases: Vec<(String, Cfg)> = vec![("the suite's finger".into(), b)];
-    for pgs in [1, 4, 16, 64, 128, 256] {
+    for pgs in [1, 4, 8, 16, 64, 128, 256] {
         cases.push((format!("{pgs} sweeps"), Cfg { pgs, ..b }));
     }
     for solver_iters in [1, 8, 32] {
