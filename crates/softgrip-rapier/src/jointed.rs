@@ -55,7 +55,7 @@
 //! about its centre of mass and not orthogonalised against the joint's locked rows, so each
 //! sweep passes only part of the load between the motor and the locked anchor.
 
-use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
+use nalgebra::{DMatrix, DVector, Matrix3, Schur, Vector3};
 use rapier3d::prelude::{
     ImpulseJoint, JointMotor, Pose, RigidBody, RigidBodyHandle, RigidBodySet, Vector,
 };
@@ -600,10 +600,67 @@ fn sweep_rate(minv: &DMatrix<f64>, rows: &[JointRow]) -> Option<f64> {
         }
     });
     let e = DMatrix::identity(k, k) - lower.lu().solve(&s)?;
-    let rate = e
+    if !e.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    // A bounded Schur decomposition (nalgebra's `complex_eigenvalues` on the matrix iterates
+    // without a bound and unwraps).
+    let rate = Schur::try_new(e, f64::EPSILON, 100 * k)?
         .complex_eigenvalues()
         .iter()
         .map(|z| z.norm())
         .fold(0.0f64, f64::max);
     rate.is_finite().then_some(rate)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A compliant (motor) row of `joint` with coefficients `g`.
+    fn motor_row(g: &[f64], joint: usize) -> JointRow {
+        JointRow {
+            g: DVector::from_column_slice(g),
+            known: 0.0,
+            compliance: 1.0,
+            target: 0.0,
+            sign: Sign::Free,
+            locked: false,
+            joint,
+        }
+    }
+
+    /// Two scalar rows on one coordinate of unit mobility, compliance 1 each, `S = [[2, 1], [1,
+    /// 2]]`: Gauss-Seidel's error propagation `[[0, -1/2], [0, 1/4]]`, rate 1/4 (the square of
+    /// Jacobi's 1/2, as for any consistently ordered matrix).
+    #[test]
+    fn two_coupled_rows_converge_at_a_quarter_per_sweep() {
+        let minv = DMatrix::identity(2, 2);
+        let rows = [motor_row(&[1.0, 0.0], 0), motor_row(&[1.0, 0.0], 1)];
+        let rate = sweep_rate(&minv, &rows).unwrap();
+        // (the hard rows' 1e-10 relative compliance is on every diagonal)
+        assert!((rate - 0.25).abs() < 1e-9, "{rate}");
+    }
+
+    /// Hard rows of one joint are one block, solved together: the rate is 0 however they
+    /// couple.
+    #[test]
+    fn a_joints_hard_rows_are_solved_as_one_block() {
+        let minv = DMatrix::identity(2, 2);
+        let mut rows = [motor_row(&[1.0, 0.0], 0), motor_row(&[1.0, 1.0], 0)];
+        for r in &mut rows {
+            r.compliance = 0.0;
+        }
+        let rate = sweep_rate(&minv, &rows).unwrap();
+        assert!(rate < 1e-9, "{rate}");
+    }
+
+    /// A row that is not finite gives no rate (the assembly is then seen as free bodies), not a
+    /// panic or a hang.
+    #[test]
+    fn a_row_that_is_not_finite_gives_no_rate() {
+        let minv = DMatrix::identity(2, 2);
+        let rows = [motor_row(&[1.0, 0.0], 0), motor_row(&[f64::NAN, 1.0], 1)];
+        assert!(sweep_rate(&minv, &rows).is_none());
+    }
 }
