@@ -49,8 +49,9 @@
 //! rate of [`sweep_rate`]): a body on a fixed or kinematic base whose motor acts through its
 //! centre of mass (a prismatic jaw) at any number of sweeps; a chain of light links with an
 //! offset centre of mass (the suite's two-link finger, rate 0.948) from 214 sweeps
-//! (`num_internal_pgs_iterations`). Otherwise its bodies are free bodies to the solve, as
-//! before session 12. Why rapier's chain needs so many (crate README, Limits; plain rapier,
+//! (`num_internal_pgs_iterations` plus the members' largest `additional_pgs_iterations`: a
+//! user can ask them of a finger's links alone). Otherwise its bodies are free bodies to the
+//! solve, as before session 12. Why rapier's chain needs so many (crate README, Limits; plain rapier,
 //! `tests/impulse_chain_plain.rs`): a motor row is solved against the body's free inertia
 //! about its centre of mass and not orthogonalised against the joint's locked rows, so each
 //! sweep passes only part of the load between the motor and the locked anchor.
@@ -71,7 +72,8 @@ pub(crate) const MAX_ASSEMBLY_BODIES: usize = 8;
 
 /// How far rapier's own Gauss-Seidel sweeps over an assembly's joint rows must converge within
 /// one solver pass for the solve to see the assembly: `rate^sweeps <= SWEEP_TOLERANCE`
-/// ([`sweep_rate`], `sweeps` = `num_internal_pgs_iterations`). The plugin predicts what the
+/// ([`sweep_rate`], `sweeps` = `num_internal_pgs_iterations` plus the members' largest
+/// `RigidBody::additional_pgs_iterations`). The plugin predicts what the
 /// *converged* joint solve does; rapier's joint rows are not warm-started by default and a
 /// motor row is not orthogonalised against the locked ones (its impulse bounds are finite), so
 /// where the sweeps do not converge rapier's joints do not carry what the plugin predicts and
@@ -199,8 +201,16 @@ pub(crate) fn assembly_states(
             }
         }
     }
-    let rate = sweep_rate(&minv, &rows)?;
-    if rate.powi(ctx.sweeps.min(i32::MAX as usize) as i32) > SWEEP_TOLERANCE {
+    // rapier runs its sweeps plus the largest `additional_pgs_iterations` of a body in the
+    // island component, which holds every member (a lower bound: a body outside the assembly
+    // may ask for more).
+    let extra = handles
+        .iter()
+        .filter_map(|h| bodies.get(*h).map(RigidBody::additional_pgs_iterations))
+        .max()
+        .unwrap_or(0);
+    let sweeps = ctx.sweeps.saturating_add(extra).min(i32::MAX as usize) as i32;
+    if sweep_rate(&minv, &rows)?.powi(sweeps) > SWEEP_TOLERANCE {
         return None;
     }
     let (mobility, qdot) = constrained(&minv, &rows, &v_star, |_| true)?;

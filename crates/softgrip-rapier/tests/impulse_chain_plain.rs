@@ -30,6 +30,8 @@ struct Cfg {
     steps: usize,
     /// Links (1 or 2).
     n: usize,
+    /// Each link's `additional_pgs_iterations`.
+    extra_pgs: usize,
     /// the collider's centre along the link, as a fraction of its length (0.5: COM mid-link).
     com_at: f32,
     extra_inertia: f32,
@@ -51,6 +53,7 @@ const BASE: Cfg = Cfg {
     dt: 1.0 / 60.0,
     steps: 240,
     n: 2,
+    extra_pgs: 0,
     com_at: 0.5,
     extra_inertia: 0.0,
 };
@@ -90,6 +93,7 @@ fn run(cfg: Cfg) -> Run {
         let b = bodies.insert(
             RigidBodyBuilder::dynamic()
                 .translation(at)
+                .additional_pgs_iterations(cfg.extra_pgs)
                 .additional_mass_properties(MassProperties::new(
                     Vector::ZERO,
                     0.0,
@@ -247,6 +251,11 @@ fn sweep() {
         let c = Cfg { solver_iters, ..b };
         cases.push((format!("{solver_iters} passes"), c));
     }
+    let c = Cfg {
+        extra_pgs: 254,
+        ..b
+    };
+    cases.push(("2 + 254 on links".into(), c));
     cases.push(("warm-started".into(), Cfg { warm: true, ..b }));
     let c = Cfg {
         warm: true,

@@ -599,6 +599,27 @@ fn impulse_jointed_finger_holds_from_the_fewest_sweeps_it_is_seen_at() {
     }
 }
 
+/// The impulse-jointed finger with the world at the suite's 2 sweeps and 254 more asked by
+/// the finger's links alone (`RigidBody::set_additional_pgs_iterations`: rapier runs them for
+/// the links' island component, the finger and the box, not the whole world): seen (the
+/// members' extra sweeps count), and the same numbers as at 256 for the world.
+#[test]
+fn impulse_jointed_finger_with_extra_sweeps_on_its_links_holds() {
+    let mut s = scene(Build::Impulse, false, PGS, 0.0);
+    for j in &s.joints {
+        let rb = s.world.physics.bodies.get_mut(j.child).unwrap();
+        rb.set_additional_pgs_iterations(CHAIN_PGS - PGS);
+    }
+    let h = hold(&mut s, &FINGER, 240);
+    assert_held(
+        &format!(
+            "impulse-jointed finger, {PGS} PGS + {} on its links",
+            CHAIN_PGS - PGS
+        ),
+        &h,
+    );
+}
+
 /// The impulse-jointed finger at 2 sweeps, where rapier's own solve of the chain does not
 /// converge: the solve does not see the chain (`jointed::SWEEP_TOLERANCE`), each link is a free
 /// body and the soft impulse on the last one is predicted with its own mass alone. What it
