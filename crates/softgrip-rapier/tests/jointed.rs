@@ -546,7 +546,7 @@ fn impulse_prismatic_jaw_presses_a_box_and_holds() {
 
 /// rapier's Gauss-Seidel sweeps per solver pass at which its own solve of the impulse-jointed
 /// two-link finger converges (plain rapier: `tests/impulse_chain_plain.rs`), so that the soft
-/// solve sees the chain as one jointed assembly (`jointed::SWEEP_TOLERANCE`).
+/// solve sees the chain as one jointed assembly (`joint_sweeps::SWEEP_TOLERANCE`).
 const CHAIN_PGS: usize = 256;
 
 /// The finger built with impulse joints (a chain of two dynamic links, revolute joints with
@@ -583,7 +583,7 @@ fn impulse_jointed_finger_with_heavy_links_holds() {
 }
 
 /// The impulse-jointed finger at the fewest sweeps the solve sees it at (214:
-/// `rate^sweeps <= 1e-5` with rate 0.948, `jointed::SWEEP_TOLERANCE`, set on this finger at
+/// `rate^sweeps <= 1e-5` with rate 0.948, `joint_sweeps::SWEEP_TOLERANCE`, set on this finger at
 /// 200 / 256 sweeps), and with links 10x denser (rate 0.947, seen from 210), which the
 /// tolerance was not set on: both hold within the bounds (0.23 % / 3.8e-5 off the law
 /// measured).
@@ -621,7 +621,7 @@ fn impulse_jointed_finger_with_extra_sweeps_on_its_links_holds() {
 }
 
 /// The impulse-jointed finger at 2 sweeps, where rapier's own solve of the chain does not
-/// converge: the solve does not see the chain (`jointed::SWEEP_TOLERANCE`), each link is a free
+/// converge: the solve does not see the chain (`joint_sweeps::SWEEP_TOLERANCE`), each link is a free
 /// body and the soft impulse on the last one is predicted with its own mass alone. What it
 /// does (crate README, Limits): 0.004 N where the law asks 6.3 N, the tip sinks into the box,
 /// nothing is thrown, the box still.
