@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::Smooth;
+use common::{Smooth, force_error};
 use softgrip_fe::{CORE_COUNTERPART_FILES, Counterpart as FeCounterpart, FeFile, Schema};
 use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level};
 
@@ -31,21 +31,6 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
     CORE_COUNTERPART_FILES
         .iter()
         .filter(|f| f.schema == Schema::Force)
-}
-
-/// Largest |F_law / F_FE - 1| over `0.01 <= x <= min(x_max, FE's end, to)` and the last x
-/// compared.
-fn force_error(file: &FeFile, law: &ContactLaw, to: f64) -> (f64, f64) {
-    let mut worst: f64 = 0.0;
-    let mut top: f64 = 0.0;
-    for p in file.points().expect("parses") {
-        if p.x < 0.01 - 1e-12 || p.x > law.x_max() || p.x > to + 1e-9 {
-            continue;
-        }
-        worst = worst.max((law.response(p.x).force / p.force_norm - 1.0).abs());
-        top = top.max(p.x);
-    }
-    (worst, top)
 }
 
 /// The largest force error each curve is allowed to the FE's end: what this test printed
