@@ -73,7 +73,8 @@
 //!
 //! A calibrated core does not take this map whole: its plane law follows Hertz's patch, and
 //! this map's excess over the patch, `chi_flat(rho s) / chi_flat(rho_H s)`, is taken at the
-//! skin's squeeze `s = delta/t` (`crate::core_map`, its own table when bound); the tail is this.
+//! skin's squeeze `s = delta/t` (`crate::core_map`, its own table when bound); the tail is
+//! this map's.
 //!
 //! Constants `r0, r1, g0, g1, q` per construction (free; flat and core: a bonded pad),
 //! `tools/calibration/fit_counterpart.py` (ball curves at nu 0.3, 0.48, 0.499; held out: the
