@@ -71,9 +71,10 @@
 //!   falling surface: weighted by `eps/eps(0.3)` (1 at nu = 0.3, the most compressible FE;
 //!   0 incompressible; never beyond Sneddon's), no constant fitted. Concave: it widens.
 //!
-//! A calibrated core does not take this map whole: its layer excess follows Hertz's patch and
-//! its pole's thinning the true `delta/t` (`crate::core_map`, its own table when bound); only
-//! its hemisphere's stiffening and the tail take `rho` and `g` below.
+//! A calibrated core does not take this map whole: its plane law follows Hertz's patch, and
+//! this map's excess over the patch, `chi_flat(rho s) / chi_flat(rho_H s)`, is taken at the
+//! skin's squeeze `s = delta/t` (`crate::core_map`, its own table when bound); the tail is
+//! this map's.
 //!
 //! Constants `r0, r1, g0, g1, q` per construction (free; flat and core: a bonded pad),
 //! `tools/calibration/fit_counterpart.py` (ball curves at nu 0.3, 0.48, 0.499; held out: the
