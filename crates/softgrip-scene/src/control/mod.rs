@@ -15,6 +15,7 @@ mod kinds;
 mod set;
 mod spec;
 
+pub(crate) use group::robot_names;
 pub use controller::{ControlEvent, Controller, GoalResult, GraspView, Phase};
 pub use external::{
     CommandInbox, GOAL_TOLERANCE, GoalFeedback, GoalJoint, GripperGoal, JointCommand,
