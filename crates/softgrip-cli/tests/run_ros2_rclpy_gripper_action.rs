@@ -18,8 +18,8 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use serde_json::Value;
-use softgrip_record::msgs::sensor_msgs::JointState;
 use softgrip_record::Recording;
+use softgrip_record::msgs::sensor_msgs::JointState;
 
 use gripper_ros2::{
     Ros2Run, check_contacts, check_joint_states, floats, gripper_scene, recorded_joint_states,

@@ -155,41 +155,32 @@ impl TactileSeries {
     }
 }
 
-/// One joint's arrays, one entry per step: its state and its command (NaN where the step has
-/// none: a joint without a motor has no command).
-#[derive(Default)]
-struct JointSeries {
-    position: Vec<f64>,
-    velocity: Vec<f64>,
-    effort: Vec<f64>,
-    target_position: Vec<f64>,
-    target_velocity: Vec<f64>,
-    effort_limit: Vec<f64>,
-}
+/// The keys of a joint's arrays (`softgrip.JOINT_ARRAYS`): its state, then its command.
+const JOINT_KEYS: [&str; 6] = [
+    "position",
+    "velocity",
+    "effort",
+    "target_position",
+    "target_velocity",
+    "effort_limit",
+];
+
+/// One joint's arrays, one entry per step, in [`JOINT_KEYS`] order: its state and its command
+/// (NaN where the step has none: a joint without a motor has no command).
+struct JointSeries([Vec<f64>; 6]);
 
 impl JointSeries {
     /// `steps` entries of NaN (a joint first seen after them).
     fn missing(steps: usize) -> Self {
-        let nan = vec![f64::NAN; steps];
-        Self {
-            position: nan.clone(),
-            velocity: nan.clone(),
-            effort: nan.clone(),
-            target_position: nan.clone(),
-            target_velocity: nan.clone(),
-            effort_limit: nan,
-        }
+        Self(std::array::from_fn(|_| vec![f64::NAN; steps]))
     }
 
     fn push(&mut self, state: Option<[f64; 3]>, command: Option<[f64; 3]>) {
         let [p, v, e] = state.unwrap_or([f64::NAN; 3]);
         let [tp, tv, limit] = command.unwrap_or([f64::NAN; 3]);
-        self.position.push(p);
-        self.velocity.push(v);
-        self.effort.push(e);
-        self.target_position.push(tp);
-        self.target_velocity.push(tv);
-        self.effort_limit.push(limit);
+        for (column, x) in self.0.iter_mut().zip([p, v, e, tp, tv, limit]) {
+            column.push(x);
+        }
     }
 }
 
@@ -211,9 +202,10 @@ impl JointTable {
         states: impl IntoIterator<Item = (&'a str, [f64; 3])>,
         commands: impl IntoIterator<Item = (&'a str, [f64; 3])>,
     ) {
-        let mut rows: Vec<(Option<[f64; 3]>, Option<[f64; 3]>)> = vec![(None, None); self.names.len()];
-        for (command, (name, values)) in (states.into_iter().map(|s| (false, s)))
-            .chain(commands.into_iter().map(|c| (true, c)))
+        let mut rows: Vec<(Option<[f64; 3]>, Option<[f64; 3]>)> =
+            vec![(None, None); self.names.len()];
+        for (command, (name, values)) in
+            (states.into_iter().map(|s| (false, s))).chain(commands.into_iter().map(|c| (true, c)))
         {
             let k = match self.names.iter().position(|n| n == name) {
                 Some(k) => k,
@@ -224,7 +216,11 @@ impl JointTable {
                     self.names.len() - 1
                 }
             };
-            let slot = if command { &mut rows[k].1 } else { &mut rows[k].0 };
+            let slot = if command {
+                &mut rows[k].1
+            } else {
+                &mut rows[k].0
+            };
             // The first of a name in a step counts (a well-formed step names a joint once).
             slot.get_or_insert(values);
         }
@@ -247,12 +243,9 @@ impl JointTable {
         let out = PyDict::new(py);
         for (name, s) in self.names.iter().zip(self.series) {
             let d = PyDict::new(py);
-            d.set_item("position", s.position.into_pyarray(py))?;
-            d.set_item("velocity", s.velocity.into_pyarray(py))?;
-            d.set_item("effort", s.effort.into_pyarray(py))?;
-            d.set_item("target_position", s.target_position.into_pyarray(py))?;
-            d.set_item("target_velocity", s.target_velocity.into_pyarray(py))?;
-            d.set_item("effort_limit", s.effort_limit.into_pyarray(py))?;
+            for (key, column) in JOINT_KEYS.iter().zip(s.0) {
+                d.set_item(key, column.into_pyarray(py))?;
+            }
             out.set_item(name, d)?;
         }
         Ok(out)

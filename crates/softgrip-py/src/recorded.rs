@@ -9,8 +9,8 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use softgrip_record::frames::{UpAxis, mul};
-use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::msgs::sensor_msgs::JointState;
+use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::msgs::tf2_msgs::TFMessage;
 use softgrip_record::{Message, Recording, RecordingInfo, WORLD_FRAME, topics};
 
@@ -282,9 +282,10 @@ impl Steps {
             steps.push_contacts(k, step, &msgs.contacts);
             steps.push_poses(k, &msgs.tf);
             steps.push_images(k, &msgs.images);
-            steps
-                .joints
-                .push_step(joint_rows(&msgs.joint_states), joint_rows(&msgs.joint_commands));
+            steps.joints.push_step(
+                joint_rows(&msgs.joint_states),
+                joint_rows(&msgs.joint_commands),
+            );
         }
         steps
     }

@@ -309,8 +309,14 @@ fn gripper_joint_efforts_equal_jt_f() {
             let rows: Vec<_> = (0..robot.joints().len())
                 .filter(|&j| robot.joints()[j].kind.moves())
                 .map(|j| {
-                    let s = softgrip_scene::robot::joint_state_loaded(&robot, &run.world, &h, j, dt);
-                    (j, s, jt_f(&run, &robot, j, true), jt_f(&run, &robot, j, false))
+                    let s =
+                        softgrip_scene::robot::joint_state_loaded(&robot, &run.world, &h, j, dt);
+                    (
+                        j,
+                        s,
+                        jt_f(&run, &robot, j, true),
+                        jt_f(&run, &robot, j, false),
+                    )
                 })
                 .collect();
             let pads: Vec<f64> = run
@@ -330,7 +336,11 @@ fn gripper_joint_efforts_equal_jt_f() {
     for (j, s, load, _) in &rows {
         let joint = &robot.joints()[*j];
         let rel = (s.effort + load).abs() / load.abs();
-        let kind = if joint.mimic.is_some() { " (mimic: its coupling's load)" } else { "" };
+        let kind = if joint.mimic.is_some() {
+            " (mimic: its coupling's load)"
+        } else {
+            ""
+        };
         println!(
             "| `{}`{kind} | {:.3} | {:.4} | {load:.4} | {:.2e} |",
             joint.name,
@@ -338,8 +348,17 @@ fn gripper_joint_efforts_equal_jt_f() {
             s.effort,
             rel
         );
-        assert!(rel < 0.01, "{}: effort {} vs J^T F {load}", joint.name, s.effort);
-        assert!(load.abs() > 4.5, "{}: J^T F {load} N for 5 N pads", joint.name);
+        assert!(
+            rel < 0.01,
+            "{}: effort {} vs J^T F {load}",
+            joint.name,
+            s.effort
+        );
+        assert!(
+            load.abs() > 4.5,
+            "{}: J^T F {load} N for 5 N pads",
+            joint.name
+        );
     }
     // The coupling's share of the motor: the driven joint's motor effort minus its own finger's
     // load, over the multiplier, is what the mimic joint reports.
@@ -356,7 +375,11 @@ fn gripper_joint_efforts_equal_jt_f() {
             s.effort,
             robot.joints()[mimic.joint].name
         );
-        assert!(rel < 0.01, "mimic effort {} vs the motor's share {share}", s.effort);
+        assert!(
+            rel < 0.01,
+            "mimic effort {} vs the motor's share {share}",
+            s.effort
+        );
     }
 }
 

@@ -53,8 +53,7 @@ impl FieldPath {
                             "`{part}`: an index is written `key[N]` or `key[name]`, ending the segment"
                         )
                     })?;
-                    let index = if inner.bytes().all(|b| b.is_ascii_digit()) && !inner.is_empty()
-                    {
+                    let index = if inner.bytes().all(|b| b.is_ascii_digit()) && !inner.is_empty() {
                         Index::At(inner.parse().map_err(|_| {
                             format!("`{part}`: `{inner}` is not an index (0, 1, ...)")
                         })?)

@@ -100,9 +100,16 @@ pub fn run_scene(
     sim.finish()
         .map_err(|e| format!("finishing the recording: {e}"))?;
     let (Some(start), Some((end, grip))) = (lift_start, hold_end) else {
-        let t = steps as f64 * scene.file().dt;
+        let (dt, total) = (scene.file().dt, sim.total_steps());
+        let t = total as f64 * dt;
+        let on = if steps > total {
+            format!(", run on to {} s, the grasp's longest timeline", steps as f64 * dt)
+        } else {
+            String::new()
+        };
         return Err(format!(
-            "the hold did not end within {t} s (phase {:?} at the end): make `duration` longer",
+            "the hold did not end within the scene's duration ({t} s{on}, phase {:?} at the \
+             end): make `duration` longer",
             phase(&sim)
         ));
     };
@@ -178,7 +185,11 @@ struct Grip {
 }
 
 /// The grasp's grip on the object after the last step.
-fn grip(sim: &Simulation, view: &GraspView, object: softgrip_ecs::bevy_ecs::entity::Entity) -> Grip {
+fn grip(
+    sim: &Simulation,
+    view: &GraspView,
+    object: softgrip_ecs::bevy_ecs::entity::Entity,
+) -> Grip {
     let physics = sim.world.resource::<Physics>();
     let handles = sim.world.resource::<Controllers>().0.handles();
     let tips: Vec<Vec<_>> = (view.fingers.iter())
@@ -206,6 +217,11 @@ fn grip(sim: &Simulation, view: &GraspView, object: softgrip_ecs::bevy_ecs::enti
     }
     Grip {
         each_finger: !forces.is_empty() && forces.iter().all(|f| f.iter().any(|&x| x > 0.0)),
-        least_tip_force: forces.iter().flatten().copied().reduce(f64::min).unwrap_or(0.0),
+        least_tip_force: forces
+            .iter()
+            .flatten()
+            .copied()
+            .reduce(f64::min)
+            .unwrap_or(0.0),
     }
 }

@@ -19,7 +19,10 @@ pub(crate) fn resolve(
         .ok_or_else(|| {
             c.name(
                 format!("{field}.robot"),
-                format!("no robot is named `{robot}` (robots: {})", robot_names(robots)),
+                format!(
+                    "no robot is named `{robot}` (robots: {})",
+                    robot_names(robots)
+                ),
             )
         })?;
     if joints.is_empty() {

@@ -15,13 +15,13 @@ mod kinds;
 mod set;
 mod spec;
 
-pub(crate) use group::robot_names;
 pub use controller::{ControlEvent, Controller, GoalResult, GraspView, Phase};
 pub use external::{
     CommandInbox, GOAL_TOLERANCE, GoalFeedback, GoalJoint, GripperGoal, JointCommand,
     JointCommands, STALL_SPEED, STALL_TIME, SharedInbox,
 };
 pub use grasp::{Grasp, GraspState};
+pub(crate) use group::robot_names;
 pub use io::{Carrier, ControlIo};
 pub use jaws::{
     GripperEvent, GripperProgram, GripperState, JawState, ParallelJaws, Squeeze, jaw_compressions,

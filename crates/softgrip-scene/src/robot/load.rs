@@ -18,7 +18,11 @@ use crate::robot::state::{JointState, joint_state};
 pub fn joint_load(robot: &Robot, world: &SoftWorld, h: &RobotHandles, j: usize) -> f64 {
     let own = own_load(robot, world, h, j).unwrap_or(0.0);
     let mimics: f64 = (robot.joints().iter().enumerate())
-        .filter_map(|(m, o)| o.mimic.filter(|mm| mm.joint == j && m != j).map(|mm| (m, mm)))
+        .filter_map(|(m, o)| {
+            o.mimic
+                .filter(|mm| mm.joint == j && m != j)
+                .map(|mm| (m, mm))
+        })
         .map(|(m, mm)| mm.multiplier * joint_load(robot, world, h, m))
         .sum();
     own + mimics

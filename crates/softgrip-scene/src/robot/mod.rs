@@ -11,9 +11,9 @@ mod state;
 mod urdf;
 
 pub use build::{FALLBACK_DENSITY, RobotHandles, RobotJointHandle};
+pub use load::{joint_load, joint_state_loaded};
 pub(crate) use model::moving_names;
 pub use model::{JointKind, Mimic, Robot, RobotJoint, RobotLink};
 pub use spec::{BaseKind, JointModel, MeshShape, RobotSpec};
-pub use load::{joint_load, joint_state_loaded};
 pub use state::{JointState, joint_state, joint_target, set_joint_target};
 pub use urdf::MAX_LINK_MASS;
