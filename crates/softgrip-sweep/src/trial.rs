@@ -103,7 +103,10 @@ pub fn run_scene(
         let (dt, total) = (scene.file().dt, sim.total_steps());
         let t = total as f64 * dt;
         let on = if steps > total {
-            format!(", run on to {} s, the grasp's longest timeline", steps as f64 * dt)
+            format!(
+                ", run on to {} s, the grasp's longest timeline",
+                steps as f64 * dt
+            )
         } else {
             String::new()
         };

@@ -173,7 +173,11 @@ fn a_grasp_that_misses_its_force_still_ends_its_hold() {
     let text = "scene = \"parallel_gripper_box.toml\"\nobject = \"box\"\n\
         [[vary]]\nfield = \"controller[grasp].force\"\nvalues = [12.0]\n";
     let s = Sweep::from_str(text, &dir).expect("the sweep loads");
-    let o = s.run_trial(0).expect("in range").outcome.expect("the hold ended");
+    let o = s
+        .run_trial(0)
+        .expect("in range")
+        .outcome
+        .expect("the hold ended");
     eprintln!("{o:?}");
     assert!(o.held, "{o:?}");
     assert!((o.hold_force - 10.0).abs() < 0.2, "{o:?}");

@@ -166,3 +166,29 @@ pub fn check_contacts(received: &Value, recording: &Recording) {
         "{pressing:?}"
     );
 }
+
+/// rcl_action's GoalStatus ABORTED: what the server answers a stalled goal with.
+pub const STATUS_ABORTED: i64 = 6;
+
+/// The result of the gripper goal both action tests send (close `finger_joint` to 0 at 10 mm/s
+/// with at most 5 N): aborted, stalled, not reached, `finger_joint` stopped short of the goal by
+/// the box with its effort at the limit: the target froze the step the effort reached 5 N (at
+/// most one step's increment over it: 2000 N/m x 10 mm/s x 1/60 s = 0.33 N), then the finger
+/// settled a little into the pad. Returns its position [m] and effort [N].
+pub fn check_stalled_result(received: &Value) -> (f64, f64) {
+    let result = &received["result"];
+    assert_eq!(result["status"].as_i64(), Some(STATUS_ABORTED), "{result}");
+    let r = &result["result"];
+    assert_eq!(r["stalled"].as_bool(), Some(true));
+    assert_eq!(r["reached_goal"].as_bool(), Some(false));
+    assert_eq!(r["state"]["name"][0].as_str(), Some("finger_joint"));
+    let (q, e) = (
+        floats(&r["state"]["position"])[0],
+        floats(&r["state"]["effort"])[0],
+    );
+    assert!((4.5..5.4).contains(&e.abs()), "result effort {e} N");
+    // Closed from its start (28 mm) and stopped short of the goal (0) by the box. Where exactly
+    // (the pads' squeeze at 5 N) is crates/softgrip-scene/tests/gripper_goal.rs's to check.
+    assert!(q > 0.005 && q < 0.0275, "result position {q} m");
+    (q, e)
+}
