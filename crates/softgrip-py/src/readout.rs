@@ -184,6 +184,9 @@ impl JointSeries {
     }
 }
 
+/// A joint's `[position, velocity, effort]` in a step (a command's effort: its force limit).
+type Values = [f64; 3];
+
 /// Every robot joint's arrays, by name in order of first appearance (the recorder's order:
 /// robot by robot, joint by joint), one entry per step.
 #[derive(Default)]
@@ -202,8 +205,7 @@ impl JointTable {
         states: impl IntoIterator<Item = (&'a str, [f64; 3])>,
         commands: impl IntoIterator<Item = (&'a str, [f64; 3])>,
     ) {
-        let mut rows: Vec<(Option<[f64; 3]>, Option<[f64; 3]>)> =
-            vec![(None, None); self.names.len()];
+        let mut rows: Vec<(Option<Values>, Option<Values>)> = vec![(None, None); self.names.len()];
         for (command, (name, values)) in
             (states.into_iter().map(|s| (false, s))).chain(commands.into_iter().map(|c| (true, c)))
         {

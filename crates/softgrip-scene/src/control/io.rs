@@ -116,7 +116,7 @@ impl<'a> ControlIo<'a> {
         };
         let n = self.world.soft.counters().substeps_last.max(1) as f64;
         let dt = self.world.physics.integration_parameters.dt as f64;
-        joint_state_loaded(r, &self.world, h, joint, dt / n)
+        joint_state_loaded(r, self.world, h, joint, dt / n)
     }
 
     /// Sets joint `joint` of robot `robot`'s motor target: `position` \[m or rad\] and
