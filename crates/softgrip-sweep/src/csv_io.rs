@@ -31,11 +31,12 @@ impl ResultsTable {
                     f(o.peak_force),
                     f(o.peak_x),
                     o.validity_excursions.to_string(),
+                    f(o.hold_force),
                     f(r.wall_time),
                     String::new(),
                 ]),
                 Err(e) => {
-                    cells.extend(std::iter::repeat_n(String::new(), 6));
+                    cells.extend(std::iter::repeat_n(String::new(), 7));
                     cells.extend([f(r.wall_time), e.clone()]);
                 }
             }
@@ -113,8 +114,8 @@ impl ResultsTable {
                 .map(|k| cell_value(kinds[k], &rec[1 + k]))
                 .collect();
             let o = n - OUTCOME_COLUMNS.len();
-            let wall_time = num(o + 6)?;
-            let outcome = if rec[o + 7].is_empty() {
+            let wall_time = num(o + 7)?;
+            let outcome = if rec[o + 8].is_empty() {
                 Ok(Outcome {
                     held: match &rec[o] {
                         "true" => true,
@@ -126,9 +127,10 @@ impl ResultsTable {
                     peak_force: num(o + 3)?,
                     peak_x: num(o + 4)?,
                     validity_excursions: int(o + 5)? as u32,
+                    hold_force: num(o + 6)?,
                 })
             } else {
-                Err(rec[o + 7].to_string())
+                Err(rec[o + 8].to_string())
             };
             rows.push(TrialRow {
                 trial,

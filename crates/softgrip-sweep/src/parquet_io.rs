@@ -1,8 +1,8 @@
 //! The results table as Parquet, through the `parquet` crate's column writer and row reader
 //! (no arrow): one row group, uncompressed (a sweep's table is small; pyarrow, polars and
 //! DuckDB read it). `trial` INT64, a varied field DOUBLE, INT64, BOOLEAN or STRING, `held`
-//! BOOLEAN, `slips` and `validity_excursions` INT64, `slip_distance`, `peak_force`, `peak_x`
-//! and `wall_time` DOUBLE, `error` STRING; the outcomes and `error` are optional (null in an
+//! BOOLEAN, `slips` and `validity_excursions` INT64, `slip_distance`, `peak_force`, `peak_x`,
+//! `hold_force` and `wall_time` DOUBLE, `error` STRING; the outcomes and `error` are optional (null in an
 //! error row and in an ok row respectively).
 
 use std::fs::File;
@@ -127,6 +127,7 @@ impl ResultsTable {
             "validity_excursions",
             longs(|o| o.validity_excursions as i64),
         ));
+        cols.push(opt("hold_force", doubles(|o| o.hold_force)));
         cols.push(required(
             "wall_time",
             Cells::Double(rows.iter().map(|r| r.wall_time).collect()),
@@ -258,8 +259,8 @@ impl ResultsTable {
                     other => Err(at(k, &format!("unexpected value {other}"))),
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let wall_time = double(o + 6)?;
-            let outcome = match cells[o + 7] {
+            let wall_time = double(o + 7)?;
+            let outcome = match cells[o + 8] {
                 Field::Str(e) => Err(e.clone()),
                 Field::Null => Ok(Outcome {
                     held: match cells[o] {
@@ -271,8 +272,9 @@ impl ResultsTable {
                     peak_force: double(o + 3)?,
                     peak_x: double(o + 4)?,
                     validity_excursions: long(o + 5)? as u32,
+                    hold_force: double(o + 6)?,
                 }),
-                other => return Err(at(o + 7, &format!("{other} is not a STRING"))),
+                other => return Err(at(o + 8, &format!("{other} is not a STRING"))),
             };
             rows.push(TrialRow {
                 trial,

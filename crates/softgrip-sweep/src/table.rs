@@ -5,13 +5,14 @@ use crate::trial::Outcome;
 use crate::value::{Value, ValueKind};
 
 /// The outcome columns after the varied fields, in order (SWEEPS.md, "Results").
-pub const OUTCOME_COLUMNS: [&str; 8] = [
+pub const OUTCOME_COLUMNS: [&str; 9] = [
     "held",
     "slips",
     "slip_distance",
     "peak_force",
     "peak_x",
     "validity_excursions",
+    "hold_force",
     "wall_time",
     "error",
 ];

@@ -157,7 +157,7 @@ fn results_read_back_from_csv_and_parquet_equal_the_table() {
     assert!(header.starts_with(
         "trial,fingertip[0].material.youngs_modulus,body[1].shape[0].density,\
          gripper.squeeze.depth,held,slips,slip_distance,peak_force,peak_x,\
-         validity_excursions,wall_time,error\n"
+         validity_excursions,hold_force,wall_time,error\n"
     ));
 }
 
