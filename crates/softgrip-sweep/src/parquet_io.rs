@@ -19,7 +19,7 @@ use parquet::schema::types::Type;
 
 use crate::csv_io::write_whole;
 use crate::error::SweepError;
-use crate::table::{OUTCOME_COLUMNS, ResultsTable, TrialRow};
+use crate::table::{OutcomeLayout, ResultsTable, TrialRow};
 use crate::trial::Outcome;
 use crate::value::{Value, ValueKind};
 
@@ -216,16 +216,9 @@ impl ResultsTable {
         let names: Vec<String> = (schema.columns().iter())
             .map(|c| c.name().to_string())
             .collect();
-        let n = names.len();
-        let outcome_start = n.checked_sub(OUTCOME_COLUMNS.len()).filter(|&o| o >= 1);
-        let Some(o) =
-            outcome_start.filter(|&o| names[0] == "trial" && names[o..] == OUTCOME_COLUMNS)
-        else {
-            return Err(bad(format!(
-                "not a sweep results table: the columns must be `trial`, the varied fields, {}",
-                OUTCOME_COLUMNS.join(", ")
-            )));
-        };
+        let layout = OutcomeLayout::find(&names).ok_or_else(|| bad(OutcomeLayout::expected()))?;
+        let o = layout.start;
+        let col = |name: &str| layout.column(name).expect("invariant: an outcome column");
         let fields = names[1..o].to_vec();
         let kinds = (schema.columns()[1..o].iter())
             .map(|c| match c.physical_type() {
@@ -259,22 +252,26 @@ impl ResultsTable {
                     other => Err(at(k, &format!("unexpected value {other}"))),
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let wall_time = double(o + 7)?;
-            let outcome = match cells[o + 8] {
+            let wall_time = double(col("wall_time"))?;
+            let error = col("error");
+            let outcome = match cells[error] {
                 Field::Str(e) => Err(e.clone()),
                 Field::Null => Ok(Outcome {
-                    held: match cells[o] {
+                    held: match cells[col("held")] {
                         Field::Bool(v) => *v,
                         other => return Err(at(o, &format!("{other} is not a BOOLEAN"))),
                     },
-                    slips: long(o + 1)? as u32,
-                    slip_distance: double(o + 2)?,
-                    peak_force: double(o + 3)?,
-                    peak_x: double(o + 4)?,
-                    validity_excursions: long(o + 5)? as u32,
-                    hold_force: double(o + 6)?,
+                    slips: long(col("slips"))? as u32,
+                    slip_distance: double(col("slip_distance"))?,
+                    peak_force: double(col("peak_force"))?,
+                    peak_x: double(col("peak_x"))?,
+                    validity_excursions: long(col("validity_excursions"))? as u32,
+                    hold_force: match layout.column("hold_force") {
+                        Some(k) => double(k)?,
+                        None => f64::NAN,
+                    },
                 }),
-                other => return Err(at(o + 8, &format!("{other} is not a STRING"))),
+                other => return Err(at(error, &format!("{other} is not a STRING"))),
             };
             rows.push(TrialRow {
                 trial,
