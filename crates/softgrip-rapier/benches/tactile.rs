@@ -85,7 +85,11 @@ fn bench_step(c: &mut Criterion) {
     group.bench_function("with_16x16", |b| {
         b.iter(|| {
             world.step();
-            world.soft.tactile_images().map(|(_, i)| i.total_force()).sum::<f64>()
+            world
+                .soft
+                .tactile_images()
+                .map(|(_, i)| i.total_force())
+                .sum::<f64>()
         })
     });
     group.finish();

@@ -486,6 +486,12 @@ fn solve_scalars(
 }
 
 /// One sweep of the friction pairs and torsions (see [`solve_scalars`]).
+///
+/// A compliant row (a fingertip's friction) is solved here as the hard equation `v(end) =
+/// target` under-relaxed by `1 / (1 + compliance)`, where the LU solves the compliant one
+/// (`+ compliance w (j - prox)`): against a box the table holds, its impulse moves by the same
+/// amount every pass, and [`OUTER`] is what bounds it (crate README, Limits, session 12: made
+/// consistent, the solve converges to an answer the wall box fails).
 fn sweep(
     bodies: &mut [BodyState],
     rows: &[Scalar],
