@@ -18,7 +18,11 @@ The direction holds (the small-x excess on thin skins shrinks) but not to 2 %: t
 itself (fit_radius_pressure.py) would have to take the first order, and the force be refitted
 on it; not done in session 11.
 
-usage: cd tools/calibration && target/fe-venv/bin/python try_thin_skin_radius.py base|min|blend
+Session 12: the switch's power, blend:P = t1 w / (t1^P + w^P)^(1/P): P = 4 fitted 2.41 %, held out
+2.76 %; P = 8: 2.38 / 3.04 % (a sharper switch leaves the radius at x >= 0.1 as it is but gives
+the force less where it is needed; CORE_FORM.md).
+
+usage: cd tools/calibration && target/fe-venv/bin/python try_thin_skin_radius.py base|min|blend|blend:P
 """
 import sys
 
@@ -36,8 +40,10 @@ def radius(x, nu, tau, mode):
     w = ac / af - 1
     if mode == "min":
         w = np.minimum(w, t1)
-    elif mode == "blend":
-        w = t1 * w / np.sqrt(t1 ** 2 + w ** 2)
+    elif mode.startswith("blend"):
+        # blend:P switches with the power P (session 12; P = 2, the session-11 blend, by default)
+        power = float(mode.split(":")[1]) if ":" in mode else 2.0
+        w = t1 * w / (t1 ** power + w ** power) ** (1 / power)
     return af, af * (1 + w)
 
 

@@ -106,7 +106,10 @@ def core_ball_cases():
     """Issue 24 item 2 for the third construction (session 11): a skin of t/R 0.3 and 0.5 over a
     rigid core (nu 0.48, R/40) on rigid balls of R and 3R, to x = 0.6 (the plane's core FE
     never passed delta/t = 0.8). Run under /work/fe-scratch/runs/core-s11."""
-    return [("core", 0.48, t, 40, "main", "ball", k) for t in (0.3, 0.5) for k in (1, 3)]
+    c = [("core", 0.48, t, 40, "main", "ball", k) for t in (0.3, 0.5) for k in (1, 3)]
+    # held out (session 12, run under /work/fe-scratch/runs/core-s12): a skin and a ball neither
+    # of the above has, for the core's map in the patch radius (core_map.rs)
+    return c + [("core", 0.48, 0.4, 40, "heldout", "ball", 2)]
 
 
 def cases_3d():

@@ -4,16 +4,11 @@
 
 use std::time::{Duration, Instant};
 
-use rapier3d::prelude::*;
-use softgrip_law::{Level, Material};
-use softgrip_rapier::{SoftCounters, SoftFingertip, SoftWorld};
+use softgrip_rapier::{SoftCounters, SoftWorld};
+use softgrip_testkit::resting::resting_grid;
 
-/// Fingertip radius \[m\].
-pub const RADIUS: f64 = 0.01;
-/// Fingertip density [kg/m^3] (silicone).
-pub const DENSITY: f32 = 1070.0;
-/// Grid pitch \[m\]: three radii, so neighbours never touch.
-pub const PITCH: f32 = 0.03;
+pub use softgrip_testkit::resting::PITCH;
+pub use softgrip_testkit::scenes::{DENSITY, RADIUS};
 /// Steps run before measuring: long enough for the e = 0.5 contacts to come to rest.
 pub const SETTLE_STEPS: usize = 120;
 
@@ -30,43 +25,7 @@ impl OverheadScene {
     /// `n` balls on a square grid over a fixed ground; registered with softgrip if `soft`.
     /// Each ball starts at its softgrip resting depth (where F(delta) = m g).
     pub fn new(n: usize, soft: bool) -> Self {
-        let mut world = SoftWorld::new();
-        let side = (n as f64).sqrt().ceil() as usize;
-        let half = 0.5 * side as f32 * PITCH + PITCH;
-        world.physics.colliders.insert(
-            ColliderBuilder::cuboid(half, 0.01, half).translation(Vector::new(0.0, -0.01, 0.0)),
-        );
-        let tip = SoftFingertip::builder(RADIUS)
-            .material(Material::try_new(3.0e6, 0.49).expect("invariant: valid material"))
-            .level(Level::auto())
-            .restitution(0.5)
-            .build()
-            .expect("invariant: valid fingertip");
-        let mass = DENSITY as f64 * 4.0 / 3.0 * std::f64::consts::PI * RADIUS.powi(3);
-        let rest = tip
-            .law()
-            .compression_for_force(mass * 9.81)
-            .expect("invariant: the weight is within the law's range");
-        for i in 0..n {
-            let (row, col) = (i / side, i % side);
-            let x = (col as f32 - 0.5 * (side - 1) as f32) * PITCH;
-            let z = (row as f32 - 0.5 * (side - 1) as f32) * PITCH;
-            let body = world.physics.bodies.insert(
-                RigidBodyBuilder::dynamic()
-                    .translation(Vector::new(x, (RADIUS - rest) as f32, z))
-                    .can_sleep(false),
-            );
-            let ball = world.physics.colliders.insert_with_parent(
-                ColliderBuilder::ball(RADIUS as f32).density(DENSITY),
-                body,
-                &mut world.physics.bodies,
-            );
-            if soft {
-                world
-                    .register(ball, tip.clone())
-                    .expect("invariant: a ball of the fingertip's radius");
-            }
-        }
+        let world = resting_grid(n, PITCH, soft);
         let mut scene = Self { world, soft };
         for _ in 0..SETTLE_STEPS {
             scene.step();

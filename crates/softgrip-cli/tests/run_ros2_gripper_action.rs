@@ -13,10 +13,9 @@
 mod common;
 mod gripper_ros2;
 
-use std::collections::HashMap;
-
-use gripper_ros2::{check_joint_states, floats, recorded_joint_states, stamp};
-use softgrip_record::Message;
+use gripper_ros2::{
+    check_contacts, check_joint_states, check_stalled_result, floats, recorded_joint_states,
+};
 
 #[test]
 fn a_gripper_goal_closes_the_hand_on_the_box_and_holds_at_its_effort() {
@@ -45,23 +44,8 @@ fn a_gripper_goal_closes_the_hand_on_the_box_and_holds_at_its_effort() {
     let in_recording =
         |q: f64, e: f64| (recorded.values()).any(|j| j.position[0] == q && j.effort[0] == e);
 
-    // The result: stalled at the box with the effort at its limit: the target froze the step
-    // the effort reached 5 N (at most one step's increment over it: stiffness 2000 N/m x 10
-    // mm/s x 1/60 s = 0.33 N), then the finger settles a little further into the pad.
-    let result = &received["result"];
-    assert_eq!(result["status"].as_i64(), Some(6), "aborted: not reached");
-    let r = &result["result"];
-    assert_eq!(r["stalled"].as_bool(), Some(true));
-    assert_eq!(r["reached_goal"].as_bool(), Some(false));
-    assert_eq!(r["state"]["name"][0].as_str(), Some("finger_joint"));
-    let (q, e) = (
-        floats(&r["state"]["position"])[0],
-        floats(&r["state"]["effort"])[0],
-    );
-    assert!((4.5..5.4).contains(&e.abs()), "result effort {e} N");
-    // Closed from its start (28 mm) and stopped short of the goal (0) by the box. Where exactly
-    // (the pads' squeeze at 5 N) is crates/softgrip-scene/tests/gripper_goal.rs's to check.
-    assert!(q > 0.005 && q < 0.0275, "result position {q} m");
+    // The result: stalled at the box with the effort at its limit.
+    let (q, e) = check_stalled_result(&received);
     assert!(
         in_recording(q, e),
         "the result ({q}, {e}) is no recorded state"
@@ -83,47 +67,6 @@ fn a_gripper_goal_closes_the_hand_on_the_box_and_holds_at_its_effort() {
     let states = check_joint_states(&received, "states", &recording);
     assert!(states >= 60, "{states} joint states");
 
-    // Every /softgrip/contacts received equals the recording's; the last ones have both pads
-    // pressing the box.
-    let contacts: HashMap<u64, _> = (recording.messages.iter())
-        .filter_map(|m| match &m.message {
-            Message::Contacts(a) => Some((m.log_time_ns, a.clone())),
-            _ => None,
-        })
-        .collect();
-    let arrays = received["contacts"].as_array().expect("contacts");
-    let mut compared = 0;
-    for a in arrays {
-        let t = stamp(&a["header"]);
-        let want = contacts
-            .get(&t)
-            .unwrap_or_else(|| panic!("no contacts at {t} ns"));
-        let got = a["contacts"].as_array().expect("contacts");
-        assert_eq!(got.len(), want.contacts.len(), "at {t} ns");
-        for (g, w) in got.iter().zip(&want.contacts) {
-            assert_eq!(g["fingertip"].as_str(), Some(w.fingertip.as_str()));
-            assert_eq!(g["other"].as_str(), Some(w.other.as_str()));
-            for (key, value) in [
-                ("compression", w.compression),
-                ("normal_force", w.normal_force),
-                ("contact_radius", w.contact_radius),
-                ("peak_pressure", w.peak_pressure),
-            ] {
-                assert_eq!(g[key].as_f64(), Some(value), "{key} at {t} ns");
-            }
-            compared += 1;
-        }
-    }
-    assert!(compared >= 20, "compared {compared} contacts");
-    let last = arrays.last().expect("a contact array")["contacts"]
-        .as_array()
-        .expect("contacts");
-    let pressing: Vec<&str> = (last.iter())
-        .filter(|c| c["other"].as_str() == Some("box") && c["normal_force"].as_f64() > Some(0.0))
-        .map(|c| c["fingertip"].as_str().expect("name"))
-        .collect();
-    assert!(
-        pressing.contains(&"left_pad") && pressing.contains(&"right_pad"),
-        "{pressing:?}"
-    );
+    // Every /softgrip/contacts received equals the recording's; the last has both pads pressing.
+    check_contacts(&received, &recording);
 }

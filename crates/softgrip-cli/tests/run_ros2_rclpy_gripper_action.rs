@@ -18,15 +18,13 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use serde_json::Value;
+use softgrip_record::Recording;
 use softgrip_record::msgs::sensor_msgs::JointState;
-use softgrip_record::{Message, Recording};
 
 use gripper_ros2::{
-    Ros2Run, check_joint_states, floats, gripper_scene, recorded_joint_states, run_beside, stamp,
+    Ros2Run, check_contacts, check_joint_states, check_stalled_result, floats, gripper_scene,
+    recorded_joint_states, run_beside,
 };
-
-/// rcl_action's GoalStatus ABORTED: what the server answers a stalled goal with.
-const STATUS_ABORTED: i64 = 6;
 
 /// `SOFTGRIP_RCLPY`: the Python of `.ci/rclpy-venv.sh` (rclpy + the generated interfaces).
 fn rclpy_python() -> String {
@@ -62,20 +60,7 @@ fn recorded_states(recording: &Recording) -> BTreeMap<u64, JointState> {
 /// server's stall rule), and it is more than 1 mm short of the goal (not reached).
 fn check_result(received: &Value, recorded: &BTreeMap<u64, JointState>) {
     assert_eq!(received["answer"]["accepted"].as_bool(), Some(true));
-    let result = &received["result"];
-    assert_eq!(result["status"].as_i64(), Some(STATUS_ABORTED), "{result}");
-    let r = &result["result"];
-    assert_eq!(r["stalled"].as_bool(), Some(true));
-    assert_eq!(r["reached_goal"].as_bool(), Some(false));
-    assert_eq!(r["state"]["name"][0].as_str(), Some("finger_joint"));
-    let (q, e) = (
-        floats(&r["state"]["position"])[0],
-        floats(&r["state"]["effort"])[0],
-    );
-    // The target froze the step the effort reached 5 N (at most one step's increment over it:
-    // 2000 N/m x 10 mm/s x 1/60 s = 0.33 N), then the finger settled a little into the pad.
-    assert!((4.5..5.4).contains(&e.abs()), "result effort {e} N");
-    assert!(q > 0.005 && q < 0.0275, "result position {q} m");
+    let (q, e) = check_stalled_result(received);
     assert!(q > 0.001, "a reached goal (0) would be within 1 mm: {q} m");
     let (&t_end, _) = (recorded.iter())
         .find(|(_, j)| j.position[0] == q && j.effort[0] == e)
@@ -91,49 +76,6 @@ fn check_result(received: &Value, recorded: &BTreeMap<u64, JointState>) {
         window.len()
     );
     assert!(span < 1e-4, "moved {span} m in the 0.1 s before the stall");
-}
-
-/// Every `/softgrip/contacts` received equals the recording's; the last has both pads pressing.
-fn check_contacts(received: &Value, recording: &Recording) {
-    let contacts: BTreeMap<u64, _> = (recording.messages.iter())
-        .filter_map(|m| match &m.message {
-            Message::Contacts(a) => Some((m.log_time_ns, a.clone())),
-            _ => None,
-        })
-        .collect();
-    let arrays = received["contacts"].as_array().expect("contacts");
-    let mut compared = 0;
-    for a in arrays {
-        let t = stamp(&a["header"]);
-        let want = (contacts.get(&t)).unwrap_or_else(|| panic!("no contacts at {t} ns"));
-        let got = a["contacts"].as_array().expect("contacts");
-        assert_eq!(got.len(), want.contacts.len(), "at {t} ns");
-        for (g, w) in got.iter().zip(&want.contacts) {
-            assert_eq!(g["fingertip"].as_str(), Some(w.fingertip.as_str()));
-            assert_eq!(g["other"].as_str(), Some(w.other.as_str()));
-            for (key, value) in [
-                ("compression", w.compression),
-                ("normal_force", w.normal_force),
-                ("contact_radius", w.contact_radius),
-                ("peak_pressure", w.peak_pressure),
-            ] {
-                assert_eq!(g[key].as_f64(), Some(value), "{key} at {t} ns");
-            }
-            compared += 1;
-        }
-    }
-    assert!(compared >= 20, "compared {compared} contacts");
-    let last = arrays.last().expect("a contact array")["contacts"]
-        .as_array()
-        .expect("contacts");
-    let pressing: Vec<&str> = (last.iter())
-        .filter(|c| c["other"].as_str() == Some("box") && c["normal_force"].as_f64() > Some(0.0))
-        .map(|c| c["fingertip"].as_str().expect("name"))
-        .collect();
-    assert!(
-        pressing.contains(&"left_pad") && pressing.contains(&"right_pad"),
-        "{pressing:?}"
-    );
 }
 
 #[test]

@@ -15,7 +15,7 @@ use softgrip_record::{
     ShapeGeometry, ShapeInfo, SinkError, StepFrame, StepSink, TactileSample, TipRunSummary, UpAxis,
 };
 use softgrip_scene::ControlSet;
-use softgrip_scene::robot::{JointKind, joint_state, joint_target};
+use softgrip_scene::robot::{JointKind, joint_state_loaded, joint_target};
 
 use crate::resources::Physics;
 
@@ -176,7 +176,7 @@ pub fn joint_samples(
                 continue;
             }
             let name = joint_name(robots.len(), robot.name(), &joint.name);
-            let s = joint_state(robot, &world.physics, h, j, substep);
+            let s = joint_state_loaded(robot, world, h, j, substep);
             if let Some((p, v, e)) = joint_target(robot, &world.physics, h, j) {
                 commands.push(JointSample {
                     name: name.clone(),

@@ -79,9 +79,10 @@
 //!   R, 2R is within 2.22, 3.46, 2.69 % (was 3.76, 5.05, 3.44 %) and the free sphere on 4R
 //!   within 2.97 % (was 3.64 %).
 //!
-//! A calibrated core does not take this map whole: its layer excess follows Hertz's patch and
-//! its pole's thinning the true `delta/t` (`crate::core_map`, its own table when bound); only
-//! its hemisphere's stiffening and the tail take `rho` and `g` below.
+//! A calibrated core does not take this map whole: its plane law follows Hertz's patch, and
+//! this map's excess over the patch, `chi_flat(rho s) / chi_flat(rho_H s)`, is taken at the
+//! skin's squeeze `s = delta/t` (`crate::core_map`, its own table when bound); the tail is
+//! this map's.
 //!
 //! Constants `r0, r1, g0, g1, q` per construction (free, flat; the core keeps session 11's
 //! bonded constants), `tools/calibration/fit_counterpart.py` form `r+g+q, eps, cap` (ball

@@ -1,6 +1,7 @@
 //! Shared helpers of the law's integration tests.
 #![allow(dead_code)]
 
+use softgrip_fe::FeFile;
 use softgrip_law::{ContactLaw, ContactParams, Level};
 
 /// A law in normalised units (E* = 1 Pa, R = 1 m): force is f, delta is x.
@@ -24,6 +25,22 @@ pub fn grid(x_max: f64, n: usize) -> Vec<f64> {
     (1..n)
         .map(|i| x_max * (i as f64 + 0.293_7) / (n as f64 + 0.5))
         .collect()
+}
+
+/// The largest `|F_law / F_FE - 1|` over an FE force curve's points with `0.01 <= x <=
+/// min(x_max, to)`, and the last `x` compared (0 when none): the one loop over an FE table that
+/// `counterpart_fe.rs` and `core_counterpart_fe.rs` share.
+pub fn force_error(file: &FeFile, law: &ContactLaw, to: f64) -> (f64, f64) {
+    let mut worst: f64 = 0.0;
+    let mut top: f64 = 0.0;
+    for p in file.points().expect("parses") {
+        if p.x < 0.01 - 1e-12 || p.x > law.x_max() || p.x > to + 1e-9 {
+            continue;
+        }
+        worst = worst.max((law.response(p.x).force / p.force_norm - 1.0).abs());
+        top = top.max(p.x);
+    }
+    (worst, top)
 }
 
 /// `(r/R, p/E*)` of an FE pressure profile (R = 1 mm, mu = 1 MPa), the two nodes nearest the

@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::Smooth;
+use common::{Smooth, force_error};
 use softgrip_fe::{CORE_COUNTERPART_FILES, Counterpart as FeCounterpart, FeFile, Schema};
 use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level};
 
@@ -33,31 +33,19 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
         .filter(|f| f.schema == Schema::Force)
 }
 
-/// Largest |F_law / F_FE - 1| over `0.01 <= x <= min(x_max, FE's end, to)` and the last x
-/// compared.
-fn force_error(file: &FeFile, law: &ContactLaw, to: f64) -> (f64, f64) {
-    let mut worst: f64 = 0.0;
-    let mut top: f64 = 0.0;
-    for p in file.points().expect("parses") {
-        if p.x < 0.01 - 1e-12 || p.x > law.x_max() || p.x > to + 1e-9 {
-            continue;
-        }
-        worst = worst.max((law.response(p.x).force / p.force_norm - 1.0).abs());
-        top = top.max(p.x);
-    }
-    (worst, top)
-}
-
 /// The largest force error each curve is allowed to the FE's end: what this test printed
-/// when the law was fixed (session 11), rounded up by 0.2 % (so a real change of the law
-/// breaks it). No constant of the law was fitted on these curves (`core_map`: the bonded
-/// pad's map, Hertz's patch and the true squeeze).
+/// when the law was fixed (session 12), rounded up by 0.2 % (so a real change of the law
+/// breaks it). No constant of the law was fitted on these curves (`core_map`: the plane law at
+/// Hertz's patch, the bonded pad's squeeze excess at the skin's `delta/t`).
+/// `force_nu0.48_t0.4_k2.csv` was run after session 11's map and before this one was
+/// written (3.20 % with session 11's, 1.44 % with this one).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/core/force_nu0.48_t0.3_k1.csv" => 3.01,
-        "ball/core/force_nu0.48_t0.3_k3.csv" => 1.94,
-        "ball/core/force_nu0.48_t0.5_k1.csv" => 5.85,
-        "ball/core/force_nu0.48_t0.5_k3.csv" => 4.35,
+        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.40,
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 3.40,
+        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.44,
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 3.65,
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.19,
         // A curve that landed after: the target.
         _ => 2.8,
     };
@@ -65,15 +53,13 @@ fn stated_force_error(path: &str) -> f64 {
 }
 
 /// The curves the law misses the 3 % on, each within it below an x (its error there,
-/// the test allows 0.2 % more): t/R 0.5 past delta/t = 0.6 on both balls, too soft as the FE
-/// nears its end (-5.9 % on R and -4.4 % on 3R at x = 0.38: the plane law at t/R 0.5 is
-/// itself 2 % soft at x = 0.15-0.2 and recovers by its end, on the ball it does not); t/R 0.3
-/// on R, 3.01 % too stiff at x = 0.16 (the plane law at t/R 0.3 is itself up to 1.9 % too stiff
-/// there, nu 0.49).
+/// the test allows 0.2 % more), both at the FE's last points: t/R 0.3 on 3R, +3.4 % at its end
+/// (x = 0.2, delta/t 0.67; the plane law at the patch's x = 0.15 is itself 1-2 % stiff
+/// there, t/R 0.3 at nu 0.4 and 0.49); t/R 0.5 on R, -3.6 % at its end (x = 0.38, delta/t 0.76;
+/// the plane law at the patch's x = 0.19 is itself 2 % soft, t/R 0.5 at nu 0.45).
 const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
-    ("ball/core/force_nu0.48_t0.3_k1.csv", 0.15, 2.82),
-    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.30, 2.83),
-    ("ball/core/force_nu0.48_t0.5_k3.csv", 0.33, 2.92),
+    ("ball/core/force_nu0.48_t0.3_k3.csv", 0.17, 2.62),
+    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.36, 2.84),
 ];
 
 #[test]
@@ -119,7 +105,7 @@ fn a_skin_on_a_core_on_a_ball_is_within_its_stated_error_of_the_fe() {
         );
         seen += 1;
     }
-    assert!(seen >= 4, "{seen} curves");
+    assert!(seen >= 5, "{seen} curves");
 }
 
 /// The contact radius on the ball against the FE's (its column smoothed plus the lag of half an
@@ -158,7 +144,7 @@ fn a_skin_on_a_core_on_a_ball_has_the_fe_contact_radius() {
         );
         seen += 1;
     }
-    assert!(seen >= 4, "{seen} curves");
+    assert!(seen >= 5, "{seen} curves");
 }
 
 /// The radius's largest error seen on these curves (1.32-2.14 %, session 11), rounded up by

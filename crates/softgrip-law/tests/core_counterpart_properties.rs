@@ -118,3 +118,73 @@ proptest! {
         prop_assert_eq!(pb(&back), pb(&plane));
     }
 }
+
+/// Regression (session 12): the squeeze excess on a bowl (`core_map`, below 1 and falling) made
+/// the force stop rising before the range's end at nu >= 0.45 on bowls of 2R and tighter, until
+/// the range kept its deeper argument inside the hemisphere's own. Over bowls from 1.001R to
+/// 10R, nu 0.3-0.5 and t/R 0.05-0.95 the force rises and the stiffness is positive up to
+/// `x_max` (2000 points each).
+#[test]
+fn a_core_in_a_bowl_stiffens_to_the_end_of_its_range() {
+    let mut checked = 0;
+    for kappa in [-0.999, -0.99, -0.9, -0.7, -0.5, -0.3, -0.1] {
+        for nu in [0.3, 0.4, 0.45, 0.475, 0.49, 0.4999, 0.5] {
+            for tau in [0.05, 0.1, 0.3, 0.5, 0.7, 0.95] {
+                let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+                    .and_then(|p| p.with_backing(Backing::Core { thickness: tau }))
+                    .expect("valid params");
+                // R = 1 m: the curvature in 1/m is kappa R.
+                let law = ContactLaw::try_new(p, Level::Calibrated)
+                    .and_then(|l| l.with_counterpart(Counterpart::try_curved(kappa, kappa)?))
+                    .expect("binds");
+                let mut last = 0.0;
+                for i in 1..=2000 {
+                    let x = law.x_max() * f64::from(i) / 2000.0;
+                    let r = law.response(x);
+                    let at = format!("kappa R {kappa}, nu {nu}, t/R {tau}, x {x}: {r:?}");
+                    assert!(r.force > last && r.stiffness > 0.0, "{at}");
+                    last = r.force;
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 7 * 7 * 6);
+}
+
+/// A skin as thick as the fingertip (t/R 0.999) on a counterpart is the bonded pad on it: the
+/// core's map (`core_map`: the plane core law at Hertz's patch times the bonded pad's squeeze
+/// excess at delta/t) goes over into the bonded pad's (`mapping`) as t -> R, as the plane core
+/// law goes over into the flat one. Force within 1e-3 over the common range, on balls of R/2,
+/// R and 3R and a cylinder of R, at nu 0.3, 0.48 and 0.499.
+#[test]
+fn a_skin_as_thick_as_the_fingertip_is_the_bonded_pad_on_a_counterpart() {
+    let mut worst: f64 = 0.0;
+    for nu in [0.3, 0.48, 0.499] {
+        for cp in [
+            Counterpart::try_ball(0.5),
+            Counterpart::try_ball(1.0),
+            Counterpart::try_ball(3.0),
+            Counterpart::try_cylinder(1.0),
+        ] {
+            let cp = cp.expect("a counterpart");
+            let law = |backing| {
+                let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+                    .and_then(|p| p.with_backing(backing))
+                    .expect("valid params");
+                ContactLaw::try_new(p, Level::Calibrated)
+                    .and_then(|l| l.with_counterpart(cp))
+                    .expect("binds")
+            };
+            let core = law(Backing::Core { thickness: 0.999 });
+            let flat = law(Backing::Flat);
+            let top = core.x_max().min(flat.x_max());
+            for i in 1..=200 {
+                let x = top * f64::from(i) / 200.0;
+                worst = worst.max((core.response(x).force / flat.response(x).force - 1.0).abs());
+            }
+        }
+    }
+    println!("t/R 0.999 against the bonded pad on counterparts: force within {worst:.1e}");
+    assert!(worst < 1e-3, "{worst}");
+}

@@ -47,21 +47,7 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
 
 /// Largest |F_law / F_FE - 1| over `0.01 <= x <= x_max` and the x range compared.
 fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
-    force_error_to(file, law, f64::INFINITY)
-}
-
-/// [`force_error`] over `0.01 <= x <= min(x_max, to)`.
-fn force_error_to(file: &FeFile, law: &ContactLaw, to: f64) -> (f64, f64) {
-    let mut worst: f64 = 0.0;
-    let mut top: f64 = 0.0;
-    for p in file.points().expect("parses") {
-        if p.x < 0.01 - 1e-12 || p.x > law.x_max() || p.x > to + 1e-9 {
-            continue;
-        }
-        worst = worst.max((law.response(p.x).force / p.force_norm - 1.0).abs());
-        top = top.max(p.x);
-    }
-    (worst, top)
+    common::force_error(file, law, f64::INFINITY)
 }
 
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
@@ -191,7 +177,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         );
         assert!(top > 0.0, "{}: nothing compared", file.path);
         if let Some(&(_, to, pct)) = WITHIN_TARGET_TO.iter().find(|(p, _, _)| *p == file.path) {
-            let (below, _) = force_error_to(file, &law, to);
+            let (below, _) = common::force_error(file, &law, to);
             println!(
                 "{:38} force within {:5.2} % for x <= {to}",
                 "",

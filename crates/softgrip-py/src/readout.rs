@@ -4,13 +4,15 @@
 //! ([`BodySeries`]), a tactile pad's image one slice ([`TactileSeries`]). `softgrip.run` fills
 //! them from the plugin's readings (`TipContact::reading`), and `softgrip.open_recording` from
 //! the recorded messages read back as readings (`SoftContactMsg::reading`), so both give the
-//! same keys, shapes, dtypes and values.
+//! same keys, shapes, dtypes and values. A robot's joints ([`JointTable`]) are filled from the
+//! samples the recorder writes (`softgrip_ecs::to_record::joint_samples`) in a run and from
+//! `/joint_states` and `/joint_commands` in a recording.
 
 use numpy::IntoPyArray;
 use numpy::ndarray::{Array2, Array3};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use softgrip_record::ContactReading;
+use softgrip_record::{ContactReading, JointSample};
 
 /// One fingertip's arrays, one entry per step: forces and stiffness summed over its
 /// contacts, the deepest contact's compression and contact radius.
@@ -150,6 +152,105 @@ impl TactileSeries {
             .expect("invariant: rows x columns values per image")
             .into_pyarray(py)
             .into_any()
+    }
+}
+
+/// The keys of a joint's arrays (`softgrip.JOINT_ARRAYS`): its state, then its command.
+const JOINT_KEYS: [&str; 6] = [
+    "position",
+    "velocity",
+    "effort",
+    "target_position",
+    "target_velocity",
+    "effort_limit",
+];
+
+/// One joint's arrays, one entry per step, in [`JOINT_KEYS`] order: its state and its command
+/// (NaN where the step has none: a joint without a motor has no command).
+struct JointSeries([Vec<f64>; 6]);
+
+impl JointSeries {
+    /// `steps` entries of NaN (a joint first seen after them).
+    fn missing(steps: usize) -> Self {
+        Self(std::array::from_fn(|_| vec![f64::NAN; steps]))
+    }
+
+    fn push(&mut self, state: Option<[f64; 3]>, command: Option<[f64; 3]>) {
+        let [p, v, e] = state.unwrap_or([f64::NAN; 3]);
+        let [tp, tv, limit] = command.unwrap_or([f64::NAN; 3]);
+        for (column, x) in self.0.iter_mut().zip([p, v, e, tp, tv, limit]) {
+            column.push(x);
+        }
+    }
+}
+
+/// A joint's `[position, velocity, effort]` in a step (a command's effort: its force limit).
+type Values = [f64; 3];
+
+/// Every robot joint's arrays, by name in order of first appearance (the recorder's order:
+/// robot by robot, joint by joint), one entry per step.
+#[derive(Default)]
+pub struct JointTable {
+    names: Vec<String>,
+    series: Vec<JointSeries>,
+    steps: usize,
+}
+
+impl JointTable {
+    /// Appends one step: the joints' states and commands as `(name, [position, velocity,
+    /// effort])` (a command's effort is its force limit). A joint absent from a step reads NaN
+    /// there.
+    pub fn push_step<'a>(
+        &mut self,
+        states: impl IntoIterator<Item = (&'a str, [f64; 3])>,
+        commands: impl IntoIterator<Item = (&'a str, [f64; 3])>,
+    ) {
+        let mut rows: Vec<(Option<Values>, Option<Values>)> = vec![(None, None); self.names.len()];
+        for (command, (name, values)) in
+            (states.into_iter().map(|s| (false, s))).chain(commands.into_iter().map(|c| (true, c)))
+        {
+            let k = match self.names.iter().position(|n| n == name) {
+                Some(k) => k,
+                None => {
+                    self.names.push(name.to_owned());
+                    self.series.push(JointSeries::missing(self.steps));
+                    rows.push((None, None));
+                    self.names.len() - 1
+                }
+            };
+            let slot = if command {
+                &mut rows[k].1
+            } else {
+                &mut rows[k].0
+            };
+            // The first of a name in a step counts (a well-formed step names a joint once).
+            slot.get_or_insert(values);
+        }
+        for (series, (state, command)) in self.series.iter_mut().zip(rows) {
+            series.push(state, command);
+        }
+        self.steps += 1;
+    }
+
+    /// Appends one step of the recorder's samples ([`JointSample`]).
+    pub fn push_samples(&mut self, states: &[JointSample], commands: &[JointSample]) {
+        fn row(j: &JointSample) -> (&str, [f64; 3]) {
+            (j.name.as_str(), [j.position, j.velocity, j.effort])
+        }
+        self.push_step(states.iter().map(row), commands.iter().map(row));
+    }
+
+    /// The arrays as a dict by joint name (the keys of `RunResult.joints[name]`).
+    pub fn into_py(self, py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+        let out = PyDict::new(py);
+        for (name, s) in self.names.iter().zip(self.series) {
+            let d = PyDict::new(py);
+            for (key, column) in JOINT_KEYS.iter().zip(s.0) {
+                d.set_item(key, column.into_pyarray(py))?;
+            }
+            out.set_item(name, d)?;
+        }
+        Ok(out)
     }
 }
 

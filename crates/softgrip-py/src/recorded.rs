@@ -1,6 +1,7 @@
 //! A recording's messages sorted into steps: per fingertip the [`TipSeries`] a run returns
 //! (from the `SoftContactArray` of each step), per body its poses (from `/tf`), per tactile
-//! pad its images, and every contact row; vectors and poses turned into the axes asked for.
+//! pad its images, per robot joint its state and command (from `/joint_states` and
+//! `/joint_commands`), and every contact row; vectors and poses turned into the axes asked for.
 
 use std::collections::BTreeMap;
 
@@ -8,13 +9,14 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use softgrip_record::frames::{UpAxis, mul};
+use softgrip_record::msgs::sensor_msgs::JointState;
 use softgrip_record::msgs::softgrip_msgs::SoftContactMsg;
 use softgrip_record::msgs::tf2_msgs::TFMessage;
 use softgrip_record::{Message, Recording, RecordingInfo, WORLD_FRAME, topics};
 
 use softgrip_record::ContactReading;
 
-use crate::readout::{BodySeries, TactileSeries, TipSeries, matrix};
+use crate::readout::{BodySeries, JointTable, TactileSeries, TipSeries, matrix};
 
 /// The axes vectors and poses are returned in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -191,6 +193,8 @@ pub struct Steps {
     pub body_names: Vec<String>,
     /// Per body, one pose per recorded step.
     pub bodies: Vec<BodySeries>,
+    /// Every robot joint, one entry per recorded step.
+    pub joints: JointTable,
     /// Every contact row.
     pub rows: ContactRows,
 }
@@ -211,6 +215,8 @@ struct StepMessages<'a> {
     contacts: Vec<&'a SoftContactMsg>,
     tf: Vec<&'a TFMessage>,
     images: Vec<(&'a str, Vec<f32>, usize, usize)>,
+    joint_states: Vec<&'a JointState>,
+    joint_commands: Vec<&'a JointState>,
 }
 
 impl Steps {
@@ -220,7 +226,9 @@ impl Steps {
         for m in &rec.messages {
             let wanted = matches!(m.message, Message::Contacts(_) | Message::Clock(_))
                 || matches!(m.message, Message::Tf(_) if m.topic == topics::TF)
-                || matches!(m.message, Message::Image(_) if m.topic.ends_with("/tactile"));
+                || matches!(m.message, Message::Image(_) if m.topic.ends_with("/tactile"))
+                || matches!(m.message, Message::JointState(_)
+                    if m.topic == topics::JOINT_STATES || m.topic == topics::JOINT_COMMANDS);
             if !wanted {
                 continue;
             }
@@ -236,6 +244,10 @@ impl Steps {
                     step.images
                         .push((m.topic.as_str(), i.pixels_f32(), rows, columns));
                 }
+                Message::JointState(j) if m.topic == topics::JOINT_STATES => {
+                    step.joint_states.push(j);
+                }
+                Message::JointState(j) => step.joint_commands.push(j),
                 _ => {}
             }
         }
@@ -259,6 +271,7 @@ impl Steps {
             tactile: Vec::new(),
             body_names: Vec::new(),
             bodies: Vec::new(),
+            joints: JointTable::default(),
             rows: ContactRows::default(),
         };
         for (k, (&ns, msgs)) in by_time.iter().enumerate() {
@@ -269,6 +282,10 @@ impl Steps {
             steps.push_contacts(k, step, &msgs.contacts);
             steps.push_poses(k, &msgs.tf);
             steps.push_images(k, &msgs.images);
+            steps.joints.push_step(
+                joint_rows(&msgs.joint_states),
+                joint_rows(&msgs.joint_commands),
+            );
         }
         steps
     }
@@ -375,6 +392,22 @@ fn step_and_time(ns: u64, dt: f64, k: usize) -> (i64, f64) {
     } else {
         (k as i64 + 1, t)
     }
+}
+
+/// The joints of `messages` as `(name, [position, velocity, effort])` (a value a message leaves
+/// out, as `sensor_msgs/JointState` allows, reads NaN).
+fn joint_rows<'a>(messages: &[&'a JointState]) -> Vec<(&'a str, [f64; 3])> {
+    let at = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(f64::NAN);
+    (messages.iter())
+        .flat_map(|m| {
+            (m.name.iter().enumerate()).map(move |(i, n)| {
+                (
+                    n.as_str(),
+                    [at(&m.position, i), at(&m.velocity, i), at(&m.effort, i)],
+                )
+            })
+        })
+        .collect()
 }
 
 /// `/softgrip/<token>/tactile` -> `<token>`.

@@ -186,6 +186,7 @@ fn to_python<'py>(py: Python<'py>, path: &Path, o: Opened) -> PyResult<Bound<'py
         bodies.set_item(name, b.into_py(py)?)?;
     }
     out.set_item("bodies", bodies)?;
+    out.set_item("joints", s.joints.into_py(py)?)?;
     out.set_item("contact_rows", s.rows.into_py(py)?)?;
     Ok(out)
 }

@@ -1,6 +1,6 @@
 //! `softgrip.run(...)`: a scene through the same bevy_ecs schedule as `softgrip run` (with
 //! its summary and, optionally, its MCAP recording), with the per-step readout of every
-//! fingertip and body kept as arrays.
+//! fingertip, body and robot joint kept as arrays.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -9,12 +9,16 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use softgrip_ecs::bevy_ecs::entity::Entity;
-use softgrip_ecs::{McapSink, Physics, Scene, SceneError, Simulation, Summary, TipSummary};
+use softgrip_ecs::to_record::{JointMemory, joint_rates, joint_samples};
+use softgrip_ecs::{
+    Controllers, McapSink, Physics, Scene, SceneError, SimClock, Simulation, Summary, TipSummary,
+};
+use softgrip_record::JointSample;
 use softgrip_scene::{ContactDigest, DEFAULT_SCENE};
 
 use crate::args;
 use crate::errors::{parameter, raise, scene_error};
-use crate::readout::{BodySeries, TactileSeries, TipSeries};
+use crate::readout::{BodySeries, JointTable, TactileSeries, TipSeries};
 
 /// Steps between two checks for a pending Python signal (Ctrl-C) during a run.
 const SIGNAL_CHECK_STEPS: u64 = 512;
@@ -50,6 +54,7 @@ struct RunData {
     tactile: Vec<Option<TactileSeries>>,
     body_names: Vec<String>,
     bodies: Vec<BodySeries>,
+    joints: JointTable,
     summary: Vec<TipSummary>,
     digest: ContactDigest,
     wall: f64,
@@ -104,6 +109,7 @@ fn simulate(
         .map(|_| BodySeries::default())
         .collect();
     let mut tactile: Vec<Option<TactileSeries>> = tip_entities.iter().map(|_| None).collect();
+    let mut joints = JointReader::default();
     let mut digest = ContactDigest::new();
     let start = Instant::now();
     let mut steps = 0;
@@ -123,6 +129,7 @@ fn simulate(
         read_tips(physics, &tip_entities, &mut tips);
         read_tactile(physics, &tip_entities, &mut tactile);
         read_bodies(physics, &body_entities, &mut bodies);
+        joints.read(&sim);
     }
     let wall = start.elapsed().as_secs_f64();
     sim.finish()
@@ -158,6 +165,7 @@ fn simulate(
         tactile,
         body_names: f.bodies.iter().map(|b| b.name.clone()).collect(),
         bodies,
+        joints: joints.table,
         summary: summary.tips.iter().map(|(_, t)| t.clone()).collect(),
         digest,
         wall,
@@ -180,6 +188,34 @@ fn read_tips(physics: &Physics, entities: &[Entity], tips: &mut [TipSeries]) {
     }
     for (t, r) in tips.iter_mut().zip(rows) {
         t.push_step(r);
+    }
+}
+
+/// Reads the robots' joints after each step as the recorder does (the same samples, the same
+/// velocities: the rate of motion since the last step, `to_record::joint_rates`).
+#[derive(Default)]
+struct JointReader {
+    table: JointTable,
+    memory: Option<JointMemory>,
+    states: Vec<JointSample>,
+    commands: Vec<JointSample>,
+}
+
+impl JointReader {
+    /// Appends the joints' states and commands after the last step (nothing in a scene without
+    /// robots).
+    fn read(&mut self, sim: &Simulation) {
+        let Some(control) = sim.world.get_resource::<Controllers>() else {
+            return;
+        };
+        if control.0.robots().is_empty() {
+            return;
+        }
+        let physics = sim.world.resource::<Physics>();
+        let time = sim.world.resource::<SimClock>().time;
+        joint_samples(&control.0, physics, &mut self.states, &mut self.commands);
+        joint_rates(time, &mut self.memory, &mut self.states);
+        self.table.push_samples(&self.states, &self.commands);
     }
 }
 
@@ -262,6 +298,7 @@ fn to_python<'py>(py: Python<'py>, r: RunData) -> PyResult<Bound<'py, PyDict>> {
         bodies.set_item(name, b.into_py(py)?)?;
     }
     out.set_item("bodies", bodies)?;
+    out.set_item("joints", r.joints.into_py(py)?)?;
     let summary = PyDict::new(py);
     for t in &r.summary {
         summary.set_item(&t.name, tip_summary(py, t)?)?;

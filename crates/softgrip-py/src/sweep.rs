@@ -56,7 +56,7 @@ fn value_to_py<'py>(py: Python<'py>, v: &Value) -> PyResult<Bound<'py, PyAny>> {
 }
 
 /// A row as the tuple `(trial, *values, held, slips, slip_distance, peak_force, peak_x,
-/// validity_excursions, wall_time, error)`, None for the outcomes of an error row and for
+/// validity_excursions, hold_force, wall_time, error)`, None for the outcomes of an error row and for
 /// the error of an ok row.
 fn row_to_py<'py>(py: Python<'py>, r: &TrialRow) -> PyResult<Bound<'py, PyTuple>> {
     let mut items: Vec<Bound<'py, PyAny>> = vec![r.trial.into_pyobject(py)?.into_any()];
@@ -72,11 +72,12 @@ fn row_to_py<'py>(py: Python<'py>, r: &TrialRow) -> PyResult<Bound<'py, PyTuple>
             items.push(o.peak_force.into_pyobject(py)?.into_any());
             items.push(o.peak_x.into_pyobject(py)?.into_any());
             items.push(o.validity_excursions.into_pyobject(py)?.into_any());
+            items.push(o.hold_force.into_pyobject(py)?.into_any());
             items.push(r.wall_time.into_pyobject(py)?.into_any());
             items.push(none());
         }
         Err(e) => {
-            items.extend((0..6).map(|_| none()));
+            items.extend((0..7).map(|_| none()));
             items.push(r.wall_time.into_pyobject(py)?.into_any());
             items.push(e.into_pyobject(py)?.into_any());
         }
@@ -145,7 +146,7 @@ impl Sweep {
             });
         }
         let o = &items[1 + kinds.len()..];
-        let error: Option<String> = o[7].extract()?;
+        let error: Option<String> = o[8].extract()?;
         let outcome = match error {
             Some(e) => Err(e),
             None => Ok(Outcome {
@@ -155,13 +156,14 @@ impl Sweep {
                 peak_force: o[3].extract()?,
                 peak_x: o[4].extract()?,
                 validity_excursions: o[5].extract()?,
+                hold_force: o[6].extract()?,
             }),
         };
         Ok(TrialRow {
             trial,
             values,
             outcome,
-            wall_time: o[6].extract()?,
+            wall_time: o[7].extract()?,
         })
     }
 }

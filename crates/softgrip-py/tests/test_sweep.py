@@ -27,6 +27,7 @@ COLUMNS = [
     "peak_force",
     "peak_x",
     "validity_excursions",
+    "hold_force",
     "wall_time",
     "error",
 ]

@@ -2,8 +2,10 @@
 //! - `tactile_disc/<pad>`: one contact of the default grasp's size (a = 4.8 mm, 5 N) laid on a
 //!   16 mm pad of 16 x 16, 32 x 32 or 64 x 64 taxels ([`TactileImage::add_disc`]); divide by the
 //!   taxels under the disc (printed) for the cost per taxel;
-//! - `tactile_step/<with|without>`: a step of a kinematic fingertip pressed to x = 0.2 on a
-//!   fixed ground, with a 16 x 16 pad and without one: the difference is the pad's cost per step.
+//! - `tactile_step/<with|with_16x16_unread|without>`: a step of a kinematic fingertip pressed
+//!   to x = 0.2 on a fixed ground, with a 16 x 16 pad whose image is read after the step, with
+//!   one nobody reads (the image is laid on its first read) and without one: `with - without`
+//!   is the pad's cost per read step.
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use rapier3d::prelude::*;
@@ -74,10 +76,22 @@ fn pressed_world(pad: Option<TactilePad>) -> SoftWorld {
 
 fn bench_step(c: &mut Criterion) {
     let mut group = c.benchmark_group("tactile_step");
-    for (name, p) in [("without", None), ("with_16x16", Some(pad(16)))] {
+    for (name, p) in [("without", None), ("with_16x16_unread", Some(pad(16)))] {
         let mut world = pressed_world(p);
         group.bench_function(name, |b| b.iter(|| world.step()));
     }
+    // The image is laid on its first read after a step: a step whose image is read.
+    let mut world = pressed_world(Some(pad(16)));
+    group.bench_function("with_16x16", |b| {
+        b.iter(|| {
+            world.step();
+            world
+                .soft
+                .tactile_images()
+                .map(|(_, i)| i.total_force())
+                .sum::<f64>()
+        })
+    });
     group.finish();
 }
 

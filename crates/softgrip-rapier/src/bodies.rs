@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 
 use nalgebra::{Matrix3, Vector3};
-use rapier3d::prelude::{Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector};
+use rapier3d::prelude::{Pose, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector};
 
 use crate::counters::SoftCounters;
 use crate::detect::{to_f32, to_f64};
@@ -93,6 +93,25 @@ pub(crate) fn gravity_kick(bodies: &mut RigidBodySet, gravity: Vector, tau: f64)
     }
 }
 
+/// A dynamic body's mobility as a free body: rapier's effective inverse mass (zero along locked
+/// translations) \[1/kg\] and world inverse inertia tensor \[1/(kg m^2)\].
+pub(crate) fn free_mobility(rb: &RigidBody) -> (Vector3<f64>, Matrix3<f64>) {
+    let mp = rb.mass_properties();
+    let ii = &mp.effective_world_inv_inertia;
+    let inv_i = Matrix3::new(
+        ii.m11 as f64,
+        ii.m12 as f64,
+        ii.m13 as f64,
+        ii.m12 as f64,
+        ii.m22 as f64,
+        ii.m23 as f64,
+        ii.m13 as f64,
+        ii.m23 as f64,
+        ii.m33 as f64,
+    );
+    (to_f64(mp.effective_inv_mass), inv_i)
+}
+
 /// The body's row in the solver's table: for a dynamic body, its velocity with the external
 /// accelerations (gravity, user force and torque) integrated over `ctx.h_drift` \[s\] (see
 /// `SoftWorld::prepare`), its inverse mass and inertia; for an awake link of a multibody, its
@@ -129,22 +148,9 @@ pub(crate) fn body_index(
         return Some(next);
     }
     let rb = bodies.get(handle)?;
-    let mp = rb.mass_properties();
-    let com = to_f64(mp.world_com);
+    let com = to_f64(rb.mass_properties().world_com);
     let state = if rb.is_dynamic() && !rb.is_sleeping() {
-        let ii = &mp.effective_world_inv_inertia;
-        let inv_i = Matrix3::new(
-            ii.m11 as f64,
-            ii.m12 as f64,
-            ii.m13 as f64,
-            ii.m12 as f64,
-            ii.m22 as f64,
-            ii.m23 as f64,
-            ii.m13 as f64,
-            ii.m23 as f64,
-            ii.m33 as f64,
-        );
-        let inv_m = to_f64(mp.effective_inv_mass);
+        let (inv_m, inv_i) = free_mobility(rb);
         // rapier adds gravity, the user force and torque during its step: predict them.
         let gravity = to_f64(gravity) * rb.gravity_scale() as f64;
         let v = to_f64(rb.linvel())

@@ -19,7 +19,7 @@ use crate::readout::{Accums, TipContact};
 use crate::rigid::RigidRow;
 use crate::solve::{Row, SolveScratch};
 use crate::substep::SoftAccuracy;
-use crate::taxels::TactileImage;
+use crate::taxels::TactileSlot;
 
 /// Memory of one contact between steps.
 #[derive(Debug, Clone, Copy)]
@@ -101,7 +101,7 @@ pub struct SoftContacts {
     pub(crate) geoms: Vec<Geom>,
     pub(crate) scratch: Scratch,
     /// The tactile image of each fingertip with a pad, in handle order.
-    pub(crate) tactile: Vec<(ColliderHandle, TactileImage)>,
+    pub(crate) tactile: Vec<(ColliderHandle, TactileSlot)>,
 }
 
 impl SoftContacts {
@@ -208,7 +208,7 @@ impl SoftContacts {
             .insert(collider, Arc::new(Model::of_tip(&fingertip)));
         self.tactile.retain(|(h, _)| *h != collider);
         if let Some(grid) = fingertip.tactile() {
-            self.tactile.push((collider, TactileImage::new(*grid)));
+            self.tactile.push((collider, TactileSlot::new(*grid)));
             self.tactile.sort_unstable_by_key(|(h, _)| raw(*h));
         }
         self.tips.insert(collider, fingertip);

@@ -42,32 +42,33 @@
 //! gravity. The prediction is what that converged solve does, so at rest the contact carries
 //! the law's force and each motor `J^T F`. Applied as a velocity change instead, a light link's
 //! kick has to be taken back by the joints within the step (as a multibody link's was).
+//!
+//! **When the solve sees an assembly.** The prediction is rapier's *converged* joint solve, and
+//! rapier reaches it only if its Gauss-Seidel sweeps over the joint rows converge within a
+//! solver pass. The solve sees an assembly only where they do (`joint_sweeps`): a body on a fixed or kinematic base whose motor acts through its
+//! centre of mass (a prismatic jaw) at any number of sweeps; a chain of light links with an
+//! offset centre of mass (the suite's two-link finger, rate 0.948) from 214 sweeps
+//! (`num_internal_pgs_iterations` plus the members' largest `additional_pgs_iterations`: a
+//! user can ask them of a finger's links alone). Otherwise its bodies are free bodies to the
+//! solve, as before session 12. Why rapier's chain needs so many (crate README, Limits; plain rapier,
+//! `tests/impulse_chain_plain.rs`): a motor row is solved against the body's free inertia
+//! about its centre of mass and not orthogonalised against the joint's locked rows, so each
+//! sweep passes only part of the load between the motor and the locked anchor.
 
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use rapier3d::prelude::{
     ImpulseJoint, JointMotor, Pose, RigidBody, RigidBodyHandle, RigidBodySet, Vector,
 };
 
-use crate::bodies::KinematicVelocity;
+use crate::bodies::{KinematicVelocity, free_mobility};
 use crate::detect::to_f64;
+use crate::joint_sweeps::{self, HARD_COMPLIANCE, SweepRow};
 use crate::multibody::{Generalised, Link, LinkCtx, motor_fold};
 use crate::solve::BodyState;
 
-/// The most bodies one jointed assembly may hold: one. A body whose impulse joints attach it
-/// only to fixed or kinematic bodies (a prismatic jaw; a revolute link on a base, not
-/// measured) is seen jointed; a chain of dynamic bodies (a two-link finger) is seen as free bodies, as before.
-/// Why: rapier's own solve of such a chain does not carry a load of the kind a pressing tip
-/// makes. Measured in plain rapier 0.36.1 (no plugin), the suite's impulse-jointed two-link
-/// finger (3 g links, 40 N m/rad motors, dt = 1/60 s) with a constant 0.5 N force at its tip
-/// flails (joint speeds ~100 rad/s) at 2 PGS iterations, and at 500 it creeps away from the
-/// motors' equilibrium (0.05 rad off, still moving); with the assembly seen, the plugin's
-/// predicted 6.4 N on the tip threw the finger 0.6 rad open in every unsplit step. The rows
-/// and the mobility below are written for any number of bodies (`6k x 6k`, dense).
-pub(crate) const MAX_ASSEMBLY_BODIES: usize = 1;
-
-/// Relative diagonal compliance of a hard joint row (keeps `S` invertible when rows are
-/// redundant, a closed loop of joints).
-const HARD_COMPLIANCE: f64 = 1e-10;
+/// The most bodies one jointed assembly may hold (its rows and mobility are dense, `6k x 6k`);
+/// a larger one is seen as free bodies.
+pub(crate) const MAX_ASSEMBLY_BODIES: usize = 8;
 
 /// One member of an assembly.
 struct Member {
@@ -94,6 +95,8 @@ struct JointRow {
     sign: Sign,
     /// A locked axis (the external acceleration is taken through these alone).
     locked: bool,
+    /// The joint's index among the assembly's joints (rapier solves a joint's rows together).
+    joint: usize,
 }
 
 /// Whether `handle` can be a member: an awake, enabled dynamic body that is not a multibody
@@ -136,23 +139,12 @@ fn members(
 }
 
 fn member(rb: &RigidBody, handle: RigidBodyHandle) -> Member {
-    let mp = rb.mass_properties();
-    let ii = &mp.effective_world_inv_inertia;
+    let (inv_m, inv_i) = free_mobility(rb);
     Member {
         handle,
-        inv_m: to_f64(mp.effective_inv_mass),
-        inv_i: Matrix3::new(
-            ii.m11 as f64,
-            ii.m12 as f64,
-            ii.m13 as f64,
-            ii.m12 as f64,
-            ii.m22 as f64,
-            ii.m23 as f64,
-            ii.m13 as f64,
-            ii.m23 as f64,
-            ii.m33 as f64,
-        ),
-        com: to_f64(mp.world_com),
+        inv_m,
+        inv_i,
+        com: to_f64(rb.mass_properties().world_com),
     }
 }
 
@@ -181,8 +173,32 @@ pub(crate) fn assembly_states(
                 continue;
             }
             seen.push(jh);
+            let first = rows.len();
             joint_rows(bodies, ctx, kin_vel, &ms, &minv, (b1, b2), joint, &mut rows);
+            for r in &mut rows[first..] {
+                r.joint = seen.len() - 1;
+            }
         }
+    }
+    // rapier runs its sweeps plus the largest `additional_pgs_iterations` of a body in the
+    // island component, which holds every member (a lower bound: a body outside the assembly
+    // may ask for more).
+    let extra = handles
+        .iter()
+        .filter_map(|h| bodies.get(*h).map(RigidBody::additional_pgs_iterations))
+        .max()
+        .unwrap_or(0);
+    let sweeps = ctx.sweeps.saturating_add(extra);
+    let sweep_rows: Vec<SweepRow<'_>> = rows
+        .iter()
+        .map(|r| SweepRow {
+            g: &r.g,
+            compliance: r.compliance,
+            joint: r.joint,
+        })
+        .collect();
+    if !joint_sweeps::converges(&minv, &sweep_rows, sweeps)? {
+        return None;
     }
     let (mobility, qdot) = constrained(&minv, &rows, &v_star, |_| true)?;
     let (locked_mobility, _) = constrained(&minv, &rows, &v_star, |r| r.locked)?;
@@ -438,6 +454,7 @@ impl Sides<'_> {
             target: 0.0,
             sign,
             locked,
+            joint: 0,
         }
     }
 
@@ -471,6 +488,7 @@ impl Sides<'_> {
             target: c_a / b_a,
             sign: Sign::Free,
             locked: false,
+            joint: 0,
         })
     }
 }

@@ -11,6 +11,7 @@ mod detect;
 mod error;
 mod fingertip;
 mod hooks;
+mod joint_sweeps;
 mod jointed;
 mod multibody;
 mod presets;

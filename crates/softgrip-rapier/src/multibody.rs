@@ -127,6 +127,8 @@ pub(crate) struct LinkCtx<'a> {
     pub h_drift: f64,
     /// rapier's solver passes per step (`num_solver_iterations`).
     pub passes: usize,
+    /// rapier's Gauss-Seidel sweeps per solver pass (`num_internal_pgs_iterations`).
+    pub sweeps: usize,
     /// The world's gravity \[m/s^2\].
     pub gravity: Vector3<f64>,
 }

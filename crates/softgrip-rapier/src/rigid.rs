@@ -443,8 +443,7 @@ fn solve_scalars(
     let mut previous_lu = Vec::with_capacity(m);
     let mut cache = LuCache {
         mob,
-        rows: Vec::new(),
-        lu: None,
+        ..LuCache::default()
     };
     *passes = OUTER + 1;
     for pass in 0..OUTER {
@@ -487,6 +486,12 @@ fn solve_scalars(
 }
 
 /// One sweep of the friction pairs and torsions (see [`solve_scalars`]).
+///
+/// A compliant row (a fingertip's friction) is solved here as the hard equation `v(end) =
+/// target` under-relaxed by `1 / (1 + compliance)`, where the LU solves the compliant one
+/// (`+ compliance w (j - prox)`): against a box the table holds, its impulse moves by the same
+/// amount every pass, and [`OUTER`] is what bounds it (crate README, Limits, session 12: made
+/// consistent, the solve converges to an answer the wall box fails).
 fn sweep(
     bodies: &mut [BodyState],
     rows: &[Scalar],
@@ -541,12 +546,25 @@ fn sweep(
     Some(())
 }
 
-/// What the LU passes of one solve share: the rows' mutual mobility, and the last
-/// factorisation with the scalar rows it is of.
+/// What the LU passes of one solve share: the rows' mutual mobility, the last factorisation
+/// with the scalar rows it is of, and the passes' buffers (a pass allocates nothing unless its
+/// set of rows changes).
+#[derive(Default)]
 struct LuCache {
     mob: DMatrix<f64>,
     rows: Vec<usize>,
     lu: Option<LU<f64, Dyn, Dyn>>,
+    /// The LU rows' velocities before their impulses.
+    v0: Vec<f64>,
+    /// The system of the LU rows and its right-hand side.
+    a: DMatrix<f64>,
+    b: Vec<f64>,
+    /// The solution (0 for the rows that do not act).
+    x: Vec<f64>,
+    /// The acting rows (positions in the LU's rows).
+    idx: Vec<usize>,
+    /// The right-hand side of the acting rows, then their solution.
+    rhs: DVector<f64>,
 }
 
 /// The normal row a row's friction belongs to (itself for a normal).
@@ -575,56 +593,78 @@ fn lu_pass(
     for &i in lu {
         rows[i].apply(bodies, -j[i]);
     }
-    let v0: Vec<f64> = lu.iter().map(|&i| rows[i].velocity(bodies)).collect();
-    let w = DMatrix::from_fn(n, n, |r, c| cache.mob[(lu[r], lu[c])]);
-    let (mut a, mut b) = (DMatrix::<f64>::zeros(n, n), DVector::<f64>::zeros(n));
+    let LuCache {
+        mob,
+        rows: lu_rows,
+        lu: factor,
+        v0,
+        a,
+        b,
+        x,
+        idx,
+        rhs,
+    } = cache;
+    v0.clear();
+    v0.extend(lu.iter().map(|&i| rows[i].velocity(bodies)));
+    let w = |r: usize, c: usize| mob[(lu[r], lu[c])];
+    a.resize_mut(n, n, 0.0);
+    a.fill(0.0);
+    b.clear();
+    b.resize(n, 0.0);
     for (r, &i) in lu.iter().enumerate() {
         match rows[i].kind {
             Kind::SoftNormal { force, d } => {
                 for c in 0..n {
-                    a[(r, c)] = h * d * w[(r, c)];
+                    a[(r, c)] = h * d * w(r, c);
                 }
                 a[(r, r)] += 1.0;
                 b[r] = h * (force - d * v0[r]);
             }
-            _ if w[(r, r)] == 0.0 => {}
+            _ if w(r, r) == 0.0 => {}
             _ => {
                 for c in 0..n {
-                    a[(r, c)] = w[(r, c)];
+                    a[(r, c)] = w(r, c);
                 }
-                a[(r, r)] += rows[i].compliance * w[(r, r)];
+                a[(r, r)] += rows[i].compliance * w(r, r);
                 // The compliance acts on the change from rapier's own part (`prox`): among
                 // redundant rows it picks the answer closest to what rapier makes anyway.
-                b[r] = rows[i].target - v0[r] + rows[i].compliance * w[(r, r)] * rows[i].prox;
+                b[r] = rows[i].target - v0[r] + rows[i].compliance * w(r, r) * rows[i].prox;
             }
         }
     }
-    let mut x = vec![0.0; n];
+    x.clear();
+    x.resize(n, 0.0);
     for _ in 0..(2 * n + 2) {
         // A row acts if it is an active normal (a hard one with some mobility), or the
         // friction of one (with some mobility; the normals are all in the LU).
         let acts = |r: usize| {
             let i = lu[r];
             let soft = matches!(rows[i].kind, Kind::SoftNormal { .. });
-            (soft || w[(r, r)] != 0.0) && state[normal_of(rows, i)] == State::Active
+            (soft || w(r, r) != 0.0) && state[normal_of(rows, i)] == State::Active
         };
-        let idx: Vec<usize> = (0..n).filter(|&r| acts(r)).collect();
+        idx.clear();
+        idx.extend((0..n).filter(|&r| acts(r)));
         x.iter_mut().for_each(|v| *v = 0.0);
         if !idx.is_empty() {
             // The matrix of a set of rows is the same in every pass of a solve (the mobility
             // and the rows' coefficients are fixed; only the right-hand side changes): its
             // factorisation is reused while the set stays (the same arithmetic, so the same
             // bits).
-            if !cache.rows.iter().copied().eq(idx.iter().map(|&r| lu[r])) || cache.lu.is_none() {
+            if !lu_rows.iter().copied().eq(idx.iter().map(|&r| lu[r])) || factor.is_none() {
                 let sub = DMatrix::from_fn(idx.len(), idx.len(), |p, q| a[(idx[p], idx[q])]);
-                cache.rows.clear();
-                cache.rows.extend(idx.iter().map(|&r| lu[r]));
-                cache.lu = Some(sub.lu());
+                lu_rows.clear();
+                lu_rows.extend(idx.iter().map(|&r| lu[r]));
+                *factor = Some(sub.lu());
             }
-            let rhs = DVector::from_fn(idx.len(), |p, _| b[idx[p]]);
-            let sol = cache.lu.as_ref()?.solve(&rhs)?;
+            rhs.resize_vertically_mut(idx.len(), 0.0);
             for (p, &r) in idx.iter().enumerate() {
-                x[r] = sol[p];
+                rhs[p] = b[r];
+            }
+            if !factor.as_ref()?.solve_mut(rhs) {
+                return None;
+            }
+            for (p, &r) in idx.iter().enumerate() {
+                x[r] = rhs[p];
             }
         }
         let mut changed = false;
@@ -636,7 +676,7 @@ fn lu_pass(
             if state[i] == State::Active && x[r] < 0.0 {
                 state[i] = State::Fixed(0.0);
                 changed = true;
-            } else if state[i] != State::Active && w[(r, r)] != 0.0 {
+            } else if state[i] != State::Active && w(r, r) != 0.0 {
                 let resid = b[r] - (0..n).map(|c| a[(r, c)] * x[c]).sum::<f64>();
                 if resid > 1e-12 * b[r].abs().max(1e-300) && resid > 0.0 {
                     state[i] = State::Active;

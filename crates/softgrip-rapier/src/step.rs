@@ -242,6 +242,10 @@ impl Step<'_> {
             h,
             h_drift,
             passes: passes as usize,
+            sweeps: self
+                .physics
+                .integration_parameters
+                .num_internal_pgs_iterations,
             gravity: to_f64(self.physics.gravity),
         };
         for (gi, g) in geoms.iter().enumerate() {
@@ -334,6 +338,7 @@ impl Step<'_> {
             h,
             h_drift,
             passes: w.integration_parameters.num_solver_iterations.max(1),
+            sweeps: w.integration_parameters.num_internal_pgs_iterations,
             gravity: to_f64(w.gravity),
         };
         let mut next = 0;

@@ -1,6 +1,8 @@
 //! [`TactileImage`]: the taxel pressures of a fingertip's pad after a step, and the integral
 //! of a contact's Hertz-shaped pressure over each taxel (see `tactile` for the geometry).
 
+use std::sync::OnceLock;
+
 use rapier3d::prelude::{ColliderHandle, ColliderSet};
 
 use crate::contacts::SoftContacts;
@@ -323,59 +325,102 @@ pub(crate) fn cap_integral(a: f64, x0: f64, x1: f64, y0: f64, y1: f64) -> f64 {
     total
 }
 
+/// A fingertip's pad between steps: its image, computed on first read after a step (the
+/// recorder reads every `every_n_steps`-th step, a sweep none: the images were 15 % of a
+/// default grasp step when computed on every step). What it is computed from (the step's
+/// readout and the fingertip's orientation at the step's end) does not change until the next
+/// step, so a deferred image is the one an eager one was, bit for bit.
+#[derive(Debug, Clone)]
+pub(crate) struct TactileSlot {
+    grid: TactileGrid,
+    /// The fingertip collider's orientation at the end of the last step, `[x, y, z, w]`
+    /// (`None`: before the first step, or its collider is gone: a blank image).
+    rotation: Option<[f64; 4]>,
+    /// The image of the last step, once read (a fresh buffer per read: a 16 x 16 pad is 2 kB,
+    /// against ~50 us to lay a contact on it).
+    image: OnceLock<TactileImage>,
+}
+
+impl TactileSlot {
+    pub(crate) fn new(grid: TactileGrid) -> Self {
+        Self {
+            grid,
+            rotation: None,
+            image: OnceLock::new(),
+        }
+    }
+}
+
 impl SoftContacts {
     /// The tactile image of the fingertip `collider` after the last step (`None` unless the
-    /// fingertip was built with a pad, [`SoftFingertipBuilder::tactile`]).
+    /// fingertip was built with a pad, [`SoftFingertipBuilder::tactile`]). Computed on the
+    /// first read after a step.
     ///
     /// [`SoftFingertipBuilder::tactile`]: crate::SoftFingertipBuilder::tactile
     pub fn tactile_image(&self, collider: ColliderHandle) -> Option<&TactileImage> {
         self.tactile
             .iter()
             .find(|(h, _)| *h == collider)
-            .map(|(_, i)| i)
+            .map(|(h, slot)| self.image_of(*h, slot))
     }
 
-    /// Every tactile image, in the fingertips' handle order.
+    /// Every tactile image, in the fingertips' handle order (each computed on its first read
+    /// after a step).
     pub fn tactile_images(&self) -> impl Iterator<Item = (ColliderHandle, &TactileImage)> {
-        self.tactile.iter().map(|(h, i)| (*h, i))
+        self.tactile
+            .iter()
+            .map(|(h, slot)| (*h, self.image_of(*h, slot)))
     }
 
-    /// Recomputes the images of the fingertips with a pad from the readout (after the step's
-    /// readout is assembled; read-only for the physics). Each contact is laid on the pad of
-    /// its fingertip (a soft-soft pair has a readout row for each of its two fingertips).
+    /// The image of `slot` (fingertip `handle`), computing it if not read since the step.
+    fn image_of<'a>(&'a self, handle: ColliderHandle, slot: &'a TactileSlot) -> &'a TactileImage {
+        slot.image.get_or_init(|| {
+            let mut image = TactileImage::new(slot.grid);
+            if let Some(q) = slot.rotation {
+                self.lay_contacts(handle, q, &mut image);
+            }
+            image
+        })
+    }
+
+    /// Marks the images stale after a step (from the readout; read-only for the physics):
+    /// keeps each fingertip's orientation for the deferred image (`image_of`).
     pub(crate) fn update_tactile(&mut self, colliders: &ColliderSet) {
-        for (handle, image) in &mut self.tactile {
-            image.clear();
-            let Some(pose) = colliders.get(*handle).map(|c| *c.position()) else {
+        for (handle, slot) in &mut self.tactile {
+            slot.image.take();
+            slot.rotation = colliders.get(*handle).map(|c| {
+                let q = c.position().rotation;
+                [q.x as f64, q.y as f64, q.z as f64, q.w as f64]
+            });
+        }
+    }
+
+    /// Lays each contact of fingertip `handle` (orientation `q`) on its pad's `image`. A
+    /// soft-soft pair has a readout row for each of its two fingertips, so every pad takes
+    /// only the rows of its own fingertip.
+    fn lay_contacts(&self, handle: ColliderHandle, q: [f64; 4], image: &mut TactileImage) {
+        for c in self.contacts.iter().filter(|c| c.fingertip == handle) {
+            // The patch's direction from the fingertip's centre: against the normal
+            // (other -> fingertip).
+            let local = rotate_inverse(q, c.normal.map(|n| -n));
+            let Some(center) = image.grid.coordinates(local) else {
                 continue;
             };
-            let q = pose.rotation;
-            let q = [q.x as f64, q.y as f64, q.z as f64, q.w as f64];
-            // A soft-soft pair is in the readout once per fingertip (each with its own normal),
-            // so every pad takes only the rows of its own fingertip.
-            for c in self.contacts.iter().filter(|c| c.fingertip == *handle) {
-                // The patch's direction from the fingertip's centre: against the normal
-                // (other -> fingertip).
-                let local = rotate_inverse(q, c.normal.map(|n| -n));
-                let Some(center) = image.grid.coordinates(local) else {
-                    continue;
-                };
-                let patch = c.patch();
-                if patch.is_disc() {
-                    image.add_disc(center, patch.radius, c.normal_force);
-                    continue;
-                }
-                // The first semi-axis in pad coordinates: the image of a short step along it
-                // from the contact's point on the sphere.
-                let d = rotate_inverse(q, c.patch_direction);
-                let n = crate::tactile::norm(local);
-                let step: [f64; 3] = std::array::from_fn(|i| local[i] / n + 1e-6 * d[i]);
-                let Some(ahead) = image.grid.coordinates(step) else {
-                    continue;
-                };
-                let axis = [ahead[0] - center[0], ahead[1] - center[1]];
-                image.add_ellipse(center, [patch.radius, patch.radius2], axis, c.normal_force);
+            let patch = c.patch();
+            if patch.is_disc() {
+                image.add_disc(center, patch.radius, c.normal_force);
+                continue;
             }
+            // The first semi-axis in pad coordinates: the image of a short step along it
+            // from the contact's point on the sphere.
+            let d = rotate_inverse(q, c.patch_direction);
+            let n = crate::tactile::norm(local);
+            let step: [f64; 3] = std::array::from_fn(|i| local[i] / n + 1e-6 * d[i]);
+            let Some(ahead) = image.grid.coordinates(step) else {
+                continue;
+            };
+            let axis = [ahead[0] - center[0], ahead[1] - center[1]];
+            image.add_ellipse(center, [patch.radius, patch.radius2], axis, c.normal_force);
         }
     }
 }

@@ -183,13 +183,29 @@ fn assert_held(m: &Held, lifted: bool) {
 }
 
 /// Two hands, four pads (+-x, +-z) at 5 N each, lift a 200 g box 5 cm and hold it 2 s.
-/// Still and without drift (2 f32 steps of the pose a step: 1.0 um/s; 9 nm over 2 s), at
-/// the grip (0.18 %), but the +-z pads are 1.1 % off the law at their compression, steadily
-/// over the hold (5.009 N where the law at the readout's compression says 5.064 N; the +-x
-/// pads 0.05 %): not understood; the box is held by the four pads alone, a group of four
-/// rows solved by the dense LU with friction sweeps alternated (`solve.rs`).
+/// Still and without drift (9 nm over 2 s), at the grip (0.18 %), but the +-z pads are 1.1 %
+/// off the law at their compression, steadily over the hold (5.009 N where the law at the
+/// readout's compression says 5.064 N; the +-x pads 0.05 %).
+///
+/// Why (session 12): the lifted box is held by the four pads alone, one group of four rows
+/// solved by `solve.rs`'s `solve_group`: 3 outer passes of (the normals by the dense LU, with
+/// the friction impulses of the previous pass fixed; then 4 friction sweeps), and the last
+/// friction sweeps move the box after its normals were solved. The box settled 9.5 um off the
+/// jaws' centre along z while closing on the ground (held there by the +-x pads' friction
+/// along z), so the law asks 5.064 / 4.936 N of the +z / -z pads; the +-x pads' friction
+/// along z must carry the difference (0.128 N), but the alternation passes it on slowly: after
+/// 3 passes they carry 0.018 N and the z pads read 5.009 / 4.991 N, not the law at their
+/// compressions. Measured with the outer passes raised (a diagnostic build, not committed):
+/// 3 / 6 / 10 / 30 passes, worst `|F / F_law - 1|` 1.1 / 0.96 / 0.79 / 0.30 %, worst
+/// `|F / GRIP - 1|` 0.18 / 0.33 / 0.50 / 0.99 %: with the solve converged the pads follow the
+/// law and then cannot all be at the grip (the box is off centre, the +z pad 5.049 N, the -z
+/// 4.951 N), so this test's grip bound (0.5 %) asks for what the physics does not give; its
+/// speed bound is also at the f32 resolution of the pose (1.04e-6 m/s step to step at 7.5 cm:
+/// two steps of the pose's last bit, with a turn of one). The cure is the group's solve
+/// converged (a convergence-based stop of its outer passes, `solve.rs`, issue 23 item 1/3),
+/// not in this test.
 #[test]
-#[ignore = "the +-z pads read 1.1 % off the law (< 0.5 % asked), issue 23 item 4"]
+#[ignore = "the +-z pads read 1.1 % off the law (< 0.5 % asked): solve_group's 3 outer passes do not converge (see the doc comment), issue 23 item 4"]
 fn two_hands_lift_and_hold_one_box() {
     let mut h = hands(0.2, &[Vector::X, -Vector::X, Vector::Z, -Vector::Z]);
     let m = h.run(0.05, 2.0);

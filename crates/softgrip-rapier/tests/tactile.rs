@@ -310,3 +310,35 @@ fn a_cylinder_shows_an_elliptical_patch_along_its_axis() {
     println!("cylinder patch {patch:?}: image moments v/u {ratio:.4}, (a/b)^2 {want:.4}");
     assert!((ratio / want - 1.0).abs() < 0.03, "{ratio} vs {want}");
 }
+
+/// The images are laid on their first read after a step: a world whose images are read only
+/// every 20th step shows at those steps, bit for bit, what a world read after every step
+/// shows (the readout and the pad's orientation of *that* step, not of the last read), and
+/// the patch has moved between the reads (the comparison can fail).
+#[test]
+fn an_image_read_late_is_the_image_of_the_last_step() {
+    let (mut every, body_e, co_e) = pressed(down_pad(), 0.05 * R);
+    let (mut seldom, body_s, co_s) = pressed(down_pad(), 0.05 * R);
+    let mut previous: Option<Vec<f64>> = None;
+    for i in 0..=60 {
+        let angle = 0.005 * i as f64;
+        turn(&mut every, body_e, angle);
+        turn(&mut seldom, body_s, angle);
+        every.step();
+        seldom.step();
+        let eager = every.soft.tactile_image(co_e).expect("a pad").clone();
+        if i % 20 != 0 {
+            continue;
+        }
+        let late = seldom.soft.tactile_image(co_s).expect("a pad");
+        assert_eq!(late, &eager, "step {i}");
+        // A second read of the same step is the same image.
+        assert_eq!(
+            seldom.soft.tactile_images().next().map(|(_, i)| i),
+            Some(&eager)
+        );
+        if let Some(p) = previous.replace(eager.pressure().to_vec()) {
+            assert_ne!(p, eager.pressure(), "step {i}: the patch did not move");
+        }
+    }
+}

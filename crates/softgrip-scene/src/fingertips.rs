@@ -106,8 +106,15 @@ fn carrier(
             let (robot, name) = link
                 .split_once('/')
                 .ok_or_else(|| c.name(f("link"), format!("`{link}`: expected `<robot>/<link>`")))?;
-            let r = (robots.iter().position(|r| r.name() == robot))
-                .ok_or_else(|| c.name(f("link"), format!("no robot is named `{robot}`")))?;
+            let r = (robots.iter().position(|r| r.name() == robot)).ok_or_else(|| {
+                c.name(
+                    f("link"),
+                    format!(
+                        "no robot is named `{robot}` (robots: {})",
+                        crate::control::robot_names(robots)
+                    ),
+                )
+            })?;
             let l = robots[r].link_index(name).ok_or_else(|| {
                 c.name(
                     f("link"),

@@ -200,11 +200,13 @@ fn three_finger_hand_grasps_a_cylinder() {
     );
 }
 
-/// `J^T F` of joint `j` of the scene's robot: the generalised force along the joint's axis of
-/// the loads on the links beyond it (every pad's contact force and torsional moment, and the
-/// links' weights), plus `multiplier` times that of each joint mimicking it (the mimic's load
-/// reaches the driven joint's motor through the coupling) \[N or N m\].
-fn joint_load(run: &PlainRun, robot: &softgrip_scene::robot::Robot, j: usize) -> f64 {
+/// `J^T F` of joint `j` of the scene's robot, written out here from the contacts and the links
+/// (independently of `softgrip_scene::robot::joint_load`): the generalised force along the
+/// joint's axis of the loads on the links beyond it (every pad's contact force and torsional
+/// moment, and the links' weights), plus `multiplier` times that of each joint mimicking it
+/// when `mimics` (the mimic's load reaches the driven joint's motor through the coupling)
+/// \[N or N m\].
+fn jt_f(run: &PlainRun, robot: &softgrip_scene::robot::Robot, j: usize, mimics: bool) -> f64 {
     use softgrip_scene::robot::{JointKind, RobotJointHandle};
     let h = &run.handles.robots[0].1;
     let p = &run.world.physics;
@@ -277,8 +279,8 @@ fn joint_load(run: &PlainRun, robot: &softgrip_scene::robot::Robot, j: usize) ->
         }
     }
     for (m, o) in robot.joints().iter().enumerate() {
-        if let Some(mimic) = o.mimic.filter(|mm| mm.joint == j) {
-            load += mimic.multiplier * joint_load(run, robot, m);
+        if let Some(mimic) = o.mimic.filter(|mm| mm.joint == j && mimics) {
+            load += mimic.multiplier * jt_f(run, robot, m, true);
         }
     }
     load
@@ -287,8 +289,11 @@ fn joint_load(run: &PlainRun, robot: &softgrip_scene::robot::Robot, j: usize) ->
 /// Issue 25, item 8: the URDF gripper's 5 N grasp of its 200 g box; at the end of the hold each
 /// finger joint's effort equals `J^T F`, the joint-space projection of the pads' forces, within
 /// 1 %. The driven `finger_joint`'s motor holds both pads (the right finger is its mimic); the
-/// mimic joint has no motor: its load is carried through the coupling. Prints the root
-/// README's table (`cargo test -p softgrip-scene --test hand_scenes -- efforts --nocapture`).
+/// mimic joint has no motor: its effort is the load its coupling carries
+/// (`robot::joint_state_loaded`), which must also be the share of the driven joint's motor
+/// effort left after its own finger's load, `(tau_motor + J^T F_own) / multiplier`, within 1 %:
+/// the force the coupling really transmitted. Prints the root README's table (`cargo test -p
+/// softgrip-scene --test hand_scenes -- efforts --nocapture`).
 #[test]
 fn gripper_joint_efforts_equal_jt_f() {
     let path = repo().join("scenes/robots/parallel_gripper_box.toml");
@@ -305,8 +310,13 @@ fn gripper_joint_efforts_equal_jt_f() {
                 .filter(|&j| robot.joints()[j].kind.moves())
                 .map(|j| {
                     let s =
-                        softgrip_scene::robot::joint_state(&robot, &run.world.physics, &h, j, dt);
-                    (j, s, joint_load(&run, &robot, j))
+                        softgrip_scene::robot::joint_state_loaded(&robot, &run.world, &h, j, dt);
+                    (
+                        j,
+                        s,
+                        jt_f(&run, &robot, j, true),
+                        jt_f(&run, &robot, j, false),
+                    )
                 })
                 .collect();
             let pads: Vec<f64> = run
@@ -323,35 +333,53 @@ fn gripper_joint_efforts_equal_jt_f() {
     println!("pads' normal forces at the end of the hold: {pads:.4?} N");
     println!("| joint | position [mm] | effort [N] | J^T F [N] | |effort + J^T F| / |J^T F| |");
     println!("|---|---:|---:|---:|---:|");
-    for (j, s, load) in &rows {
+    for (j, s, load, _) in &rows {
         let joint = &robot.joints()[*j];
         let rel = (s.effort + load).abs() / load.abs();
-        if joint.mimic.is_some() {
-            println!(
-                "| `{}` (mimic) | {:.3} | (no motor: coupling) | {load:.4} | carried by the driven joint |",
-                joint.name,
-                s.position * 1e3
-            );
+        let kind = if joint.mimic.is_some() {
+            " (mimic: its coupling's load)"
         } else {
-            println!(
-                "| `{}` | {:.3} | {:.4} | {load:.4} | {:.2e} |",
-                joint.name,
-                s.position * 1e3,
-                s.effort,
-                rel
-            );
-            assert!(
-                rel < 0.01,
-                "{}: effort {} vs J^T F {load}",
-                joint.name,
-                s.effort
-            );
-            assert!(
-                load.abs() > 9.0,
-                "{}: J^T F {load} N for two 5 N pads",
-                joint.name
-            );
-        }
+            ""
+        };
+        println!(
+            "| `{}`{kind} | {:.3} | {:.4} | {load:.4} | {:.2e} |",
+            joint.name,
+            s.position * 1e3,
+            s.effort,
+            rel
+        );
+        assert!(
+            rel < 0.01,
+            "{}: effort {} vs J^T F {load}",
+            joint.name,
+            s.effort
+        );
+        assert!(
+            load.abs() > 4.5,
+            "{}: J^T F {load} N for 5 N pads",
+            joint.name
+        );
+    }
+    // The coupling's share of the motor: the driven joint's motor effort minus its own finger's
+    // load, over the multiplier, is what the mimic joint reports.
+    for (j, s, _, _) in &rows {
+        let Some(mimic) = robot.joints()[*j].mimic else {
+            continue;
+        };
+        let (_, leader, _, own) = rows.iter().find(|r| r.0 == mimic.joint).unwrap();
+        let share = (leader.effort + own) / mimic.multiplier;
+        let rel = (s.effort - share).abs() / share.abs();
+        println!(
+            "`{}`: effort {:.4} N, the coupling's share of `{}`'s motor {share:.4} N ({rel:.2e})",
+            robot.joints()[*j].name,
+            s.effort,
+            robot.joints()[mimic.joint].name
+        );
+        assert!(
+            rel < 0.01,
+            "mimic effort {} vs the motor's share {share}",
+            s.effort
+        );
     }
 }
 

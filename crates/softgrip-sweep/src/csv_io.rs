@@ -5,7 +5,7 @@ use std::io::Write;
 use std::path::Path;
 
 use crate::error::SweepError;
-use crate::table::{OUTCOME_COLUMNS, ResultsTable, TrialRow};
+use crate::table::{OutcomeLayout, ResultsTable, TrialRow};
 use crate::trial::Outcome;
 use crate::value::{Value, ValueKind};
 
@@ -31,11 +31,12 @@ impl ResultsTable {
                     f(o.peak_force),
                     f(o.peak_x),
                     o.validity_excursions.to_string(),
+                    f(o.hold_force),
                     f(r.wall_time),
                     String::new(),
                 ]),
                 Err(e) => {
-                    cells.extend(std::iter::repeat_n(String::new(), 6));
+                    cells.extend(std::iter::repeat_n(String::new(), 7));
                     cells.extend([f(r.wall_time), e.clone()]);
                 }
             }
@@ -77,17 +78,8 @@ impl ResultsTable {
             .iter()
             .map(str::to_string)
             .collect();
-        let n = header.len();
-        if n < 1 + OUTCOME_COLUMNS.len()
-            || header[0] != "trial"
-            || header[n - OUTCOME_COLUMNS.len()..] != OUTCOME_COLUMNS
-        {
-            return Err(format!(
-                "not a sweep results table: the header must be `trial`, the varied fields, {}",
-                OUTCOME_COLUMNS.join(", ")
-            ));
-        }
-        let fields = header[1..n - OUTCOME_COLUMNS.len()].to_vec();
+        let layout = OutcomeLayout::find(&header).ok_or_else(OutcomeLayout::expected)?;
+        let fields = header[1..layout.start].to_vec();
         let records: Vec<csv::StringRecord> = r
             .records()
             .collect::<Result<_, _>>()
@@ -112,23 +104,29 @@ impl ResultsTable {
             let values = (0..fields.len())
                 .map(|k| cell_value(kinds[k], &rec[1 + k]))
                 .collect();
-            let o = n - OUTCOME_COLUMNS.len();
-            let wall_time = num(o + 6)?;
-            let outcome = if rec[o + 7].is_empty() {
+            let col = |name: &str| layout.column(name).expect("invariant: an outcome column");
+            let wall_time = num(col("wall_time"))?;
+            let error = &rec[col("error")];
+            let outcome = if error.is_empty() {
+                let held = col("held");
                 Ok(Outcome {
-                    held: match &rec[o] {
+                    held: match &rec[held] {
                         "true" => true,
                         "false" => false,
-                        other => return Err(at(o, &format!("`{other}` is not true or false"))),
+                        other => return Err(at(held, &format!("`{other}` is not true or false"))),
                     },
-                    slips: int(o + 1)? as u32,
-                    slip_distance: num(o + 2)?,
-                    peak_force: num(o + 3)?,
-                    peak_x: num(o + 4)?,
-                    validity_excursions: int(o + 5)? as u32,
+                    slips: int(col("slips"))? as u32,
+                    slip_distance: num(col("slip_distance"))?,
+                    peak_force: num(col("peak_force"))?,
+                    peak_x: num(col("peak_x"))?,
+                    validity_excursions: int(col("validity_excursions"))? as u32,
+                    hold_force: match layout.column("hold_force") {
+                        Some(k) => num(k)?,
+                        None => f64::NAN,
+                    },
                 })
             } else {
-                Err(rec[o + 7].to_string())
+                Err(error.to_string())
             };
             rows.push(TrialRow {
                 trial,

@@ -1,8 +1,8 @@
 //! The results table as Parquet, through the `parquet` crate's column writer and row reader
 //! (no arrow): one row group, uncompressed (a sweep's table is small; pyarrow, polars and
 //! DuckDB read it). `trial` INT64, a varied field DOUBLE, INT64, BOOLEAN or STRING, `held`
-//! BOOLEAN, `slips` and `validity_excursions` INT64, `slip_distance`, `peak_force`, `peak_x`
-//! and `wall_time` DOUBLE, `error` STRING; the outcomes and `error` are optional (null in an
+//! BOOLEAN, `slips` and `validity_excursions` INT64, `slip_distance`, `peak_force`, `peak_x`,
+//! `hold_force` and `wall_time` DOUBLE, `error` STRING; the outcomes and `error` are optional (null in an
 //! error row and in an ok row respectively).
 
 use std::fs::File;
@@ -19,7 +19,7 @@ use parquet::schema::types::Type;
 
 use crate::csv_io::write_whole;
 use crate::error::SweepError;
-use crate::table::{OUTCOME_COLUMNS, ResultsTable, TrialRow};
+use crate::table::{OutcomeLayout, ResultsTable, TrialRow};
 use crate::trial::Outcome;
 use crate::value::{Value, ValueKind};
 
@@ -127,6 +127,7 @@ impl ResultsTable {
             "validity_excursions",
             longs(|o| o.validity_excursions as i64),
         ));
+        cols.push(opt("hold_force", doubles(|o| o.hold_force)));
         cols.push(required(
             "wall_time",
             Cells::Double(rows.iter().map(|r| r.wall_time).collect()),
@@ -215,16 +216,9 @@ impl ResultsTable {
         let names: Vec<String> = (schema.columns().iter())
             .map(|c| c.name().to_string())
             .collect();
-        let n = names.len();
-        let outcome_start = n.checked_sub(OUTCOME_COLUMNS.len()).filter(|&o| o >= 1);
-        let Some(o) =
-            outcome_start.filter(|&o| names[0] == "trial" && names[o..] == OUTCOME_COLUMNS)
-        else {
-            return Err(bad(format!(
-                "not a sweep results table: the columns must be `trial`, the varied fields, {}",
-                OUTCOME_COLUMNS.join(", ")
-            )));
-        };
+        let layout = OutcomeLayout::find(&names).ok_or_else(|| bad(OutcomeLayout::expected()))?;
+        let o = layout.start;
+        let col = |name: &str| layout.column(name).expect("invariant: an outcome column");
         let fields = names[1..o].to_vec();
         let kinds = (schema.columns()[1..o].iter())
             .map(|c| match c.physical_type() {
@@ -258,21 +252,26 @@ impl ResultsTable {
                     other => Err(at(k, &format!("unexpected value {other}"))),
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let wall_time = double(o + 6)?;
-            let outcome = match cells[o + 7] {
+            let wall_time = double(col("wall_time"))?;
+            let error = col("error");
+            let outcome = match cells[error] {
                 Field::Str(e) => Err(e.clone()),
                 Field::Null => Ok(Outcome {
-                    held: match cells[o] {
+                    held: match cells[col("held")] {
                         Field::Bool(v) => *v,
                         other => return Err(at(o, &format!("{other} is not a BOOLEAN"))),
                     },
-                    slips: long(o + 1)? as u32,
-                    slip_distance: double(o + 2)?,
-                    peak_force: double(o + 3)?,
-                    peak_x: double(o + 4)?,
-                    validity_excursions: long(o + 5)? as u32,
+                    slips: long(col("slips"))? as u32,
+                    slip_distance: double(col("slip_distance"))?,
+                    peak_force: double(col("peak_force"))?,
+                    peak_x: double(col("peak_x"))?,
+                    validity_excursions: long(col("validity_excursions"))? as u32,
+                    hold_force: match layout.column("hold_force") {
+                        Some(k) => double(k)?,
+                        None => f64::NAN,
+                    },
                 }),
-                other => return Err(at(o + 7, &format!("{other} is not a STRING"))),
+                other => return Err(at(error, &format!("{other} is not a STRING"))),
             };
             rows.push(TrialRow {
                 trial,

@@ -1,15 +1,33 @@
 //! [`FieldPath`]: a scene field by its path, `fingertip[0].material.youngs_modulus`,
 //! `body[1].shape[0].density`, `gripper.squeeze.depth`: the same paths the scene's own errors
 //! name ([`SceneError::field`](softgrip_scene::SceneError::field)), set in the scene's TOML
-//! tree before the scene is parsed and checked.
+//! tree before the scene is parsed and checked. An entry of an array of tables is picked by its
+//! position (`controller[0]`) or by its `name` (`controller[grasp].force`,
+//! `robot[gripper].initial.finger_joint`).
 
 use std::fmt;
+
+/// Which entry of an array a path segment picks.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Index {
+    /// By position, from 0.
+    At(usize),
+    /// The table whose `name` is this.
+    Named(String),
+}
 
 /// One step of a path: a key, optionally followed by an index into the array it names.
 #[derive(Debug, Clone, PartialEq, Eq)]
 struct Segment {
     key: String,
-    index: Option<usize>,
+    index: Option<Index>,
+}
+
+/// Whether `s` is a key or a name: letters, digits, `_` or `-`, not empty.
+fn is_word(s: &str) -> bool {
+    !s.is_empty()
+        && s.chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
 }
 
 /// A checked field path: keys separated by `.`, each key optionally indexed (`body[1]`).
@@ -30,20 +48,26 @@ impl FieldPath {
             let (key, index) = match part.split_once('[') {
                 None => (part, None),
                 Some((key, rest)) => {
-                    let digits = rest.strip_suffix(']').ok_or_else(|| {
-                        format!("`{part}`: an index is written `key[N]`, ending the segment")
+                    let inner = rest.strip_suffix(']').ok_or_else(|| {
+                        format!(
+                            "`{part}`: an index is written `key[N]` or `key[name]`, ending the segment"
+                        )
                     })?;
-                    let index: usize = digits
-                        .parse()
-                        .map_err(|_| format!("`{part}`: `{digits}` is not an index (0, 1, ...)"))?;
+                    let index = if inner.bytes().all(|b| b.is_ascii_digit()) && !inner.is_empty() {
+                        Index::At(inner.parse().map_err(|_| {
+                            format!("`{part}`: `{inner}` is not an index (0, 1, ...)")
+                        })?)
+                    } else if is_word(inner) {
+                        Index::Named(inner.to_string())
+                    } else {
+                        return Err(format!(
+                            "`{part}`: `{inner}` is not an index (0, 1, ...) nor a name (letters, digits, `_` or `-`)"
+                        ));
+                    };
                     (key, Some(index))
                 }
             };
-            let valid = !key.is_empty()
-                && key
-                    .chars()
-                    .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-');
-            if !valid {
+            if !is_word(key) {
                 return Err(format!(
                     "`{part}`: a key is letters, digits, `_` or `-` (no quotes, no spaces)"
                 ));
@@ -80,19 +104,13 @@ impl FieldPath {
             let entry = table.get_mut(&seg.key).ok_or_else(|| {
                 format!("`{done}` is not in the base scene (only the last key may be missing)")
             })?;
-            let entry = match seg.index {
+            let entry = match &seg.index {
                 None => entry,
-                Some(i) => {
+                Some(index) => {
                     let toml::Value::Array(items) = entry else {
                         return Err(format!("`{}` is not an array", self.key_prefix(k)));
                     };
-                    let len = items.len();
-                    items.get_mut(i).ok_or_else(|| {
-                        format!(
-                            "`{done}`: index {i} is past the end of `{}`, which has {len} entries",
-                            self.key_prefix(k)
-                        )
-                    })?
+                    pick(items, index, &done, &self.key_prefix(k))?
                 }
             };
             if k == last {
@@ -127,10 +145,46 @@ impl FieldPath {
     }
 }
 
+/// The entry of `items` (the array `array`) that `index` picks; `done` is the path so far.
+fn pick<'a>(
+    items: &'a mut [toml::Value],
+    index: &Index,
+    done: &str,
+    array: &str,
+) -> Result<&'a mut toml::Value, String> {
+    let len = items.len();
+    match index {
+        Index::At(i) => items.get_mut(*i).ok_or_else(|| {
+            format!("`{done}`: index {i} is past the end of `{array}`, which has {len} entries")
+        }),
+        Index::Named(name) => {
+            fn name_of(v: &toml::Value) -> Option<&str> {
+                v.get("name").and_then(toml::Value::as_str)
+            }
+            let names: Vec<String> = items
+                .iter()
+                .filter_map(|v| name_of(v).map(|n| format!("`{n}`")))
+                .collect();
+            let found = items.iter().position(|v| name_of(v) == Some(name.as_str()));
+            match found {
+                Some(i) => Ok(&mut items[i]),
+                None if names.is_empty() => Err(format!(
+                    "`{done}`: no entry of `{array}` is named `{name}` (its {len} entries have no names: pick one by its position, `{array}[0]`)"
+                )),
+                None => Err(format!(
+                    "`{done}`: no entry of `{array}` is named `{name}` (names: {})",
+                    names.join(", ")
+                )),
+            }
+        }
+    }
+}
+
 impl fmt::Display for Segment {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.index {
-            Some(i) => write!(f, "{}[{i}]", self.key),
+        match &self.index {
+            Some(Index::At(i)) => write!(f, "{}[{i}]", self.key),
+            Some(Index::Named(n)) => write!(f, "{}[{n}]", self.key),
             None => write!(f, "{}", self.key),
         }
     }
@@ -166,8 +220,9 @@ mod tests {
         set(&mut t, "body[1].shape[0].position[2]", 7.0).expect("exists");
         set(&mut t, "gripper.squeeze.depth", 0.003).expect("exists");
         set(&mut t, "gripper.squeeze.settle", 0.5).expect("a missing last key is added");
+        set(&mut t, "body[b].shape[0].density", 6.0).expect("picked by name");
         let shape = &t["body"][1]["shape"][0];
-        assert_eq!(shape["density"].as_float(), Some(5.0));
+        assert_eq!(shape["density"].as_float(), Some(6.0));
         assert_eq!(shape["position"][2].as_float(), Some(7.0));
         assert_eq!(t["gripper"]["squeeze"]["depth"].as_float(), Some(0.003));
         assert_eq!(t["gripper"]["squeeze"]["settle"].as_float(), Some(0.5));
@@ -194,7 +249,12 @@ mod tests {
             err("body[0].name.x"),
             "`body[0].name` is a value, not a table"
         );
-        assert_eq!(err("body[x]"), "`body[x]`: `x` is not an index (0, 1, ...)");
+        assert_eq!(
+            err("body[x]"),
+            "`body[x]`: no entry of `body` is named `x` (names: `a`, `b`)"
+        );
+        assert!(err("body[x y]").contains("nor a name"));
+        assert!(err("body[]").contains("nor a name"));
         assert!(err("a..b").contains("a key is letters"));
     }
 }

@@ -193,8 +193,9 @@ impl Sweep {
         Ok(sweep)
     }
 
-    /// Each varied field, set alone to its first value, must give a scene that parses: a
-    /// misspelt field or a value of the wrong type is the sweep's error, not every trial's.
+    /// Each varied field, set alone to its first value, must give a scene that parses and whose
+    /// names refer to something: a misspelt field, a value of the wrong type or a joint, robot
+    /// or link name the scene does not have is the sweep's error, not every trial's.
     /// (A value out of its range is left to the trials: it is a row with the error.)
     fn check_fields(&self) -> Result<(), SweepError> {
         for (k, a) in self.axes.iter().enumerate() {
@@ -209,13 +210,22 @@ impl Sweep {
                 .set(&mut t, a.values[0].to_toml())
                 .map_err(|m| invalid(format!("a field of the base scene: {m}")))?;
             let text = toml::to_string(&t).map_err(|e| invalid(e.to_string()))?;
-            if let Err(SceneError::Parse { message, .. }) =
-                Scene::parse(&text, &self.scene_origin, &self.scene_dir)
-            {
-                return Err(invalid(format!(
-                    "a scene field taking {} values: {message}",
-                    a.values[0]
-                )));
+            match Scene::parse(&text, &self.scene_origin, &self.scene_dir) {
+                Err(SceneError::Parse { message, .. }) => {
+                    return Err(invalid(format!(
+                        "a scene field taking {} values: {message}",
+                        a.values[0]
+                    )));
+                }
+                // A name that refers to nothing (a robot's joint, a controller's robot, a
+                // fingertip's link) is the sweep's error: every trial would have it.
+                Err(SceneError::Name { field, message, .. }) => {
+                    return Err(invalid(format!(
+                        "a field naming what the scene has (with {}, `{field}`: {message})",
+                        a.values[0]
+                    )));
+                }
+                _ => {}
             }
         }
         Ok(())

@@ -5,7 +5,21 @@ use crate::trial::Outcome;
 use crate::value::{Value, ValueKind};
 
 /// The outcome columns after the varied fields, in order (SWEEPS.md, "Results").
-pub const OUTCOME_COLUMNS: [&str; 8] = [
+pub const OUTCOME_COLUMNS: [&str; 9] = [
+    "held",
+    "slips",
+    "slip_distance",
+    "peak_force",
+    "peak_x",
+    "validity_excursions",
+    "hold_force",
+    "wall_time",
+    "error",
+];
+
+/// The outcome columns of results tables written before `hold_force` existed (softgrip up
+/// to session 11 of the changelog): they still read back, with `hold_force` NaN (not measured).
+pub const LEGACY_OUTCOME_COLUMNS: [&str; 8] = [
     "held",
     "slips",
     "slip_distance",
@@ -15,6 +29,62 @@ pub const OUTCOME_COLUMNS: [&str; 8] = [
     "wall_time",
     "error",
 ];
+
+/// Where a results table's outcome columns are: the index of `held` and whether the table
+/// has a `hold_force` column ([`OUTCOME_COLUMNS`]) or not ([`LEGACY_OUTCOME_COLUMNS`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct OutcomeLayout {
+    /// Index of the `held` column (1 + the number of varied fields).
+    pub start: usize,
+    /// The table has a `hold_force` column.
+    pub hold_force: bool,
+}
+
+impl OutcomeLayout {
+    /// The layout of a table with these column names, `None` if it is not a results table
+    /// (`trial`, the varied fields, then either outcome list).
+    pub(crate) fn find(names: &[String]) -> Option<Self> {
+        if names.first().map(String::as_str) != Some("trial") {
+            return None;
+        }
+        let ends_with = |cols: &[&str]| {
+            let n = names.len();
+            (n > cols.len())
+                .then_some(n - cols.len())
+                .filter(|&o| names[o..] == *cols)
+        };
+        if let Some(start) = ends_with(&OUTCOME_COLUMNS) {
+            return Some(Self {
+                start,
+                hold_force: true,
+            });
+        }
+        ends_with(&LEGACY_OUTCOME_COLUMNS).map(|start| Self {
+            start,
+            hold_force: false,
+        })
+    }
+
+    /// The column index of the outcome `name` (one of [`OUTCOME_COLUMNS`]); `None` for
+    /// `hold_force` in a legacy table.
+    pub(crate) fn column(&self, name: &str) -> Option<usize> {
+        let cols: &[&str] = if self.hold_force {
+            &OUTCOME_COLUMNS
+        } else {
+            &LEGACY_OUTCOME_COLUMNS
+        };
+        cols.iter().position(|c| *c == name).map(|k| self.start + k)
+    }
+
+    /// The error text when no layout is found.
+    pub(crate) fn expected() -> String {
+        format!(
+            "not a sweep results table: the columns must be `trial`, the varied fields, {} \
+             (tables written before `hold_force` existed: the same without it)",
+            OUTCOME_COLUMNS.join(", ")
+        )
+    }
+}
 
 /// One trial's row.
 #[derive(Debug, Clone, PartialEq)]

@@ -27,6 +27,13 @@ pub struct Outcome {
     pub peak_x: f64,
     /// Validity excursions summed over the fingertips (the run summary's).
     pub validity_excursions: u32,
+    /// How hard the object is held at the end of the hold \[N\]: after the hold's last step,
+    /// the smallest over the grasp's fingertips (every fingertip of its jaws or fingers) of the
+    /// normal force it presses on the object with (summed over its contacts; 0 for one not
+    /// touching it). A `grasp` controller closes each finger until each of its fingertips
+    /// presses its `force`: this is that force as held, after the settle, the lift and the
+    /// hold.
+    pub hold_force: f64,
 }
 
 /// Positions along `up` at one instant: the object's and the jaws' mean \[m\].
@@ -37,7 +44,9 @@ struct Heights {
 }
 
 /// Runs `scene` (its text `text` goes into the recording's metadata), recording to `mcap`
-/// if given; `object` is the body whose hold decides `held`. The error says why the trial
+/// if given; `object` is the body whose hold decides `held`. The run takes the scene's
+/// duration, and goes on past it until the grasp's hold ends when that can be later (a `grasp`
+/// controller's timeline, `trial_steps`). The error says why the trial
 /// has no outcome (no such object, no gripper, the hold never ended, the recorder failed).
 pub fn run_scene(
     scene: &Scene,
@@ -72,7 +81,11 @@ pub fn run_scene(
     };
     let mut lift_start = None;
     let mut hold_end = None;
-    for _ in 0..sim.total_steps() {
+    let steps = trial_steps(scene, &view);
+    for k in 0..steps {
+        if k >= sim.total_steps() && hold_end.is_some() {
+            break;
+        }
         let before = phase(&sim);
         sim.step();
         let after = phase(&sim);
@@ -80,17 +93,26 @@ pub fn run_scene(
             lift_start = heights(&sim, &view, object_entity, up);
         }
         if before == Phase::Hold && after == Phase::Release {
-            let grip = in_grip(&sim, &view, object_entity);
+            let grip = grip(&sim, &view, object_entity);
             hold_end = heights(&sim, &view, object_entity, up).map(|h| (h, grip));
         }
     }
     sim.finish()
         .map_err(|e| format!("finishing the recording: {e}"))?;
     let (Some(start), Some((end, grip))) = (lift_start, hold_end) else {
-        let t = sim.total_steps() as f64 * scene.file().dt;
+        let (dt, total) = (scene.file().dt, sim.total_steps());
+        let t = total as f64 * dt;
+        let on = if steps > total {
+            format!(
+                ", run on to {} s, the grasp's longest timeline",
+                steps as f64 * dt
+            )
+        } else {
+            String::new()
+        };
         return Err(format!(
-            "the hold did not end within the scene's duration ({t} s, phase {:?} at the end): \
-             make `duration` longer",
+            "the hold did not end within the scene's duration ({t} s{on}, phase {:?} at the \
+             end): make `duration` longer",
             phase(&sim)
         ));
     };
@@ -100,13 +122,30 @@ pub fn run_scene(
     let summary = sim.world.resource::<Summary>();
     let tips = summary.tips.iter().map(|(_, t)| t);
     Ok(Outcome {
-        held: grip && lifted,
+        held: grip.each_finger && lifted,
         slips: tips.clone().map(|t| t.slips).sum(),
         slip_distance,
         peak_force: tips.clone().map(|t| t.peak_force).fold(0.0, f64::max),
         peak_x: tips.clone().map(|t| t.peak_x).fold(0.0, f64::max),
         validity_excursions: tips.map(|t| t.validity_excursions).sum(),
+        hold_force: grip.least_tip_force,
     })
+}
+
+/// Steps a trial may take: the scene's duration, or more when its grasp's hold can end later
+/// ([`GraspView::hold_ends_by`], plus a step for each of its five phase changes and three to
+/// spare): the trial then runs on past `duration` until the hold ends. Why: a varied value
+/// changes the grasp's timeline (a grasp that never reaches its force closes its whole
+/// stroke: the URDF gripper's 28 mm at 10 mm/s is 2.8 s where its 5 N grip takes 1.0 s), and
+/// a hold ending after the scene's fixed `duration` made the trial an error row instead of
+/// the outcome it is (held or not).
+fn trial_steps(scene: &Scene, view: &GraspView) -> u64 {
+    let dt = scene.file().dt;
+    let needed = view
+        .hold_ends_by
+        .filter(|t| t.is_finite() && dt > 0.0)
+        .map_or(0, |t| (t / dt).ceil() as u64 + 8);
+    scene.steps().max(needed)
 }
 
 /// The first controller of `scene` that runs a grasp, seen from outside.
@@ -139,30 +178,53 @@ fn heights(
     })
 }
 
-/// Whether each jaw or finger has a fingertip in contact with the object after the last step.
-fn in_grip(
+/// What the grasp's fingertips press on the object after the last step.
+struct Grip {
+    /// Each jaw or finger touches the object (one of its fingertips with a normal force > 0).
+    each_finger: bool,
+    /// The smallest over the grasp's fingertips of the normal force it presses on the object
+    /// with, summed over its contacts with it \[N\] (0 for one not touching it).
+    least_tip_force: f64,
+}
+
+/// The grasp's grip on the object after the last step.
+fn grip(
     sim: &Simulation,
     view: &GraspView,
     object: softgrip_ecs::bevy_ecs::entity::Entity,
-) -> bool {
+) -> Grip {
     let physics = sim.world.resource::<Physics>();
     let handles = sim.world.resource::<Controllers>().0.handles();
-    let Some(object) = physics.body_handle(object) else {
-        return false;
-    };
-    let colliders = &physics.world.physics.colliders;
-    let mut touching = vec![false; view.fingers.len()];
-    for c in physics.world.soft.contacts() {
-        let on_object = colliders.get(c.other).and_then(|o| o.parent()) == Some(object);
-        for (k, t) in touching.iter_mut().enumerate() {
-            let mine = view.fingers[k].iter().any(|&i| {
-                handles
-                    .fingertips
-                    .get(i)
-                    .is_some_and(|h| h.1 == c.fingertip)
-            });
-            *t |= on_object && c.normal_force > 0.0 && mine;
+    let tips: Vec<Vec<_>> = (view.fingers.iter())
+        .map(|f| {
+            (f.iter())
+                .filter_map(|&i| handles.fingertips.get(i).map(|h| h.1))
+                .collect()
+        })
+        .collect();
+    let mut forces: Vec<Vec<f64>> = tips.iter().map(|f| vec![0.0; f.len()]).collect();
+    if let Some(object) = physics.body_handle(object) {
+        let colliders = &physics.world.physics.colliders;
+        for c in physics.world.soft.contacts() {
+            if colliders.get(c.other).and_then(|o| o.parent()) != Some(object) {
+                continue;
+            }
+            for (finger, f) in tips.iter().zip(forces.iter_mut()) {
+                for (&t, f) in finger.iter().zip(f.iter_mut()) {
+                    if t == c.fingertip {
+                        *f += c.normal_force.max(0.0);
+                    }
+                }
+            }
         }
     }
-    !touching.is_empty() && touching.iter().all(|&t| t)
+    Grip {
+        each_finger: !forces.is_empty() && forces.iter().all(|f| f.iter().any(|&x| x > 0.0)),
+        least_tip_force: forces
+            .iter()
+            .flatten()
+            .copied()
+            .reduce(f64::min)
+            .unwrap_or(0.0),
+    }
 }

@@ -157,8 +157,69 @@ fn results_read_back_from_csv_and_parquet_equal_the_table() {
     assert!(header.starts_with(
         "trial,fingertip[0].material.youngs_modulus,body[1].shape[0].density,\
          gripper.squeeze.depth,held,slips,slip_distance,peak_force,peak_x,\
-         validity_excursions,wall_time,error\n"
+         validity_excursions,hold_force,wall_time,error\n"
     ));
+}
+
+/// A results CSV written before `hold_force` existed (the same columns without it) reads
+/// back, every outcome equal and `hold_force` NaN: `--resume` and `read_results` keep working
+/// on old tables.
+#[test]
+fn results_without_hold_force_still_read_back() {
+    let s = sweep();
+    let table = run(&s, 2, Shard::new(0, 2).expect("valid"));
+    let dir = tempfile::tempdir().expect("temp dir");
+    let csv_path = dir.path().join("r.csv");
+    table.write_csv(&csv_path).expect("writes");
+    let mut reader = csv::Reader::from_path(&csv_path).expect("readable");
+    let header = reader.headers().expect("header").clone();
+    let drop = header
+        .iter()
+        .position(|c| c == "hold_force")
+        .expect("a hold_force column");
+    let keep = |rec: &csv::StringRecord| {
+        rec.iter()
+            .enumerate()
+            .filter(|(k, _)| *k != drop)
+            .map(|(_, c)| c.to_string())
+            .collect::<Vec<_>>()
+    };
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    writer.write_record(keep(&header)).expect("writes");
+    for rec in reader.records() {
+        writer
+            .write_record(keep(&rec.expect("a row")))
+            .expect("writes");
+    }
+    let legacy = String::from_utf8(writer.into_inner().expect("flushed")).expect("utf-8");
+    let old = ResultsTable::from_csv(&legacy).expect("a legacy table reads");
+    assert_eq!(old.fields, table.fields);
+    assert_eq!(old.rows.len(), table.rows.len());
+    for (o, n) in old.rows.iter().zip(&table.rows) {
+        assert_eq!(
+            (o.trial, &o.values, o.wall_time),
+            (n.trial, &n.values, n.wall_time)
+        );
+        match (&o.outcome, &n.outcome) {
+            (Ok(a), Ok(b)) => {
+                assert!(a.hold_force.is_nan(), "{a:?}");
+                assert_eq!(
+                    Outcome {
+                        hold_force: b.hold_force,
+                        ..*a
+                    },
+                    *b
+                );
+            }
+            (a, b) => assert_eq!(a, b),
+        }
+    }
+    let neither = legacy.replacen("validity_excursions", "excursions", 1);
+    let e = ResultsTable::from_csv(&neither).expect_err("not a results table");
+    assert!(
+        e.contains("hold_force") && e.contains("validity_excursions"),
+        "{e}"
+    );
 }
 
 #[test]

@@ -2,4 +2,5 @@
 
 pub mod icosphere;
 pub mod impact;
+pub mod resting;
 pub mod scenes;

@@ -123,3 +123,72 @@ pub fn check_joint_states(received: &Value, key: &str, rec: &Recording) -> usize
     }
     states.len()
 }
+
+/// Every `/softgrip/contacts` received equals the recording's; the last has both pads pressing.
+pub fn check_contacts(received: &Value, recording: &Recording) {
+    let contacts: std::collections::BTreeMap<u64, _> = (recording.messages.iter())
+        .filter_map(|m| match &m.message {
+            Message::Contacts(a) => Some((m.log_time_ns, a.clone())),
+            _ => None,
+        })
+        .collect();
+    let arrays = received["contacts"].as_array().expect("contacts");
+    let mut compared = 0;
+    for a in arrays {
+        let t = stamp(&a["header"]);
+        let want = (contacts.get(&t)).unwrap_or_else(|| panic!("no contacts at {t} ns"));
+        let got = a["contacts"].as_array().expect("contacts");
+        assert_eq!(got.len(), want.contacts.len(), "at {t} ns");
+        for (g, w) in got.iter().zip(&want.contacts) {
+            assert_eq!(g["fingertip"].as_str(), Some(w.fingertip.as_str()));
+            assert_eq!(g["other"].as_str(), Some(w.other.as_str()));
+            for (key, value) in [
+                ("compression", w.compression),
+                ("normal_force", w.normal_force),
+                ("contact_radius", w.contact_radius),
+                ("peak_pressure", w.peak_pressure),
+            ] {
+                assert_eq!(g[key].as_f64(), Some(value), "{key} at {t} ns");
+            }
+            compared += 1;
+        }
+    }
+    assert!(compared >= 20, "compared {compared} contacts");
+    let last = arrays.last().expect("a contact array")["contacts"]
+        .as_array()
+        .expect("contacts");
+    let pressing: Vec<&str> = (last.iter())
+        .filter(|c| c["other"].as_str() == Some("box") && c["normal_force"].as_f64() > Some(0.0))
+        .map(|c| c["fingertip"].as_str().expect("name"))
+        .collect();
+    assert!(
+        pressing.contains(&"left_pad") && pressing.contains(&"right_pad"),
+        "{pressing:?}"
+    );
+}
+
+/// rcl_action's GoalStatus ABORTED: what the server answers a stalled goal with.
+pub const STATUS_ABORTED: i64 = 6;
+
+/// The result of the gripper goal both action tests send (close `finger_joint` to 0 at 10 mm/s
+/// with at most 5 N): aborted, stalled, not reached, `finger_joint` stopped short of the goal by
+/// the box with its effort at the limit: the target froze the step the effort reached 5 N (at
+/// most one step's increment over it: 2000 N/m x 10 mm/s x 1/60 s = 0.33 N), then the finger
+/// settled a little into the pad. Returns its position [m] and effort [N].
+pub fn check_stalled_result(received: &Value) -> (f64, f64) {
+    let result = &received["result"];
+    assert_eq!(result["status"].as_i64(), Some(STATUS_ABORTED), "{result}");
+    let r = &result["result"];
+    assert_eq!(r["stalled"].as_bool(), Some(true));
+    assert_eq!(r["reached_goal"].as_bool(), Some(false));
+    assert_eq!(r["state"]["name"][0].as_str(), Some("finger_joint"));
+    let (q, e) = (
+        floats(&r["state"]["position"])[0],
+        floats(&r["state"]["effort"])[0],
+    );
+    assert!((4.5..5.4).contains(&e.abs()), "result effort {e} N");
+    // Closed from its start (28 mm) and stopped short of the goal (0) by the box. Where exactly
+    // (the pads' squeeze at 5 N) is crates/softgrip-scene/tests/gripper_goal.rs's to check.
+    assert!(q > 0.005 && q < 0.0275, "result position {q} m");
+    (q, e)
+}

@@ -14,7 +14,6 @@ Usage: gripper_action.py --domain N --action /gripper/gripper_cmd --joint NAME -
        [--velocity V] [--effort E] [--timeout 60] [--after 0.5]
 """
 
-import argparse
 import dataclasses
 import sys
 import time
@@ -22,6 +21,7 @@ import uuid
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "softgrip-testkit" / "python"))
+from gripper_client import Received, parse_args  # noqa: E402
 from softgrip_dds import (  # noqa: E402
     UUID, Deadline, JointState, ParallelGripperCommand_FeedbackMessage,
     ParallelGripperCommand_GetResult_Request, ParallelGripperCommand_GetResult_Response,
@@ -32,16 +32,7 @@ from softgrip_dds import (  # noqa: E402
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--domain", type=int, required=True)
-    ap.add_argument("--action", required=True)
-    ap.add_argument("--joint", required=True)
-    ap.add_argument("--position", type=float, required=True)
-    ap.add_argument("--velocity", type=float)
-    ap.add_argument("--effort", type=float)
-    ap.add_argument("--timeout", type=float, default=60.0)
-    ap.add_argument("--after", type=float, default=0.5)
-    args = ap.parse_args()
+    args = parse_args(domain=True)
     deadline = Deadline(args.timeout)
 
     p = Participant(args.domain)
@@ -54,24 +45,17 @@ def main():
     result_rr = p.reader(base + "get_resultReply", ParallelGripperCommand_GetResult_Response, prefix="rr")
     feedback = p.reader(base + "feedback", ParallelGripperCommand_FeedbackMessage)
 
-    got = {"states": {}, "contacts": {}, "feedback": [], "answer": None, "result": None}
+    got = Received()
 
     def drain():
         for s in take(states, JointState):
-            got["states"].setdefault(stamp_ns(s.header), dataclasses.asdict(s))
+            got.state(stamp_ns(s.header), dataclasses.asdict(s))
         for s in take(contacts, SoftContactArray):
-            got["contacts"].setdefault(stamp_ns(s.header), dataclasses.asdict(s))
+            got.contact_array(stamp_ns(s.header), dataclasses.asdict(s))
         for s in take(feedback, ParallelGripperCommand_FeedbackMessage):
-            got["feedback"].append(dataclasses.asdict(s))
+            got.feedback.append(dataclasses.asdict(s))
 
-    def out():
-        return {
-            "answer": got["answer"],
-            "result": got["result"],
-            "feedback": got["feedback"],
-            "states": [got["states"][k] for k in sorted(got["states"])],
-            "contacts": [got["contacts"][k] for k in sorted(got["contacts"])],
-        }
+    out = got.out
 
     def matched(writer):
         return writer.get_publication_matched_status().current_count > 0
@@ -84,7 +68,7 @@ def main():
             drain()
 
     # Discovery: the simulation publishes, and the action's request readers see us.
-    wait_for("/joint_states", lambda: got["states"])
+    wait_for("/joint_states", lambda: got.states)
     wait_for("the send_goal and get_result servers", lambda: matched(goal_rq) and matched(result_rq))
     # The reply writers must match our reply readers too (no reply is lost): a short settle.
     wait_for("the reply writers", lambda: goal_rr.get_subscription_matched_status().current_count > 0
@@ -101,18 +85,18 @@ def main():
 
     def answered():
         for s in take(goal_rr, ParallelGripperCommand_SendGoal_Response):
-            got["answer"] = dataclasses.asdict(s)
-        return got["answer"] is not None
+            got.answer = dataclasses.asdict(s)
+        return got.answer is not None
 
     wait_for("the goal's answer", answered)
-    if not got["answer"]["accepted"]:
+    if not got.answer["accepted"]:
         fail("gripper_action.py", "the goal was refused", out())
     result_rq.write(ParallelGripperCommand_GetResult_Request(goal_id=goal_id))
 
     def resulted():
         for s in take(result_rr, ParallelGripperCommand_GetResult_Response):
-            got["result"] = dataclasses.asdict(s)
-        return got["result"] is not None
+            got.result = dataclasses.asdict(s)
+        return got.result is not None
 
     wait_for("the goal's result", resulted)
     after = time.monotonic() + args.after

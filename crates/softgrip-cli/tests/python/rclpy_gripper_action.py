@@ -16,7 +16,6 @@ Usage: rclpy_gripper_action.py --action /gripper/gripper_cmd --joint NAME --posi
 (the ROS domain is ROS_DOMAIN_ID's, as for any rclpy node)
 """
 
-import argparse
 import json
 import sys
 import time
@@ -30,6 +29,7 @@ from sensor_msgs.msg import JointState
 from softgrip_msgs.msg import SoftContactArray
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "softgrip-testkit" / "python"))
+from gripper_client import Received, parse_args  # noqa: E402
 from softgrip_rclpy import DATA, fail, stamp_ns, to_dict  # noqa: E402
 
 SCRIPT = "rclpy_gripper_action.py"
@@ -40,29 +40,22 @@ class Client(Node):
 
     def __init__(self, action):
         super().__init__("softgrip_rclpy_gripper_client")
-        self.got = {"states": {}, "contacts": {}, "feedback": [], "answer": None, "result": None}
+        self.got = Received()
         self.create_subscription(JointState, "/joint_states", self.on_state, DATA)
         self.create_subscription(SoftContactArray, "/softgrip/contacts", self.on_contacts, DATA)
         self.action = ActionClient(self, ParallelGripperCommand, action)
 
     def on_state(self, msg):
-        self.got["states"].setdefault(stamp_ns(msg.header), to_dict(msg))
+        self.got.state(stamp_ns(msg.header), to_dict(msg))
 
     def on_contacts(self, msg):
-        self.got["contacts"].setdefault(stamp_ns(msg.header), to_dict(msg))
+        self.got.contact_array(stamp_ns(msg.header), to_dict(msg))
 
     def on_feedback(self, msg):
-        self.got["feedback"].append(to_dict(msg.feedback))
+        self.got.feedback.append(to_dict(msg.feedback))
 
     def out(self):
-        g = self.got
-        return {
-            "answer": g["answer"],
-            "result": g["result"],
-            "feedback": g["feedback"],
-            "states": [g["states"][k] for k in sorted(g["states"])],
-            "contacts": [g["contacts"][k] for k in sorted(g["contacts"])],
-        }
+        return self.got.out()
 
 
 def goal(args):
@@ -77,15 +70,7 @@ def goal(args):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--action", required=True)
-    ap.add_argument("--joint", required=True)
-    ap.add_argument("--position", type=float, required=True)
-    ap.add_argument("--velocity", type=float)
-    ap.add_argument("--effort", type=float)
-    ap.add_argument("--timeout", type=float, default=60.0)
-    ap.add_argument("--after", type=float, default=0.5)
-    args = ap.parse_args()
+    args = parse_args(domain=False)
     end = time.monotonic() + args.timeout
 
     rclpy.init()
@@ -98,20 +83,20 @@ def main():
             rclpy.spin_once(node, timeout_sec=0.05)
 
     # Discovery: the simulation publishes, and rclpy sees the action server's services and topics.
-    spin_until("/joint_states", lambda: node.got["states"])
+    spin_until("/joint_states", lambda: node.got.states)
     spin_until("the action server", node.action.server_is_ready)
 
     sent = node.action.send_goal_async(goal(args), feedback_callback=node.on_feedback)
     spin_until("the goal's answer", sent.done)
     handle = sent.result()
-    node.got["answer"] = {"accepted": handle.accepted}
+    node.got.answer = {"accepted": handle.accepted}
     if not handle.accepted:
         fail(SCRIPT, "the goal was refused", node.out())
 
     result = handle.get_result_async()
     spin_until("the goal's result", result.done)
     r = result.result()
-    node.got["result"] = {"status": r.status, "result": to_dict(r.result)}
+    node.got.result = {"status": r.status, "result": to_dict(r.result)}
     after = time.monotonic() + args.after
     while time.monotonic() < after:
         rclpy.spin_once(node, timeout_sec=0.05)

@@ -273,6 +273,7 @@ use std::sync::Arc;
 
 use super::NormalisedLaw;
 use crate::backing::{Backing, MIN_CORE_THICKNESS_RATIO};
+use crate::core_map::{CoreOnCounterpart, SqueezeExcess};
 use crate::error::{Error, Result};
 use crate::level::LevelKind;
 use crate::quadrature::integrate;
@@ -516,39 +517,48 @@ struct ChiForm {
     core: Option<CoreForce>,
     radius: RadiusForm,
     /// On a curved counterpart (`crate::core_map`), a core only: the plane's compression that
-    /// carries the hemisphere's stiffening (`rho`, the counterpart map's) and the one that
-    /// makes the same patch (`rho_H`, Hertz's: the layer excess, a function of the patch);
-    /// the skin over the core's pole is squeezed by the true `delta/t`. 1 and 1 on a plane.
-    x_hemisphere: f64,
-    x_layer: f64,
+    /// makes the same patch (`rho_H`, Hertz's), at which the whole plane form is evaluated,
+    /// and the squeeze of the skin beyond it (`SqueezeExcess`). 1 and `None` on a plane.
+    x_plane: f64,
+    squeeze: Option<SqueezeExcess>,
 }
 
 impl ChiForm {
     /// `chi` at `s = sqrt(x)`: analytic in `s` on `(-0.9, 0.9)` (`s < 0` only for the slope
     /// stencil at `s = 0`).
     fn chi(&self, s_true: f64) -> f64 {
-        let s = s_true * self.x_hemisphere.sqrt();
+        let plane = self.plane_chi(s_true * self.x_plane.sqrt());
+        match &self.squeeze {
+            Some(squeeze) => plane * squeeze.factor(s_true, |s| self.flat(s)),
+            None => plane,
+        }
+    }
+
+    /// `chi_flat` at `s = sqrt(x)`: the bonded hemisphere (the module docs, Flat).
+    fn flat(&self, s: f64) -> f64 {
         let x = s * s;
         let w = 1.0 - x;
         let n = w + x * x / 3.0;
         let sf = 1.0 - self.d * x + self.c * s + self.e * x * x;
-        let flat = n * sf / (w * w + self.b2 * x * x);
+        n * sf / (w * w + self.b2 * x * x)
+    }
+
+    /// The plane's `chi` at `s = sqrt(x)`: `chi_flat`, and a core's layer excess.
+    fn plane_chi(&self, s: f64) -> f64 {
+        let flat = self.flat(s);
         let Some(core) = &self.core else {
             return flat;
         };
+        let x = s * s;
         // The layer of depth t h under the patch of the core's radius, less the layer of depth
         // R under the flat hemisphere's patch that chi_flat already carries.
-        let s_layer = s_true * self.x_layer.sqrt();
-        let x_layer = s_layer * s_layer;
-        let (a_flat, a) = self.radius.radii(s_layer);
+        let (a_flat, a) = self.radius.radii(s);
         // Each confined over lengths beyond l = depth sqrt(kappa/mu): E = eps (a_H/t)^2 for
         // the skin (the radius's E), eps (a_H/R)^2 = eps x for the hemisphere.
-        let conf = core.eps * x_layer;
+        let conf = core.eps * x;
         let excess = core.layer(a * core.inv_tau_h, conf * core.inv_tau2)
             - core.layer(a_flat * core.inv_h, conf);
-        let squeeze = s_true * s_true;
-        let thinning =
-            1.0 + core.thinning * squeeze + core.confined * confined(squeeze * core.inv_tau);
+        let thinning = 1.0 + core.thinning * x + core.confined * confined(x * core.inv_tau);
         flat + excess * thinning * (-core.k * (flat - 1.0)).exp()
     }
 
@@ -601,17 +611,17 @@ fn flat_x_max(nu: f64) -> f64 {
 impl Backed {
     /// `backing` is `Flat` or `Core` (with `tau = t/R` in (0, 1)), `0.3 <= nu <= 0.5`.
     pub(crate) fn try_new(backing: Backing, tau: Option<f64>, nu: f64) -> Result<Self> {
-        Self::try_new_on(backing, tau, nu, 1.0, 1.0)
+        Self::try_new_on(backing, tau, nu, None)
     }
 
-    /// [`Backed::try_new`] with the hemisphere's part at `rho x` and the layer excess at
-    /// `rho_layer x` (`crate::core_map`; 1 and 1: the plane).
+    /// [`Backed::try_new`] on a curved counterpart (a core only, `crate::core_map`): the plane
+    /// form at the compression `rho_H x` that makes the same patch, times the skin's squeeze
+    /// beyond it (`None`: the plane).
     pub(crate) fn try_new_on(
         backing: Backing,
         tau: Option<f64>,
         nu: f64,
-        rho: f64,
-        rho_layer: f64,
+        on: Option<&CoreOnCounterpart>,
     ) -> Result<Self> {
         Self::try_new_capped(backing, tau, nu, rho, rho_layer, 1.0)
     }
@@ -679,9 +689,10 @@ impl Backed {
                 (
                     radius,
                     Some(core),
-                    // The hemisphere's and the layer's patch inside the plane's range
-                    // (a concave counterpart: rho_layer > rho > 1), the pole's true squeeze.
-                    (flat_x_max(nu) / rho.max(rho_layer)).min(CORE_SQUEEZE * tau),
+                    match on {
+                        Some(on) => on.x_max(flat_x_max(nu), CORE_SQUEEZE, tau),
+                        None => flat_x_max(nu).min(CORE_SQUEEZE * tau),
+                    },
                 )
             }
             None => {
@@ -702,8 +713,8 @@ impl Backed {
             b2: cap * b * b * eps,
             core,
             radius,
-            x_hemisphere: rho,
-            x_layer: rho_layer,
+            x_plane: on.map_or(1.0, |on| on.patch),
+            squeeze: on.map(|on| on.squeeze(tau.unwrap_or(1.0))),
         };
         Ok(Self {
             table: Arc::new(ChiTable::new(
@@ -721,7 +732,7 @@ impl Backed {
             eps,
             tau: tau.unwrap_or(0.0),
             x_max,
-            x_patch: rho,
+            x_patch: on.map_or(1.0, |on| on.rho),
         })
     }
 }
@@ -805,6 +816,17 @@ mod tests {
             for tau in [0.05, 0.2, 0.33, 0.5, 0.71, 0.8, 0.95] {
                 let core = Backed::try_new(Backing::Core { thickness: tau }, Some(tau), nu);
                 cases.push(core.expect("core builds"));
+                // On balls of R/10, R and 3R, and a bowl of 2R (`core_map`).
+                for (patch, rho) in [(0.091, 0.2), (0.5, 0.556), (0.75, 0.789), (2.0, 1.6)] {
+                    let on = CoreOnCounterpart { patch, rho };
+                    let core = Backed::try_new_on(
+                        Backing::Core { thickness: tau },
+                        Some(tau),
+                        nu,
+                        Some(&on),
+                    );
+                    cases.push(core.expect("core on a counterpart builds"));
+                }
             }
             for law in cases {
                 let form = *law.form;

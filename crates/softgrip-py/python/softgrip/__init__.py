@@ -26,6 +26,7 @@ from ._results import (
     BODY_ARRAYS,
     CONTACT_ROW_FIELDS,
     FINGERTIP_ARRAYS,
+    JOINT_ARRAYS,
     SUMMARY_FIELDS,
     TACTILE_ARRAY,
     MaterialFit,
@@ -55,6 +56,7 @@ __all__ = [
     "CONTACT_ROW_FIELDS",
     "CONTROLLERS",
     "FINGERTIP_ARRAYS",
+    "JOINT_ARRAYS",
     "LEVELS",
     "Law",
     "MaterialFit",
@@ -205,8 +207,9 @@ def run(
             FileExistsError).
 
     Returns:
-        A :class:`RunResult`: per fingertip and per body the arrays of
-        :data:`FINGERTIP_ARRAYS` and :data:`BODY_ARRAYS` over every step, the tactile images,
+        A :class:`RunResult`: per fingertip, per body and per robot joint the arrays of
+        :data:`FINGERTIP_ARRAYS`, :data:`BODY_ARRAYS` and :data:`JOINT_ARRAYS` over every
+        step, the tactile images,
         the summary and the digest. Open its ``mcap`` with :func:`open_recording`.
 
     Raises:
@@ -246,7 +249,7 @@ def open_recording(path: PathLike, *, frame: str = "scene") -> Recording:
     """Opens an MCAP recording made by any softgrip version (``softgrip run --out``,
     ``softgrip.run(mcap=...)``, a sweep's ``mcap_dir``) as the arrays a run returns, without
     re-running anything: per fingertip the arrays of :data:`FINGERTIP_ARRAYS`, per body
-    :data:`BODY_ARRAYS`, the tactile images, at the recorded steps (``Recording.step``); the
+    :data:`BODY_ARRAYS`, per robot joint :data:`JOINT_ARRAYS`, the tactile images, at the recorded steps (``Recording.step``); the
     run's summary and each fingertip's law (``Recording.law(name)`` builds it); every contact
     row. A killed writer's file is read up to its last complete chunk (``Recording.recovery``).
 

@@ -144,7 +144,7 @@ def run_scene(
     overwrite: Optional[bool] = ...,
 ) -> Dict[str, Any]:
     """The fields of ``softgrip.RunResult`` (arrays: ``softgrip.FINGERTIP_ARRAYS``,
-    ``softgrip.BODY_ARRAYS``, ``softgrip.TACTILE_ARRAY``)."""
+    ``softgrip.BODY_ARRAYS``, ``softgrip.JOINT_ARRAYS``, ``softgrip.TACTILE_ARRAY``)."""
 
 def open_recording(path: _Path, *, frame: Optional[str] = ...) -> Dict[str, Any]:
     """The fields of ``softgrip.Recording``; ``frame`` ``"scene"`` (default) or ``"world"``."""
@@ -179,7 +179,7 @@ class Sweep:
         """Trial ``index``'s scene (TOML); ``TrialIndexError`` outside 0..trials."""
     def run_trial(self, index: int) -> Row:
         """Trial ``index``'s row ``(trial, *values, held, slips, slip_distance [m], peak_force
-        [N], peak_x [-], validity_excursions, wall_time [s], error)``; ``TrialIndexError``
+        [N], peak_x [-], validity_excursions, hold_force [N], wall_time [s], error)``; ``TrialIndexError``
         (an ``IndexError``) outside 0..trials."""
     def run(
         self,

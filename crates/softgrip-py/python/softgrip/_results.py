@@ -1,6 +1,7 @@
 """The result types: :class:`RunResult` (a scene run), :class:`Recording` (a recording opened
 from its MCAP file) and :class:`MaterialFit`. Every array a run returns per fingertip and per
-body is documented once, with its unit, in :data:`FINGERTIP_ARRAYS` and :data:`BODY_ARRAYS`;
+body and robot joint is documented once, with its unit, in :data:`FINGERTIP_ARRAYS`,
+:data:`BODY_ARRAYS` and :data:`JOINT_ARRAYS`;
 a run and a recording return the same keys, shapes and dtypes. All three are frozen
 dataclasses of numbers, strings, dicts and numpy arrays: they pickle (``pickle``, Ray,
 multiprocessing)."""
@@ -33,6 +34,19 @@ BODY_ARRAYS: Dict[str, Tuple[str, str]] = {
     "rotation": ("-", "the body's orientation, unit quaternion (x, y, z, w) in the scene's axes, float64 (steps, 4)"),
 }
 """Per body, the arrays of ``RunResult.bodies[name]`` and ``Recording.bodies[name]``."""
+
+JOINT_ARRAYS: Dict[str, Tuple[str, str]] = {
+    "position": ("m or rad", "the joint's position (prismatic m, revolute rad), float64 (steps,)"),
+    "velocity": ("m/s or rad/s", "its rate of motion since the previous step (recording: since the previous recorded step), float64 (steps,)"),
+    "effort": ("N or N m", "force or torque on the child link along the joint's axis: its motor's, or for a mimic joint of a multibody robot the load its coupling carries (-J^T F of the loads beyond it), float64 (steps,)"),
+    "target_position": ("m or rad", "its motor's target position for the step (a mimic joint: its leader's through multiplier and offset); NaN without a command, float64 (steps,)"),
+    "target_velocity": ("m/s or rad/s", "its motor's target velocity; NaN without a command, float64 (steps,)"),
+    "effort_limit": ("N or N m", "its motor's largest force (the URDF's effort, 0 without one); NaN without a command, float64 (steps,)"),
+}
+"""Per robot joint that moves, the arrays of ``RunResult.joints[name]`` and
+``Recording.joints[name]`` (``/joint_states`` and ``/joint_commands``): key -> (unit, what).
+``name`` is the URDF joint's name, ``<robot>/<joint>`` in a scene with several robots; joints
+in the recorder's order (robot by robot, URDF order). Empty in a scene without robots."""
 
 TACTILE_ARRAY = ("Pa", "taxel mean pressures, float32 (steps, rows, columns), row-major from the pad's top-left taxel")
 """``RunResult.tactile[name]`` and ``Recording.tactile[name]``: (unit, what)."""
@@ -123,6 +137,9 @@ class RunResult:
     """Per fingertip name (scene order), the arrays of :data:`FINGERTIP_ARRAYS`."""
     bodies: Dict[str, Dict[str, np.ndarray]]
     """Per body name (scene order), the arrays of :data:`BODY_ARRAYS`."""
+    joints: Dict[str, Dict[str, np.ndarray]]
+    """Per robot joint that moves (its URDF name; ``<robot>/<joint>`` with several robots),
+    the arrays of :data:`JOINT_ARRAYS`; empty without robots."""
     summary: Dict[str, Dict[str, Any]]
     """Per fingertip, the figures of ``softgrip run``'s summary (:data:`SUMMARY_FIELDS`)."""
     summary_lines: List[str]
@@ -151,7 +168,7 @@ class Recording:
     """A recording opened by :func:`softgrip.open_recording`: the arrays a run returns, at the
     recorded steps, read from the file (nothing is re-run).
 
-    ``fingertips``, ``bodies`` and ``tactile`` have the keys, dtypes and units of
+    ``fingertips``, ``bodies``, ``joints`` and ``tactile`` have the keys, dtypes and units of
     :class:`RunResult`'s (one entry per *recorded* step: ``run.fingertips[n][k][rec.step - 1]
     == rec.fingertips[n][k]``), in the scene's axes (``frame="scene"``) or the recording's
     z-up world (``frame="world"``).
@@ -184,6 +201,9 @@ class Recording:
     steps."""
     bodies: Dict[str, Dict[str, np.ndarray]]
     """Per body, the arrays of :data:`BODY_ARRAYS` over the recorded steps."""
+    joints: Dict[str, Dict[str, np.ndarray]]
+    """Per robot joint, the arrays of :data:`JOINT_ARRAYS` over the recorded steps (from
+    ``/joint_states`` and ``/joint_commands``); empty without them."""
     tactile: Dict[str, np.ndarray]
     """Per fingertip with a tactile pad, its images [Pa], float32 (n, rows, columns)."""
     summary: Optional[Dict[str, Dict[str, Any]]]
@@ -238,6 +258,8 @@ class Recording:
 if RunResult.__doc__ and Recording.__doc__:  # None under python -OO
     RunResult.__doc__ += "\n\n    Per fingertip (``fingertips[name]``):\n\n" + _fields_doc(FINGERTIP_ARRAYS)
     RunResult.__doc__ += "\n\n    Per body (``bodies[name]``):\n\n" + _fields_doc(BODY_ARRAYS)
+    RunResult.__doc__ += "\n\n    Per joint (``joints[name]``):\n\n" + _fields_doc(JOINT_ARRAYS)
     Recording.__doc__ += "\n\n    Per fingertip (``fingertips[name]``):\n\n" + _fields_doc(FINGERTIP_ARRAYS)
     Recording.__doc__ += "\n\n    Per body (``bodies[name]``):\n\n" + _fields_doc(BODY_ARRAYS)
+    Recording.__doc__ += "\n\n    Per joint (``joints[name]``):\n\n" + _fields_doc(JOINT_ARRAYS)
     Recording.__doc__ += "\n\n    Contact rows (``contact_rows``):\n\n" + _fields_doc(CONTACT_ROW_FIELDS)

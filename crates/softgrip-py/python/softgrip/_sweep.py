@@ -22,6 +22,7 @@ OUTCOME_COLUMNS = (
     "peak_force",
     "peak_x",
     "validity_excursions",
+    "hold_force",
     "wall_time",
     "error",
 )
@@ -35,6 +36,7 @@ _OUTCOME_TYPES = {
     "peak_force": ("float64", "float64", True),
     "peak_x": ("float64", "float64", True),
     "validity_excursions": ("int64", "int64", True),
+    "hold_force": ("float64", "float64", True),
     "wall_time": ("float64", "float64", False),
     "error": ("object", "string", True),
 }
@@ -244,7 +246,7 @@ def sweep(
     Returns:
         The rows in trial order with the columns ``trial``, one per varied field (named by its
         path), ``held``, ``slips``, ``slip_distance`` [m], ``peak_force`` [N], ``peak_x``,
-        ``validity_excursions``, ``wall_time`` [s], ``error``. The Ray and the local run give
+        ``validity_excursions``, ``hold_force`` [N], ``wall_time`` [s], ``error``. The Ray and the local run give
         the same rows (all columns but ``wall_time``).
 
     Raises:

@@ -66,6 +66,11 @@ pub struct GraspView {
     /// The commanded compression of each finger's fingertips at the grip \[m\], where the
     /// controller commands one.
     pub depth: Vec<Option<f64>>,
+    /// The latest time its hold can end \[s\], when the controller knows its whole timeline
+    /// (a `grasp`: every joint closing its whole stroke at its speed, as when no force is
+    /// reached, then the settle, the lift with its ramps and the hold); a few steps more for
+    /// the phases' step boundaries are the runner's to add. `None`: not known.
+    pub hold_ends_by: Option<f64>,
 }
 
 /// A controller: each step, before the physics step, it reads the state after the last step

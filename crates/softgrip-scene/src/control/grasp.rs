@@ -258,6 +258,18 @@ impl Grasp {
         s
     }
 
+    /// The latest time its hold ends \[s\]: closing starts after `start`; each joint closes
+    /// its whole stroke at `speed` (a force never reached), then the settle, the lift (at
+    /// `lift.speed`, plus `lift.speed / lift.acceleration` for its two ramps), the hold.
+    fn hold_ends_by(&self) -> f64 {
+        let stroke = (self.closed.iter().zip(&self.state.targets))
+            .map(|(c, t)| (c - t).abs())
+            .fold(0.0, f64::max);
+        let lift = self.lift.distance / self.lift.speed
+            + self.lift.acceleration.map_or(0.0, |a| self.lift.speed / a);
+        self.start + stroke / self.speed + self.settle + lift + self.hold
+    }
+
     /// The robot's root link (the base the lift moves).
     fn root(&self) -> Carrier {
         Carrier::Link {
@@ -375,6 +387,7 @@ impl Controller for Grasp {
             fingers: self.fingers.clone(),
             hand,
             depth: vec![None; self.fingers.len()],
+            hold_ends_by: Some(self.hold_ends_by()),
         })
     }
 

@@ -19,7 +19,10 @@ pub(crate) fn resolve(
         .ok_or_else(|| {
             c.name(
                 format!("{field}.robot"),
-                format!("no robot is named `{robot}`"),
+                format!(
+                    "no robot is named `{robot}` (robots: {})",
+                    robot_names(robots)
+                ),
             )
         })?;
     if joints.is_empty() {
@@ -28,9 +31,15 @@ pub(crate) fn resolve(
     let mut out = Vec::with_capacity(joints.len());
     for (k, name) in joints.iter().enumerate() {
         let f = format!("{field}.joints[{k}]");
-        let j = robots[r]
-            .joint_index(name)
-            .ok_or_else(|| c.name(&f, format!("robot `{robot}` has no joint `{name}`")))?;
+        let j = robots[r].joint_index(name).ok_or_else(|| {
+            c.name(
+                &f,
+                format!(
+                    "robot `{robot}` has no joint `{name}` (its moving joints: {})",
+                    crate::robot::moving_names(robots[r].joints())
+                ),
+            )
+        })?;
         let joint = &robots[r].joints()[j];
         if !joint.kind.moves() {
             return Err(c.name(&f, format!("joint `{name}` is fixed")));
@@ -69,5 +78,15 @@ pub(crate) fn check_position(
                 robot.joints()[j].name
             ),
         ))
+    }
+}
+
+/// The robots' names, `a, b` (`none` without robots), for errors naming what is valid.
+pub(crate) fn robot_names(robots: &[Robot]) -> String {
+    let names: Vec<&str> = robots.iter().map(|r| r.name()).collect();
+    if names.is_empty() {
+        "none".to_owned()
+    } else {
+        names.join(", ")
     }
 }

@@ -5,7 +5,7 @@ use softgrip_rapier::SoftWorld;
 use softgrip_rapier::rapier3d::prelude::RigidBodyHandle;
 
 use crate::build::SceneHandles;
-use crate::robot::{JointState, Robot, joint_state, set_joint_target};
+use crate::robot::{JointState, Robot, joint_state_loaded, set_joint_target};
 use crate::vector::vector;
 
 /// What carries a fingertip, or what a controller moves: a body, or a robot's link.
@@ -116,7 +116,7 @@ impl<'a> ControlIo<'a> {
         };
         let n = self.world.soft.counters().substeps_last.max(1) as f64;
         let dt = self.world.physics.integration_parameters.dt as f64;
-        joint_state(r, &self.world.physics, h, joint, dt / n)
+        joint_state_loaded(r, self.world, h, joint, dt / n)
     }
 
     /// Sets joint `joint` of robot `robot`'s motor target: `position` \[m or rad\] and

@@ -432,6 +432,7 @@ impl Controller for ParallelJaws {
                 .map(|&j| Carrier::Body(j))
                 .collect(),
             depth: self.program.depth.iter().map(|&d| Some(d)).collect(),
+            hold_ends_by: None,
         })
     }
 

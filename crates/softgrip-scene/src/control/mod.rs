@@ -21,6 +21,7 @@ pub use external::{
     JointCommands, STALL_SPEED, STALL_TIME, SharedInbox,
 };
 pub use grasp::{Grasp, GraspState};
+pub(crate) use group::robot_names;
 pub use io::{Carrier, ControlIo};
 pub use jaws::{
     GripperEvent, GripperProgram, GripperState, JawState, ParallelJaws, Squeeze, jaw_compressions,

@@ -1,7 +1,9 @@
 //! Robots from URDF (`[[robot]]`): the format, the URDF reader and its checks, the checked
-//! [`Robot`], its insertion into a rapier world and its joints' state and targets.
+//! [`Robot`], its insertion into a rapier world, its joints' state and targets and the loads
+//! they carry.
 
 mod build;
+mod load;
 mod model;
 mod overlap;
 mod spec;
@@ -9,6 +11,8 @@ mod state;
 mod urdf;
 
 pub use build::{FALLBACK_DENSITY, RobotHandles, RobotJointHandle};
+pub use load::{joint_load, joint_state_loaded};
+pub(crate) use model::moving_names;
 pub use model::{JointKind, Mimic, Robot, RobotJoint, RobotLink};
 pub use spec::{BaseKind, JointModel, MeshShape, RobotSpec};
 pub use state::{JointState, joint_state, joint_target, set_joint_target};

@@ -250,6 +250,19 @@ impl Robot {
     }
 }
 
+/// The moving joints' names, `a, b` (`none` without), for errors naming what is valid.
+pub(crate) fn moving_names(joints: &[RobotJoint]) -> String {
+    let names: Vec<&str> = (joints.iter())
+        .filter(|j| j.kind.moves())
+        .map(|j| j.name.as_str())
+        .collect();
+    if names.is_empty() {
+        "none".to_owned()
+    } else {
+        names.join(", ")
+    }
+}
+
 /// The links and joints of `rapier` with names, limits, gains, mimics and start positions;
 /// `initial` and `gains` keys must name moving joints.
 fn links_and_joints(
@@ -308,7 +321,10 @@ fn links_and_joints(
         let Some(&i) = by_name.get(name).filter(|&&i| joints[i].kind.moves()) else {
             return Err(c.name(
                 f(&format!("initial.{name}")),
-                "no moving joint of the robot has this name",
+                format!(
+                    "no moving joint of the robot has this name (its moving joints: {})",
+                    moving_names(&joints)
+                ),
             ));
         };
         let [lo, hi] = joints[i].limits;
@@ -322,7 +338,10 @@ fn links_and_joints(
         if !by_name.get(name).is_some_and(|&i| joints[i].kind.moves()) {
             return Err(c.name(
                 f(&format!("gains.{name}")),
-                "no moving joint of the robot has this name",
+                format!(
+                    "no moving joint of the robot has this name (its moving joints: {})",
+                    moving_names(&joints)
+                ),
             ));
         }
         c.range(f(&format!("gains.{name}[0]")), *k, (0.0, 1e12), "")?;

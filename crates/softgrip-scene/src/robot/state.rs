@@ -18,7 +18,8 @@ pub struct JointState {
     /// impulse joints, the motor's and the limit's impulses of the last substep over its
     /// length (rapier writes them back); multibody joints, the motor's spring law
     /// `k (q_target - q) + d (v_target - v)` clamped to the effort limit (rapier does not write
-    /// a multibody motor's impulse back).
+    /// a multibody motor's impulse back); a multibody mimic joint (no motor) 0 here, the load its
+    /// coupling carries in [`joint_state_loaded`](crate::robot::joint_state_loaded).
     pub effort: f64,
 }
 
@@ -47,6 +48,7 @@ pub fn joint_state(
             };
             let q = l.joint.coords()[i] as f64;
             let v = mb.joint_velocity(l).get(0).copied().unwrap_or(0.0) as f64;
+            // A mimic joint has no motor (`joint_state_loaded` reads its coupling's load).
             let effort = l.joint.data.motor(axis).map_or(0.0, |m| {
                 let tau = m.stiffness as f64 * (m.target_pos as f64 - q)
                     + m.damping as f64 * (m.target_vel as f64 - v);
