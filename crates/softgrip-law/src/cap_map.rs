@@ -25,8 +25,9 @@
 //!
 //! Only the calibrated plane laws carry the cap as a term; `auto`, `tabulated` and `custom`
 //! take the map alone (their plane curve is a table) with session 11's constants, fitted
-//! without the cap (`crate::mapping`). A core keeps session 11's map
-//! (`crate::core_map`). The hot path is unchanged (the same curve type); binding the flat pad
+//! without the cap (`crate::mapping`). A calibrated core takes the flat pad's map and cap
+//! (`crate::core_map`: its hemisphere's denominator carries `rho_H B` too, so that as t -> R
+//! it is the flat pad's law on the counterpart). The hot path is unchanged (the same curve type); binding the flat pad
 //! builds its table once (`cargo bench -p softgrip-law --bench law -- with_counterpart`).
 
 use crate::backing::Backing;
@@ -56,8 +57,7 @@ pub(crate) fn capped_on_counterpart(
             Backing::Flat,
             None,
             nu,
-            1.0,
-            1.0,
+            None,
             map.cap,
         )?)),
         Backing::Core { .. } => None,
@@ -73,7 +73,7 @@ mod tests {
 
     /// The two plane forms, plain and with the cap scaled by `cap`, at `nu`.
     fn pairs(nu: f64, cap: f64) -> [(Box<dyn NormalisedLaw>, Box<dyn NormalisedLaw>); 2] {
-        let flat = |c| Backed::try_new_capped(Backing::Flat, None, nu, 1.0, 1.0, c).expect("flat");
+        let flat = |c| Backed::try_new_capped(Backing::Flat, None, nu, None, c).expect("flat");
         [
             (
                 Box::new(Calibrated::try_new(nu).expect("free")),

@@ -84,8 +84,8 @@
 //! skin's squeeze `s = delta/t` (`crate::core_map`, its own table when bound); the tail is
 //! this map's.
 //!
-//! Constants `r0, r1, g0, g1, q` per construction (free, flat; the core keeps session 11's
-//! bonded constants), `tools/calibration/fit_counterpart.py` form `r+g+q, eps, cap` (ball
+//! Constants `r0, r1, g0, g1, q` per construction (free, flat; a calibrated core takes the
+//! flat pad's with the cap, so that as t -> R it is the flat pad's law), `tools/calibration/fit_counterpart.py` form `r+g+q, eps, cap` (ball
 //! curves at nu 0.3, 0.48, 0.499; held out of the fit: the balls of 0.7 R and 6 R at nu = 0.4,
 //! 1.5 R at 0.45 and 0.42, 3 R at 0.35, 0.7 R at 0.35, R2/R = 4 and 10 at nu 0.3-0.499, R/2
 //! and 2R at 0.499, and the cylinders: 0.68-2.97 %; fitted: 0.77-2.69 %, but the flat pad at
@@ -258,9 +258,9 @@ impl Form {
         let eps = (3.0 * (1.0 - 2.0 * nu) / (2.0 * (1.0 + nu))).min(EPS_VALIDATED);
         let ([r0, r1, g0, g1], (q, order), cap) = match (backing, capped) {
             (Backing::Free, true) => (FREE, COLLAPSE_FREE, true),
-            (Backing::Flat, true) => (FLAT, COLLAPSE_FLAT, true),
+            (Backing::Flat | Backing::Core { .. }, true) => (FLAT, COLLAPSE_FLAT, true),
             (Backing::Free, false) => (FREE_11, COLLAPSE_FREE_11, false),
-            (Backing::Flat | Backing::Core { .. }, _) => (BONDED_11, COLLAPSE_BONDED_11, false),
+            (Backing::Flat | Backing::Core { .. }, false) => (BONDED_11, COLLAPSE_BONDED_11, false),
         };
         Self {
             r: r0 + r1 * eps,
@@ -299,9 +299,8 @@ const COLLAPSE_BONDED_11: (f64, i32) = (3.981922, 1);
 const FREE: [f64; 4] = [0.717102, -0.918761, 0.259604, -0.719838];
 /// Flat pad: r0, r1, g0, g1 (as [`FREE`]).
 const FLAT: [f64; 4] = [0.832134, -0.872566, 0.332105, -0.173477];
-/// Without the cap (`auto`, `tabulated`, `custom`, whose plane curve is a table, and the core,
-/// whose hemisphere's cap is not scaled): session 11's constants, form `r+g+q, eps` of
-/// `fit_counterpart.py` (`crate::core_map` was validated with the bonded ones). With session
+/// Without the cap (`auto`, `tabulated`, `custom`, whose plane curve is a table): session 11's
+/// constants, form `r+g+q, eps` of `fit_counterpart.py`. With session
 /// 12's constants and no cap the free sphere would be 6.61 % and the flat pad 11.47 % off at
 /// nu = 0.3 (against 3.64 and 5.05 %).
 const FREE_11: [f64; 4] = [0.723783, -1.10834, 0.256014, -0.648758];

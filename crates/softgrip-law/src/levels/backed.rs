@@ -623,7 +623,7 @@ impl Backed {
         nu: f64,
         on: Option<&CoreOnCounterpart>,
     ) -> Result<Self> {
-        Self::try_new_capped(backing, tau, nu, rho, rho_layer, 1.0)
+        Self::try_new_capped(backing, tau, nu, on, 1.0)
     }
 
     /// [`Backed::try_new_on`] with the compressible cap (the denominator's `b^2 eps x^2`)
@@ -633,8 +633,7 @@ impl Backed {
         backing: Backing,
         tau: Option<f64>,
         nu: f64,
-        rho: f64,
-        rho_layer: f64,
+        on: Option<&CoreOnCounterpart>,
         cap: f64,
     ) -> Result<Self> {
         if !(0.3..=0.5).contains(&nu) {
