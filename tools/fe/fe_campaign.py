@@ -117,12 +117,16 @@ def cases_3d():
     cylinder k = 1 flat (the smoke test compares with it), the plane in 3D against the
     axisymmetric flat run (role "check3d": how good the 3D mesh is), its mesh convergence
     against R/14 (role "conv", to x = 0.3), the edge flat and its convergence, then the free
-    cylinder and edge, and the cylinder k = 3."""
+    cylinder and edge, and the cylinder k = 3; the free cylinder at nu = 0.3 (held out)."""
     c = [("flat", 0.48, 0, 20, "main", "cylinder", 1), ("flat", 0.48, 0, 20, "check3d", "plane", 0),
          ("flat", 0.48, 0, 14, "conv", "cylinder", 1),
          ("flat", 0.48, 0, 20, "main", "edge", 0), ("flat", 0.48, 0, 14, "conv", "edge", 0),
          ("free", 0.48, 0, 20, "main", "cylinder", 1), ("free", 0.48, 0, 20, "main", "edge", 0),
          ("flat", 0.48, 0, 20, "main", "cylinder", 3), ("free", 0.48, 0, 20, "main", "cylinder", 3)]
+    # session 12 (law-curved): the cylinder away from nu = 0.48, held out of every fit (the law
+    # must hold at every nu); run under /work/fe-scratch/runs/law-curved-s12/
+    c += [("free", 0.3, 0, 20, "heldout", "cylinder", k) for k in (1, 3)]
+    c += [("flat", 0.3, 0, 20, "heldout", "cylinder", 3)]
     return c
 
 

@@ -20,6 +20,20 @@ KINDS = ("ball", "cylinder", "edge")
 NAME = re.compile(r"(force|pressure)_nu([\d.]+)(?:_k([\d.]+))?(?:_d([\d.]+))?\.csv$")
 
 
+def about_of(what, prov, head, x):
+    """A row's description: `head`, the force file's reach or the pressure file's x, and
+    whether the run is held out of every fit (from its provenance line `prov`)."""
+    reached = re.search(r"reached x = ([\d.]+)", prov)
+    about = head
+    if what == "force":
+        about += f", x = 0.01..{reached.group(1) if reached else '?'}"
+    else:
+        about += f", pressure at x = {x}"
+    if "held out of every fit" in prov:
+        about = "held out of every fit: " + about
+    return about
+
+
 def rows():
     """(path, schema, nu, geometry, counterpart literal, about) of every file, sorted."""
     out = []
@@ -40,57 +54,11 @@ def rows():
                 # Only the row's own kind is formatted: an edge file has no k.
                 cp = ("Counterpart::Edge" if kind == "edge" else
                       f"Counterpart::{kind.capitalize()} {{ k: {float(k)!r} }}")
-                text = open(os.path.join(d, f)).read()
-                prov = text.splitlines()[0]
-                reached = re.search(r"reached x = ([\d.]+)", prov)
-                about = f"{kind}" + (f" k = {float(k):g}" if k else "") + f", {geometry}, nu = {nu}"
-                if what == "force":
-                    about += f", x = 0.01..{reached.group(1) if reached else '?'}"
-                else:
-                    about += f", pressure at x = {x}"
-                if "held out of every fit" in prov:
-                    about = "held out of every fit: " + about
-                out.append((f"{kind}/{geometry}/{f}", schema, nu, geometry, cp, about))
+                prov = open(os.path.join(d, f)).readline()
+                head = f"{kind}" + (f" k = {float(k):g}" if k else "") + f", {geometry}, nu = {nu}"
+                out.append((f"{kind}/{geometry}/{f}", schema, f"{float(nu)!r}", f'"{geometry}"',
+                            cp, about_of(what, prov, head, x)))
     return out
-
-
-def write():
-    rs = ["//! [`COUNTERPART_FILES`]: every embedded FE file on a ball, a cylinder or an edge.",
-          "//!",
-          "//! Written by `tools/fe/fe_campaign.py export` (tools/fe/fe_table.py) from the files of",
-          "//! `tests/data/fe/{ball,cylinder,edge}/`; do not edit by hand.",
-          "",
-          "use crate::counterpart::Counterpart;",
-          "use crate::fe_file::{FeFile, Schema};",
-          "",
-          "/// One row: path (relative to `tests/data/fe/`), schema, nu, construction, counterpart,",
-          "/// description.",
-          "macro_rules! counterpart_file {",
-          "    ($path:literal, $schema:ident, $nu:expr, $geometry:literal, $cp:expr, $about:literal) => {",
-          "        FeFile {",
-          "            path: $path,",
-          "            schema: Schema::$schema,",
-          "            nu: Some($nu),",
-          "            about: $about,",
-          "            geometry: $geometry,",
-          "            thickness_ratio: None,",
-          "            counterpart: $cp,",
-          "            text: include_str!(concat!(\"../../../tests/data/fe/\", $path)),",
-          "        }",
-          "    };",
-          "}",
-          "",
-          "/// Every embedded file on a counterpart other than the plane (tools/fe: CalculiX 2.20, gmsh",
-          "/// 4.15.2; each file's provenance line says how it was made).",
-          "#[rustfmt::skip]",
-          "pub const COUNTERPART_FILES: &[FeFile] = &["]
-    for path, schema, nu, geometry, cp, about in rows():
-        rs.append(f"    counterpart_file!(\"{path}\", {schema}, {float(nu)!r}, \"{geometry}\", {cp}, "
-                  f"\"{about}\"),")
-    rs.append("];")
-    with open(TABLE, "w") as f:
-        f.write("\n".join(rs) + "\n")
-    return f"{TABLE}, {write_core()}"
 
 
 def core_rows():
@@ -103,56 +71,80 @@ def core_rows():
             raise SystemExit(f"ball/core/{f}: not a force or pressure file name")
         what, nu, t, k, x = m.groups()
         prov = open(os.path.join(d, f)).readline()
-        reached = re.search(r"reached x = ([\d.]+)", prov)
-        about = f"ball k = {float(k):g}, core t/R = {float(t):g}, nu = {nu}"
-        if what == "force":
-            about += f", x = 0.01..{reached.group(1) if reached else '?'}"
-        else:
-            about += f", pressure at x = {x}"
-        if "held out of every fit" in prov:
-            about = "held out of every fit: " + about
-        out.append((f"ball/core/{f}", what.capitalize(), nu, t,
-                    f"Counterpart::Ball {{ k: {float(k)!r} }}", about))
+        head = f"ball k = {float(k):g}, core t/R = {float(t):g}, nu = {nu}"
+        out.append((f"ball/core/{f}", what.capitalize(), f"{float(nu)!r}", f"{float(t)!r}",
+                    f"Counterpart::Ball {{ k: {float(k)!r} }}", about_of(what, prov, head, x)))
     return out
 
 
-def write_core():
-    rs = ["//! [`CORE_COUNTERPART_FILES`]: every embedded FE file of a skin on a core pressed on a",
-          "//! ball.",
-          "//!",
-          "//! Written by `tools/fe/fe_campaign.py export` (tools/fe/fe_table.py) from the files of",
-          "//! `tests/data/fe/ball/core/`; do not edit by hand.",
-          "",
-          "use crate::counterpart::Counterpart;",
-          "use crate::fe_file::{FeFile, Schema};",
-          "",
-          "/// One row: path (relative to `tests/data/fe/`), schema, nu, t/R, counterpart, description.",
-          "macro_rules! core_counterpart_file {",
-          "    ($path:literal, $schema:ident, $nu:expr, $t:expr, $cp:expr, $about:literal) => {",
-          "        FeFile {",
-          "            path: $path,",
-          "            schema: Schema::$schema,",
-          "            nu: Some($nu),",
-          "            about: $about,",
-          "            geometry: \"core\",",
-          "            thickness_ratio: Some($t),",
-          "            counterpart: $cp,",
-          "            text: include_str!(concat!(\"../../../tests/data/fe/\", $path)),",
-          "        }",
-          "    };",
-          "}",
-          "",
-          "/// Every embedded file of a skin on a rigid core pressed on a rigid ball (tools/fe:",
-          "/// CalculiX 2.20, gmsh 4.15.2; each file's provenance line says how it was made).",
-          "#[rustfmt::skip]",
-          "pub const CORE_COUNTERPART_FILES: &[FeFile] = &["]
-    for path, schema, nu, t, cp, about in core_rows():
-        rs.append(f"    core_counterpart_file!(\"{path}\", {schema}, {float(nu)!r}, {float(t)!r}, {cp}, "
-                  f"\"{about}\"),")
+# The two tables, one format: (file, module doc, macro, its fourth argument (name, the field
+# it fills, how), the row doc, the list's doc, const, rows). The counterpart table's rows carry
+# the construction (`geometry`), the core's the skin's t/R (its construction is "core").
+TABLES = [
+    (TABLE,
+     ["//! [`COUNTERPART_FILES`]: every embedded FE file on a ball, a cylinder or an edge.",
+      "//!",
+      "//! Written by `tools/fe/fe_campaign.py export` (tools/fe/fe_table.py) from the files of",
+      "//! `tests/data/fe/{ball,cylinder,edge}/`; do not edit by hand."],
+     "counterpart_file", "$geometry:literal",
+     ["            geometry: $geometry,", "            thickness_ratio: None,"],
+     ["/// One row: path (relative to `tests/data/fe/`), schema, nu, construction, counterpart,",
+      "/// description."],
+     ["/// Every embedded file on a counterpart other than the plane (tools/fe: CalculiX 2.20, gmsh",
+      "/// 4.15.2; each file's provenance line says how it was made)."],
+     "COUNTERPART_FILES", rows),
+    (CORE_TABLE,
+     ["//! [`CORE_COUNTERPART_FILES`]: every embedded FE file of a skin on a core pressed on a",
+      "//! ball.",
+      "//!",
+      "//! Written by `tools/fe/fe_campaign.py export` (tools/fe/fe_table.py) from the files of",
+      "//! `tests/data/fe/ball/core/`; do not edit by hand."],
+     "core_counterpart_file", "$t:expr",
+     ["            geometry: \"core\",", "            thickness_ratio: Some($t),"],
+     ["/// One row: path (relative to `tests/data/fe/`), schema, nu, t/R, counterpart, description."],
+     ["/// Every embedded file of a skin on a rigid core pressed on a rigid ball (tools/fe:",
+      "/// CalculiX 2.20, gmsh 4.15.2; each file's provenance line says how it was made)."],
+     "CORE_COUNTERPART_FILES", core_rows),
+]
+
+
+def write_table(out, doc, macro, arg, fields, row_doc, list_doc, const, rows_of):
+    """One table's Rust file: the loader's rows, each through the table's macro."""
+    rs = doc + [
+        "",
+        "use crate::counterpart::Counterpart;",
+        "use crate::fe_file::{FeFile, Schema};",
+        "",
+    ] + row_doc + [
+        f"macro_rules! {macro} {{",
+        f"    ($path:literal, $schema:ident, $nu:expr, {arg}, $cp:expr, $about:literal) => {{",
+        "        FeFile {",
+        "            path: $path,",
+        "            schema: Schema::$schema,",
+        "            nu: Some($nu),",
+        "            about: $about,",
+    ] + fields + [
+        "            counterpart: $cp,",
+        "            text: include_str!(concat!(\"../../../tests/data/fe/\", $path)),",
+        "        }",
+        "    };",
+        "}",
+        "",
+    ] + list_doc + [
+        "#[rustfmt::skip]",
+        f"pub const {const}: &[FeFile] = &[",
+    ]
+    for path, schema, nu, key, cp, about in rows_of():
+        rs.append(f"    {macro}!(\"{path}\", {schema}, {nu}, {key}, {cp}, \"{about}\"),")
     rs.append("];")
-    with open(CORE_TABLE, "w") as f:
+    with open(out, "w") as f:
         f.write("\n".join(rs) + "\n")
-    return CORE_TABLE
+    return out
+
+
+def write():
+    """Both tables; their paths."""
+    return ", ".join(write_table(*t) for t in TABLES)
 
 
 if __name__ == "__main__":

@@ -101,6 +101,21 @@ fn bench_levels(c: &mut Criterion) {
             r.force + r.stiffness
         });
     }
+    let flat_ball = ContactLaw::try_new(
+        params.with_backing(Backing::Flat).expect("valid backing"),
+        Level::Calibrated,
+    )
+    .and_then(|l| l.with_counterpart(Counterpart::try_ball(0.01)?))
+    .expect("binds");
+    bench_pass(
+        &mut force,
+        "calibrated-flat-ball",
+        &deltas(&flat_ball),
+        |d| {
+            let r = flat_ball.response(d);
+            r.force + r.stiffness
+        },
+    );
     force.finish();
 
     // Binding the law to a counterpart (what the plugin does per contact when the counterpart
@@ -128,6 +143,20 @@ fn bench_levels(c: &mut Criterion) {
     bind.bench_function("calibrated-core-ball", |b| {
         b.iter(|| {
             core.with_counterpart(black_box(ball))
+                .expect("binds")
+                .x_max()
+        })
+    });
+    // A flat pad on a ball builds its plane table with the cap scaled (`cap_map`), and its hot
+    // path is then the plane flat pad's.
+    let flat = ContactLaw::try_new(
+        params.with_backing(Backing::Flat).expect("valid backing"),
+        Level::Calibrated,
+    )
+    .expect("level builds");
+    bind.bench_function("calibrated-flat-ball", |b| {
+        b.iter(|| {
+            flat.with_counterpart(black_box(ball))
                 .expect("binds")
                 .x_max()
         })

@@ -119,11 +119,12 @@ pub(crate) fn core_on_counterpart(
         patch: h * h,
         rho: map.rho,
     };
-    let backed = Backed::try_new_on(
+    let backed = Backed::try_new_capped(
         backing,
         params.thickness_ratio(),
         params.poisson_ratio(),
         Some(&on),
+        map.cap,
     )?;
     // The curve is in the true x now: rho = 1 and s = h; the patch's axes stay the plane's
     // at rho x (the curve's radius is evaluated there).

@@ -2,6 +2,7 @@
 
 use std::sync::Arc;
 
+use crate::cap_map::capped_on_counterpart;
 use crate::core_map::core_on_counterpart;
 use crate::counterpart::{Counterpart, CounterpartKind};
 use crate::curve::{Curve, finite_non_negative};
@@ -225,8 +226,10 @@ impl ContactLaw {
 
     /// The same fingertip's law on `counterpart`: a plane (today's law, bit for bit), a
     /// curved surface (Hertz's ellipse at small x, the crate README's calibrated form at
-    /// large x) or a sharp edge. Cheap (no table is rebuilt: the plane law's scales change), so
-    /// a plugin can bind one per contact; the hot path then costs what the plane's does.
+    /// large x) or a sharp edge. Cheap (the plane law's scales change; a flat pad or a core on
+    /// a curved counterpart builds its table once: `cargo bench -p softgrip-law --bench law --
+    /// with_counterpart`), so a plugin can bind one per contact; the hot path then costs what
+    /// the plane's does.
     ///
     /// Fails if a curved counterpart is more concave than the fingertip allows or too sharp
     /// ([`Error::IncompatibleCounterpart`], [`crate::MIN_RELATIVE_CURVATURE`],
@@ -261,17 +264,22 @@ impl ContactLaw {
             p.poisson_ratio(),
             p.backing(),
             calibrated,
+            // Only `calibrated`'s own plane forms carry the compressible cap (`cap_map`).
+            matches!(self.level, Level::Calibrated),
         )?;
-        // A skin on a core: its own curve on a curved counterpart (`core_map`).
+        // A skin on a core: its own curve on a curved counterpart (`core_map`); the free
+        // sphere and the flat pad: the plane's with its compressible cap scaled (`cap_map`).
         let curved = counterpart.kind() == CounterpartKind::Curved;
-        let was_curved_core = self.counterpart.kind() == CounterpartKind::Curved
-            && matches!(self.curve, Curve::Backed(_))
-            && !p.backing().is_free();
+        let was_rebuilt = self.counterpart.kind() == CounterpartKind::Curved
+            && matches!(self.level, Level::Calibrated);
         let (curve, map, replaced) = match core_on_counterpart(self.level, p, &map, curved)? {
             Some((curve, map)) => (curve, map, true),
-            // Away from a curved counterpart: the plane's own table again.
-            None if was_curved_core => (Curve::try_new(self.level, p)?, map, true),
-            None => (self.curve.clone(), map, false),
+            None => match capped_on_counterpart(self.level, p, &map)? {
+                Some(curve) => (curve, map, true),
+                // Away from a curved counterpart: the plane's own curve again.
+                None if was_rebuilt => (Curve::try_new(self.level, p)?, map, true),
+                None => (self.curve.clone(), map, false),
+            },
         };
         let (e, r) = (p.effective_modulus(), p.radius());
         let x_max = curve.as_dyn().x_max();

@@ -2,6 +2,7 @@
 
 mod backing;
 mod backing_table;
+mod cap_map;
 mod core_map;
 mod counterpart;
 mod curve;

@@ -41,11 +41,11 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
 /// written (3.20 % with session 11's, 1.44 % with this one).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.40,
-        "ball/core/force_nu0.48_t0.3_k3.csv" => 3.40,
+        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.42,
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 3.74,
         "ball/core/force_nu0.48_t0.4_k2.csv" => 1.44,
-        "ball/core/force_nu0.48_t0.5_k1.csv" => 3.65,
-        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.19,
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 3.26,
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.73,
         // A curve that landed after: the target.
         _ => 2.8,
     };
@@ -53,13 +53,13 @@ fn stated_force_error(path: &str) -> f64 {
 }
 
 /// The curves the law misses the 3 % on, each within it below an x (its error there,
-/// the test allows 0.2 % more), both at the FE's last points: t/R 0.3 on 3R, +3.4 % at its end
+/// the test allows 0.2 % more), both at the FE's last points: t/R 0.3 on 3R, +3.7 % at its end
 /// (x = 0.2, delta/t 0.67; the plane law at the patch's x = 0.15 is itself 1-2 % stiff
-/// there, t/R 0.3 at nu 0.4 and 0.49); t/R 0.5 on R, -3.6 % at its end (x = 0.38, delta/t 0.76;
+/// there, t/R 0.3 at nu 0.4 and 0.49); t/R 0.5 on R, -3.3 % at its end (x = 0.38, delta/t 0.76;
 /// the plane law at the patch's x = 0.19 is itself 2 % soft, t/R 0.5 at nu 0.45).
 const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
-    ("ball/core/force_nu0.48_t0.3_k3.csv", 0.17, 2.62),
-    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.36, 2.84),
+    ("ball/core/force_nu0.48_t0.3_k3.csv", 0.17, 2.82),
+    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.36, 2.50),
 ];
 
 #[test]

@@ -50,6 +50,27 @@ fn a_plane_is_todays_law_bit_for_bit() {
     }
 }
 
+/// A law bound to a ball and then to a plane again is today's law bit for bit: the curves
+/// rebuilt for a curved counterpart (the calibrated free sphere's and flat pad's cap, a core's
+/// own table) are dropped for the plane's own.
+#[test]
+fn back_on_a_plane_after_a_ball_is_todays_law_bit_for_bit() {
+    let ball = Counterpart::try_ball(0.7).expect("ball");
+    for law in every_law() {
+        let again = law
+            .with_counterpart(ball)
+            .and_then(|l| l.with_counterpart(Counterpart::EDGE))
+            .and_then(|l| l.with_counterpart(Counterpart::PLANE))
+            .expect("binds");
+        assert_eq!(again.x_max().to_bits(), law.x_max().to_bits());
+        for i in 0..=100 {
+            let delta = law.delta_max() * f64::from(i) / 100.0;
+            assert_eq!(again.response(delta), law.response(delta), "{delta}");
+            assert_eq!(again.energy(delta).to_bits(), law.energy(delta).to_bits());
+        }
+    }
+}
+
 /// At small x every level on a ball is Hertz with the effective radius
 /// `R_eff = R R2/(R + R2)`: force `sqrt(R_eff/R)` times the plane's, a disc of radius
 /// `sqrt(R_eff delta)`; the Hertz level is exactly that at every x.

@@ -51,7 +51,7 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 }
 
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
-/// (`r+g+q, eps`), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
+/// (`r+g+q, eps, cap`, session 12), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
 /// every fit: the campaign's held-out runs (`ball/*/force_nu0.4_k0.7.csv`,
 /// `ball/*/force_nu0.4_k6.csv`, `ball/flat/force_nu0.45_k1.5.csv`,
@@ -63,47 +63,53 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 /// 0.63).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/free/force_nu0.3_k0.5.csv" => 1.96,
-        "ball/free/force_nu0.3_k1.csv" => 0.95,
-        "ball/free/force_nu0.3_k2.csv" => 1.93,
-        "ball/free/force_nu0.3_k4.csv" => 3.64,
-        "ball/free/force_nu0.3_k10.csv" => 1.99,
-        "ball/free/force_nu0.35_k3.csv" => 0.94,
-        "ball/free/force_nu0.48_k0.5.csv" => 1.21,
-        "ball/free/force_nu0.48_k1.csv" => 1.52,
+        "ball/free/force_nu0.3_k0.5.csv" => 1.29,
+        "ball/free/force_nu0.3_k1.csv" => 0.77,
+        "ball/free/force_nu0.3_k2.csv" => 1.11,
+        "ball/free/force_nu0.3_k4.csv" => 2.97,
+        "ball/free/force_nu0.3_k10.csv" => 1.47,
+        "ball/free/force_nu0.35_k3.csv" => 1.06,
+        "ball/free/force_nu0.48_k0.5.csv" => 1.20,
+        "ball/free/force_nu0.48_k1.csv" => 1.53,
         "ball/free/force_nu0.48_k2.csv" => 0.86,
-        "ball/free/force_nu0.48_k4.csv" => 1.71,
-        "ball/free/force_nu0.48_k10.csv" => 2.43,
-        "ball/free/force_nu0.499_k0.5.csv" => 1.62,
-        "ball/free/force_nu0.499_k1.csv" => 1.66,
-        "ball/free/force_nu0.499_k2.csv" => 1.41,
-        "ball/free/force_nu0.499_k4.csv" => 1.64,
+        "ball/free/force_nu0.48_k4.csv" => 1.69,
+        "ball/free/force_nu0.48_k10.csv" => 2.42,
+        "ball/free/force_nu0.499_k0.5.csv" => 1.61,
+        "ball/free/force_nu0.499_k1.csv" => 1.67,
+        "ball/free/force_nu0.499_k2.csv" => 1.42,
+        "ball/free/force_nu0.499_k4.csv" => 1.94,
         "ball/free/force_nu0.499_k10.csv" => 0.90,
-        "ball/free/force_nu0.4_k0.7.csv" => 2.42,
-        "ball/free/force_nu0.4_k6.csv" => 1.35,
+        "ball/free/force_nu0.4_k0.7.csv" => 2.40,
+        "ball/free/force_nu0.4_k6.csv" => 1.41,
         // Session 11's held-out runs (blind: run after the constants were fixed).
-        "ball/free/force_nu0.42_k1.5.csv" => 1.22,
-        "ball/flat/force_nu0.35_k0.7.csv" => 1.53,
-        "ball/flat/force_nu0.3_k0.5.csv" => 3.76,
-        "ball/flat/force_nu0.3_k1.csv" => 5.05,
-        "ball/flat/force_nu0.3_k2.csv" => 3.44,
-        "ball/flat/force_nu0.3_k4.csv" => 2.52,
-        "ball/flat/force_nu0.3_k10.csv" => 1.21,
-        "ball/flat/force_nu0.45_k1.5.csv" => 1.81,
-        "ball/flat/force_nu0.48_k0.5.csv" => 2.27,
-        "ball/flat/force_nu0.48_k1.csv" => 1.27,
-        "ball/flat/force_nu0.48_k2.csv" => 1.48,
-        "ball/flat/force_nu0.48_k4.csv" => 1.06,
-        "ball/flat/force_nu0.48_k10.csv" => 0.73,
-        "ball/flat/force_nu0.499_k1.csv" => 1.25,
-        "ball/flat/force_nu0.499_k2.csv" => 2.32,
-        "ball/flat/force_nu0.499_k4.csv" => 1.80,
-        "ball/flat/force_nu0.499_k10.csv" => 1.24,
-        "ball/flat/force_nu0.4_k0.7.csv" => 1.75,
-        "ball/flat/force_nu0.4_k6.csv" => 0.55,
+        "ball/free/force_nu0.42_k1.5.csv" => 1.69,
+        "ball/flat/force_nu0.35_k0.7.csv" => 1.72,
+        "ball/flat/force_nu0.3_k0.5.csv" => 2.22,
+        "ball/flat/force_nu0.3_k1.csv" => 3.46,
+        "ball/flat/force_nu0.3_k2.csv" => 2.69,
+        "ball/flat/force_nu0.3_k4.csv" => 2.10,
+        "ball/flat/force_nu0.3_k10.csv" => 1.03,
+        "ball/flat/force_nu0.45_k1.5.csv" => 1.88,
+        "ball/flat/force_nu0.48_k0.5.csv" => 2.12,
+        "ball/flat/force_nu0.48_k1.csv" => 1.26,
+        "ball/flat/force_nu0.48_k2.csv" => 1.35,
+        "ball/flat/force_nu0.48_k4.csv" => 0.95,
+        "ball/flat/force_nu0.48_k10.csv" => 0.68,
+        "ball/flat/force_nu0.499_k1.csv" => 1.28,
+        "ball/flat/force_nu0.499_k2.csv" => 2.77,
+        "ball/flat/force_nu0.499_k4.csv" => 2.06,
+        "ball/flat/force_nu0.499_k10.csv" => 1.36,
+        "ball/flat/force_nu0.4_k0.7.csv" => 2.00,
+        "ball/flat/force_nu0.4_k6.csv" => 0.89,
         "cylinder/flat/force_nu0.48_k1.csv" => 1.13,
         "cylinder/flat/force_nu0.48_k3.csv" => 0.94,
-        "cylinder/free/force_nu0.48_k1.csv" => 1.47,
+        // Session 12, blind (run after the constants were fixed): the free cylinders of R and
+        // 3R and the flat pad on 3R at nu = 0.3, the first away from nu = 0.48 (session 11's
+        // law: 1.91, 1.09 and 1.58 %).
+        "cylinder/free/force_nu0.3_k1.csv" => 1.91,
+        "cylinder/free/force_nu0.3_k3.csv" => 1.13,
+        "cylinder/flat/force_nu0.3_k3.csv" => 1.49,
+        "cylinder/free/force_nu0.48_k1.csv" => 1.48,
         "cylinder/free/force_nu0.48_k3.csv" => 0.72,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
@@ -126,23 +132,20 @@ const RANGE_SHORT: &[&str] = &[
     "ball/flat/force_nu0.499_k10.csv",
 ];
 
-/// The curves the law misses the 3 % on (COUNTERPART.md), all at nu = 0.3: the bonded
-/// pad on balls of R/2, R and 2R (3.76, 5.05, 3.44 %; 5.34, 8.02, 5.03 % before the collapse
-/// term: mid-x the ball of R/2 wants the law softer where R and 2R want it stiffer, which no
-/// term of one sign in K follows), and the free sphere on the ball of 4R (3.64 %, blind; 4.96 %
-/// before), past x = 0.65, where the compressible material under the contact collapses
-/// (smallest element volume ratio 0.25-0.35, cut at 0.2; [`WITHIN_TARGET_TO`] asserts 3 %
-/// below).
-const KNOWN_MISSES: &[&str] = &[
-    "ball/flat/force_nu0.3_k0.5.csv",
-    "ball/flat/force_nu0.3_k1.csv",
-    "ball/flat/force_nu0.3_k2.csv",
-    "ball/free/force_nu0.3_k4.csv",
-];
+/// The curve the law misses the 3 % on (COUNTERPART.md): the bonded pad at nu = 0.3
+/// on the ball of R, 3.46 % at its last two points, x = 0.65-0.66, where the FE's smallest
+/// element volume ratio is 0.22-0.21 (its data are cut at 0.2; [`WITHIN_TARGET_TO`] asserts
+/// 3 % below). Session 11 missed four (the bonded pad on R/2, R, 2R: 3.76, 5.05, 3.44 %; the
+/// free sphere on 4R, blind: 3.64 %): the cap scaled by the pressed area (`cap_map`) brought
+/// them to 2.22, 3.46, 2.69 and 2.97 %.
+const KNOWN_MISSES: &[&str] = &["ball/flat/force_nu0.3_k1.csv"];
 
-/// The free miss at nu = 0.3 is the material's collapse past x = 0.65: below it within the
-/// issue's 3 % (its error there; the test allows 0.2 % more).
-const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[("ball/free/force_nu0.3_k4.csv", 0.65, 2.16)];
+/// Where the curves past 3 % (or near it) are within the 3 % below the FE's collapse:
+/// `(file, to x, its error there %)`; the test allows 0.2 % more.
+const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
+    ("ball/free/force_nu0.3_k4.csv", 0.65, 1.43),
+    ("ball/flat/force_nu0.3_k1.csv", 0.64, 2.33),
+];
 
 #[test]
 fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
@@ -189,7 +192,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         }
         seen += 1;
     }
-    assert!(seen >= 41, "{seen} curves");
+    assert!(seen >= 44, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus

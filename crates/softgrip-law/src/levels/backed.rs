@@ -623,6 +623,19 @@ impl Backed {
         nu: f64,
         on: Option<&CoreOnCounterpart>,
     ) -> Result<Self> {
+        Self::try_new_capped(backing, tau, nu, on, 1.0)
+    }
+
+    /// [`Backed::try_new_on`] with the compressible cap (the denominator's `b^2 eps x^2`)
+    /// scaled by `cap` in (0, 1]: for the flat pad on a curved counterpart the area it presses
+    /// over the plane's, `rho_H` (`crate::cap_map`); 1 on a plane.
+    pub(crate) fn try_new_capped(
+        backing: Backing,
+        tau: Option<f64>,
+        nu: f64,
+        on: Option<&CoreOnCounterpart>,
+        cap: f64,
+    ) -> Result<Self> {
         if !(0.3..=0.5).contains(&nu) {
             return Err(Error::IncompatibleLevel {
                 level: LevelKind::Calibrated,
@@ -696,7 +709,7 @@ impl Backed {
             c: c0 + c1 * eps,
             d,
             e: e0 + e1 * eps,
-            b2: b * b * eps,
+            b2: cap * b * b * eps,
             core,
             radius,
             x_plane: on.map_or(1.0, |on| on.patch),

@@ -110,6 +110,14 @@ impl Calibrated {
         })
     }
 
+    /// The law with its compressible cap `B(nu)` scaled by `cap` in (0, 1]: on a curved
+    /// counterpart the area it presses over the plane's, `rho_H` (`crate::cap_map`).
+    pub(crate) fn try_new_capped(nu: f64, cap: f64) -> Result<Self> {
+        let mut law = Self::try_new(nu)?;
+        law.b2 *= cap;
+        Ok(law)
+    }
+
     /// `chi_cal(x)` (for the energy; the force and stiffness group its terms differently).
     fn chi(&self, x: f64) -> f64 {
         let w = 1.0 - x;
