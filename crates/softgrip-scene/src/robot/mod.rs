@@ -2,6 +2,7 @@
 //! [`Robot`], its insertion into a rapier world and its joints' state and targets.
 
 mod build;
+mod inertial;
 mod model;
 mod overlap;
 mod spec;
@@ -9,7 +10,7 @@ mod state;
 mod urdf;
 
 pub use build::{FALLBACK_DENSITY, RobotHandles, RobotJointHandle};
+pub use inertial::MAX_LINK_MASS;
 pub use model::{JointKind, Mimic, Robot, RobotJoint, RobotLink};
 pub use spec::{BaseKind, JointModel, MeshShape, RobotSpec};
 pub use state::{JointState, joint_state, joint_target, set_joint_target};
-pub use urdf::MAX_LINK_MASS;

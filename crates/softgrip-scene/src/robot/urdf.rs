@@ -11,10 +11,8 @@ use softgrip_rapier::rapier3d::prelude::{MeshConverter, TriMeshFlags, Vector};
 
 use crate::limits::{MAX_COORDINATE, MAX_MESH_BYTES, MAX_SCENE_BYTES, MAX_SIZE, MIN_SIZE};
 use crate::read::{ReadError, read_regular, size, strip_bom};
+use crate::robot::inertial::check_inertial;
 use crate::robot::spec::MeshShape;
-
-/// Largest mass of a link \[kg\] (rapier is f32; inertias are masses times squared lengths).
-pub const MAX_LINK_MASS: f64 = 1.0e6;
 
 /// A URDF read and checked: the robot with every collision mesh's `filename` replaced by the
 /// resolved path, and the file's text (the `/robot_description` published).
@@ -54,6 +52,7 @@ pub(crate) fn read_urdf(
     })?;
     let text =
         String::from_utf8(strip_bom(&bytes).to_vec()).map_err(|e| format!("not UTF-8: {e}"))?;
+    check_root_element(&text)?;
     let mut robot = rapier3d_urdf::urdf_rs::read_from_string(&sanitize(&text))
         .map_err(|e| format!("not a URDF robot: {e}"))?;
     check_structure(&robot)?;
@@ -66,29 +65,9 @@ pub(crate) fn read_urdf(
         }
         let at = format!("link `{}` inertial", link.name);
         check_pose(&at, &link.inertial.origin)?;
-        let m = link.inertial.mass.value;
-        if !(m.is_finite() && (0.0..=MAX_LINK_MASS).contains(&m)) {
-            return Err(format!(
-                "{at}: mass must be finite and in [0, {MAX_LINK_MASS:e}] kg, got {m}"
-            ));
-        }
-        let i = &link.inertial.inertia;
-        for (name, v) in [
-            ("ixx", i.ixx),
-            ("ixy", i.ixy),
-            ("ixz", i.ixz),
-            ("iyy", i.iyy),
-            ("iyz", i.iyz),
-            ("izz", i.izz),
-        ] {
-            if !(v.is_finite() && v.abs() <= MAX_LINK_MASS * MAX_SIZE) {
-                return Err(format!(
-                    "{at}: inertia {name} must be finite and within ±{:e} kg m^2, got {v}",
-                    MAX_LINK_MASS * MAX_SIZE
-                ));
-            }
-        }
+        check_inertial(&at, &link.inertial)?;
     }
+    check_massless(&robot)?;
     Ok(CheckedUrdf {
         robot,
         text,
@@ -207,6 +186,124 @@ fn check_structure(robot: &Robot) -> Result<(), UrdfProblem> {
                     ));
                 }
             }
+        }
+    }
+    check_mimic_cycles(robot)
+}
+
+/// No mimic joint follows itself through a chain of mimics (`a` mimics `b` mimics `a`): such a
+/// coupling has no solution rapier can hold.
+fn check_mimic_cycles(robot: &Robot) -> Result<(), UrdfProblem> {
+    let index: HashMap<&str, usize> = (robot.joints.iter().enumerate())
+        .map(|(i, j)| (j.name.as_str(), i))
+        .collect();
+    for start in 0..robot.joints.len() {
+        let mut chain = vec![start];
+        let mut at = start;
+        while let Some(m) = &robot.joints[at].mimic {
+            let Some(&next) = index.get(m.joint.as_str()) else {
+                break;
+            };
+            if next == start {
+                let names: Vec<_> = (chain.iter().chain([&start]))
+                    .map(|&k| format!("`{}`", robot.joints[k].name))
+                    .collect();
+                return Err(format!(
+                    "joint `{}` mimic: the mimic joints form a cycle ({}): one of them must \
+                     follow a joint that is not a mimic joint",
+                    robot.joints[start].name,
+                    names.join(" mimics ")
+                ));
+            }
+            if chain.contains(&next) || chain.len() > robot.joints.len() {
+                break; // a cycle not through `start`: reported from one of its own joints
+            }
+            chain.push(next);
+            at = next;
+        }
+    }
+    Ok(())
+}
+
+/// The document's first element is `<robot>` (`urdf-rs` reads any root element as a robot).
+fn check_root_element(text: &str) -> Result<(), UrdfProblem> {
+    let mut rest = text.trim_start();
+    loop {
+        let skip = if rest.starts_with("<?") {
+            rest.find("?>").map(|k| k + 2)
+        } else if rest.starts_with("<!--") {
+            rest.find("-->").map(|k| k + 3)
+        } else if rest.starts_with("<!") {
+            rest.find('>').map(|k| k + 1)
+        } else {
+            break;
+        };
+        let Some(k) = skip else { break };
+        rest = rest[k..].trim_start();
+    }
+    let name: String = (rest.strip_prefix('<').unwrap_or(""))
+        .chars()
+        .take_while(|c| !c.is_whitespace() && *c != '>' && *c != '/')
+        .collect();
+    if name == "robot" {
+        Ok(())
+    } else {
+        let got = if name.is_empty() {
+            rest.chars().take(20).collect::<String>()
+        } else {
+            format!("<{name}>")
+        };
+        Err(format!(
+            "not a URDF robot: the root element must be <robot>, got `{got}`"
+        ))
+    }
+}
+
+/// Every link that a moving joint moves has some mass: its own, its collision shapes' (given
+/// [`FALLBACK_DENSITY`](crate::robot::build::FALLBACK_DENSITY)) or a descendant's. A massless
+/// subtree on a joint has no inertia along it: rapier's solve of that joint is singular.
+fn check_massless(robot: &Robot) -> Result<(), UrdfProblem> {
+    let has_mass = |l: &rapier3d_urdf::urdf_rs::Link| {
+        l.inertial.mass.value > 0.0
+            || (l.collision.iter())
+                .any(|c| !matches!(c.geometry, Geometry::Box { ref size } if size.0 == [0.0; 3]))
+    };
+    let by_name: HashMap<&str, usize> = (robot.links.iter().enumerate())
+        .map(|(i, l)| (l.name.as_str(), i))
+        .collect();
+    let mut massive: Vec<bool> = robot.links.iter().map(has_mass).collect();
+    // Mass flows up from children to parents (a tree: at most links.len() passes).
+    for _ in 0..robot.links.len() {
+        let mut changed = false;
+        for j in &robot.joints {
+            let (Some(&p), Some(&c)) = (
+                by_name.get(j.parent.link.as_str()),
+                by_name.get(j.child.link.as_str()),
+            ) else {
+                continue;
+            };
+            if massive[c] && !massive[p] {
+                massive[p] = true;
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    for j in robot.joints.iter().filter(|j| moves(&j.joint_type)) {
+        let Some(&c) = by_name.get(j.child.link.as_str()) else {
+            continue;
+        };
+        let l = &robot.links[c];
+        let kept = !(l.visual.is_empty() && l.collision.is_empty()) || l.inertial.mass.value != 0.0;
+        if kept && !massive[c] {
+            return Err(format!(
+                "link `{}` (moved by joint `{}`): has no mass (mass {}, no collision shape) and \
+                 neither has any link below it: give it an <inertial> with a mass > 0 kg or a \
+                 <collision>",
+                l.name, j.name, l.inertial.mass.value
+            ));
         }
     }
     Ok(())
@@ -379,6 +476,7 @@ fn load_mesh(file: &Path, scale: [f64; 3], mesh: MeshShape) -> Result<(), String
             size(MAX_MESH_BYTES)
         ));
     }
+    let scaled = scale;
     let scale = Vector::new(scale[0] as f32, scale[1] as f32, scale[2] as f32);
     let loaded = rapier3d_meshloader::load_from_path(file, &converter(mesh), scale)
         .map_err(|e| format!("cannot load: {e}"))?;
@@ -401,6 +499,36 @@ fn load_mesh(file: &Path, scale: [f64; 3], mesh: MeshShape) -> Result<(), String
                 raw.vertices[v]
             ));
         }
+        check_extent(&raw.vertices, scaled).map_err(|e| format!("mesh {k}: {e}"))?;
+    }
+    Ok(())
+}
+
+/// The mesh `vertices` scaled by `scale`: finite, within the coordinate range, and at least
+/// [`MIN_SIZE`] and at most [`MAX_SIZE`] across (its largest extent) \[m\].
+fn check_extent(vertices: &[[f32; 3]], scale: [f64; 3]) -> Result<(), String> {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for v in vertices {
+        for a in 0..3 {
+            let x = f64::from(v[a]) * scale[a];
+            lo[a] = lo[a].min(x);
+            hi[a] = hi[a].max(x);
+        }
+    }
+    let extent = (0..3).map(|a| hi[a] - lo[a]).fold(0.0_f64, f64::max);
+    let far = (0..3)
+        .map(|a| lo[a].abs().max(hi[a].abs()))
+        .fold(0.0_f64, f64::max);
+    if !(extent.is_finite() && (MIN_SIZE..=MAX_SIZE).contains(&extent)) {
+        return Err(format!(
+            "scaled by {scale:?} it is {extent:.3e} m across: its extent must be in [{MIN_SIZE:e}, {MAX_SIZE:e}] m"
+        ));
+    }
+    if !(far <= MAX_COORDINATE) {
+        return Err(format!(
+            "scaled by {scale:?} a vertex is {far:.3e} m from the link: must be within {MAX_COORDINATE:e} m"
+        ));
     }
     Ok(())
 }
