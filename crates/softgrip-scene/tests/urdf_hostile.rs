@@ -58,8 +58,13 @@ fn load(urdf: &str, extra: &str, files: &[(&str, &[u8])]) -> Result<Scene, Scene
         std::fs::create_dir_all(p.parent().unwrap()).unwrap();
         std::fs::write(p, bytes).unwrap();
     }
+    let base = if extra.contains("base =") {
+        ""
+    } else {
+        "base = \"fixed\"\n"
+    };
     let scene = format!(
-        "duration = 0.1\ngravity = [0.0, 0.0, -9.81]\n[[robot]]\nname = \"r\"\nurdf = \"robot.urdf\"\nbase = \"fixed\"\n{extra}\n"
+        "duration = 0.1\ngravity = [0.0, 0.0, -9.81]\n[[robot]]\nname = \"r\"\nurdf = \"robot.urdf\"\n{base}{extra}\n"
     );
     let path = dir.path().join("scene.toml");
     std::fs::write(&path, scene).unwrap();
@@ -222,9 +227,8 @@ fn a_moving_link_with_no_mass_and_no_shape_is_an_error() {
     // Link b has an inertial of zero mass but nothing to give it one: rapier cannot move it.
     let urdf = robot(&[
         link("a"),
-        format!(
-            r#"<link name="b"><inertial><origin xyz="0 0 -0.05"/><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial><visual><geometry><sphere radius="0.01"/></geometry></visual></link>"#
-        ),
+        r#"<link name="b"><inertial><origin xyz="0 0 -0.05"/><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial><visual><geometry><sphere radius="0.01"/></geometry></visual></link>"#
+            .to_string(),
         joint("j", "revolute", "a", "b", ""),
     ]);
     urdf_error(&urdf, &[], &["link `b`", "mass"]);
@@ -457,4 +461,46 @@ fn an_unknown_package_is_an_error_naming_it_and_the_known_ones() {
             && e.contains("link `base`"),
         "{e}"
     );
+}
+
+#[test]
+fn a_dynamic_base_without_mass_is_an_error_naming_the_field() {
+    // A visual-only root: rapier would hold a massless dynamic body still (it did not fall).
+    let urdf = robot(&[
+        r#"<link name="a"><visual><geometry><sphere radius="0.01"/></geometry></visual></link>"#
+            .to_string(),
+    ]);
+    for model in ["multibody", "impulse"] {
+        let e = load(
+            &urdf,
+            &format!("base = \"dynamic\"\njoints = \"{model}\""),
+            &[],
+        )
+        .map(|_| ())
+        .unwrap_err();
+        assert_eq!(e.field(), Some("robot[0].base"), "{e}");
+        assert!(e.to_string().contains("link `a` has none"), "{e}");
+    }
+    // With a mass it falls: 50 steps of dt = 1/60 s in N substeps of h under
+    // 9.81 m/s^2, rapier's symplectic Euler: z = -g h^2 N (N + 1) / 2.
+    let heavy = robot(&[format!(
+        r#"<link name="a">{}</link>"#,
+        inertial("1", "1e-3")
+    )]);
+    let scene = load(&heavy, "base = \"dynamic\"", &[]).unwrap();
+    let mut run = PlainRun::new(&scene);
+    run.run(50, |_| {});
+    let z = run.world.physics.bodies[run.handles.robots[0].1.links[0]]
+        .translation()
+        .z;
+    // The plugin's substeps times rapier's (its solver iterations are substeps).
+    let iterations = run
+        .world
+        .physics
+        .integration_parameters
+        .num_solver_iterations;
+    let n = (run.world.soft.counters().substeps_total * iterations as u64) as f64;
+    let h = 50.0 / 60.0 / n;
+    let want = -9.81 * h * h * n * (n + 1.0) / 2.0;
+    assert!((f64::from(z) - want).abs() < 1e-3, "z = {z}, want {want}");
 }

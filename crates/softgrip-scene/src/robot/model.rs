@@ -10,7 +10,7 @@ use softgrip_rapier::rapier3d::prelude::{Pose, RigidBodyBuilder, Rotation};
 
 use crate::error::SceneError;
 use crate::robot::spec::{BaseKind, JointModel, RobotSpec};
-use crate::robot::urdf::{CheckedUrdf, converter, read_urdf};
+use crate::robot::urdf::{CheckedUrdf, converter, has_mass, read_urdf};
 use crate::validate::Checker;
 use crate::vector::vector;
 
@@ -140,6 +140,24 @@ impl Robot {
         );
         let rapier = UrdfRobot::from_robot(&urdf.robot, options, Path::new(""));
         let (links, joints) = links_and_joints(c, field, spec, &urdf, &rapier)?;
+        let root = links.iter().position(|l| l.parent_joint.is_none());
+        if spec.base == BaseKind::Dynamic
+            && let Some(root) = root
+            && !has_mass(&urdf.robot.links[rapier.links[root].urdf_link_index])
+        {
+            return Err(SceneError::Urdf {
+                origin: c.origin.to_string(),
+                field: f("base"),
+                path: urdf.path.clone(),
+                message: format!(
+                    "base = \"dynamic\" needs a root link with a mass, but link `{}` has none \
+                     (mass 0, no collision shape; rapier would hold it still): give it an \
+                     <inertial> with a mass > 0 kg or a <collision>, or use base = \"kinematic\" \
+                     or \"fixed\"",
+                    links[root].name
+                ),
+            });
+        }
         if spec.self_contacts
             && let Some((a, b, depth)) =
                 crate::robot::overlap::fixed_overlap(&rapier, &links, &joints)

@@ -259,15 +259,18 @@ fn check_root_element(text: &str) -> Result<(), UrdfProblem> {
     }
 }
 
+/// Whether link `l` has a mass: its own, or its collision shapes' (an empty `<geometry>`, read
+/// as a zero box, has none).
+pub(crate) fn has_mass(l: &rapier3d_urdf::urdf_rs::Link) -> bool {
+    l.inertial.mass.value > 0.0
+        || (l.collision.iter())
+            .any(|c| !matches!(c.geometry, Geometry::Box { ref size } if size.0 == [0.0; 3]))
+}
+
 /// Every link that a moving joint moves has some mass: its own, its collision shapes' (given
 /// [`FALLBACK_DENSITY`](crate::robot::build::FALLBACK_DENSITY)) or a descendant's. A massless
 /// subtree on a joint has no inertia along it: rapier's solve of that joint is singular.
 fn check_massless(robot: &Robot) -> Result<(), UrdfProblem> {
-    let has_mass = |l: &rapier3d_urdf::urdf_rs::Link| {
-        l.inertial.mass.value > 0.0
-            || (l.collision.iter())
-                .any(|c| !matches!(c.geometry, Geometry::Box { ref size } if size.0 == [0.0; 3]))
-    };
     let by_name: HashMap<&str, usize> = (robot.links.iter().enumerate())
         .map(|(i, l)| (l.name.as_str(), i))
         .collect();
@@ -525,7 +528,7 @@ fn check_extent(vertices: &[[f32; 3]], scale: [f64; 3]) -> Result<(), String> {
             "scaled by {scale:?} it is {extent:.3e} m across: its extent must be in [{MIN_SIZE:e}, {MAX_SIZE:e}] m"
         ));
     }
-    if !(far <= MAX_COORDINATE) {
+    if far.is_nan() || far > MAX_COORDINATE {
         return Err(format!(
             "scaled by {scale:?} a vertex is {far:.3e} m from the link: must be within {MAX_COORDINATE:e} m"
         ));
