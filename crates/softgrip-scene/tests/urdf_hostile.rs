@@ -166,6 +166,24 @@ fn a_limit_lower_than_upper_is_an_error_naming_both_values() {
 }
 
 #[test]
+fn a_revolute_or_prismatic_joint_without_limit_is_an_error_naming_it() {
+    for kind in ["revolute", "prismatic"] {
+        let urdf = robot(&[link("a"), link("b"), joint("j", kind, "a", "b", "")]).replace(
+            r#"<limit lower="-1" upper="1" effort="5" velocity="2"/>"#,
+            "",
+        );
+        urdf_error(&urdf, &[], &["joint `j`", kind, "needs a <limit"]);
+    }
+    // A continuous joint needs none; a <limit> with only effort and velocity is URDF's
+    // lower = upper = 0 (a locked joint), as written.
+    let urdf = robot(&[link("a"), link("b"), joint("j", "continuous", "a", "b", "")]).replace(
+        r#"<limit lower="-1" upper="1" effort="5" velocity="2"/>"#,
+        "",
+    );
+    loads_and_runs(&urdf, "", &[]);
+}
+
+#[test]
 fn negative_mass_or_inertia_is_an_error_naming_the_link_and_value() {
     let mass = robot(&[link("a"), link("b"), joint("j", "revolute", "a", "b", "")]).replacen(
         "<mass value=\"0.1\"/>",
@@ -390,7 +408,7 @@ fn a_closed_loop_duplicate_names_and_empty_robots_are_errors() {
 #[test]
 fn unsupported_empty_and_badly_scaled_meshes_are_errors_naming_the_file() {
     let tetra: &[u8] = TETRA.as_bytes();
-    let cases: [(&str, &str, &[u8], &[&str]); 7] = [
+    let cases: [(&str, &str, &[u8], &[&str]); 8] = [
         (
             "m.ply",
             "",
@@ -404,6 +422,13 @@ fn unsupported_empty_and_badly_scaled_meshes_are_errors_naming_the_file() {
             &["m.obj", "no"],
         ),
         ("m.stl", "", b"solid x\nendsolid x\n", &["m.stl", "no"]),
+        // As pybullet_data/random_urdfs/168/168.obj (Blender export of NaN vertices).
+        (
+            "m.obj",
+            "",
+            b"v nan nan nan\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n",
+            &["m.obj", "mesh 0: vertex 0 is not finite: [NaN, NaN, NaN]"],
+        ),
         (
             "m.obj",
             " scale=\"1e30 1e30 1e30\"",

@@ -56,6 +56,7 @@ pub(crate) fn read_urdf(
     let mut robot = rapier3d_urdf::urdf_rs::read_from_string(&sanitize(&text))
         .map_err(|e| format!("not a URDF robot: {e}"))?;
     check_structure(&robot)?;
+    check_limits_given(&text)?;
     let dir = path.parent().unwrap_or(Path::new(""));
     for link in &mut robot.links {
         for (k, c) in link.collision.iter_mut().enumerate() {
@@ -220,6 +221,45 @@ fn check_mimic_cycles(robot: &Robot) -> Result<(), UrdfProblem> {
             }
             chain.push(next);
             at = next;
+        }
+    }
+    Ok(())
+}
+
+/// Every `revolute` and `prismatic` joint has a `<limit>` (URDF requires it; `urdf-rs` would
+/// read a missing one as lower = upper = 0: a joint locked at 0 without a word).
+fn check_limits_given(text: &str) -> Result<(), UrdfProblem> {
+    let attr = |tag: &str, key: &str| -> Option<String> {
+        let k = tag.find(&format!(" {key}="))? + key.len() + 2;
+        let quote = tag[k..].chars().next()?;
+        let rest = &tag[k + 1..];
+        Some(rest[..rest.find(quote)?].to_string())
+    };
+    let mut rest = text;
+    while let Some(open) = rest.find("<joint") {
+        rest = &rest[open + "<joint".len()..];
+        let Some(end) = rest.find('>') else { break };
+        let tag = &rest[..end];
+        if !tag.starts_with(char::is_whitespace) {
+            continue;
+        }
+        let kind = attr(tag, "type").unwrap_or_default();
+        if kind != "revolute" && kind != "prismatic" {
+            continue;
+        }
+        let body = if tag.ends_with('/') {
+            ""
+        } else {
+            let b = &rest[end..];
+            &b[..b.find("</joint>").unwrap_or(b.len())]
+        };
+        if !body.contains("<limit") {
+            return Err(format!(
+                "joint `{}`: a {kind} joint needs a <limit lower upper effort velocity> (URDF \
+                 requires it; without one it would be locked at 0): add one, or make it \
+                 `continuous`",
+                attr(tag, "name").unwrap_or_default()
+            ));
         }
     }
     Ok(())
@@ -479,16 +519,16 @@ fn load_mesh(file: &Path, scale: [f64; 3], mesh: MeshShape) -> Result<(), String
             size(MAX_MESH_BYTES)
         ));
     }
-    let scaled = scale;
-    let scale = Vector::new(scale[0] as f32, scale[1] as f32, scale[2] as f32);
-    let loaded = rapier3d_meshloader::load_from_path(file, &converter(mesh), scale)
+    // The loader `rapier3d_meshloader::load_from_path` uses, then its conversion of each mesh,
+    // after the raw mesh is checked (a NaN vertex makes the convex hull fail unexplained).
+    let scene = rapier3d_meshloader::mesh_loader::Loader::default()
+        .load(file)
         .map_err(|e| format!("cannot load: {e}"))?;
-    if loaded.is_empty() {
+    if scene.meshes.is_empty() {
         return Err("holds no mesh".into());
     }
-    for (k, shape) in loaded.into_iter().enumerate() {
-        let shape = shape.map_err(|e| format!("mesh {k}: cannot be converted: {e}"))?;
-        let raw = &shape.raw_mesh;
+    let s32 = Vector::new(scale[0] as f32, scale[1] as f32, scale[2] as f32);
+    for (k, raw) in scene.meshes.iter().enumerate() {
         if raw.faces.is_empty() {
             return Err(format!("mesh {k}: holds no triangle"));
         }
@@ -502,7 +542,9 @@ fn load_mesh(file: &Path, scale: [f64; 3], mesh: MeshShape) -> Result<(), String
                 raw.vertices[v]
             ));
         }
-        check_extent(&raw.vertices, scaled).map_err(|e| format!("mesh {k}: {e}"))?;
+        check_extent(&raw.vertices, scale).map_err(|e| format!("mesh {k}: {e}"))?;
+        rapier3d_meshloader::load_from_raw_mesh(raw, &converter(mesh), s32)
+            .map_err(|e| format!("mesh {k}: cannot be converted: {e}"))?;
     }
     Ok(())
 }
