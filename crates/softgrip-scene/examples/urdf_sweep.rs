@@ -1,7 +1,8 @@
 //! Loads each URDF named on the command line through the scene loader (a generated scene per
 //! URDF: the robot at the origin, base fixed, gravity on, `joints` = the first argument
 //! `multibody` or `impulse`) and runs 50 steps; prints one tab-separated line per URDF:
-//! `<file> <ok|error|nan|panic> <links> <joints> <colliders> <detail>`. A local survey of
+//! `<file> <ok|error|nan|panic> <links> <joints> <colliders> <detail>` (for `ok`, the
+//! largest link speed at the end). A local survey of
 //! third-party models (`.ci/urdf-sweep.sh` runs it over pybullet_data), not a test.
 //!
 //! `cargo run -p softgrip-scene --example urdf_sweep -- multibody a.urdf b.urdf ...`
@@ -86,13 +87,16 @@ fn one(urdf: &Path, model: &str) -> String {
         let p = run.world.physics.bodies[*b].translation();
         !(p.x.is_finite() && p.y.is_finite() && p.z.is_finite())
     });
-    // Largest drift of a link from where it started is not judged here (a fixed base with
-    // gravity on lets unactuated joints fall): only whether the run stays finite.
+    // The largest link speed tells a blow-up that stays finite (a fixed base with gravity on
+    // lets unactuated joints swing: a few m/s is a fall, not a blow-up).
+    let speed = (h.links.iter())
+        .map(|b| run.world.physics.bodies[*b].linvel().length())
+        .fold(0.0_f32, f32::max);
     match bad {
         Some(i) => format!(
             "nan\t{links}\t{joints}\t{colliders}\tlink `{}` is not finite",
             r.links()[i].name
         ),
-        None => format!("ok\t{links}\t{joints}\t{colliders}\t"),
+        None => format!("ok\t{links}\t{joints}\t{colliders}\tlargest link speed {speed:.3} m/s"),
     }
 }
