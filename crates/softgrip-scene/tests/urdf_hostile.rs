@@ -403,6 +403,15 @@ fn a_closed_loop_duplicate_names_and_empty_robots_are_errors() {
         &["not a URDF robot"],
     );
     urdf_error("", &[], &["not a URDF robot"]);
+    // A malformed number (pybullet_data's biped2d_pybullet.urdf has `lower="-1.57."`): the
+    // parser does not say where; the error does.
+    let bad = robot(&[link("a"), link("b"), joint("j", "revolute", "a", "b", "")])
+        .replace("lower=\"-1\"", "lower=\"-1.57.\"");
+    urdf_error(
+        &bad,
+        &[],
+        &["line 1: <limit lower=\"-1.57.\">: expected a number"],
+    );
 }
 
 #[test]

@@ -4,6 +4,7 @@
 mod build;
 mod inertial;
 mod model;
+mod numbers;
 mod overlap;
 mod spec;
 mod state;

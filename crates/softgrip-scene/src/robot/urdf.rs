@@ -12,6 +12,7 @@ use softgrip_rapier::rapier3d::prelude::{MeshConverter, TriMeshFlags, Vector};
 use crate::limits::{MAX_COORDINATE, MAX_MESH_BYTES, MAX_SCENE_BYTES, MAX_SIZE, MIN_SIZE};
 use crate::read::{ReadError, read_regular, size, strip_bom};
 use crate::robot::inertial::check_inertial;
+use crate::robot::numbers::first_bad_number;
 use crate::robot::spec::MeshShape;
 
 /// A URDF read and checked: the robot with every collision mesh's `filename` replaced by the
@@ -53,8 +54,12 @@ pub(crate) fn read_urdf(
     let text =
         String::from_utf8(strip_bom(&bytes).to_vec()).map_err(|e| format!("not UTF-8: {e}"))?;
     check_root_element(&text)?;
-    let mut robot = rapier3d_urdf::urdf_rs::read_from_string(&sanitize(&text))
-        .map_err(|e| format!("not a URDF robot: {e}"))?;
+    let mut robot = rapier3d_urdf::urdf_rs::read_from_string(&sanitize(&text)).map_err(|e| {
+        match first_bad_number(&text) {
+            Some(at) => format!("not a URDF robot: {at} ({e})"),
+            None => format!("not a URDF robot: {e}"),
+        }
+    })?;
     check_structure(&robot)?;
     check_limits_given(&text)?;
     let dir = path.parent().unwrap_or(Path::new(""));
