@@ -253,6 +253,37 @@ fn a_moving_link_with_no_mass_and_no_shape_is_an_error() {
 }
 
 #[test]
+fn an_empty_link_between_two_moving_joints_is_kept_and_moves_as_written() {
+    // b has no inertial, collision or visual; rapier3d-urdf keeps it (both its joints move).
+    // c's origin: (0, 0, -0.1) + R_y(j1) (0, 0, -0.1) = (-0.1 sin 0.5, 0, -0.1 - 0.1 cos 0.5).
+    let urdf = robot(&[
+        link("a"),
+        r#"<link name="b"/>"#.to_string(),
+        link("c"),
+        joint("j1", "revolute", "a", "b", ""),
+        joint("j2", "revolute", "b", "c", ""),
+    ]);
+    let want = [-0.1 * 0.5_f64.sin(), 0.0, -0.1 - 0.1 * 0.5_f64.cos()];
+    for model in ["multibody", "impulse"] {
+        let extra = format!("joints = \"{model}\"\ninitial = {{ j1 = 0.5, j2 = -0.3 }}");
+        let scene = load(&urdf, &extra, &[]).unwrap();
+        let r = &scene.robots()[0];
+        assert_eq!(r.links().len(), 3, "{model}");
+        let mut run = PlainRun::new(&scene);
+        run.run(100, |_| {});
+        let h = &run.handles.robots[0].1;
+        for (j, q0) in [(0, 0.5), (1, -0.3)] {
+            let q = softgrip_scene::robot::joint_state(r, &run.world.physics, h, j, 1.0).position;
+            assert!((q - q0).abs() < 1e-3, "{model}: joint {j} at {q}");
+        }
+        let p = run.world.physics.bodies[h.links[2]].translation();
+        for (got, want) in [p.x, p.y, p.z].iter().zip(want) {
+            assert!((f64::from(*got) - want).abs() < 1e-4, "{model}: c at {p:?}");
+        }
+    }
+}
+
+#[test]
 fn a_link_with_no_collision_loads_and_runs() {
     let urdf = robot(&[
         link("a"),

@@ -49,9 +49,9 @@ pub(crate) fn check_inertial(at: &str, inertial: &Inertial) -> Result<(), String
     if p.iter().any(|&l| l < -PSD_TOLERANCE * largest) {
         return Err(format!(
             "{at}: inertia (ixx {}, iyy {}, izz {}, ixy {}, ixz {}, iyz {}) has principal moments \
-             {p:?} kg m^2: each must be >= 0 (the off-diagonal terms are too large for the \
-             diagonal ones)",
-            i.ixx, i.iyy, i.izz, i.ixy, i.ixz, i.iyz
+             [{:.4e}, {:.4e}, {:.4e}] kg m^2: each must be >= 0 (the off-diagonal terms are too \
+             large for the diagonal ones)",
+            i.ixx, i.iyy, i.izz, i.ixy, i.ixz, i.iyz, p[0], p[1], p[2]
         ));
     }
     Ok(())
