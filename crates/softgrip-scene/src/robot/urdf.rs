@@ -203,29 +203,31 @@ fn check_mimic_cycles(robot: &Robot) -> Result<(), UrdfProblem> {
     let index: HashMap<&str, usize> = (robot.joints.iter().enumerate())
         .map(|(i, j)| (j.name.as_str(), i))
         .collect();
+    // Each joint is walked once (linear in the joints): 0 unseen, 1 on the current walk, 2 done.
+    let mut state = vec![0_u8; robot.joints.len()];
     for start in 0..robot.joints.len() {
-        let mut chain = vec![start];
-        let mut at = start;
-        while let Some(m) = &robot.joints[at].mimic {
-            let Some(&next) = index.get(m.joint.as_str()) else {
-                break;
-            };
-            if next == start {
-                let names: Vec<_> = (chain.iter().chain([&start]))
-                    .map(|&k| format!("`{}`", robot.joints[k].name))
+        let mut walk = Vec::new();
+        let mut at = Some(start);
+        while let Some(k) = at.filter(|&k| state[k] != 2) {
+            if state[k] == 1 {
+                let from = walk.iter().position(|&w| w == k).unwrap_or(0);
+                let names: Vec<_> = (walk[from..].iter().chain([&k]))
+                    .map(|&w| format!("`{}`", robot.joints[w].name))
                     .collect();
                 return Err(format!(
                     "joint `{}` mimic: the mimic joints form a cycle ({}): one of them must \
                      follow a joint that is not a mimic joint",
-                    robot.joints[start].name,
+                    robot.joints[k].name,
                     names.join(" mimics ")
                 ));
             }
-            if chain.contains(&next) || chain.len() > robot.joints.len() {
-                break; // a cycle not through `start`: reported from one of its own joints
-            }
-            chain.push(next);
-            at = next;
+            state[k] = 1;
+            walk.push(k);
+            at =
+                (robot.joints[k].mimic.as_ref()).and_then(|m| index.get(m.joint.as_str()).copied());
+        }
+        for w in walk {
+            state[w] = 2;
         }
     }
     Ok(())
@@ -320,23 +322,30 @@ fn check_massless(robot: &Robot) -> Result<(), UrdfProblem> {
         .map(|(i, l)| (l.name.as_str(), i))
         .collect();
     let mut massive: Vec<bool> = robot.links.iter().map(has_mass).collect();
-    // Mass flows up from children to parents (a tree: at most links.len() passes).
-    for _ in 0..robot.links.len() {
-        let mut changed = false;
-        for j in &robot.joints {
-            let (Some(&p), Some(&c)) = (
-                by_name.get(j.parent.link.as_str()),
-                by_name.get(j.child.link.as_str()),
-            ) else {
-                continue;
-            };
-            if massive[c] && !massive[p] {
-                massive[p] = true;
-                changed = true;
-            }
+    // Mass flows up from children to parents: links in breadth-first order from the root (the
+    // structure check made the joints a tree), then children before parents.
+    let mut children: Vec<Vec<usize>> = vec![Vec::new(); robot.links.len()];
+    let mut parent = vec![None; robot.links.len()];
+    for j in &robot.joints {
+        if let (Some(&p), Some(&c)) = (
+            by_name.get(j.parent.link.as_str()),
+            by_name.get(j.child.link.as_str()),
+        ) {
+            children[p].push(c);
+            parent[c] = Some(p);
         }
-        if !changed {
-            break;
+    }
+    let mut order: Vec<usize> = (0..robot.links.len())
+        .filter(|&l| parent[l].is_none())
+        .collect();
+    let mut k = 0;
+    while k < order.len() {
+        order.extend(children[order[k]].iter().copied());
+        k += 1;
+    }
+    for &l in order.iter().rev() {
+        if let Some(p) = parent[l] {
+            massive[p] |= massive[l];
         }
     }
     for j in robot.joints.iter().filter(|j| moves(&j.joint_type)) {
