@@ -569,3 +569,21 @@ fn a_dynamic_base_without_mass_is_an_error_naming_the_field() {
     let want = -9.81 * h * h * n * (n + 1.0) / 2.0;
     assert!((f64::from(z) - want).abs() < 1e-3, "z = {z}, want {want}");
 }
+
+#[test]
+fn a_multibody_of_more_joints_than_rapier_solves_in_time_is_an_error() {
+    // A chain of 300 revolute joints: over the cap as a multibody, fine with impulse joints.
+    let n = softgrip_scene::robot::MAX_MULTIBODY_JOINTS + 44;
+    let mut parts: Vec<String> = (0..=n).map(|i| link(&format!("l{i}"))).collect();
+    for i in 1..=n {
+        let (p, c) = (format!("l{}", i - 1), format!("l{i}"));
+        parts.push(joint(&format!("j{i}"), "revolute", &p, &c, ""));
+    }
+    let urdf = robot(&parts);
+    let e = load(&urdf, "", &[]).map(|_| ()).unwrap_err();
+    assert_eq!(e.field(), Some("robot[0].joints"), "{e}");
+    assert!(e.to_string().contains("with 300 moving joints"), "{e}");
+    assert!(e.to_string().contains("at most 256 moving joints"), "{e}");
+    let scene = load(&urdf, "joints = \"impulse\"", &[]).unwrap();
+    assert_eq!(scene.robots()[0].joints().len(), 300);
+}

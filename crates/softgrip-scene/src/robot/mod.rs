@@ -12,6 +12,6 @@ mod urdf;
 
 pub use build::{FALLBACK_DENSITY, RobotHandles, RobotJointHandle};
 pub use inertial::MAX_LINK_MASS;
-pub use model::{JointKind, Mimic, Robot, RobotJoint, RobotLink};
+pub use model::{JointKind, MAX_MULTIBODY_JOINTS, Mimic, Robot, RobotJoint, RobotLink};
 pub use spec::{BaseKind, JointModel, MeshShape, RobotSpec};
 pub use state::{JointState, joint_state, joint_target, set_joint_target};
