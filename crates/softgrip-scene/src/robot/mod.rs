@@ -3,17 +3,19 @@
 //! they carry.
 
 mod build;
+mod inertial;
 mod load;
 mod model;
+mod numbers;
 mod overlap;
 mod spec;
 mod state;
 mod urdf;
 
 pub use build::{FALLBACK_DENSITY, RobotHandles, RobotJointHandle};
+pub use inertial::MAX_LINK_MASS;
 pub use load::{joint_load, joint_state_loaded};
 pub(crate) use model::moving_names;
-pub use model::{JointKind, Mimic, Robot, RobotJoint, RobotLink};
+pub use model::{JointKind, MAX_MULTIBODY_JOINTS, Mimic, Robot, RobotJoint, RobotLink};
 pub use spec::{BaseKind, JointModel, MeshShape, RobotSpec};
 pub use state::{JointState, joint_state, joint_target, set_joint_target};
-pub use urdf::MAX_LINK_MASS;

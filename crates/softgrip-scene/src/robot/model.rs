@@ -10,9 +10,15 @@ use softgrip_rapier::rapier3d::prelude::{Pose, RigidBodyBuilder, Rotation};
 
 use crate::error::SceneError;
 use crate::robot::spec::{BaseKind, JointModel, RobotSpec};
-use crate::robot::urdf::{CheckedUrdf, converter, read_urdf};
+use crate::robot::urdf::{CheckedUrdf, converter, has_mass, read_urdf};
 use crate::validate::Checker;
 use crate::vector::vector;
+
+/// Most moving joints of a `joints = "multibody"` robot. rapier's multibody solve is dense
+/// (cubic in its joints): a chain of n revolute joints took 0.16, 1.0, 6.7 and 148 s for 5
+/// steps at n = 100, 200, 400, 1000 (debug build; `examples/urdf_sweep.rs`), and 4000 did not
+/// finish in 300 s. Hands and arms have tens.
+pub const MAX_MULTIBODY_JOINTS: usize = 256;
 
 /// How a joint moves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -140,6 +146,36 @@ impl Robot {
         );
         let rapier = UrdfRobot::from_robot(&urdf.robot, options, Path::new(""));
         let (links, joints) = links_and_joints(c, field, spec, &urdf, &rapier)?;
+        let dofs = joints.iter().filter(|j| j.kind.moves()).count();
+        if spec.joints == JointModel::Multibody && dofs > MAX_MULTIBODY_JOINTS {
+            return Err(c.invalid(
+                f("joints"),
+                format!("\"multibody\" with {dofs} moving joints"),
+                &format!(
+                    "at most {MAX_MULTIBODY_JOINTS} moving joints for \"multibody\" (rapier's \
+                     multibody solve is dense: its cost grows as the cube of the joints), or \
+                     joints = \"impulse\""
+                ),
+            ));
+        }
+        let root = links.iter().position(|l| l.parent_joint.is_none());
+        if spec.base == BaseKind::Dynamic
+            && let Some(root) = root
+            && !has_mass(&urdf.robot.links[rapier.links[root].urdf_link_index])
+        {
+            return Err(SceneError::Urdf {
+                origin: c.origin.to_string(),
+                field: f("base"),
+                path: urdf.path.clone(),
+                message: format!(
+                    "base = \"dynamic\" needs a root link with a mass, but link `{}` has none \
+                     (mass 0, no collision shape; rapier would hold it still): give it an \
+                     <inertial> with a mass > 0 kg or a <collision>, or use base = \"kinematic\" \
+                     or \"fixed\"",
+                    links[root].name
+                ),
+            });
+        }
         if spec.self_contacts
             && let Some((a, b, depth)) =
                 crate::robot::overlap::fixed_overlap(&rapier, &links, &joints)

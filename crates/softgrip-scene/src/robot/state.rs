@@ -119,12 +119,17 @@ pub fn set_joint_target(
     if !joint.kind.moves() {
         return;
     }
-    // An impulse-jointed robot's mimic joints follow by their motors.
+    // An impulse-jointed robot's mimic joints follow by their motors, through chains of
+    // mimics (a mimic of a mimic; the URDF check rules out cycles).
     if robot.joint_model() == JointModel::Impulse {
-        for (f, follower) in robot.joints().iter().enumerate() {
-            if let Some(m) = follower.mimic.filter(|m| m.joint == j) {
-                let (p, v) = (m.multiplier * position + m.offset, m.multiplier * velocity);
-                set_motor_target(follower, world, h.joints[f], p, v);
+        let mut leaders = vec![(j, position, velocity)];
+        while let Some((leader, position, velocity)) = leaders.pop() {
+            for (f, follower) in robot.joints().iter().enumerate() {
+                if let Some(m) = follower.mimic.filter(|m| m.joint == leader) {
+                    let (p, v) = (m.multiplier * position + m.offset, m.multiplier * velocity);
+                    set_motor_target(follower, world, h.joints[f], p, v);
+                    leaders.push((f, p, v));
+                }
             }
         }
     }

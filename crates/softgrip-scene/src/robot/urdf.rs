@@ -11,10 +11,9 @@ use softgrip_rapier::rapier3d::prelude::{MeshConverter, TriMeshFlags, Vector};
 
 use crate::limits::{MAX_COORDINATE, MAX_MESH_BYTES, MAX_SCENE_BYTES, MAX_SIZE, MIN_SIZE};
 use crate::read::{ReadError, read_regular, size, strip_bom};
+use crate::robot::inertial::check_inertial;
+use crate::robot::numbers::first_bad_number;
 use crate::robot::spec::MeshShape;
-
-/// Largest mass of a link \[kg\] (rapier is f32; inertias are masses times squared lengths).
-pub const MAX_LINK_MASS: f64 = 1.0e6;
 
 /// A URDF read and checked: the robot with every collision mesh's `filename` replaced by the
 /// resolved path, and the file's text (the `/robot_description` published).
@@ -54,9 +53,15 @@ pub(crate) fn read_urdf(
     })?;
     let text =
         String::from_utf8(strip_bom(&bytes).to_vec()).map_err(|e| format!("not UTF-8: {e}"))?;
-    let mut robot = rapier3d_urdf::urdf_rs::read_from_string(&sanitize(&text))
-        .map_err(|e| format!("not a URDF robot: {e}"))?;
+    check_root_element(&text)?;
+    let mut robot = rapier3d_urdf::urdf_rs::read_from_string(&sanitize(&text)).map_err(|e| {
+        match first_bad_number(&text) {
+            Some(at) => format!("not a URDF robot: {at} ({e})"),
+            None => format!("not a URDF robot: {e}"),
+        }
+    })?;
     check_structure(&robot)?;
+    check_limits_given(&text)?;
     let dir = path.parent().unwrap_or(Path::new(""));
     for link in &mut robot.links {
         for (k, c) in link.collision.iter_mut().enumerate() {
@@ -66,29 +71,9 @@ pub(crate) fn read_urdf(
         }
         let at = format!("link `{}` inertial", link.name);
         check_pose(&at, &link.inertial.origin)?;
-        let m = link.inertial.mass.value;
-        if !(m.is_finite() && (0.0..=MAX_LINK_MASS).contains(&m)) {
-            return Err(format!(
-                "{at}: mass must be finite and in [0, {MAX_LINK_MASS:e}] kg, got {m}"
-            ));
-        }
-        let i = &link.inertial.inertia;
-        for (name, v) in [
-            ("ixx", i.ixx),
-            ("ixy", i.ixy),
-            ("ixz", i.ixz),
-            ("iyy", i.iyy),
-            ("iyz", i.iyz),
-            ("izz", i.izz),
-        ] {
-            if !(v.is_finite() && v.abs() <= MAX_LINK_MASS * MAX_SIZE) {
-                return Err(format!(
-                    "{at}: inertia {name} must be finite and within ±{:e} kg m^2, got {v}",
-                    MAX_LINK_MASS * MAX_SIZE
-                ));
-            }
-        }
+        check_inertial(&at, &link.inertial)?;
     }
+    check_massless(&robot)?;
     Ok(CheckedUrdf {
         robot,
         text,
@@ -207,6 +192,175 @@ fn check_structure(robot: &Robot) -> Result<(), UrdfProblem> {
                     ));
                 }
             }
+        }
+    }
+    check_mimic_cycles(robot)
+}
+
+/// No mimic joint follows itself through a chain of mimics (`a` mimics `b` mimics `a`): such a
+/// coupling has no solution rapier can hold.
+fn check_mimic_cycles(robot: &Robot) -> Result<(), UrdfProblem> {
+    let index: HashMap<&str, usize> = (robot.joints.iter().enumerate())
+        .map(|(i, j)| (j.name.as_str(), i))
+        .collect();
+    // Each joint is walked once (linear in the joints): 0 unseen, 1 on the current walk, 2 done.
+    let mut state = vec![0_u8; robot.joints.len()];
+    for start in 0..robot.joints.len() {
+        let mut walk = Vec::new();
+        let mut at = Some(start);
+        while let Some(k) = at.filter(|&k| state[k] != 2) {
+            if state[k] == 1 {
+                let from = walk.iter().position(|&w| w == k).unwrap_or(0);
+                let names: Vec<_> = (walk[from..].iter().chain([&k]))
+                    .map(|&w| format!("`{}`", robot.joints[w].name))
+                    .collect();
+                return Err(format!(
+                    "joint `{}` mimic: the mimic joints form a cycle ({}): one of them must \
+                     follow a joint that is not a mimic joint",
+                    robot.joints[k].name,
+                    names.join(" mimics ")
+                ));
+            }
+            state[k] = 1;
+            walk.push(k);
+            at =
+                (robot.joints[k].mimic.as_ref()).and_then(|m| index.get(m.joint.as_str()).copied());
+        }
+        for w in walk {
+            state[w] = 2;
+        }
+    }
+    Ok(())
+}
+
+/// Every `revolute` and `prismatic` joint has a `<limit>` (URDF requires it; `urdf-rs` would
+/// read a missing one as lower = upper = 0: a joint locked at 0 without a word).
+fn check_limits_given(text: &str) -> Result<(), UrdfProblem> {
+    let attr = |tag: &str, key: &str| -> Option<String> {
+        let k = tag.find(&format!(" {key}="))? + key.len() + 2;
+        let quote = tag[k..].chars().next()?;
+        let rest = &tag[k + 1..];
+        Some(rest[..rest.find(quote)?].to_string())
+    };
+    let mut rest = text;
+    while let Some(open) = rest.find("<joint") {
+        rest = &rest[open + "<joint".len()..];
+        let Some(end) = rest.find('>') else { break };
+        let tag = &rest[..end];
+        if !tag.starts_with(char::is_whitespace) {
+            continue;
+        }
+        let kind = attr(tag, "type").unwrap_or_default();
+        if kind != "revolute" && kind != "prismatic" {
+            continue;
+        }
+        let body = if tag.ends_with('/') {
+            ""
+        } else {
+            let b = &rest[end..];
+            &b[..b.find("</joint>").unwrap_or(b.len())]
+        };
+        if !body.contains("<limit") {
+            return Err(format!(
+                "joint `{}`: a {kind} joint needs a <limit lower upper effort velocity> (URDF \
+                 requires it; without one it would be locked at 0): add one, or make it \
+                 `continuous`",
+                attr(tag, "name").unwrap_or_default()
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The document's first element is `<robot>` (`urdf-rs` reads any root element as a robot).
+fn check_root_element(text: &str) -> Result<(), UrdfProblem> {
+    let mut rest = text.trim_start();
+    loop {
+        let skip = if rest.starts_with("<?") {
+            rest.find("?>").map(|k| k + 2)
+        } else if rest.starts_with("<!--") {
+            rest.find("-->").map(|k| k + 3)
+        } else if rest.starts_with("<!") {
+            rest.find('>').map(|k| k + 1)
+        } else {
+            break;
+        };
+        let Some(k) = skip else { break };
+        rest = rest[k..].trim_start();
+    }
+    let name: String = (rest.strip_prefix('<').unwrap_or(""))
+        .chars()
+        .take_while(|c| !c.is_whitespace() && *c != '>' && *c != '/')
+        .collect();
+    if name == "robot" {
+        Ok(())
+    } else {
+        let got = if name.is_empty() {
+            rest.chars().take(20).collect::<String>()
+        } else {
+            format!("<{name}>")
+        };
+        Err(format!(
+            "not a URDF robot: the root element must be <robot>, got `{got}`"
+        ))
+    }
+}
+
+/// Whether link `l` has a mass: its own, or its collision shapes' (an empty `<geometry>`, read
+/// as a zero box, has none).
+pub(crate) fn has_mass(l: &rapier3d_urdf::urdf_rs::Link) -> bool {
+    l.inertial.mass.value > 0.0
+        || (l.collision.iter())
+            .any(|c| !matches!(c.geometry, Geometry::Box { ref size } if size.0 == [0.0; 3]))
+}
+
+/// Every link that a moving joint moves has some mass: its own, its collision shapes' (given
+/// [`FALLBACK_DENSITY`](crate::robot::build::FALLBACK_DENSITY)) or a descendant's. A massless
+/// subtree on a joint has no inertia along it: rapier's solve of that joint is singular.
+fn check_massless(robot: &Robot) -> Result<(), UrdfProblem> {
+    let by_name: HashMap<&str, usize> = (robot.links.iter().enumerate())
+        .map(|(i, l)| (l.name.as_str(), i))
+        .collect();
+    let mut massive: Vec<bool> = robot.links.iter().map(has_mass).collect();
+    // Mass flows up from children to parents: links in breadth-first order from the root (the
+    // structure check made the joints a tree), then children before parents.
+    let mut children: Vec<Vec<usize>> = vec![Vec::new(); robot.links.len()];
+    let mut parent = vec![None; robot.links.len()];
+    for j in &robot.joints {
+        if let (Some(&p), Some(&c)) = (
+            by_name.get(j.parent.link.as_str()),
+            by_name.get(j.child.link.as_str()),
+        ) {
+            children[p].push(c);
+            parent[c] = Some(p);
+        }
+    }
+    let mut order: Vec<usize> = (0..robot.links.len())
+        .filter(|&l| parent[l].is_none())
+        .collect();
+    let mut k = 0;
+    while k < order.len() {
+        order.extend(children[order[k]].iter().copied());
+        k += 1;
+    }
+    for &l in order.iter().rev() {
+        if let Some(p) = parent[l] {
+            massive[p] |= massive[l];
+        }
+    }
+    for j in robot.joints.iter().filter(|j| moves(&j.joint_type)) {
+        let Some(&c) = by_name.get(j.child.link.as_str()) else {
+            continue;
+        };
+        let l = &robot.links[c];
+        let kept = !(l.visual.is_empty() && l.collision.is_empty()) || l.inertial.mass.value != 0.0;
+        if kept && !massive[c] {
+            return Err(format!(
+                "link `{}` (moved by joint `{}`): has no mass (mass {}, no collision shape) and \
+                 neither has any link below it: give it an <inertial> with a mass > 0 kg or a \
+                 <collision>",
+                l.name, j.name, l.inertial.mass.value
+            ));
         }
     }
     Ok(())
@@ -379,15 +533,16 @@ fn load_mesh(file: &Path, scale: [f64; 3], mesh: MeshShape) -> Result<(), String
             size(MAX_MESH_BYTES)
         ));
     }
-    let scale = Vector::new(scale[0] as f32, scale[1] as f32, scale[2] as f32);
-    let loaded = rapier3d_meshloader::load_from_path(file, &converter(mesh), scale)
+    // The loader `rapier3d_meshloader::load_from_path` uses, then its conversion of each mesh,
+    // after the raw mesh is checked (a NaN vertex makes the convex hull fail unexplained).
+    let scene = rapier3d_meshloader::mesh_loader::Loader::default()
+        .load(file)
         .map_err(|e| format!("cannot load: {e}"))?;
-    if loaded.is_empty() {
+    if scene.meshes.is_empty() {
         return Err("holds no mesh".into());
     }
-    for (k, shape) in loaded.into_iter().enumerate() {
-        let shape = shape.map_err(|e| format!("mesh {k}: cannot be converted: {e}"))?;
-        let raw = &shape.raw_mesh;
+    let s32 = Vector::new(scale[0] as f32, scale[1] as f32, scale[2] as f32);
+    for (k, raw) in scene.meshes.iter().enumerate() {
         if raw.faces.is_empty() {
             return Err(format!("mesh {k}: holds no triangle"));
         }
@@ -401,6 +556,38 @@ fn load_mesh(file: &Path, scale: [f64; 3], mesh: MeshShape) -> Result<(), String
                 raw.vertices[v]
             ));
         }
+        check_extent(&raw.vertices, scale).map_err(|e| format!("mesh {k}: {e}"))?;
+        rapier3d_meshloader::load_from_raw_mesh(raw, &converter(mesh), s32)
+            .map_err(|e| format!("mesh {k}: cannot be converted: {e}"))?;
+    }
+    Ok(())
+}
+
+/// The mesh `vertices` scaled by `scale`: finite, within the coordinate range, and at least
+/// [`MIN_SIZE`] and at most [`MAX_SIZE`] across (its largest extent) \[m\].
+fn check_extent(vertices: &[[f32; 3]], scale: [f64; 3]) -> Result<(), String> {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for v in vertices {
+        for a in 0..3 {
+            let x = f64::from(v[a]) * scale[a];
+            lo[a] = lo[a].min(x);
+            hi[a] = hi[a].max(x);
+        }
+    }
+    let extent = (0..3).map(|a| hi[a] - lo[a]).fold(0.0_f64, f64::max);
+    let far = (0..3)
+        .map(|a| lo[a].abs().max(hi[a].abs()))
+        .fold(0.0_f64, f64::max);
+    if !(extent.is_finite() && (MIN_SIZE..=MAX_SIZE).contains(&extent)) {
+        return Err(format!(
+            "scaled by {scale:?} it is {extent:.3e} m across: its extent must be in [{MIN_SIZE:e}, {MAX_SIZE:e}] m"
+        ));
+    }
+    if far.is_nan() || far > MAX_COORDINATE {
+        return Err(format!(
+            "scaled by {scale:?} a vertex is {far:.3e} m from the link: must be within {MAX_COORDINATE:e} m"
+        ));
     }
     Ok(())
 }
