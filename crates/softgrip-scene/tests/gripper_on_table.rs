@@ -89,3 +89,40 @@ fn gripper_whose_fingers_touch_the_table_grasps_without_blowing_up() {
     assert!(counters.immobile_rows > 0);
     assert!((hold_lift - 0.1).abs() < 5e-4, "box lifted {hold_lift} m");
 }
+
+/// 0.1 um lower than touching, the fingers start inside the table along their vertical, which
+/// their prismatic joints under a kinematic base cannot move: rapier's own contact pushes them
+/// out through `f32` noise (the finger was 5e6 m away within the first second). That start is
+/// a typed error naming the link, the table and the depth; touching (5 mm lower than shipped)
+/// and the shipped pose are not.
+#[test]
+fn finger_starting_inside_the_table_is_a_typed_error() {
+    let scene = |drop: f64| {
+        let path = repo().join("scenes/robots/parallel_gripper_box.toml");
+        let text = std::fs::read_to_string(&path).unwrap().replace(
+            "position = [0.0, 0.065, 0.0]",
+            &format!("position = [0.0, {}, 0.0]", 0.065 - drop),
+        );
+        Scene::parse(&text, "low.toml", path.parent().unwrap())
+    };
+    for drop in [0.0, 0.005] {
+        assert!(scene(drop).is_ok(), "drop {drop}: {:?}", scene(drop).err());
+    }
+    for (drop, depth) in [(0.0051, 1e-4), (0.006, 1e-3)] {
+        let err = scene(drop).unwrap_err();
+        let softgrip_scene::SceneError::StartBlocked {
+            link,
+            other,
+            depth: d,
+            ..
+        } = &err
+        else {
+            panic!("drop {drop}: {err}");
+        };
+        assert!(
+            link.contains("left_finger") && other.contains("table"),
+            "{err}"
+        );
+        assert!((d - depth).abs() < 1e-6, "depth {d}, expected {depth}");
+    }
+}
