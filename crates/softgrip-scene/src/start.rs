@@ -221,7 +221,7 @@ fn immobile_along(
         along += (v.dot(normal) as f64).powi(2);
         all += v.length_squared() as f64;
     }
-    !(along > softgrip_rapier::IMMOBILE * all)
+    along <= softgrip_rapier::IMMOBILE * all
 }
 
 /// A label for every collider: `body[j].shape[k]` (`name`), then `fingertip[i]` (`name`).
