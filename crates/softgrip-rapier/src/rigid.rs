@@ -494,8 +494,8 @@ fn solve_scalars(
 
 /// A row's own mobility, relative to its bodies' mobility at its point summed over three
 /// axes, below which the coupled soft solve takes the row as immobile (no impulse; counted in
-/// [`SoftCounters::immobile_rows`](crate::SoftCounters::immobile_rows)). rapier's jacobians, poses and
-/// velocities are `f32`: a direction a link cannot move along (a prismatic finger's vertical,
+/// [`SoftCounters::immobile_rows`](crate::SoftCounters::immobile_rows)). rapier's jacobians,
+/// poses and velocities are `f32`: a direction a link cannot move along (a prismatic finger's vertical,
 /// its base kinematic) reads a mobility of `(eps_f32 |J|)^2 W`, ~1e-14 of its axis's (measured
 /// 7.6e-15 on the parallel gripper), never 0. `f32::EPSILON` (1.2e-7, a direction within
 /// 3.5e-4 rad of a locked one) sits seven decades above that noise and below any mobility a

@@ -161,7 +161,8 @@ pub enum SceneError {
     /// A robot's link starts inside a fixed or kinematic body (at any depth) along a direction
     /// its joints cannot move it (a prismatic finger pressed into the table under a kinematic
     /// base): rapier's contact pushes it out through a mobility of `f32` noise and throws the
-    /// link along its joint (0.1 um into the table: the finger 5e6 m away within a second).
+    /// link along its joint (0.5 mm into the table: the finger 2.7 km along its joint in the
+    /// first step; 0.1 um blows up too).
     #[error(
         "{origin}: `{link}` starts {} m inside `{other}` along a direction its joints cannot move it (rapier's contact would throw it along its joints): raise the robot or move the body by at least that much (SCENES.md, \"Starting in contact\")",
         softgrip_law::Shortest(*depth)

@@ -90,11 +90,11 @@ fn gripper_whose_fingers_touch_the_table_grasps_without_blowing_up() {
     assert!((hold_lift - 0.1).abs() < 5e-4, "box lifted {hold_lift} m");
 }
 
-/// 0.1 um lower than touching, the fingers start inside the table along their vertical, which
-/// their prismatic joints under a kinematic base cannot move: rapier's own contact pushes them
-/// out through `f32` noise (the finger was 5e6 m away within the first second). That start is
-/// a typed error naming the link, the table and the depth; touching (5 mm lower than shipped)
-/// and the shipped pose are not.
+/// 0.1 mm (and 1 mm) lower than touching, the fingers start inside the table along their
+/// vertical, which their prismatic joints under a kinematic base cannot move: rapier's own
+/// contact pushes them out through `f32` noise (0.5 mm in: the finger 2.7 km along its joint
+/// in step 1; 0.1 um blows up too). That start is a typed error naming the link, the table and
+/// the depth; touching (5 mm lower than shipped) and the shipped pose are not.
 #[test]
 fn finger_starting_inside_the_table_is_a_typed_error() {
     let scene = |drop: f64| {
