@@ -34,6 +34,13 @@ pub struct SoftCounters {
     pub coupled_passes: u64,
     /// Coupled solves that used every pass allowed without settling, total.
     pub coupled_unsettled: u64,
+    /// Rows of coupled solves (rapier's contacts in them, and soft rows) along which their
+    /// bodies cannot move (mobility below `f32::EPSILON` of the bodies' at that point: a
+    /// prismatic finger's vertical on a table), solved as immobile (no impulse), total. Not an
+    /// error: a gripper whose fingers touch the table counts its table rows here each
+    /// (sub)step. Before session 12 such a row took an impulse of its `f32` noise and threw
+    /// the link off its joint.
+    pub immobile_rows: u64,
     /// The most soft contacts solved together in one coupled group (contacts sharing a
     /// dynamic body, What one step does, 4), over all solves so far (0 before any contact).
     /// Resting fingertips apart from each other are groups of one: a larger figure says the

@@ -38,6 +38,7 @@ pub use fingertip::{
 };
 pub use presets::Preset;
 pub use readout::TipContact;
+pub use rigid::IMMOBILE;
 pub use substep::{AMPLITUDE_FRACTION, MAX_SUBSTEPS, SoftAccuracy};
 pub use tactile::{MAX_TAXELS_PER_SIDE, MIN_TAXEL_SIDE_OVER_RADIUS, TactileGrid, TactilePad};
 pub use taxels::TactileImage;

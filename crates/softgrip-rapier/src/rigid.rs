@@ -143,6 +143,8 @@ struct Scalar {
     ang_a: Vector3<f64>,
     ang_b: Vector3<f64>,
     kind: Kind,
+    /// The contact point of a point row (a normal or a tangent) \[m\]; `None`: a torsion.
+    at: Option<Vector3<f64>>,
     /// Target end velocity [m/s or rad/s].
     target: f64,
     /// Diagonal compliance relative to the row's own mobility.
@@ -172,6 +174,7 @@ impl Scalar {
             ang_a: arm(a),
             ang_b: arm(b),
             kind,
+            at: Some(*p),
             target: 0.0,
             compliance: RIGID_COMPLIANCE,
             prox: 0.0,
@@ -276,9 +279,9 @@ enum State {
 pub(crate) struct CoupledScratch {
     scalars: Vec<Scalar>,
     state: Vec<State>,
-    /// Full coupled solves, their outer passes and those that did not settle, total
-    /// (`SoftCounters::coupled_*`).
-    pub stats: [u64; 3],
+    /// Full coupled solves, their outer passes, those that did not settle, and the rows found
+    /// immobile ([`immobile`]), total (`SoftCounters::coupled_*`, `immobile_rows`).
+    pub stats: [u64; 4],
 }
 
 /// The scalar rows of soft rows `soft` and rigid rows `rigid` (`rigid` only: `soft` empty),
@@ -327,6 +330,7 @@ fn build(
                         normal: nrm,
                         arm: r.torsion_arm,
                     },
+                    at: None,
                     target: 0.0,
                     compliance: SOFT_FRICTION_COMPLIANCE,
                     prox: 0.0,
@@ -400,11 +404,13 @@ fn solve_scalars(
     h: f64,
     state: &mut Vec<State>,
     passes: &mut usize,
+    immobile_count: &mut u64,
 ) -> Option<Vec<f64>> {
     let m = rows.len();
     // The rows' mutual mobility: the impulses change the bodies' velocities, never their mass,
     // inertia or centre, so it is computed once per solve (was: once per LU pass).
-    let mob = DMatrix::from_fn(m, m, |r, c| mobility(bodies, &rows[r], &rows[c]));
+    let mut mob = DMatrix::from_fn(m, m, |r, c| mobility(bodies, &rows[r], &rows[c]));
+    *immobile_count += immobile(bodies, rows, &mut mob);
     // The friction pairs' inverse 2 x 2 mobility.
     let pair_inv: Vec<Option<Matrix2<f64>>> = (0..m)
         .map(|i| match rows[i].kind {
@@ -416,7 +422,7 @@ fn solve_scalars(
                     mob[(other, i)],
                     mob[(other, other)] * (1.0 + y.compliance),
                 );
-                k.try_inverse().filter(|_| k.trace() > 0.0)
+                pair_inverse(&k)
             }
             _ => None,
         })
@@ -483,6 +489,76 @@ fn solve_scalars(
         previous.copy_from_slice(&j);
     }
     Some(j)
+}
+
+/// A row's own mobility, relative to its bodies' mobility at its point summed over three
+/// axes, below which the coupled soft solve takes the row as immobile (no impulse; counted in
+/// [`SoftCounters::immobile_rows`](crate::SoftCounters::immobile_rows)). rapier's jacobians,
+/// poses and velocities are `f32`: a direction a link cannot move along (a prismatic finger's vertical,
+/// its base kinematic) reads a mobility of `(eps_f32 |J|)^2 W`, ~1e-14 of its axis's (measured
+/// 7.6e-15 on the parallel gripper), never 0. `f32::EPSILON` (1.2e-7, a direction within
+/// 3.5e-4 rad of a locked one) sits seven decades above that noise and below any mobility a
+/// real geometry gives at a contact.
+pub const IMMOBILE: f64 = f32::EPSILON as f64;
+
+/// Zeroes the mobility (row and column of `mob`) of every row that its bodies cannot move
+/// along ([`IMMOBILE`]), and of the friction rows of such a normal; returns how many rows it
+/// zeroed (normals and torsions counted once each, tangents each).
+///
+/// Why: a hard row `W j = -v0` on an immobile direction takes an impulse `v0 / w` with `w` at
+/// `f32` noise. On a multibody link that impulse leaks into the link's free dof through the
+/// same noise, `J_free W J_row^T j ~ v0 / sqrt(w_rel)`: a parallel gripper's finger touching
+/// the table (its base 5 mm lower than the shipped scene) got 1e17 N s on its table rows and
+/// 79 m/s along its joint in one substep, and the scene blew up to 1e9 m
+/// (`softgrip-scene/tests/gripper_on_table.rs`). An immobile row has no impulse (the body
+/// does not move along it whatever the row does); a normal that carries nothing carries no
+/// friction either.
+fn immobile(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) -> u64 {
+    let m = rows.len();
+    let mut zero = vec![false; m];
+    for (i, r) in rows.iter().enumerate() {
+        let scale: f64 = (0..3)
+            .map(|k| {
+                let e = Vector3::ith(k, 1.0);
+                let axis = match r.at {
+                    Some(p) => Scalar::point(bodies, r.a, r.b, &p, &e, r.kind),
+                    None => Scalar {
+                        lin: Vector3::zeros(),
+                        ang_a: e,
+                        ang_b: e,
+                        ..*r
+                    },
+                };
+                mobility(bodies, &axis, &axis)
+            })
+            .sum();
+        zero[i] = !(mob[(i, i)] > IMMOBILE * scale);
+    }
+    for i in 0..m {
+        if let Kind::Tangent { normal, .. } | Kind::Torsion { normal, .. } = rows[i].kind
+            && zero[normal]
+            && matches!(rows[normal].kind, Kind::HardNormal)
+        {
+            zero[i] = true;
+        }
+    }
+    for i in (0..m).filter(|&i| zero[i]) {
+        mob.row_mut(i).fill(0.0);
+        mob.column_mut(i).fill(0.0);
+    }
+    zero.iter().filter(|z| **z).count() as u64
+}
+
+/// The inverse of a friction pair's 2 x 2 mobility `k`; where one tangent is immobile (its row
+/// and column zero: [`immobile`]), the other's alone (`1 / k_ii` on its diagonal, 0 on the
+/// immobile one's), so that the sweeps still clamp it to its disk; `None` if neither moves.
+fn pair_inverse(k: &Matrix2<f64>) -> Option<Matrix2<f64>> {
+    match (k[(0, 0)] > 0.0, k[(1, 1)] > 0.0) {
+        (true, true) => k.try_inverse(),
+        (true, false) => Some(Matrix2::new(1.0 / k[(0, 0)], 0.0, 0.0, 0.0)),
+        (false, true) => Some(Matrix2::new(0.0, 0.0, 0.0, 1.0 / k[(1, 1)])),
+        (false, false) => None,
+    }
 }
 
 /// One sweep of the friction pairs and torsions (see [`solve_scalars`]).
@@ -720,7 +796,7 @@ pub(crate) fn solve_coupled(
     // rapier's part: the rigid rows alone.
     let base: Vec<BodyState> = bodies.to_vec();
     build(bodies, &[], rigid, &[], h, scalars, &mut first);
-    let Some(rest) = solve_scalars(bodies, scalars, h, state, &mut passes) else {
+    let Some(rest) = solve_scalars(bodies, scalars, h, state, &mut passes, &mut stats[3]) else {
         bodies.clone_from_slice(&base);
         return false;
     };
@@ -734,7 +810,7 @@ pub(crate) fn solve_coupled(
     }
     // Everything.
     build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
-    let Some(j) = solve_scalars(bodies, scalars, h, state, &mut passes) else {
+    let Some(j) = solve_scalars(bodies, scalars, h, state, &mut passes, &mut stats[3]) else {
         bodies.clone_from_slice(&base);
         return false;
     };

@@ -424,8 +424,9 @@ pub(crate) struct SolveScratch {
 }
 
 impl SolveScratch {
-    /// Full coupled solves, their outer passes and those that did not settle, total.
-    pub(crate) fn coupled_stats(&self) -> [u64; 3] {
+    /// Full coupled solves, their outer passes, those that did not settle and the rows found
+    /// immobile, total.
+    pub(crate) fn coupled_stats(&self) -> [u64; 4] {
         self.coupled.stats
     }
 

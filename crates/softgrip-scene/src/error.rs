@@ -158,6 +158,25 @@ pub enum SceneError {
         /// The fingertip's radius R \[m\].
         radius: f64,
     },
+    /// A robot's link starts inside a fixed or kinematic body (at any depth) along a direction
+    /// its joints cannot move it (a prismatic finger pressed into the table under a kinematic
+    /// base): rapier's contact pushes it out through a mobility of `f32` noise and throws the
+    /// link along its joint (0.5 mm into the table: the finger 2.7 km along its joint in the
+    /// first step; 0.1 um blows up too).
+    #[error(
+        "{origin}: `{link}` starts {} m inside `{other}` along a direction its joints cannot move it (rapier's contact would throw it along its joints): raise the robot or move the body by at least that much (SCENES.md, \"Starting in contact\")",
+        softgrip_law::Shortest(*depth)
+    )]
+    StartBlocked {
+        /// The file.
+        origin: String,
+        /// The robot's link shape, e.g. `robot[0] (`gripper`) link `left_finger` collision[0]`.
+        link: String,
+        /// The fixed or kinematic body's shape, e.g. `body[0].shape[0] (`table`)`.
+        other: String,
+        /// Penetration depth at the start \[m\].
+        depth: f64,
+    },
     /// A robot's link starts inside a dynamic body deeper than rapier's allowed linear error:
     /// rapier would push the two apart in the first steps, through whatever holds the body.
     #[error(

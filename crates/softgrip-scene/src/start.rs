@@ -100,7 +100,8 @@ fn start_pose(world: &softgrip_rapier::SoftWorld, co: &Collider) -> Pose {
 /// Every robot link's collision shape against every shape of a dynamic body at the start poses
 /// (their bounding boxes first): deeper than rapier's allowed linear error is an error naming
 /// both shapes and the depth. A robot's link against a fixed or kinematic body (a hand's base on
-/// its table) is left to rapier.
+/// its table) is left to rapier, unless the link overlaps it at all along a direction its
+/// joints cannot move it ([`SceneError::StartBlocked`], [`immobile_along`]).
 fn check_links(
     c: &Checker,
     scene: &Scene,
@@ -114,12 +115,15 @@ fn check_links(
     let allowed = world.physics.integration_parameters.allowed_linear_error() as f64;
     let f = scene.file();
     let mut shapes = h.shapes.iter();
-    let mut dynamic = Vec::new();
+    let (mut dynamic, mut held) = (Vec::new(), Vec::new());
     for (j, b) in f.bodies.iter().enumerate() {
         for k in 0..b.shapes.len() {
             let Some((_, s)) = shapes.next() else { break };
+            let label = (*s, format!("body[{j}].shape[{k}] (`{}`)", b.name));
             if b.kind == crate::format::BodyKind::Dynamic {
-                dynamic.push((*s, format!("body[{j}].shape[{k}] (`{}`)", b.name)));
+                dynamic.push(label);
+            } else {
+                held.push(label);
             }
         }
     }
@@ -129,6 +133,34 @@ fn check_links(
                 let lc = &colliders[*lh];
                 let lpose = start_pose(world, lc);
                 let lbox = lc.shape().compute_aabb(&lpose);
+                let link = || {
+                    let link = &robot.links()[l].name;
+                    format!("robot[{i}] (`{name}`) link `{link}` collision[{k}]")
+                };
+                for (bh, label) in &held {
+                    let bc = &colliders[*bh];
+                    let bpose = start_pose(world, bc);
+                    if !lbox.intersects(&bc.shape().compute_aabb(&bpose)) {
+                        continue;
+                    }
+                    // The fixed body first: parry 0.31 gives a cuboid against a half-space
+                    // (a plane) as shape 2 the wrong points and normal.
+                    let Ok(Some(contact)) =
+                        query::contact(&bpose, bc.shape(), &lpose, lc.shape(), 0.0)
+                    else {
+                        continue;
+                    };
+                    let depth = -(contact.dist as f64);
+                    let Some(body) = lc.parent() else { continue };
+                    if depth > 0.0 && immobile_along(world, body, contact.point2, contact.normal1) {
+                        return Err(SceneError::StartBlocked {
+                            origin: c.origin.to_string(),
+                            link: link(),
+                            other: label.clone(),
+                            depth,
+                        });
+                    }
+                }
                 for (bh, label) in &dynamic {
                     let bc = &colliders[*bh];
                     let bpose = start_pose(world, bc);
@@ -142,10 +174,9 @@ fn check_links(
                     };
                     let depth = -(contact.dist as f64);
                     if depth > allowed {
-                        let link = &robot.links()[l].name;
                         return Err(SceneError::StartOverlap {
                             origin: c.origin.to_string(),
-                            link: format!("robot[{i}] (`{name}`) link `{link}` collision[{k}]"),
+                            link: link(),
                             other: label.clone(),
                             depth,
                             allowed,
@@ -156,6 +187,41 @@ fn check_links(
         }
     }
     Ok(())
+}
+
+/// Whether the multibody link of rigid body `body` cannot move along `normal` at `point`
+/// (world) through its joints: its multibody's jacobian (`Multibody::body_jacobian`, computed
+/// at build by `forward_kinematics`) moves that point along `normal` by at most
+/// `softgrip_rapier::IMMOBILE` (`f32::EPSILON`) of its motion in any direction, summed over the
+/// dofs (a prismatic finger's vertical under a kinematic base). `false` for a body that is not
+/// a dynamic multibody link (impulse-jointed robots, free bodies).
+fn immobile_along(
+    world: &softgrip_rapier::SoftWorld,
+    body: softgrip_rapier::rapier3d::prelude::RigidBodyHandle,
+    point: Vector,
+    normal: Vector,
+) -> bool {
+    let w = &world.physics;
+    let Some(rb) = w.bodies.get(body).filter(|rb| rb.is_dynamic()) else {
+        return false;
+    };
+    let Some(id) = w.multibody_joints.rigid_body_link(body) else {
+        return false;
+    };
+    let Some(mb) = w.multibody_joints.get_multibody(id.multibody) else {
+        return false;
+    };
+    let jac = mb.body_jacobian(id.id);
+    let arm = point - rb.mass_properties().world_com;
+    let (mut along, mut all) = (0.0f64, 0.0f64);
+    for c in 0..jac.ncols() {
+        let lin = Vector::new(jac[(0, c)], jac[(1, c)], jac[(2, c)]);
+        let ang = Vector::new(jac[(3, c)], jac[(4, c)], jac[(5, c)]);
+        let v = lin + ang.cross(arm);
+        along += (v.dot(normal) as f64).powi(2);
+        all += v.length_squared() as f64;
+    }
+    along <= softgrip_rapier::IMMOBILE * all
 }
 
 /// A label for every collider: `body[j].shape[k]` (`name`), then `fingertip[i]` (`name`).
