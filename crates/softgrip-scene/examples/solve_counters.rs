@@ -1,6 +1,7 @@
 //! The default grasp (`scenes/default.toml`, or the scene file given) on the plain plugin: its
 //! wall time, the plugin's own timers and how its coupled solves settled
-//! (`SoftCounters::coupled_*`), and the golden digest line, to compare solver changes.
+//! (`SoftCounters::coupled_*`), its substeps per step (`SoftCounters::substeps_total`), and
+//! the golden digest line, to compare solver changes.
 //!
 //! `cargo run --release -p softgrip-scene --example solve_counters [scene.toml]`
 
@@ -50,6 +51,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         c.coupled_passes,
         c.coupled_passes as f64 / c.coupled_solves.max(1) as f64,
         c.coupled_unsettled
+    );
+    println!(
+        "substeps {} ({:.2} per step, {} at the cap), largest group {} rows",
+        c.substeps_total,
+        c.substeps_total as f64 / c.steps.max(1) as f64,
+        c.substep_cap_hits,
+        c.largest_group
     );
     for (name, peak) in &peaks {
         println!("fingertip {name}: peak force {peak:.4} N");
