@@ -38,7 +38,8 @@ pub struct RecoverReport {
 /// can be read to `output` as a finished MCAP file (zstd chunks, message indexes, summary).
 /// A chunk whose CRC does not match is skipped; an unfinished chunk (length 2^64 - 1, as a
 /// killed writer leaves it) is decompressed as far as its bytes go and its complete records
-/// kept; a record of an unknown opcode (an extension record, opcode >= 0x80) is skipped by its
+/// kept; a channel naming a schema the file does not hold is kept without a schema (its
+/// messages as the reader reads them); a record of an unknown opcode (an extension record, opcode >= 0x80) is skipped by its
 /// length; the data-end record and the summary section's records are read past (a damaged
 /// file may have records after a stray data-end: they are kept; the summary is rebuilt);
 /// reading stops at the footer, at a record longer than the file, or at opcode 0x00 (not a
@@ -319,11 +320,22 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                     .map_err(|e| Error::write(&self.out_path, e))?;
             }
             Record::Channel(c) => {
-                let schema_ok = c.schema_id == 0 || self.schemas.contains(&c.schema_id);
-                if schema_ok && self.channels.insert(c.id) {
+                if self.channels.insert(c.id) {
+                    // A channel whose schema was lost (damaged, or never written) keeps its
+                    // messages as a schemaless channel, as the reader reads them.
+                    let schema_id = if c.schema_id == 0 || self.schemas.contains(&c.schema_id) {
+                        c.schema_id
+                    } else {
+                        self.report.skipped.push(format!(
+                            "channel {} ({}) names schema {}, which the file does not hold; \
+                             kept without a schema",
+                            c.id, c.topic, c.schema_id
+                        ));
+                        0
+                    };
                     w.add_channel_with_id(
                         c.id,
-                        c.schema_id,
+                        schema_id,
                         &c.topic,
                         &c.message_encoding,
                         &c.metadata,

@@ -282,3 +282,29 @@ fn open_chunk_length_u64_max_is_recovered_up_to_it() {
     let rec = Recording::from_bytes(&b).unwrap();
     assert_eq!(rec.recovery.unwrap().bytes_kept, chunk as u64);
 }
+
+/// Regression (the fuzz loop, seed 0x5EED_1111, iteration 432, once the gripper recordings
+/// joined the corpus): a cut file whose `/softgrip/contacts` channel names a schema the file no
+/// longer holds. The reader read its 6 messages as a schemaless channel; `recover` dropped the
+/// channel and kept 33 of the 39. It now keeps it without a schema and says so.
+#[test]
+fn a_channel_whose_schema_is_lost_is_recovered_without_one() {
+    let input =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/fuzz_recover_lost_schema.mcap");
+    let bytes = std::fs::read(&input).unwrap();
+    let read = Recording::from_bytes(&bytes).unwrap();
+    assert_eq!(read.messages.len(), 39);
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.mcap");
+    let report = softgrip_record::recover(&input, &out).unwrap();
+    assert_eq!(report.messages, 39, "{report:?}");
+    assert!(
+        report.skipped.iter().any(|s| s.contains(
+            "channel 4 (/softgrip/contacts) names schema 3, which the file does not hold"
+        )),
+        "{report:?}"
+    );
+    let back = Recording::from_bytes(&std::fs::read(&out).unwrap()).unwrap();
+    assert_eq!(back.messages.len(), 39);
+    assert!(!back.recovered());
+}
