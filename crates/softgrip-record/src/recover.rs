@@ -319,29 +319,21 @@ impl<W: std::io::Write + std::io::Seek> Rewriter<W> {
                 w.add_schema_with_id(header.id, &header.name, &header.encoding, &data)
                     .map_err(|e| Error::write(&self.out_path, e))?;
             }
-            Record::Channel(c) => {
-                if self.channels.insert(c.id) {
-                    // A channel whose schema was lost (damaged, or never written) keeps its
-                    // messages as a schemaless channel, as the reader reads them.
-                    let schema_id = if c.schema_id == 0 || self.schemas.contains(&c.schema_id) {
-                        c.schema_id
-                    } else {
-                        self.report.skipped.push(format!(
-                            "channel {} ({}) names schema {}, which the file does not hold; \
-                             kept without a schema",
-                            c.id, c.topic, c.schema_id
-                        ));
-                        0
-                    };
-                    w.add_channel_with_id(
-                        c.id,
-                        schema_id,
-                        &c.topic,
-                        &c.message_encoding,
-                        &c.metadata,
-                    )
+            // A channel whose schema was lost (damaged, or never written) keeps its messages
+            // as a schemaless channel, as the reader reads them.
+            Record::Channel(c) if self.channels.insert(c.id) => {
+                let schema_id = if c.schema_id == 0 || self.schemas.contains(&c.schema_id) {
+                    c.schema_id
+                } else {
+                    self.report.skipped.push(format!(
+                        "channel {} ({}) names schema {}, which the file does not hold; \
+                         kept without a schema",
+                        c.id, c.topic, c.schema_id
+                    ));
+                    0
+                };
+                w.add_channel_with_id(c.id, schema_id, &c.topic, &c.message_encoding, &c.metadata)
                     .map_err(|e| Error::write(&self.out_path, e))?;
-                }
             }
             Record::Message { header, data } => {
                 if self.channels.contains(&header.channel_id) {
