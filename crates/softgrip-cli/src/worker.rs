@@ -83,7 +83,9 @@ mod tests {
     fn a_worker_runs_until_finished_and_returns_its_value() {
         let w = Worker::start("count", "counting", |stop, ready| {
             ready.send(Ok(())).ok();
-            let mut n = 0u64;
+            // One count before the first look at `stop`: `finish` may stop the worker before
+            // its loop starts (it did on a loaded CI machine), and the value must still come back.
+            let mut n = 1u64;
             while !stop.stopped() {
                 n += 1;
                 std::thread::yield_now();
