@@ -46,5 +46,10 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "CONTROLLERS",
         pyo3::types::PyTuple::new(m.py(), controllers)?,
     )?;
+    // The results table's columns after the varied fields (softgrip_sweep::OUTCOME_COLUMNS).
+    m.add(
+        "OUTCOME_COLUMNS",
+        pyo3::types::PyTuple::new(m.py(), softgrip_sweep::OUTCOME_COLUMNS)?,
+    )?;
     Ok(())
 }

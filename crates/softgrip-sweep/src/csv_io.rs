@@ -6,7 +6,6 @@ use std::path::Path;
 
 use crate::error::SweepError;
 use crate::table::{OutcomeLayout, ResultsTable, TrialRow};
-use crate::trial::Outcome;
 use crate::value::{Value, ValueKind};
 
 impl ResultsTable {
@@ -108,23 +107,12 @@ impl ResultsTable {
             let wall_time = num(col("wall_time"))?;
             let error = &rec[col("error")];
             let outcome = if error.is_empty() {
-                let held = col("held");
-                Ok(Outcome {
-                    held: match &rec[held] {
-                        "true" => true,
-                        "false" => false,
-                        other => return Err(at(held, &format!("`{other}` is not true or false"))),
-                    },
-                    slips: int(col("slips"))? as u32,
-                    slip_distance: num(col("slip_distance"))?,
-                    peak_force: num(col("peak_force"))?,
-                    peak_x: num(col("peak_x"))?,
-                    validity_excursions: int(col("validity_excursions"))? as u32,
-                    hold_force: match layout.column("hold_force") {
-                        Some(k) => num(k)?,
-                        None => f64::NAN,
-                    },
-                })
+                let flag = |k: usize| match &rec[k] {
+                    "true" => Ok(true),
+                    "false" => Ok(false),
+                    other => Err(at(k, &format!("`{other}` is not true or false"))),
+                };
+                Ok(layout.outcome(flag, int, num)?)
             } else {
                 Err(error.to_string())
             };

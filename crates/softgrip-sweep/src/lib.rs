@@ -20,6 +20,6 @@ pub use path::FieldPath;
 pub use random::uniform;
 pub use shard::Shard;
 pub use sweep::{MAX_SWEEP_BYTES, RunOptions, Sweep, THREADS_PER_CORE, check_threads, max_threads};
-pub use table::{LEGACY_OUTCOME_COLUMNS, OUTCOME_COLUMNS, ResultsTable, TrialRow};
+pub use table::{OUTCOME_COLUMNS, ResultsTable, TrialRow};
 pub use trial::{Outcome, run_scene};
 pub use value::{Value, ValueKind};

@@ -256,21 +256,14 @@ impl ResultsTable {
             let error = col("error");
             let outcome = match cells[error] {
                 Field::Str(e) => Err(e.clone()),
-                Field::Null => Ok(Outcome {
-                    held: match cells[col("held")] {
-                        Field::Bool(v) => *v,
-                        other => return Err(at(o, &format!("{other} is not a BOOLEAN"))),
-                    },
-                    slips: long(col("slips"))? as u32,
-                    slip_distance: double(col("slip_distance"))?,
-                    peak_force: double(col("peak_force"))?,
-                    peak_x: double(col("peak_x"))?,
-                    validity_excursions: long(col("validity_excursions"))? as u32,
-                    hold_force: match layout.column("hold_force") {
-                        Some(k) => double(k)?,
-                        None => f64::NAN,
-                    },
-                }),
+                Field::Null => {
+                    let flag = |k: usize| match cells[k] {
+                        Field::Bool(v) => Ok(*v),
+                        other => Err(at(k, &format!("{other} is not a BOOLEAN"))),
+                    };
+                    let count = |k: usize| long(k).map(|v| v as u64);
+                    Ok(layout.outcome(flag, count, double)?)
+                }
                 other => return Err(at(error, &format!("{other} is not a STRING"))),
             };
             rows.push(TrialRow {

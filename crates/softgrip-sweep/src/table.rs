@@ -17,21 +17,17 @@ pub const OUTCOME_COLUMNS: [&str; 9] = [
     "error",
 ];
 
-/// The outcome columns of results tables written before `hold_force` existed (softgrip up
-/// to session 11 of the changelog): they still read back, with `hold_force` NaN (not measured).
-pub const LEGACY_OUTCOME_COLUMNS: [&str; 8] = [
-    "held",
-    "slips",
-    "slip_distance",
-    "peak_force",
-    "peak_x",
-    "validity_excursions",
-    "wall_time",
-    "error",
-];
+/// The outcome column results tables written before softgrip's session 12 lack: such a table
+/// has [`OUTCOME_COLUMNS`] without it and still reads back, with `hold_force` NaN.
+const LEGACY_MISSING: &str = "hold_force";
+
+/// The outcome columns of a table with (`hold_force`) or without it (legacy), in order.
+fn outcome_columns(hold_force: bool) -> impl Iterator<Item = &'static str> {
+    (OUTCOME_COLUMNS.into_iter()).filter(move |c| hold_force || *c != LEGACY_MISSING)
+}
 
 /// Where a results table's outcome columns are: the index of `held` and whether the table
-/// has a `hold_force` column ([`OUTCOME_COLUMNS`]) or not ([`LEGACY_OUTCOME_COLUMNS`]).
+/// has a `hold_force` column ([`OUTCOME_COLUMNS`]) or not (a table written before it existed).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct OutcomeLayout {
     /// Index of the `held` column (1 + the number of varied fields).
@@ -47,33 +43,46 @@ impl OutcomeLayout {
         if names.first().map(String::as_str) != Some("trial") {
             return None;
         }
-        let ends_with = |cols: &[&str]| {
-            let n = names.len();
-            (n > cols.len())
-                .then_some(n - cols.len())
-                .filter(|&o| names[o..] == *cols)
-        };
-        if let Some(start) = ends_with(&OUTCOME_COLUMNS) {
-            return Some(Self {
-                start,
-                hold_force: true,
-            });
-        }
-        ends_with(&LEGACY_OUTCOME_COLUMNS).map(|start| Self {
-            start,
-            hold_force: false,
+        [true, false].into_iter().find_map(|hold_force| {
+            let n = outcome_columns(hold_force).count();
+            let start = names.len().checked_sub(n).filter(|&o| o > 0)?;
+            (names[start..].iter())
+                .map(String::as_str)
+                .eq(outcome_columns(hold_force))
+                .then_some(Self { start, hold_force })
         })
     }
 
     /// The column index of the outcome `name` (one of [`OUTCOME_COLUMNS`]); `None` for
     /// `hold_force` in a legacy table.
     pub(crate) fn column(&self, name: &str) -> Option<usize> {
-        let cols: &[&str] = if self.hold_force {
-            &OUTCOME_COLUMNS
-        } else {
-            &LEGACY_OUTCOME_COLUMNS
-        };
-        cols.iter().position(|c| *c == name).map(|k| self.start + k)
+        (outcome_columns(self.hold_force))
+            .position(|c| c == name)
+            .map(|k| self.start + k)
+    }
+
+    /// A row's outcome from its cells, read by column index as a boolean (`held`), a count
+    /// (`slips`, `validity_excursions`) or a number; `hold_force` NaN in a legacy table. The
+    /// one reader of the outcome columns for every table format (CSV, Parquet).
+    pub(crate) fn outcome<E>(
+        &self,
+        flag: impl Fn(usize) -> Result<bool, E>,
+        count: impl Fn(usize) -> Result<u64, E>,
+        number: impl Fn(usize) -> Result<f64, E>,
+    ) -> Result<Outcome, E> {
+        let col = |name: &str| self.column(name).expect("invariant: an outcome column");
+        Ok(Outcome {
+            held: flag(col("held"))?,
+            slips: count(col("slips"))? as u32,
+            slip_distance: number(col("slip_distance"))?,
+            peak_force: number(col("peak_force"))?,
+            peak_x: number(col("peak_x"))?,
+            validity_excursions: count(col("validity_excursions"))? as u32,
+            hold_force: match self.column("hold_force") {
+                Some(k) => number(k)?,
+                None => f64::NAN,
+            },
+        })
     }
 
     /// The error text when no layout is found.

@@ -14,6 +14,7 @@ __version__: str
 LEVELS: tuple[str, ...]
 BACKINGS: tuple[str, ...]
 CONTROLLERS: tuple[str, ...]
+OUTCOME_COLUMNS: tuple[str, ...]
 
 _Number = Union[float, int, np.floating, np.integer]
 _Array = npt.NDArray[np.float64]

@@ -15,17 +15,7 @@ from .errors import ArgumentTypeError, ParameterError
 PathLike = Union[str, "os.PathLike[str]"]
 Row = Tuple[Any, ...]
 
-OUTCOME_COLUMNS = (
-    "held",
-    "slips",
-    "slip_distance",
-    "peak_force",
-    "peak_x",
-    "validity_excursions",
-    "hold_force",
-    "wall_time",
-    "error",
-)
+OUTCOME_COLUMNS: Tuple[str, ...] = _native.OUTCOME_COLUMNS
 """The columns after the varied fields, in order (softgrip-sweep's ``OUTCOME_COLUMNS``)."""
 
 # Column types of the outcomes: (numpy dtype, arrow type name, nullable).
