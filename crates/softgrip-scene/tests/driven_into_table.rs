@@ -1,14 +1,15 @@
 //! A robot link driven into a fixed body during a run (issue 25): the shipped hands' grasps
 //! with their lift turned into a descent (`up = [0, -1, 0]`), so that their links are pushed
-//! into the table. Before session 13 the parallel gripper's 5.5 mm descent blew up inside
-//! rapier's own finger-table contact: the fingers' prismatic joints cannot move them along the
-//! table's normal, rapier's contact row there has an `f32`-noise mobility (6.46e-14 1/kg) and
-//! asked an impulse of its inverse (peak x 8e10, 47 kN, a finger flung along its joint).
-//! Such rows are now dropped before rapier's solver (`softgrip_rapier`'s `link_contacts.rs`,
-//! counted in `SoftCounters::locked_link_contacts`); a row a joint can move along (the
-//! three-finger hand's revolute fingers on the table) stays, and its motors stall at their
-//! URDF effort. `cargo test -p softgrip-scene --test driven_into_table -- --nocapture` prints
-//! the numbers (SCENES.md, "A link driven into a fixed body").
+//! into the table, and the Panda arm's shoulder driven into a block. Before session 13 the
+//! parallel gripper's 5.5 mm descent blew up inside rapier's own finger-table contact: the
+//! fingers' prismatic joints cannot move them along the table's normal, rapier's contact row
+//! there has an `f32`-noise mobility (6.46e-14 1/kg) and asked an impulse of its inverse (a
+//! finger at 4.2e10 m/s, 8.8e15 N from the table, the box dropped). Such rows are now dropped
+//! before rapier's solver (`softgrip_rapier`'s `link_contacts.rs`, counted in
+//! `SoftCounters::locked_link_contacts`); a row a joint can move along (the three-finger
+//! hand's revolute fingers, the Panda's shoulder) stays, and its motors stall at their URDF
+//! effort. `cargo test -p softgrip-scene --test driven_into_table -- --nocapture` prints the
+//! numbers (SCENES.md, "A link driven into a fixed body during a run").
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
