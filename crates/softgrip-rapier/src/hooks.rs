@@ -100,7 +100,9 @@ impl PhysicsHooks for SoftHooks<'_> {
     /// backed fingertip of the pair are kept (the direction from its centre to its own contact
     /// point has a negative component along its facing: the rigid finger's side); the others
     /// belong to the plugin's law. Any other pair with a fingertip has no solver contacts.
-    /// Any other pair: the user's.
+    /// Any other pair: the user's (if the user turned the hook on for one of its colliders).
+    /// In both, a multibody link's contacts along a direction its joints cannot move it
+    /// against a body that cannot yield are dropped first (`link_contacts`).
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
         let (c1, c2) = (ctx.collider1, ctx.collider2);
         if !self.is_soft_pair(c1, c2) {
