@@ -5,8 +5,8 @@
 //! root into the ground, on its path. A link on a revolute joint that can swing out of the
 //! ground keeps its contacts (none dropped) and is pushed out against its motor. (In this
 //! one-link world rapier alone stays bounded with those contacts, measured; the parallel
-//! gripper, two fingers coupled by a mimic under a kinematic base, was thrown 1e10 m along its
-//! joint by them: `softgrip-scene/tests/driven_into_table.rs`.)
+//! gripper, two fingers coupled by a mimic under a kinematic base, had a finger thrown at
+//! 1e10 m/s by them: `softgrip-scene/tests/driven_into_table.rs`.)
 //!
 //! `cargo test -p softgrip-rapier --test locked_link_contacts -- --nocapture` prints the numbers.
 
