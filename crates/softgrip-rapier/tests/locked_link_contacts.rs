@@ -1,12 +1,11 @@
-//! A multibody link pushed into a fixed body (rapier only, no fingertip): a link on a prismatic
-//! joint (motored, 20 N effort) under a kinematic root lowered into the ground. Its joint
-//! cannot move it along the ground's normal, so rapier's contact row there has a mobility of
-//! `f32` noise; the plugin drops those contacts (`link_contacts.rs`) and the link follows its
-//! root into the ground, on its path. A link on a revolute joint that can swing out of the
-//! ground keeps its contacts (none dropped) and is pushed out against its motor. (In these
-//! worlds, one link or two coupled by a mimic, rapier alone stays bounded with those
-//! contacts, measured; the parallel gripper had a finger thrown at 1e10 m/s by them, what in
-//! it triggers that is not pinned down: `softgrip-scene/tests/driven_into_table.rs`.)
+//! A multibody link pushed into a fixed body (rapier only, no fingertip): the parallel
+//! gripper's prismatic fingers under their kinematic base, lowered into the ground. Their
+//! joints cannot move them along the ground's normal, so rapier's contact rows there have a
+//! mobility of `f32` noise and asked an impulse of its inverse: with the plugin's drop
+//! disabled a finger was thrown 10.7 km off its path at 6.4e5 m/s (the two mimic-coupled
+//! fingers 73 km). The plugin drops those contacts (`link_contacts.rs`): the fingers follow
+//! their base into the ground, on their paths. A link on a revolute joint that can swing out
+//! of the ground keeps its contacts (none dropped) and is pushed out against its motor.
 //!
 //! `cargo test -p softgrip-rapier --test locked_link_contacts -- --nocapture` prints the numbers.
 
@@ -15,8 +14,7 @@
 use rapier3d::prelude::*;
 use softgrip_rapier::SoftWorld;
 
-/// The root's start height \[m\]; the link (a 2 x 4 x 2 cm box, 16 g) hangs from it at x = 3 cm,
-/// its bottom 2 cm below the root.
+/// The root's start height \[m\].
 const TOP: f32 = 0.1;
 
 /// What [`lower`] measured (over all links).
@@ -35,11 +33,16 @@ struct Lowered {
     locked: u64,
 }
 
-/// A robot of links (2 x 4 x 2 cm boxes, 16 g) on one kinematic root: each link's joint and
-/// start pose (turned as the root by `root_rotation`); with `mimic`, the second link's dof is
+/// A robot of box links on one kinematic root (starts turned as the root by `root_rotation`);
+/// with `mimic`, the second link's dof is
 /// coupled to the first's (`q_2 = -q_1`, a URDF `<mimic>` as rapier holds it).
 struct Robot {
-    joints: Vec<(GenericJoint, Vector)>,
+    /// Each link's joint, its start and its box's centre in its own frame.
+    joints: Vec<(GenericJoint, Vector, Vector)>,
+    /// The boxes' half extents \[m\].
+    half: Vector,
+    /// Each box's mass \[kg\] (`None`: 1000 kg/m^3).
+    mass: Option<f32>,
     root_rotation: Rotation,
     mimic: bool,
 }
@@ -60,19 +63,23 @@ fn lower(robot: Robot, depth: f32) -> Lowered {
             .pose(Pose::from_parts(Vector::new(0.0, TOP, 0.0), turn)),
     );
     let mut links = Vec::new();
-    for (joint, start) in &robot.joints {
+    let h = robot.half;
+    let density = robot.mass.map_or(1000.0, |m| m / (8.0 * h.x * h.y * h.z));
+    for (joint, start, centre) in &robot.joints {
         let link = p.bodies.insert(
             RigidBodyBuilder::dynamic()
                 .pose(Pose::from_parts(*start, turn))
                 .can_sleep(false),
         );
         p.colliders.insert_with_parent(
-            ColliderBuilder::cuboid(0.01, 0.02, 0.01).density(1000.0),
+            ColliderBuilder::cuboid(h.x, h.y, h.z)
+                .translation(*centre)
+                .density(density),
             link,
             &mut p.bodies,
         );
         p.multibody_joints.insert(root, link, *joint, true).unwrap();
-        links.push((link, *start));
+        links.push((link, *start, *centre));
     }
     if robot.mimic {
         let mbj = &mut p.multibody_joints;
@@ -102,7 +109,7 @@ fn lower(robot: Robot, depth: f32) -> Lowered {
         locked: 0,
     };
     let mut last: Vec<Vector> = (links.iter())
-        .map(|(l, _)| world.physics.bodies[*l].translation())
+        .map(|(l, _, _)| world.physics.bodies[*l].translation())
         .collect();
     for k in 1..=75 {
         let y = TOP - (0.12 * dt * k as f32).min(depth);
@@ -110,7 +117,7 @@ fn lower(robot: Robot, depth: f32) -> Lowered {
         world.physics.bodies[root].set_next_kinematic_position(pose);
         world.step();
         out.end_lowest = f32::INFINITY;
-        for ((link, start), last) in links.iter().zip(&mut last) {
+        for ((link, start, centre), last) in links.iter().zip(&mut last) {
             let b = &world.physics.bodies[*link];
             let (t, v) = (b.translation(), b.linvel());
             assert!(t.is_finite() && v.is_finite(), "step {k}: {t} {v}");
@@ -120,11 +127,8 @@ fn lower(robot: Robot, depth: f32) -> Lowered {
             let path = *start + Vector::new(0.0, y - TOP, 0.0);
             out.off_path = out.off_path.max((t - path).length());
             for c in 0..8 {
-                let corner = Vector::new(
-                    if c & 1 == 0 { -0.01 } else { 0.01 },
-                    if c & 2 == 0 { -0.02 } else { 0.02 },
-                    if c & 4 == 0 { -0.01 } else { 0.01 },
-                );
+                let sign = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                let corner = *centre + Vector::new(sign(1) * h.x, sign(2) * h.y, sign(4) * h.z);
                 out.end_lowest = out.end_lowest.min((*b.position() * corner).y);
             }
         }
@@ -152,59 +156,61 @@ fn prismatic(axis: Vector, anchor: Vector, motored: bool) -> GenericJoint {
     }
 }
 
-/// A URDF's z-up frame in a y-up world (a quarter turn about x), turned 0.3 rad about the
-/// vertical: a joint axis along its local y is horizontal with `f32` noise along the vertical
-/// (`cos(pi/2)` in `f32` is -4.4e-8), as the parallel gripper's fingers.
-fn urdf_turn() -> Rotation {
-    Rotation::from_rotation_y(0.3) * Rotation::from_rotation_x(-std::f32::consts::FRAC_PI_2)
-}
-
-/// The prismatic link follows its root 1 cm into the ground, exactly on its path (1e-6 m), its
-/// speed the root's 0.12 m/s, its rapier contacts with the ground dropped.
-#[test]
-fn a_prismatic_link_lowered_into_the_ground_follows_its_root() {
-    let turn = urdf_turn();
-    let anchor = Vector::new(0.0, 0.03, 0.0);
-    let start = Vector::new(0.0, TOP, 0.0) + turn * anchor;
-    let r = lower(
-        Robot {
-            joints: vec![(prismatic(Vector::Y, anchor, true), start)],
-            root_rotation: turn,
-            mimic: false,
-        },
-        0.1,
-    );
-    assert!(r.off_path < 1e-6, "{r:?}: off its path");
-    assert!(r.speed < 0.13, "{r:?}: flung");
-    assert!((r.lowest + 0.01).abs() < 1e-4, "{r:?}: not into the ground");
-    assert!(r.locked > 0, "{r:?}");
-}
-
-/// Two such links, the second's joint the first's mimic (`q_2 = -q_1`), as the parallel
-/// gripper's fingers: both follow the root 1 cm into the ground on their paths.
-#[test]
-fn mimic_coupled_prismatic_links_lowered_into_the_ground_follow_their_root() {
-    let turn = urdf_turn();
-    let (a1, a2) = (Vector::new(0.0, 0.03, 0.0), Vector::new(0.0, -0.03, 0.0));
+/// The parallel gripper's fingers (`robots/parallel_gripper`, 12 x 20 x 60 mm boxes of 50 g
+/// hanging below their joints, which slide along -x and +x, the right one the left's mimic
+/// when `mimic`) under their base turned as the shipped scene turns it (a URDF's z up in a
+/// y-up world: a quarter turn about x).
+fn gripper_fingers(mimic: bool) -> Robot {
+    let turn = Rotation::from_rotation_x(-std::f32::consts::FRAC_PI_2);
     let at = |a: Vector| Vector::new(0.0, TOP, 0.0) + turn * a;
-    let r = lower(
-        Robot {
-            joints: vec![
-                (prismatic(Vector::Y, a1, true), at(a1)),
-                (prismatic(Vector::Y, a2, false), at(a2)),
-            ],
-            root_rotation: turn,
-            mimic: true,
-        },
-        0.1,
-    );
+    let (left, right) = (Vector::new(-0.006, 0.0, 0.0), Vector::new(0.006, 0.0, 0.0));
+    let mut joints = vec![(
+        prismatic(-Vector::X, left, true),
+        at(left),
+        Vector::new(-0.006, 0.0, -0.03),
+    )];
+    if mimic {
+        joints.push((
+            prismatic(Vector::X, right, false),
+            at(right),
+            Vector::new(0.006, 0.0, -0.03),
+        ));
+    }
+    Robot {
+        joints,
+        half: Vector::new(0.006, 0.01, 0.03),
+        mass: Some(0.05),
+        root_rotation: turn,
+        mimic,
+    }
+}
+
+/// The gripper's left finger alone, lowered with its base until its box would be 1 cm into
+/// the ground: it follows its base exactly on its path (1e-6 m), at the base's 0.12 m/s, its
+/// rapier contacts with the ground dropped. With the drop disabled rapier threw it 10.7 km
+/// off its path at 6.4e5 m/s (measured).
+#[test]
+fn a_prismatic_finger_lowered_into_the_ground_follows_its_base() {
+    let r = lower(gripper_fingers(false), 0.05);
     assert!(r.off_path < 1e-6, "{r:?}: off its path");
     assert!(r.speed < 0.13, "{r:?}: flung");
     assert!((r.lowest + 0.01).abs() < 1e-4, "{r:?}: not into the ground");
     assert!(r.locked > 0, "{r:?}");
 }
 
-/// The same link on a revolute joint about z (its motor 0.2 N m at most): the ground pushes it
+/// Both fingers, the right one the left's mimic: both follow the base 1 cm into the ground
+/// on their paths (73 km off with the drop disabled, measured).
+#[test]
+fn mimic_coupled_fingers_lowered_into_the_ground_follow_their_base() {
+    let r = lower(gripper_fingers(true), 0.05);
+    assert!(r.off_path < 1e-6, "{r:?}: off its path");
+    assert!(r.speed < 0.13, "{r:?}: flung");
+    assert!((r.lowest + 0.01).abs() < 1e-4, "{r:?}: not into the ground");
+    assert!(r.locked > 0, "{r:?}");
+}
+
+/// A 2 x 4 x 2 cm link (16 g) on a revolute joint about z (its motor 0.2 N m at most), its
+/// centre 3 cm from the pivot, lowered until it would be 1 cm in: the ground pushes it
 /// to swing out; its contacts stay (none dropped), it ends held out of the ground (within
 /// 1 mm) and is not flung.
 #[test]
@@ -218,7 +224,9 @@ fn a_revolute_link_lowered_onto_the_ground_swings_out_of_it() {
         .build();
     let r = lower(
         Robot {
-            joints: vec![(joint.into(), Vector::new(0.03, TOP, 0.0))],
+            joints: vec![(joint.into(), Vector::new(0.03, TOP, 0.0), Vector::ZERO)],
+            half: Vector::new(0.01, 0.02, 0.01),
+            mass: None,
             root_rotation: Rotation::IDENTITY,
             mimic: false,
         },
