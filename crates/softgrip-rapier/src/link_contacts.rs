@@ -233,6 +233,9 @@ impl LinkContacts {
 /// [`IMMOBILE`] of theirs summed over three axes (not when that sum is 0: rapier gives a row of
 /// zero mobility no impulse).
 fn immobile(s1: &Side<'_>, s2: &Side<'_>, point: &Vector3<f64>, normal: &Vector3<f64>) -> bool {
+    if matches!(s1, Side::Free) || matches!(s2, Side::Free) {
+        return false;
+    }
     let (mut along, mut scale, mut links) = (0.0, 0.0, 0);
     for s in [s1, s2] {
         match s {
@@ -242,8 +245,7 @@ fn immobile(s1: &Side<'_>, s2: &Side<'_>, point: &Vector3<f64>, normal: &Vector3
                 scale += k;
                 links += 1;
             }
-            Side::Free => return false,
-            Side::Rigid => {}
+            Side::Free | Side::Rigid => {}
         }
     }
     links > 0 && scale > 0.0 && along <= IMMOBILE * scale
