@@ -87,6 +87,9 @@ pub struct SoftContacts {
     pub(crate) tip_order: Vec<(ColliderHandle, InteractionGroups)>,
     /// The fingertips' colliders, for the hooks and events passed to rapier (`hooks`).
     pub(crate) soft_colliders: HashSet<ColliderHandle>,
+    /// The multibody links' jacobians, for dropping rapier's contacts along directions they
+    /// cannot move (`link_contacts`; refreshed each step).
+    pub(crate) link_contacts: crate::link_contacts::LinkContacts,
     /// The first step has primed rapier's broad and narrow phases (`step`).
     pub(crate) started: bool,
     pub(crate) pairs: HashMap<(ColliderHandle, ColliderHandle), PairState>,

@@ -41,6 +41,13 @@ pub struct SoftCounters {
     /// (sub)step. Before session 12 such a row took an impulse of its `f32` noise and threw
     /// the link off its joint.
     pub immobile_rows: u64,
+    /// rapier's own solver contacts of a multibody link against a fixed or kinematic body (or
+    /// another such link) along a direction the link's joints cannot move it (the same
+    /// criterion), dropped before rapier's solver (`link_contacts.rs`), total; also counted in
+    /// `immobile_rows`. Not an error: the parallel gripper's fingers pushed into the table by
+    /// its kinematic base count theirs here each (sub)step. Left to rapier, such a contact
+    /// asked an impulse of `1 / (f32 noise)` and threw the link off its joint.
+    pub locked_link_contacts: u64,
     /// The most soft contacts solved together in one coupled group (contacts sharing a
     /// dynamic body, What one step does, 4), over all solves so far (0 before any contact).
     /// Resting fingertips apart from each other are groups of one: a larger figure says the

@@ -22,12 +22,15 @@ use rapier3d::prelude::{
 };
 
 use crate::detect::{behind_face, to_f64};
+use crate::link_contacts::LinkContacts;
 
 /// The user's [`PhysicsHooks`], with the pairs of a fingertip answered by the plugin.
 pub(crate) struct SoftHooks<'a> {
     soft: &'a HashSet<ColliderHandle>,
     /// The backed fingertips and their facing in their collider's frame.
     backed: &'a HashMap<ColliderHandle, Vector3<f64>>,
+    /// rapier's contacts of multibody links along directions they cannot move (dropped).
+    links: &'a LinkContacts,
     user: &'a dyn PhysicsHooks,
 }
 
@@ -37,9 +40,15 @@ impl<'a> SoftHooks<'a> {
     pub(crate) fn new(
         soft: &'a HashSet<ColliderHandle>,
         backed: &'a HashMap<ColliderHandle, Vector3<f64>>,
+        links: &'a LinkContacts,
         user: &'a dyn PhysicsHooks,
     ) -> Self {
-        Self { soft, backed, user }
+        Self {
+            soft,
+            backed,
+            links,
+            user,
+        }
     }
 
     fn is_soft_pair(&self, a: ColliderHandle, b: ColliderHandle) -> bool {
@@ -91,11 +100,16 @@ impl PhysicsHooks for SoftHooks<'_> {
     /// backed fingertip of the pair are kept (the direction from its centre to its own contact
     /// point has a negative component along its facing: the rigid finger's side); the others
     /// belong to the plugin's law. Any other pair with a fingertip has no solver contacts.
-    /// Any other pair: the user's.
+    /// Any other pair: the user's (if the user turned the hook on for one of its colliders).
+    /// In both, a multibody link's contacts along a direction its joints cannot move it
+    /// against a body that cannot yield are dropped first (`link_contacts`).
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
         let (c1, c2) = (ctx.collider1, ctx.collider2);
         if !self.is_soft_pair(c1, c2) {
-            self.user.modify_solver_contacts(ctx);
+            self.links.filter(ctx);
+            if self.links.user_asked(ctx) {
+                self.user.modify_solver_contacts(ctx);
+            }
             return;
         }
         let side = |h: ColliderHandle| {
@@ -121,6 +135,8 @@ impl PhysicsHooks for SoftHooks<'_> {
             };
             behind(s1, c.anchor1) && behind(s2, c.anchor2)
         });
+        // A finger's rigid side behind its pad is a link like any other.
+        self.links.filter(ctx);
     }
 }
 

@@ -13,6 +13,7 @@ mod fingertip;
 mod hooks;
 mod joint_sweeps;
 mod jointed;
+mod link_contacts;
 mod multibody;
 mod presets;
 mod readout;

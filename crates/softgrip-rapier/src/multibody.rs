@@ -350,32 +350,8 @@ pub(crate) fn link_state(
 /// factorised its mass matrix (before its first step) or it is not finite.
 fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Option<Generalised> {
     let n = mb.ndofs();
-    let mut free = Vec::with_capacity(n);
-    for link in mb.links() {
-        if !link.joint().kinematic {
-            let at = link.assembly_id();
-            free.extend(at..at + link.joint().ndofs());
-        }
-    }
-    let lu = mb.inv_augmented_mass();
+    let (free, w_r) = rapier_mobility(mb)?;
     let r = free.len();
-    if r == 0 || lu.l().nrows() != r || free.iter().any(|&d| d >= n) {
-        return None;
-    }
-    // rapier's inverse augmented mass in the reduced order.
-    let mut w_r = DMatrix::<f64>::zeros(r, r);
-    let mut col = DVector::<f32>::zeros(r);
-    for c in 0..r {
-        col.fill(0.0);
-        col[c] = 1.0;
-        if !lu.solve_mut(&mut col) {
-            return None;
-        }
-        for k in 0..r {
-            w_r[(k, c)] = col[k] as f64;
-        }
-    }
-    let w_r = 0.5 * (&w_r + w_r.transpose());
     let m_r = w_r.clone().try_inverse()?;
     // The external acceleration: gravity and the user's forces (not rapier's last
     // `generalized_acceleration`, which holds the plugin's own force of the last step).
@@ -420,6 +396,39 @@ fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Opti
         return None;
     }
     Some(Generalised::new(mobility, qdot, acc))
+}
+
+/// rapier's inverse augmented mass of `mb` (the mobility its solver uses for a contact or a
+/// joint row: `J W J^T`) \[1/kg, 1/(kg m^2)\], symmetrised, in rapier's reduced order (the
+/// dofs of its non-kinematic joints, listed first: their indices in `0..ndofs`); `None` if
+/// rapier has not factorised it (before its first step) or it has no free dof.
+pub(crate) fn rapier_mobility(mb: &Multibody) -> Option<(Vec<usize>, DMatrix<f64>)> {
+    let n = mb.ndofs();
+    let mut free = Vec::with_capacity(n);
+    for link in mb.links() {
+        if !link.joint().kinematic {
+            let at = link.assembly_id();
+            free.extend(at..at + link.joint().ndofs());
+        }
+    }
+    let lu = mb.inv_augmented_mass();
+    let r = free.len();
+    if r == 0 || lu.l().nrows() != r || free.iter().any(|&d| d >= n) {
+        return None;
+    }
+    let mut w_r = DMatrix::<f64>::zeros(r, r);
+    let mut col = DVector::<f32>::zeros(r);
+    for c in 0..r {
+        col.fill(0.0);
+        col[c] = 1.0;
+        if !lu.solve_mut(&mut col) {
+            return None;
+        }
+        for k in 0..r {
+            w_r[(k, c)] = col[k] as f64;
+        }
+    }
+    Some((free, 0.5 * (&w_r + w_r.transpose())))
 }
 
 /// The multibody's dof couplings (a URDF `<mimic>`: `qdot_2 = coeff qdot_1`, a hard row of

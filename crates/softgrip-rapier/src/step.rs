@@ -60,8 +60,10 @@ impl SoftContacts {
         // The set is read by the adapters while the rest of `self` is written.
         let soft = std::mem::take(&mut self.soft_colliders);
         let backed = std::mem::take(&mut self.backed);
+        let mut links = std::mem::take(&mut self.link_contacts);
+        links.refresh(world);
         let (hooks, events) = (
-            SoftHooks::new(&soft, &backed, hooks),
+            SoftHooks::new(&soft, &backed, &links, hooks),
             SoftEvents::new(&soft, events),
         );
         Step {
@@ -73,6 +75,10 @@ impl SoftContacts {
         .run();
         self.soft_colliders = soft;
         self.backed = backed;
+        let dropped = links.take_dropped();
+        self.counters.locked_link_contacts += dropped;
+        self.counters.immobile_rows += dropped;
+        self.link_contacts = links;
     }
 }
 

@@ -1,0 +1,382 @@
+//! A robot link driven into a fixed body during a run (issue 25): the shipped hands' grasps
+//! with their lift turned into a descent (`up = [0, -1, 0]`), so that their links are pushed
+//! into the table, and the Panda arm's shoulder driven into a block. Before session 13 the
+//! parallel gripper's 5.5 mm descent blew up inside rapier's own finger-table contact: the
+//! fingers' prismatic joints cannot move them along the table's normal, rapier's contact row
+//! there has an `f32`-noise mobility (6.46e-14 1/kg) and asked an impulse of its inverse (a
+//! finger at 4.2e10 m/s, 8.8e15 N from the table, the box dropped). Such rows are now dropped
+//! before rapier's solver (`softgrip_rapier`'s `link_contacts.rs`, counted in
+//! `SoftCounters::locked_link_contacts`); a row a joint can move along (the three-finger
+//! hand's revolute fingers, the Panda's shoulder) stays, and its motors stall at their URDF
+//! effort. `cargo test -p softgrip-scene --test driven_into_table -- --nocapture` prints the
+//! numbers (SCENES.md, "A link driven into a fixed body during a run").
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+use std::path::{Path, PathBuf};
+
+use softgrip_scene::control::Phase;
+use softgrip_scene::softgrip_rapier::rapier3d::prelude::{ColliderHandle, RigidBodyHandle};
+use softgrip_scene::{PlainRun, Scene};
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// Shipped scene `name`'s text with its lift (`lift`, the scene's line) turned into a descent
+/// of `depth` metres at the same speed and acceleration.
+fn descending_text(name: &str, lift: &str, depth: f64) -> String {
+    let path = repo().join(format!("scenes/robots/{name}.toml"));
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.contains(lift), "the shipped scene's lift changed");
+    let (speed, rest) = lift.split_once("speed = ").unwrap();
+    assert!(speed.contains("distance"));
+    let down = format!("lift = {{ distance = {depth}, speed = {rest}\nup = [0.0, -1.0, 0.0]");
+    text.replace(lift, &down)
+}
+
+/// [`descending_text`] parsed.
+fn descending(name: &str, lift: &str, depth: f64) -> Scene {
+    let text = descending_text(name, lift, depth);
+    Scene::parse(&text, "down.toml", &repo().join("scenes/robots")).unwrap()
+}
+
+/// What [`run_down`] measured.
+#[derive(Debug, Default)]
+struct Down {
+    /// The largest speed of any link \[m/s\].
+    link_speed: f64,
+    /// The largest force rapier's contacts put on the robot's links from the table, summed
+    /// over the links, in any step \[N\].
+    table_force: f64,
+    /// The largest soft (pad) force of any step \[N\].
+    pad_force: f64,
+    /// Each pad's force at the end of the hold \[N\].
+    pads_held: Vec<f64>,
+    /// The object's height over its start at the end of the hold \[m\].
+    object_drop: f64,
+    /// Steps in the hold.
+    held: usize,
+    /// rapier's link contacts dropped as locked (`SoftCounters::locked_link_contacts`).
+    locked: u64,
+}
+
+/// Runs `scene` to its end checking each step that every link's pose and velocity and every
+/// soft force are finite.
+fn run_down(scene: &Scene, object: &str) -> Down {
+    let mut run = PlainRun::new(scene);
+    let h = run.handles.robots[0].1.clone();
+    let table = run.handles.body("table").unwrap();
+    let obj = run.handles.body(object).unwrap();
+    let table_cols: Vec<ColliderHandle> = run.world.physics.bodies[table].colliders().to_vec();
+    let pads: Vec<_> = (scene.file().fingertips.iter())
+        .map(|t| run.handles.fingertip(&t.name).unwrap())
+        .collect();
+    let y0 = run.world.physics.bodies[obj].translation().y as f64;
+    let dt = scene.file().dt;
+    let mut out = Down::default();
+    for step in 0..scene.steps() {
+        run.step();
+        let w = &run.world.physics;
+        for &l in &h.links {
+            let rb = &w.bodies[l];
+            let (t, v) = (rb.translation(), rb.linvel());
+            assert!(
+                t.is_finite() && v.is_finite(),
+                "step {step}: link at {t}, {v}"
+            );
+            out.link_speed = out.link_speed.max(v.length() as f64);
+        }
+        let substeps = run.world.soft.counters().substeps_last.max(1) as f64;
+        let mut table_force = 0.0f64;
+        for &tc in &table_cols {
+            for pair in w.narrow_phase.contact_pairs_with(tc) {
+                let other = if pair.collider1 == tc {
+                    pair.collider2
+                } else {
+                    pair.collider1
+                };
+                let on_link = (w.colliders.get(other).and_then(|c| c.parent()))
+                    .is_some_and(|b: RigidBodyHandle| h.links.contains(&b));
+                if on_link {
+                    table_force += pair.total_impulse_magnitude() as f64 * substeps / dt;
+                }
+            }
+        }
+        out.table_force = out.table_force.max(table_force);
+        for c in run.world.soft.contacts() {
+            assert!(c.normal_force.is_finite(), "step {step}: pad force");
+            out.pad_force = out.pad_force.max(c.normal_force);
+        }
+        if run.control.controllers()[0].phase() == Some(Phase::Hold) {
+            out.held += 1;
+            out.object_drop = y0 - w.bodies[obj].translation().y as f64;
+            out.pads_held = (pads.iter())
+                .map(|&p| run.world.soft.contacts_of(p).map(|c| c.normal_force).sum())
+                .collect();
+        }
+    }
+    let c = run.world.soft.counters();
+    assert_eq!(c.non_finite, 0);
+    out.locked = c.locked_link_contacts;
+    eprintln!("{out:?}");
+    out
+}
+
+/// The parallel gripper holding its 200 g box descends 5.5 mm instead of lifting: its fingers'
+/// boxes (5 mm above the table at the shipped height) are pushed 0.5 mm into the table by the
+/// kinematic base. The fingers' prismatic joints cannot move them along the table's normal and
+/// the base is kinematic: no finite force stops that motion, so the fingers go on along their
+/// commanded path into the table, rapier's contacts along that locked direction dropped; the
+/// grasp holds (each pad within 4 % of its 5 N), nothing is flung
+/// (links at most the base's lift speed, 0.1 m/s, plus 10 %), the box goes down with the hand.
+#[test]
+fn gripper_pushed_into_the_table_holds_its_box() {
+    let scene = descending(
+        "parallel_gripper_box",
+        "lift = { distance = 0.1, speed = 0.1, acceleration = 1.0 }",
+        0.0055,
+    );
+    let d = run_down(&scene, "box");
+    assert!(d.held > 60, "{d:?}");
+    assert!(d.link_speed < 0.11, "{d:?}: a link flung");
+    assert!(
+        d.locked > 0,
+        "{d:?}: the finger-table contacts were never met"
+    );
+    // Along the locked vertical rapier's contacts carry nothing; along the fingers' joint
+    // (horizontal) at most the motor's effort.
+    assert!(d.table_force <= 20.0, "{d:?}: table force");
+    assert!(d.pad_force < 5.5, "{d:?}: pad force");
+    // The pads slid 5.5 mm down the sides of the box the table holds: each ends within 4 %
+    // of the grasp's 5 N (4.83 / 5.03 N measured; 4.93 / 4.99 N at the shipped lift).
+    for f in &d.pads_held {
+        assert!((f - 5.0).abs() < 0.2, "{d:?}: a pad holds {f} N");
+    }
+    // The box went down with the hand (5.5 mm) until the table stopped it: it rests on it.
+    assert!(
+        d.object_drop.abs() < 1e-4,
+        "{d:?}: box moved {} m",
+        d.object_drop
+    );
+}
+
+/// The three-finger hand without its pads, closed by position to 0.4 rad on nothing (the
+/// shipped box scene with the box moved 0.5 m away), descends 30 mm instead of lifting: its
+/// distal links' tips (about 17 mm above the table when closed) are driven 13 mm into it.
+/// Their revolute joints can move them along the table's normal, so rapier's contacts stay
+/// (none dropped) and fold the fingers against their position motors, which saturate at their
+/// URDF effort (2 N m proximal, 1 N m distal): nothing is flung (every link under 0.5 m/s:
+/// 0.30 m/s measured, folding fingers snapping between jams; the base moves at 0.05 m/s) and
+/// nothing goes non-finite. The table's force on the hand is not
+/// bounded by the motors here: the folded fingers press each other and the table under a
+/// kinematic (infinitely strong) base, a rigid jam (846 N at most; SCENES.md).
+#[test]
+fn three_finger_hand_driven_into_the_table_folds_without_flying() {
+    let text = descending_text(
+        "three_finger_hand_box",
+        "lift = { distance = 0.05, speed = 0.05, acceleration = 0.5 }",
+        0.03,
+    )
+    .replace("position = [0.0, 0.02, 0.0]", "position = [0.5, 0.02, 0.0]");
+    // Without its pads and closing by position.
+    let (head, rest) = text.split_once("[[fingertip]]").unwrap();
+    let (_, control) = rest.split_once("[[controller]]").unwrap();
+    let control = control
+        .replace("force = 2.0", "")
+        .replace("closed = [0.6, 0.6, 0.6]", "closed = [0.4, 0.4, 0.4]");
+    let text = format!("{head}[[controller]]{control}");
+    let scene = Scene::parse(&text, "down.toml", &repo().join("scenes/robots")).unwrap();
+    let d = run_down(&scene, "box");
+    assert!(d.held > 30, "{d:?}");
+    assert!(d.link_speed < 0.5, "{d:?}: a link flung");
+    assert_eq!(
+        d.locked, 0,
+        "{d:?}: a contact a joint can move along was dropped"
+    );
+    assert!(
+        d.table_force > 10.0,
+        "{d:?}: the fingers never met the table"
+    );
+}
+
+/// The pybullet_data folder (`SOFTGRIP_PYBULLET_DATA`, as `tests/panda.rs`).
+fn pybullet_data() -> PathBuf {
+    let dir = std::env::var("SOFTGRIP_PYBULLET_DATA").unwrap_or_else(|_| {
+        panic!(
+            "SOFTGRIP_PYBULLET_DATA is not set: it must name pybullet's pybullet_data folder \
+             with franka_panda/; `bash .ci/pybullet-data.sh` fetches it and prints the path"
+        )
+    });
+    PathBuf::from(dir)
+}
+
+/// The Franka Panda arm (pybullet's URDF, fixed base, ready pose, position motors of 1e5 N m/rad
+/// capped at the URDF's efforts) with its shoulder (`panda_joint2`) commanded 0.15 rad
+/// forward over 1 s, which would sweep the hand 46 mm down: its fingers meet a fixed block
+/// 10 mm under them. The arm's joints can move the fingers along the block's normal, so
+/// rapier's contacts stay (none dropped) and the shoulder's motor stalls at its URDF effort,
+/// 87 N m, 0.11 rad short of its target; the hand stays put (nothing flung), and the block's
+/// moment about the shoulder axis is what the motor and the arm's weight push: at most their
+/// sum plus 5 %, at least 60 % of it (the stalled arm rocks slowly on its motors' damping,
+/// 216-266 N on the block). `SOFTGRIP_PYBULLET_DATA` as `tests/panda.rs`.
+#[test]
+fn panda_arm_driven_into_the_table_stalls_at_its_motors_effort() {
+    let panda = pybullet_data().join("franka_panda");
+    let text = format!(
+        r#"duration = 2.0
+dt = 0.016666666666666666
+gravity = [0.0, 0.0, -9.81]
+
+[[body]]
+name = "table"
+kind = "fixed"
+position = [0.3069, 0.0, 0.23345]
+[[body.shape]]
+type = "cuboid"
+half_extents = [0.1, 0.1, 0.23345]
+
+[[robot]]
+name = "panda"
+urdf = {urdf:?}
+package_paths = {{ meshes = {meshes:?} }}
+initial = {{ panda_joint2 = -0.7853981633974483, panda_joint4 = -2.356194490192345, panda_joint6 = 1.5707963267948966, panda_joint7 = 0.7853981633974483, panda_finger_joint1 = 0.02 }}
+stiffness = 100000.0
+damping = 1000.0
+gains = {{ panda_finger_joint1 = [2000.0, 20.0], panda_finger_joint2 = [2000.0, 20.0] }}
+self_contacts = false
+
+[[controller]]
+type = "trajectory"
+robot = "panda"
+joints = ["panda_joint2"]
+points = [{{ t = 0.0, positions = [-0.7853981633974483] }}, {{ t = 1.0, positions = [-0.6353981633974483] }}]
+"#,
+        urdf = panda.join("panda.urdf").display().to_string(),
+        meshes = panda.join("meshes").display().to_string(),
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("panda_down.toml");
+    std::fs::write(&path, &text).unwrap();
+    let scene = Scene::from_file(&path).unwrap();
+    let robot = &scene.robots()[0];
+    let mut run = PlainRun::new(&scene);
+    let h = run.handles.robots[0].1.clone();
+    let table = run.handles.body("table").unwrap();
+    let table_col = run.world.physics.bodies[table].colliders()[0];
+    let dt = scene.file().dt;
+    let j2 = robot.joint_index("panda_joint2").unwrap();
+    let joint = &robot.joints()[j2];
+    let mut beyond = vec![false; robot.links().len()];
+    beyond[joint.child] = true;
+    for _ in 0..robot.joints().len() {
+        for o in robot.joints() {
+            beyond[o.child] |= beyond[o.parent];
+        }
+    }
+    let softgrip_scene::robot::RobotJointHandle::Multibody(mh) = h.joints[j2] else {
+        panic!("a multibody arm")
+    };
+    let (mut touched, mut peak, mut max_speed) = (0, 0.0f64, 0.0f64);
+    let mut ratios = (f64::INFINITY, 0.0f64);
+    for step in 0..scene.steps() {
+        run.step();
+        let w = &run.world.physics;
+        let substeps = run.world.soft.counters().substeps_last.max(1) as f64;
+        let (mb, id) = w.multibody_joints.get(mh).unwrap();
+        let frame = *w.bodies[h.links[joint.parent]].position()
+            * mb.link(id).unwrap().joint.data.local_frame1;
+        let axis = frame.rotation * softgrip_scene::softgrip_rapier::rapier3d::prelude::Vector::X;
+        let o = frame.translation;
+        let moment =
+            |x: softgrip_scene::softgrip_rapier::rapier3d::prelude::Vector,
+             f: softgrip_scene::softgrip_rapier::rapier3d::prelude::Vector| {
+                ((x - o).cross(f)).dot(axis) as f64
+            };
+        let mut weight = 0.0;
+        for (i, &l) in h.links.iter().enumerate() {
+            if beyond[i] {
+                let rb = &w.bodies[l];
+                weight += moment(rb.center_of_mass(), w.gravity * rb.mass());
+            }
+        }
+        let (mut force, mut t_n, mut t_f) = (0.0, 0.0, 0.0);
+        for pair in w.narrow_phase.contact_pairs_with(table_col) {
+            let link_is_2 = pair.collider1 == table_col;
+            let sign = if link_is_2 { 1.0 } else { -1.0 };
+            let co1 = &w.colliders[pair.collider1];
+            for m in pair.manifolds() {
+                for p in &m.points {
+                    let k = (substeps / dt) as f32;
+                    let x = co1.position() * p.local_p1;
+                    let n = m.data.normal * (p.data.impulse * k * sign);
+                    let fr = p.data.warmstart_tangent_world * (k * sign);
+                    force += (n + fr).length() as f64;
+                    t_n += moment(x, n);
+                    t_f += moment(x, fr);
+                }
+            }
+        }
+        let speed = (h.links.iter())
+            .map(|&l| w.bodies[l].linvel().length() as f64)
+            .fold(0.0, f64::max);
+        let s = softgrip_scene::robot::joint_state(robot, w, &h, j2, dt / substeps);
+        max_speed = max_speed.max(speed);
+        touched += usize::from(force > 0.0);
+        // From the third step on the block (the first two are the impact).
+        if force > 0.0 && touched > 2 {
+            let pushed = s.effort + weight;
+            let ratio = -(t_n + t_f) / pushed;
+            ratios = (ratios.0.min(ratio), ratios.1.max(ratio));
+            peak = peak.max(force);
+            assert!(
+                s.position < -0.635 - 0.1,
+                "step {step}: shoulder at {}",
+                s.position
+            );
+            assert!(
+                (s.effort - 87.0).abs() < 1e-3,
+                "step {step}: motor {} N m",
+                s.effort
+            );
+        }
+        assert_eq!(run.world.soft.counters().locked_link_contacts, 0);
+    }
+    eprintln!(
+        "{touched} steps on the block, peak {peak:.1} N, block moment / (motor + weight) \
+         {:.3} .. {:.3}, largest link speed {max_speed:.4} m/s",
+        ratios.0, ratios.1
+    );
+    assert!(touched > 90, "{touched} steps on the block");
+    assert!(max_speed < 0.2, "a link flung at {max_speed} m/s");
+    assert!(ratios.0 > 0.6 && ratios.1 < 1.05, "{ratios:?}");
+}
+
+/// The same descent without the pads (closing by position to 2 cm, on nothing): rapier alone,
+/// the soft plugin only stepping it. Left to rapier the fingers' table contacts threw a finger
+/// at 1.0e10 m/s (8.1e15 N from the table; measured with the drop disabled), so the blow-up is
+/// rapier's own contact on the mimic-coupled fingers, not the soft solve's. Now the fingers
+/// move at most 0.012 m/s and the table pushes nothing along the locked vertical.
+#[test]
+fn gripper_without_pads_pushed_into_the_table_stays_on_its_path() {
+    let text = descending_text(
+        "parallel_gripper_box",
+        "lift = { distance = 0.1, speed = 0.1, acceleration = 1.0 }",
+        0.0055,
+    );
+    let (head, rest) = text.split_once("[[fingertip]]").unwrap();
+    let (_, control) = rest.split_once("[[controller]]").unwrap();
+    let control = control
+        .replace("force = 5.0", "")
+        .replace("closed = [0.0]", "closed = [0.02]");
+    let text = format!("{head}[[controller]]{control}");
+    let scene = Scene::parse(&text, "down.toml", &repo().join("scenes/robots")).unwrap();
+    let d = run_down(&scene, "box");
+    assert!(d.held > 60, "{d:?}");
+    assert!(d.link_speed < 0.11, "{d:?}: a link flung");
+    assert!(
+        d.locked > 0,
+        "{d:?}: the finger-table contacts were never met"
+    );
+    assert!(d.table_force <= 20.0, "{d:?}: table force");
+}
