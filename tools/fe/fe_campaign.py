@@ -119,7 +119,8 @@ def core_ball_cases():
     c += [("core", 0.48, 0.4, 40, "heldout", "ball", 2)]
     # held out (session 13, /work/fe-scratch/runs/core-s13): the first core on a ball away from
     # nu = 0.48, at a t/R and R2/R no other run has
-    return c + [("core", 0.4, 0.35, 40, "heldout", "ball", 1.5)]
+    return c + [("core", 0.4, 0.35, 40, "heldout", "ball", 1.5),
+                ("core", 0.33, 0.45, 40, "heldout", "ball", 3)]
 
 
 def cases_3d():
