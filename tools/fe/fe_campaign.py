@@ -82,7 +82,8 @@ def cases():
     # convergence check against R/50; each stops where its skin over the pole is squeezed by
     # delta/t 0.45-0.8 (x = 0.04-0.11)
     c += [("core", 0.38, 0.12, 75, "heldout"), ("core", 0.38, 0.12, 50, "conv"),
-          ("core", 0.46, 0.1, 60, "heldout"), ("core", 0.32, 0.14, 60, "heldout")]
+          ("core", 0.46, 0.1, 60, "heldout"), ("core", 0.32, 0.14, 60, "heldout"),
+          ("core", 0.49, 0.12, 60, "heldout")]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
 

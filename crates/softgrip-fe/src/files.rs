@@ -380,6 +380,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.14)
     ),
+    fe_file!(
+        "core/force_nu0.49_t0.12.csv",
+        Force,
+        Some(0.49),
+        "held out of every fit (the fourth set, session 13): skin t/R = 0.12 over a rigid core, nu = 0.49, R/60, x = 0.01..0.05",
+        "core",
+        Some(0.12)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
