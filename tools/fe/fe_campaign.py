@@ -118,10 +118,12 @@ def core_ball_cases():
     # held out (session 12, run under /work/fe-scratch/runs/core-s12): a skin and a ball neither
     # of the above has, for the core's map in the patch radius (core_map.rs)
     c += [("core", 0.48, 0.4, 40, "heldout", "ball", 2)]
-    # held out (session 13, /work/fe-scratch/runs/core-s13): the first core on a ball away from
-    # nu = 0.48, at a t/R and R2/R no other run has
+    # held out (session 13, /work/fe-scratch/runs/core-s13): the first cores on a ball away from
+    # nu = 0.48, at t/R and R2/R no other run has (run with fe_run.py's command line, whose
+    # increments beyond x = 0.2 are 0.01: the t/R 0.3 case here takes 0.005 there)
     return c + [("core", 0.4, 0.35, 40, "heldout", "ball", 1.5),
-                ("core", 0.33, 0.45, 40, "heldout", "ball", 3)]
+                ("core", 0.33, 0.45, 40, "heldout", "ball", 3),
+                ("core", 0.36, 0.3, 40, "heldout", "ball", 1)]
 
 
 def cases_3d():
