@@ -89,7 +89,9 @@ HELD = {(0.35, 0.7), (0.45, 0.5), (0.4, 0.3), (0.49, 0.3),
         # the second held-out set (session 6, made after this form was chosen: a blind test)
         (0.46, 0.25), (0.33, 0.25), (0.42, 0.55), (0.36, 0.2), (0.44, 0.8), (0.495, 0.35),
         # the third (session 11): a skin thinner than any fitted, and one between them
-        (0.47, 0.15), (0.42, 0.25)}
+        (0.47, 0.15), (0.42, 0.25),
+        # the fourth (session 13): skins thinner than any fitted (t/R 0.1-0.14, R/60-R/75)
+        (0.38, 0.12), (0.46, 0.1), (0.32, 0.14), (0.49, 0.12)}
 # The flat construction's constants (backed.rs FLAT: c0, c1, e0, e1, b, d), not refitted here.
 FLAT = (0.681614, -0.341872, 1.754842, -2.984330, 0.791282, 0.329388)
 # The law's radius (backed.rs G, RADIUS, RADIUS_CORE), not refitted here.

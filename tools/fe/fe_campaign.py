@@ -76,6 +76,14 @@ def cases():
     c += [("core", 0.499, 0.2, 60, "conv"), ("core", 0.4, 0.2, 60, "conv")]
     # a third held-out set (session 11): thin skins, one below the thinnest fitted (t/R 0.15)
     c += [("core", 0.47, 0.15, 40, "heldout"), ("core", 0.42, 0.25, 40, "heldout")]
+    # a fourth held-out set (session 13, run under /work/fe-scratch/runs/core-s13/): skins
+    # thinner than any fitted (t/R 0.12 and 0.1), where the core law's small-x error grows; a
+    # finer mesh than the campaign's (R/75: 9 elements through the skin; R/60: 6) with its
+    # convergence check against R/50; each stops where its skin over the pole is squeezed by
+    # delta/t 0.45-0.8 (x = 0.04-0.11)
+    c += [("core", 0.38, 0.12, 75, "heldout"), ("core", 0.38, 0.12, 50, "conv"),
+          ("core", 0.46, 0.1, 60, "heldout"), ("core", 0.32, 0.14, 60, "heldout"),
+          ("core", 0.49, 0.12, 60, "heldout")]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
 
@@ -109,7 +117,13 @@ def core_ball_cases():
     c = [("core", 0.48, t, 40, "main", "ball", k) for t in (0.3, 0.5) for k in (1, 3)]
     # held out (session 12, run under /work/fe-scratch/runs/core-s12): a skin and a ball neither
     # of the above has, for the core's map in the patch radius (core_map.rs)
-    return c + [("core", 0.48, 0.4, 40, "heldout", "ball", 2)]
+    c += [("core", 0.48, 0.4, 40, "heldout", "ball", 2)]
+    # held out (session 13, /work/fe-scratch/runs/core-s13): the first cores on a ball away from
+    # nu = 0.48, at t/R and R2/R no other run has (run with fe_run.py's command line, whose
+    # increments beyond x = 0.2 are 0.01: the t/R 0.3 case here takes 0.005 there)
+    return c + [("core", 0.4, 0.35, 40, "heldout", "ball", 1.5),
+                ("core", 0.33, 0.45, 40, "heldout", "ball", 3),
+                ("core", 0.36, 0.3, 40, "heldout", "ball", 1)]
 
 
 def cases_3d():

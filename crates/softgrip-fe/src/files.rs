@@ -356,6 +356,38 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.25)
     ),
+    fe_file!(
+        "core/force_nu0.38_t0.12.csv",
+        Force,
+        Some(0.38),
+        "held out of every fit (the fourth set, session 13): skin t/R = 0.12 over a rigid core, nu = 0.38, R/75, x = 0.01..0.08",
+        "core",
+        Some(0.12)
+    ),
+    fe_file!(
+        "core/force_nu0.46_t0.1.csv",
+        Force,
+        Some(0.46),
+        "held out of every fit (the fourth set, session 13): skin t/R = 0.1 over a rigid core, nu = 0.46, R/60, x = 0.01..0.04",
+        "core",
+        Some(0.1)
+    ),
+    fe_file!(
+        "core/force_nu0.32_t0.14.csv",
+        Force,
+        Some(0.32),
+        "held out of every fit (the fourth set, session 13): skin t/R = 0.14 over a rigid core, nu = 0.32, R/60, x = 0.01..0.1",
+        "core",
+        Some(0.14)
+    ),
+    fe_file!(
+        "core/force_nu0.49_t0.12.csv",
+        Force,
+        Some(0.49),
+        "held out of every fit (the fourth set, session 13): skin t/R = 0.12 over a rigid core, nu = 0.49, R/60, x = 0.01..0.05",
+        "core",
+        Some(0.12)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then

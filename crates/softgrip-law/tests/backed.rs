@@ -79,7 +79,12 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // chosen with it in view): (0.46, 0.25) 1.80 %, (0.33, 0.25) 2.37 % (to 0.20), (0.42, 0.55)
     // 1.88 %, (0.36, 0.2) 2.31 % (to 0.16), (0.44, 0.8) 1.23 %, (0.495, 0.35) 1.76 %: the 2 %
     // target is missed on four of ten. The third set (session 11): (0.47, 0.15) 1.86 % (to
-    // 0.08), (0.42, 0.25) 1.62 % (to 0.18). Each tolerance: seen + 0.1 %.
+    // 0.08), (0.42, 0.25) 1.62 % (to 0.18). The fourth set (session 13), thinner than any
+    // fitted: (0.38, 0.12) 4.02 % (at x = 0.01, +; -2.0 % at its end 0.08), (0.46, 0.1) 2.56 %
+    // (x = 0.02, +; to 0.04), (0.32, 0.14) 3.73 % (at its end x = 0.1, delta/t 0.71, -; +2.5 %
+    // at 0.01), (0.49, 0.12) 2.49 % (at its end x = 0.05, -; +0.01 % at 0.01): the 2 % target
+    // is missed, more the thinner the skin (crate README). Each
+    // tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -157,6 +162,32 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             Backing::Core { thickness: 0.25 },
             0.0172,
         ),
+        // The fourth set (session 13, run after every constant was fixed): skins thinner than
+        // any fitted, each to its FE's end, on finer meshes (R/75 and R/60).
+        (
+            "core/force_nu0.38_t0.12.csv",
+            0.38,
+            Backing::Core { thickness: 0.12 },
+            0.0412,
+        ),
+        (
+            "core/force_nu0.46_t0.1.csv",
+            0.46,
+            Backing::Core { thickness: 0.1 },
+            0.0266,
+        ),
+        (
+            "core/force_nu0.32_t0.14.csv",
+            0.32,
+            Backing::Core { thickness: 0.14 },
+            0.0383,
+        ),
+        (
+            "core/force_nu0.49_t0.12.csv",
+            0.49,
+            Backing::Core { thickness: 0.12 },
+            0.0259,
+        ),
     ];
     for (path, nu, backing, tol) in cases {
         let cal = law(Level::Calibrated, nu, backing);
@@ -221,7 +252,7 @@ fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
 }
 
 /// Issue 24 item 5: the core's validity reaches the FE's. Every committed FE core curve (the 14
-/// fitted and the 12 held out) lies inside the law's range to its last converged point, or to the
+/// fitted and the 16 held out) lies inside the law's range to its last converged point, or to the
 /// flat construction's x_max where that comes first (nu 0.499 t/R 0.6: FE 0.47, flat 0.44; nu
 /// 0.35 t/R 0.7: FE 0.50, flat 0.495), and the issue's two marks hold at every nu the level
 /// takes: x = 0.22 at t/R 0.3 (FE: 0.23 at nu 0.4, 0.20 at 0.49) and 0.38 at t/R 0.5 (FE: 0.39
@@ -243,7 +274,7 @@ fn core_validity_reaches_the_fe_reach() {
         );
         files += 1;
     }
-    assert_eq!(files, 26);
+    assert_eq!(files, 30);
     for j in 0..=20 {
         let nu = 0.3 + 0.01 * f64::from(j);
         for (t, x) in [(0.3, 0.22), (0.5, 0.38)] {

@@ -398,6 +398,7 @@ macro_rules! profiles {
         }),*]
     };
     (@t 0.0) => { "" };
+    (@t 0.14) => { "_t0.14" };
     (@t 0.2) => { "_t0.2" };
     (@t 0.25) => { "_t0.25" };
     (@t 0.3) => { "_t0.3" };
@@ -480,6 +481,11 @@ fn all_profiles() -> Vec<Profile> {
         "core", 0.3, 0.4, 0.3, false, [0.112, 0.115], [0.097, 0.105];
         "core", 0.3, 0.8, 0.5, false, [0.049, 0.102], [0.050, 0.103];
         "core", 0.4, 0.4, 0.3, false, [0.089, 0.094], [0.083, 0.088];
+        // Session 13, held out: the first thin skin past 0.6 t/R (nu 0.32 t/R 0.14 x 0.1, delta/t
+        // 0.71, R/60; its profile integrates to 0.993 F). Seen: FE force -2.71 / 9.07 %, law
+        // force -6.33 / 6.76 % (the law's force is 3.7 % low there): over the 5 % target, as the
+        // three above (CORE_PRESSURE.md, session 13).
+        "core", 0.32, 0.14, 0.1, true, [0.030, 0.094], [0.066, 0.070];
     )
     .into_iter()
     .collect()
