@@ -113,18 +113,12 @@ fn check_links(
     }
     let colliders = &world.physics.colliders;
     let allowed = world.physics.integration_parameters.allowed_linear_error() as f64;
-    let f = scene.file();
-    let mut shapes = h.shapes.iter();
     let (mut dynamic, mut held) = (Vec::new(), Vec::new());
-    for (j, b) in f.bodies.iter().enumerate() {
-        for k in 0..b.shapes.len() {
-            let Some((_, s)) = shapes.next() else { break };
-            let label = (*s, format!("body[{j}].shape[{k}] (`{}`)", b.name));
-            if b.kind == crate::format::BodyKind::Dynamic {
-                dynamic.push(label);
-            } else {
-                held.push(label);
-            }
+    for (s, label, kind) in body_shapes(scene, h) {
+        if kind == crate::format::BodyKind::Dynamic {
+            dynamic.push((s, label));
+        } else {
+            held.push((s, label));
         }
     }
     for (i, ((name, rh), robot)) in h.robots.iter().zip(scene.robots()).enumerate() {
@@ -137,17 +131,10 @@ fn check_links(
                     let link = &robot.links()[l].name;
                     format!("robot[{i}] (`{name}`) link `{link}` collision[{k}]")
                 };
+                // The fixed body first: parry 0.31 gives a cuboid against a half-space (a
+                // plane) as shape 2 the wrong points and normal.
                 for (bh, label) in &held {
-                    let bc = &colliders[*bh];
-                    let bpose = start_pose(world, bc);
-                    if !lbox.intersects(&bc.shape().compute_aabb(&bpose)) {
-                        continue;
-                    }
-                    // The fixed body first: parry 0.31 gives a cuboid against a half-space
-                    // (a plane) as shape 2 the wrong points and normal.
-                    let Ok(Some(contact)) =
-                        query::contact(&bpose, bc.shape(), &lpose, lc.shape(), 0.0)
-                    else {
+                    let Some(contact) = start_contact(world, *bh, (lc, &lpose, &lbox), true) else {
                         continue;
                     };
                     let depth = -(contact.dist as f64);
@@ -162,13 +149,7 @@ fn check_links(
                     }
                 }
                 for (bh, label) in &dynamic {
-                    let bc = &colliders[*bh];
-                    let bpose = start_pose(world, bc);
-                    if !lbox.intersects(&bc.shape().compute_aabb(&bpose)) {
-                        continue;
-                    }
-                    let Ok(Some(contact)) =
-                        query::contact(&lpose, lc.shape(), &bpose, bc.shape(), 0.0)
+                    let Some(contact) = start_contact(world, *bh, (lc, &lpose, &lbox), false)
                     else {
                         continue;
                     };
@@ -187,6 +168,43 @@ fn check_links(
         }
     }
     Ok(())
+}
+
+/// The contact at the start poses of a robot link's collider (`link`: the collider, its start
+/// pose and bounding box) with collider `other`, if their boxes touch and parry finds one
+/// (within 0 m): with `other_first`, `other` is shape 1 (its normal `normal1`, the link's point
+/// `point2`), else the link is.
+fn start_contact(
+    world: &softgrip_rapier::SoftWorld,
+    other: ColliderHandle,
+    link: (&Collider, &Pose, &Aabb),
+    other_first: bool,
+) -> Option<query::Contact> {
+    let (lc, lpose, lbox) = link;
+    let oc = &world.physics.colliders[other];
+    let opose = start_pose(world, oc);
+    if !lbox.intersects(&oc.shape().compute_aabb(&opose)) {
+        return None;
+    }
+    let found = if other_first {
+        query::contact(&opose, oc.shape(), lpose, lc.shape(), 0.0)
+    } else {
+        query::contact(lpose, lc.shape(), &opose, oc.shape(), 0.0)
+    };
+    found.ok().flatten()
+}
+
+/// Every body shape's collider, its label `body[j].shape[k]` (`name`) and its body's kind, in
+/// file order.
+fn body_shapes<'a>(
+    scene: &'a Scene,
+    h: &'a SceneHandles,
+) -> impl Iterator<Item = (ColliderHandle, String, crate::format::BodyKind)> + 'a {
+    let f = scene.file();
+    (f.bodies.iter().enumerate())
+        .flat_map(|(j, b)| (0..b.shapes.len()).map(move |k| (j, k, b)))
+        .zip(h.shapes.iter())
+        .map(|((j, k, b), (_, s))| (*s, format!("body[{j}].shape[{k}] (`{}`)", b.name), b.kind))
 }
 
 /// Whether the multibody link of rigid body `body` cannot move along `normal` at `point`
@@ -226,16 +244,9 @@ fn immobile_along(
 
 /// A label for every collider: `body[j].shape[k]` (`name`), then `fingertip[i]` (`name`).
 fn labels(scene: &Scene, h: &SceneHandles) -> Vec<(ColliderHandle, String)> {
-    let f = scene.file();
-    let mut labels: Vec<(ColliderHandle, String)> = Vec::new();
-    let mut shapes = h.shapes.iter();
-    for (j, b) in f.bodies.iter().enumerate() {
-        for k in 0..b.shapes.len() {
-            if let Some((_, s)) = shapes.next() {
-                labels.push((*s, format!("body[{j}].shape[{k}] (`{}`)", b.name)));
-            }
-        }
-    }
+    let mut labels: Vec<(ColliderHandle, String)> = (body_shapes(scene, h))
+        .map(|(s, label, _)| (s, label))
+        .collect();
     for (i, ((name, rh), robot)) in h.robots.iter().zip(scene.robots()).enumerate() {
         for (l, colliders) in rh.colliders.iter().enumerate() {
             for (k, co) in colliders.iter().enumerate() {
