@@ -188,3 +188,52 @@ fn impulse_gripper_grasps_the_ball_as_the_multibody() {
 fn impulse_gripper_grasps_the_cylinder_as_the_multibody() {
     both_models("cylinder");
 }
+
+/// The anchors' move keeps the joints as the URDF has them: built with impulse joints, each
+/// finger's joint frames have their origin at the finger's centre of mass (pad included, to
+/// 1e-7 m), and every link stands where the multibody build puts it (1e-6 m), its joint at its
+/// start position (1e-7 m).
+#[test]
+fn anchors_at_the_centre_of_mass_keep_the_urdf_joints() {
+    use softgrip_scene::robot::{RobotJointHandle, joint_state};
+    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let build = |model: &str| {
+        let t = text.replace("urdf = ", &format!("joints = \"{model}\"\nurdf = "));
+        let scene = Scene::parse(&t, "gripper.toml", path.parent().unwrap()).unwrap();
+        let built = scene.build();
+        (scene, built)
+    };
+    let (_, mb) = build("multibody");
+    let (scene, ij) = build("impulse");
+    let robot = &scene.robots()[0];
+    let (hm, hi) = (&mb.handles.robots[0].1, &ij.handles.robots[0].1);
+    let w = &ij.world.physics;
+    for (l, (a, b)) in hm.links.iter().zip(&hi.links).enumerate() {
+        let (a, b) = (
+            mb.world.physics.bodies[*a].translation(),
+            w.bodies[*b].translation(),
+        );
+        assert!((a - b).length() < 1e-6, "link {l}: {a:?} vs {b:?}");
+    }
+    let mut moved = 0;
+    for (j, (joint, handle)) in robot.joints().iter().zip(&hi.joints).enumerate() {
+        let RobotJointHandle::Impulse(handle) = *handle else {
+            panic!("joint {j} is not an impulse joint");
+        };
+        let child = &w.bodies[hi.links[joint.child]];
+        let frame2 = w.impulse_joints.get(handle).unwrap().data.local_frame2;
+        let off = (frame2.translation - child.local_center_of_mass()).length();
+        assert!(off < 1e-7, "{}: anchor {off} m off", joint.name);
+        // Not the link's origin (the URDF's joint origin): the centre of mass is 31 mm away.
+        assert!(
+            child.local_center_of_mass().length() > 0.03,
+            "{}",
+            joint.name
+        );
+        let q = joint_state(robot, w, hi, j, 1.0 / 60.0).position;
+        assert!((q - 0.028).abs() < 1e-7, "{}: {q}", joint.name);
+        moved += 1;
+    }
+    assert_eq!(moved, 2);
+}
