@@ -237,3 +237,44 @@ fn anchors_at_the_centre_of_mass_keep_the_urdf_joints() {
     }
     assert_eq!(moved, 2);
 }
+
+/// Each impulse finger joint's effort (minus its own motor's impulse, rapier's write-back of its
+/// last solver pass, over that pass) equals `-J^T F` of its own finger's load within 1 % at the end of the hold
+/// (issue 25 item 8), for the driven joint and its mimic alike: with impulse joints the mimic
+/// has its own motor, so the driven joint carries one pad, not two (`robot::joint_load`).
+#[test]
+fn impulse_finger_efforts_equal_jt_f() {
+    use softgrip_scene::robot::{joint_load, joint_state_loaded};
+    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("urdf = ", "joints = \"impulse\"\nurdf = ");
+    let scene = Scene::parse(&text, "gripper.toml", path.parent().unwrap()).unwrap();
+    let mut run = PlainRun::new(&scene);
+    let robot = scene.robots()[0].clone();
+    let h = run.handles.robots[0].1.clone();
+    let mut last = Vec::new();
+    for _ in 0..scene.steps() {
+        run.step();
+        if run.control.controllers()[0].phase() == Some(Phase::Hold) {
+            let n = run.world.soft.counters().substeps_last.max(1) as f64;
+            last = (0..robot.joints().len())
+                .map(|j| {
+                    let s = joint_state_loaded(&robot, &run.world, &h, j, DT / n);
+                    (j, s.effort, joint_load(&robot, &run.world, &h, j))
+                })
+                .collect();
+        }
+    }
+    assert_eq!(last.len(), 2, "the grasp held");
+    for (j, effort, load) in last {
+        let name = &robot.joints()[j].name;
+        let rel = (effort + load).abs() / load.abs();
+        eprintln!("{name}: effort {effort:.5} N, J^T F {load:.5} N ({rel:.2e})");
+        assert!(rel < 0.01, "{name}: effort {effort} vs J^T F {load}");
+        assert!(
+            (load.abs() - 5.0).abs() < K * V * DT,
+            "{name}: J^T F {load}"
+        );
+    }
+}
