@@ -28,6 +28,8 @@ pub(crate) struct BodyTable {
     pub handles: Vec<RigidBodyHandle>,
     /// The multibodies in the table: the index of their host link (`multibody`).
     hosts: Hosts,
+    /// Bodies held by impulse joints that entered as free bodies (`jointed::is_jointed`).
+    pub jointed_free: u64,
 }
 
 impl BodyTable {
@@ -37,6 +39,7 @@ impl BodyTable {
         self.table.clear();
         self.handles.clear();
         self.hosts.clear();
+        self.jointed_free = 0;
     }
 }
 
@@ -146,6 +149,9 @@ pub(crate) fn body_index(
             tb.handles.push(h);
         }
         return Some(next);
+    }
+    if jointed::is_jointed(bodies, ctx, handle) {
+        tb.jointed_free += 1;
     }
     let rb = bodies.get(handle)?;
     let com = to_f64(rb.mass_properties().world_com);

@@ -48,6 +48,17 @@ pub struct SoftCounters {
     /// its kinematic base count theirs here each (sub)step. Left to rapier, such a contact
     /// asked an impulse of `1 / (f32 noise)` and threw the link off its joint.
     pub locked_link_contacts: u64,
+    /// Bodies held by rapier impulse joints that the soft solve took as free bodies, counted
+    /// once per (sub)step each, total: their joints' rows do not converge within rapier's
+    /// Gauss-Seidel sweeps of a solver pass (`rate^sweeps > 1e-5`, crate README, What one step
+    /// does, 9), their assembly holds more than 8 bodies, or its numbers are not finite. Not an
+    /// error, but a pad on such a body reads a small force and sinks into what it presses
+    /// (the two-link finger at 2 PGS iterations: 0.004 N where the law asks 6.3 N). Before
+    /// session 13 the shipped gripper's impulse fingers counted here (their joint anchors 31
+    /// mm from their centres of mass); raise `num_internal_pgs_iterations` or the bodies'
+    /// `additional_pgs_iterations`, put a prismatic joint's anchors at its child's centre of
+    /// mass, or use a multibody.
+    pub jointed_free: u64,
     /// The most soft contacts solved together in one coupled group (contacts sharing a
     /// dynamic body, What one step does, 4), over all solves so far (0 before any contact).
     /// Resting fingertips apart from each other are groups of one: a larger figure says the

@@ -108,6 +108,24 @@ fn can_join(bodies: &RigidBodySet, ctx: &LinkCtx<'_>, handle: RigidBodyHandle) -
         && ctx.multibodies.rigid_body_link(handle).is_none()
 }
 
+/// Whether `handle` is a body the solve would see through its impulse joints if it could: an
+/// awake, enabled dynamic body (not a multibody link) with an enabled impulse joint. Such a body
+/// that [`assembly_states`] leaves out (rapier's sweeps do not converge, the assembly is larger
+/// than [`MAX_ASSEMBLY_BODIES`], or its numbers are not finite) is solved as a free body
+/// (`SoftCounters::jointed_free`).
+pub(crate) fn is_jointed(
+    bodies: &RigidBodySet,
+    ctx: &LinkCtx<'_>,
+    handle: RigidBodyHandle,
+) -> bool {
+    can_join(bodies, ctx, handle)
+        && ctx
+            .impulse_joints
+            .attached_enabled_joints(handle)
+            .next()
+            .is_some()
+}
+
 /// The assembly of `handle`: the bodies that can join, connected to it through enabled impulse
 /// joints; `None` if it has no such joint or the assembly is larger than
 /// [`MAX_ASSEMBLY_BODIES`].

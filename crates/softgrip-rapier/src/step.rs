@@ -298,6 +298,7 @@ impl Step<'_> {
         }
         self.soft.geoms = geoms;
         self.prepare_rigid(h, h_drift, kin_vel, s);
+        self.soft.counters.jointed_free += s.body_table.jointed_free;
     }
 
     /// rapier's touching rigid contacts of every dynamic body a soft contact moves, and of the

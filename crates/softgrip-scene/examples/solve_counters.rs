@@ -59,6 +59,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         c.substep_cap_hits,
         c.largest_group
     );
+    println!(
+        "bodies held by impulse joints solved as free bodies: {} (per substep, total)",
+        c.jointed_free
+    );
     for (name, peak) in &peaks {
         println!("fingertip {name}: peak force {peak:.4} N");
     }

@@ -189,6 +189,10 @@ impl Scene {
                 .expect("invariant: the fingertip's own ball collider was just inserted");
             out.fingertips.push((t.name.clone(), h));
         }
+        // The fingertips moved their links' centres of mass.
+        for (r, (_, h)) in self.robots().iter().zip(&out.robots) {
+            r.anchor_prismatic_at_com(&mut world.physics, h);
+        }
         out
     }
 }

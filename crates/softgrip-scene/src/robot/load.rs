@@ -12,11 +12,15 @@ use crate::robot::state::{JointState, joint_state};
 /// `J^T F` of joint `j` of `robot` (handles `h`) after the last step \[N or N m\]: the
 /// generalised force along the joint's axis of the loads on the links beyond it (every soft
 /// contact's force and torsional moment on them, whichever side of the contact the link is, and
-/// the links' weights), plus `multiplier` times that of each joint mimicking it (a mimic's
-/// load reaches its leader through the coupling). Rigid (rapier) contacts on the links are not
+/// the links' weights), plus, for a multibody joint, `multiplier` times that of each joint
+/// mimicking it (a mimic's load reaches its leader through the coupling; an impulse mimic joint
+/// has its own motor, which carries its load). Rigid (rapier) contacts on the links are not
 /// counted. 0 for a fixed joint or a joint the world does not hold.
 pub fn joint_load(robot: &Robot, world: &SoftWorld, h: &RobotHandles, j: usize) -> f64 {
     let own = own_load(robot, world, h, j).unwrap_or(0.0);
+    if !matches!(h.joints.get(j), Some(RobotJointHandle::Multibody(_))) {
+        return own;
+    }
     let mimics: f64 = (robot.joints().iter().enumerate())
         .filter_map(|(m, o)| {
             o.mimic

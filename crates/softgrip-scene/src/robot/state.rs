@@ -15,8 +15,9 @@ pub struct JointState {
     /// Velocity \[m/s or rad/s\].
     pub velocity: f64,
     /// Force or torque of its motor on the child link along the joint's axis \[N or N m\]:
-    /// impulse joints, the motor's and the limit's impulses of the last substep over its
-    /// length (rapier writes them back); multibody joints, the motor's spring law
+    /// impulse joints, minus the motor's and the limit's impulses rapier writes back over the
+    /// length of the solver pass they are from, its last (`substep / num_solver_iterations`;
+    /// rapier's impulse pushes the child against the axis); multibody joints, the motor's spring law
     /// `k (q_target - q) + d (v_target - v)` clamped to the effort limit (rapier does not write
     /// a multibody motor's impulse back); a multibody mimic joint (no motor) 0 here, the load its
     /// coupling carries in [`joint_state_loaded`](crate::robot::joint_state_loaded).
@@ -90,14 +91,13 @@ pub fn joint_state(
             };
             let impulse = ij.data.motor(axis).map_or(0.0, |m| m.impulse as f64)
                 + ij.data.limits(axis).map_or(0.0, |l| l.impulse as f64);
+            // The last solver pass's impulse (the pipeline step runs `num_solver_iterations`
+            // passes of `substep / num_solver_iterations` each).
+            let pass = substep / world.integration_parameters.num_solver_iterations.max(1) as f64;
             JointState {
                 position: q,
                 velocity: v,
-                effort: if substep > 0.0 {
-                    impulse / substep
-                } else {
-                    0.0
-                },
+                effort: if pass > 0.0 { -impulse / pass } else { 0.0 },
             }
         }
         RobotJointHandle::None => JointState::default(),

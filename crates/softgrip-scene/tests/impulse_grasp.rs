@@ -1,0 +1,308 @@
+//! The shipped parallel gripper with `joints = "impulse"` (rapier impulse joints, the right
+//! finger's motor following the left's target for its `<mimic>`) grasps as it does as a
+//! multibody: on the box, the ball and the cylinder (`scenes/robots/parallel_gripper_*.toml`)
+//! at 3, 5 and 7 N per pad, each run in both joint models.
+//!
+//! Before session 13 the impulse gripper's 5 N grasp on the box peaked at 15 N and dropped the
+//! box: its fingers' joint anchors sat at the link origins, 31 mm from their centres of mass,
+//! where rapier's one Gauss-Seidel sweep per solver pass does not converge over the finger's
+//! joint rows, so the soft solve took each finger as a free body (`Robot::anchor_prismatic_at_com`).
+//!
+//! The tolerances come from the grasp primitive. It stops closing at the first step whose
+//! force (the step average, as it reads it) reaches `F`; a pad's force grows per step by at
+//! most the motor's stiffness times the target's advance, `k v dt` (2000 N/m x 10 mm/s x
+//! 1/60 s = 0.333 N; the pad in series only softens it), so the force it stops at is in
+//! `[F, F + k v dt)`. Once stopped, the motor's velocity target (`-v`) drops to 0 and with
+//! it the damping's push `d v` (20 N s/m x 10 mm/s = 0.2 N): the held force is in
+//! `[F - d v, F + k v dt)` (1 % of `F` more for the pads' relaxation into the object). The
+//! peak (the largest substep force) may exceed the stopping step's average by the rise within
+//! that step: 3 % (measured at most 1.2 %). Between the joint models: each stops within one
+//! step's increment of `F`, so their peaks and held forces differ by less than `k v dt`. Hold
+//! slip: issue 25's 100 um, and here below 25 um (measured at most 11.6 um in both models).
+//! `cargo test -p softgrip-scene --test impulse_grasp -- --nocapture` prints the numbers
+//! (the table in SCENES.md; `cargo run --release -p softgrip-scene --example impulse_grasp
+//! <scene> 3 5 7` prints the same with the time per step).
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+use std::path::{Path, PathBuf};
+
+use softgrip_scene::control::Phase;
+use softgrip_scene::{PlainRun, Scene};
+
+/// The scenes' motor stiffness [N/m], damping [N s/m], closing speed [m/s] and step [s].
+const K: f64 = 2000.0;
+const D: f64 = 20.0;
+const V: f64 = 0.01;
+const DT: f64 = 1.0 / 60.0;
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// One grasp run's numbers.
+#[derive(Debug)]
+struct Grasped {
+    /// The smallest pad force the squeeze stopped at (the step average it read) \[N\].
+    stopped_at: f64,
+    /// The largest substep force of any pad \[N\].
+    peak: f64,
+    /// Each pad's force at the end of the hold \[N\].
+    held: Vec<f64>,
+    /// The object's largest motion relative to the hand's base over the hold \[m\].
+    slip: f64,
+}
+
+/// `scenes/robots/parallel_gripper_{object}.toml` with `joints = model` and the grasp at
+/// `force` \[N\].
+fn grasp(object: &str, model: &str, force: f64) -> Grasped {
+    let path = repo().join(format!("scenes/robots/parallel_gripper_{object}.toml"));
+    let mut text = String::new();
+    for line in std::fs::read_to_string(&path).unwrap().lines() {
+        if line.starts_with("force =") {
+            text.push_str(&format!("force = {force}\n"));
+            continue;
+        }
+        text.push_str(line);
+        text.push('\n');
+        if line.starts_with("urdf =") {
+            text.push_str(&format!("joints = \"{model}\"\n"));
+        }
+    }
+    assert!(
+        text.contains(&format!("force = {force}\n")),
+        "{object}: no force"
+    );
+    let scene = Scene::parse(&text, "gripper.toml", path.parent().unwrap()).unwrap();
+    let mut run = PlainRun::new(&scene);
+    let obj = run.handles.body(object).unwrap();
+    let base = run.handles.robots[0].1.links[scene.robots()[0].root()];
+    let pads: Vec<_> = ["left_pad", "right_pad"]
+        .iter()
+        .map(|n| run.handles.fingertip(n).unwrap())
+        .collect();
+    let (mut stopped_at, mut peak) = (f64::NAN, 0.0f64);
+    let (mut held, mut hold) = (Vec::new(), Vec::<[f64; 3]>::new());
+    // The forces the controller read at the start of the step (those of the step before).
+    let mut read = vec![0.0; pads.len()];
+    for _ in 0..scene.steps() {
+        run.step();
+        let f: Vec<f64> = (pads.iter())
+            .map(|&p| run.world.soft.contacts_of(p).map(|c| c.normal_force).sum())
+            .collect();
+        for &p in &pads {
+            for c in run.world.soft.contacts_of(p) {
+                peak = peak.max(c.peak_normal_force);
+            }
+        }
+        if !run.events().is_empty() && stopped_at.is_nan() {
+            stopped_at = read.iter().copied().fold(f64::INFINITY, f64::min);
+        }
+        if run.control.controllers()[0].phase() == Some(Phase::Hold) {
+            let b = &run.world.physics.bodies;
+            let (o, h) = (b[obj].translation(), b[base].translation());
+            hold.push([o.x - h.x, o.y - h.y, o.z - h.z].map(f64::from));
+            held.clone_from(&f);
+        }
+        read = f;
+    }
+    assert!(hold.len() > 2, "{object} {model} {force} N: never held");
+    let slip = (hold.iter())
+        .map(|p| {
+            (0..3)
+                .map(|i| (p[i] - hold[0][i]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0, f64::max);
+    let g = Grasped {
+        stopped_at,
+        peak,
+        held,
+        slip,
+    };
+    eprintln!(
+        "{object} {model:9} {force} N: stopped at {:.4} N, peak {:.4} N, held {:.4?} N, \
+         slip {:.2} um",
+        g.stopped_at,
+        g.peak,
+        g.held,
+        g.slip * 1e6
+    );
+    g
+}
+
+/// Every bound of the module's header on one run at `force` \[N\].
+fn check(g: &Grasped, force: f64, what: &str) {
+    let step = K * V * DT;
+    assert!(
+        g.stopped_at >= force && g.stopped_at < force + step,
+        "{what}: {g:?}"
+    );
+    assert!(g.peak < 1.03 * (force + step), "{what}: peak, {g:?}");
+    for &f in &g.held {
+        assert!(
+            f >= force - D * V - 0.01 * force && f < force + step,
+            "{what}: held, {g:?}"
+        );
+    }
+    assert!(
+        (g.held[0] - g.held[1]).abs() < 0.01 * force,
+        "{what}: pads, {g:?}"
+    );
+    assert!(g.slip < 25e-6, "{what}: slip, {g:?}");
+}
+
+/// `object` at 3, 5 and 7 N in both joint models: each within the bounds, and the impulse run
+/// within one step's force increment of the multibody run.
+fn both_models(object: &str) {
+    for force in [3.0, 5.0, 7.0] {
+        let mb = grasp(object, "multibody", force);
+        let ij = grasp(object, "impulse", force);
+        check(&mb, force, &format!("{object} multibody {force} N"));
+        check(&ij, force, &format!("{object} impulse {force} N"));
+        let step = K * V * DT;
+        assert!(
+            (ij.peak - mb.peak).abs() < step,
+            "{object} {force} N: peaks {} vs {}",
+            ij.peak,
+            mb.peak
+        );
+        for (a, b) in ij.held.iter().zip(&mb.held) {
+            assert!((a - b).abs() < step, "{object} {force} N: held {a} vs {b}");
+        }
+    }
+}
+
+#[test]
+fn impulse_gripper_grasps_the_box_as_the_multibody() {
+    both_models("box");
+}
+
+#[test]
+fn impulse_gripper_grasps_the_ball_as_the_multibody() {
+    both_models("ball");
+}
+
+#[test]
+fn impulse_gripper_grasps_the_cylinder_as_the_multibody() {
+    both_models("cylinder");
+}
+
+/// The anchors' move keeps the joints as the URDF has them: built with impulse joints, each
+/// finger's joint frames have their origin at the finger's centre of mass (pad included, to
+/// 1e-7 m), and every link stands where the multibody build puts it (1e-6 m), its joint at its
+/// start position (1e-7 m).
+#[test]
+fn anchors_at_the_centre_of_mass_keep_the_urdf_joints() {
+    use softgrip_scene::robot::{RobotJointHandle, joint_state};
+    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let build = |model: &str| {
+        let t = text.replace("urdf = ", &format!("joints = \"{model}\"\nurdf = "));
+        let scene = Scene::parse(&t, "gripper.toml", path.parent().unwrap()).unwrap();
+        let built = scene.build();
+        (scene, built)
+    };
+    let (_, mb) = build("multibody");
+    let (scene, ij) = build("impulse");
+    let robot = &scene.robots()[0];
+    let (hm, hi) = (&mb.handles.robots[0].1, &ij.handles.robots[0].1);
+    let w = &ij.world.physics;
+    for (l, (a, b)) in hm.links.iter().zip(&hi.links).enumerate() {
+        let (a, b) = (
+            mb.world.physics.bodies[*a].translation(),
+            w.bodies[*b].translation(),
+        );
+        assert!((a - b).length() < 1e-6, "link {l}: {a:?} vs {b:?}");
+    }
+    let mut moved = 0;
+    for (j, (joint, handle)) in robot.joints().iter().zip(&hi.joints).enumerate() {
+        let RobotJointHandle::Impulse(handle) = *handle else {
+            panic!("joint {j} is not an impulse joint");
+        };
+        let child = &w.bodies[hi.links[joint.child]];
+        let frame2 = w.impulse_joints.get(handle).unwrap().data.local_frame2;
+        let off = (frame2.translation - child.local_center_of_mass()).length();
+        assert!(off < 1e-7, "{}: anchor {off} m off", joint.name);
+        // Not the link's origin (the URDF's joint origin): the centre of mass is 31 mm away.
+        assert!(
+            child.local_center_of_mass().length() > 0.03,
+            "{}",
+            joint.name
+        );
+        let q = joint_state(robot, w, hi, j, 1.0 / 60.0).position;
+        assert!((q - 0.028).abs() < 1e-7, "{}: {q}", joint.name);
+        moved += 1;
+    }
+    assert_eq!(moved, 2);
+}
+
+/// Each impulse finger joint's effort (minus its own motor's impulse, rapier's write-back of its
+/// last solver pass, over that pass) equals `-J^T F` of its own finger's load within 1 % at the end of the hold
+/// (issue 25 item 8), for the driven joint and its mimic alike: with impulse joints the mimic
+/// has its own motor, so the driven joint carries one pad, not two (`robot::joint_load`).
+#[test]
+fn impulse_finger_efforts_equal_jt_f() {
+    use softgrip_scene::robot::{joint_load, joint_state_loaded};
+    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("urdf = ", "joints = \"impulse\"\nurdf = ");
+    let scene = Scene::parse(&text, "gripper.toml", path.parent().unwrap()).unwrap();
+    let mut run = PlainRun::new(&scene);
+    let robot = scene.robots()[0].clone();
+    let h = run.handles.robots[0].1.clone();
+    let mut last = Vec::new();
+    for _ in 0..scene.steps() {
+        run.step();
+        if run.control.controllers()[0].phase() == Some(Phase::Hold) {
+            let n = run.world.soft.counters().substeps_last.max(1) as f64;
+            last = (0..robot.joints().len())
+                .map(|j| {
+                    let s = joint_state_loaded(&robot, &run.world, &h, j, DT / n);
+                    (j, s.effort, joint_load(&robot, &run.world, &h, j))
+                })
+                .collect();
+        }
+    }
+    assert_eq!(last.len(), 2, "the grasp held");
+    for (j, effort, load) in last {
+        let name = &robot.joints()[j].name;
+        let rel = (effort + load).abs() / load.abs();
+        eprintln!("{name}: effort {effort:.5} N, J^T F {load:.5} N ({rel:.2e})");
+        assert!(rel < 0.01, "{name}: effort {effort} vs J^T F {load}");
+        assert!(
+            (load.abs() - 5.0).abs() < K * V * DT,
+            "{name}: J^T F {load}"
+        );
+    }
+}
+
+/// `SoftCounters::jointed_free` names the failure this file is about: the impulse gripper's
+/// fingers are seen through their joints in every (sub)step of the grasp (0), where the
+/// three-finger hand's hinged fingers with impulse joints are not (rapier's one sweep per pass
+/// does not converge over them: counted).
+#[test]
+fn jointed_free_counts_the_links_the_solve_takes_as_free() {
+    let count = |name: &str, steps: u64| {
+        let path = repo().join(format!("scenes/robots/{name}.toml"));
+        let text = std::fs::read_to_string(&path)
+            .unwrap()
+            .replace("urdf = ", "joints = \"impulse\"\nurdf = ");
+        let scene = Scene::parse(&text, "hand.toml", path.parent().unwrap()).unwrap();
+        let mut run = PlainRun::new(&scene);
+        for _ in 0..steps {
+            run.step();
+        }
+        let c = run.world.soft.counters();
+        eprintln!(
+            "{name}: jointed_free {} over {} substeps",
+            c.jointed_free, c.substeps_total
+        );
+        c.jointed_free
+    };
+    // The gripper through its grip (step 45) and lift.
+    assert_eq!(count("parallel_gripper_box", 100), 0);
+    assert!(count("three_finger_hand_ball", 40) > 0);
+}
