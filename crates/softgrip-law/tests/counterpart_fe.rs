@@ -111,19 +111,24 @@ fn stated_force_error(path: &str) -> f64 {
         "cylinder/flat/force_nu0.3_k3.csv" => 1.49,
         "cylinder/free/force_nu0.48_k1.csv" => 1.48,
         "cylinder/free/force_nu0.48_k3.csv" => 0.72,
+        // Session 13, blind (run after the constants were fixed, session 12, and never
+        // fitted): the bonded pad at nu 0.3-0.37 on balls no other run has.
+        "ball/flat/force_nu0.3_k0.7.csv" => 1.72,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
     (pct + 0.2) / 100.0
 }
 
-/// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the balls of R/2
+/// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the balls of 0.7 R
+/// (session 13: the FE to x = 0.70, the law to the bonded reach constant 0.66), R/2
 /// (0.66, the bonded reach constant, of 0.68) and R (0.654, where the plane law ends at rho x,
 /// of 0.68), on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69), and at nu = 0.499 on 2R, 4R and
 /// 10R (the plane law of the bonded pad ends at x = 0.44 at nu >= 0.48, at rho x: 0.62 of
 /// the FE's 0.65, 0.53 of 0.57, 0.48 of 0.53; the nearly incompressible pad on a large ball
 /// folds over its bonded edge later than on the plane, where the plane law was fitted).
 const RANGE_SHORT: &[&str] = &[
+    "ball/flat/force_nu0.3_k0.7.csv",
     "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.4_k0.7.csv",
@@ -192,7 +197,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         }
         seen += 1;
     }
-    assert!(seen >= 44, "{seen} curves");
+    assert!(seen >= 45, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
