@@ -99,11 +99,10 @@ def curved_cases():
     # /work/fe-scratch/runs/law-curved-s11/
     held11 = [("flat", 0.35, 0.7), ("free", 0.42, 1.5)]
     c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held11]
-    # session 13 (law-curved): held out of the change for the bonded pad at nu = 0.3 on the
-    # ball of R (started before the change was made, read only after it was fixed): the most
-    # compressible pad on balls no other run has (0.7 R, 1.4 R, 3 R), nu between the fitted
-    # ones (0.33, 0.37), and the free sphere at nu = 0.3 on 0.7 R; the campaign's increments,
-    # under /work/fe-scratch/runs/law-curved-s13/
+    # session 13 (law-curved): blind tests of the session-12 law (no constant ever saw them;
+    # started before any change was tried): the most compressible pad on balls no other run
+    # has (0.7 R, 1.4 R, 3 R), nu between the fitted ones (0.33, 0.37), and the free sphere at
+    # nu = 0.3 on 0.7 R; the campaign's increments, under /work/fe-scratch/runs/law-curved-s13/
     held13 = [("flat", 0.3, 0.7), ("flat", 0.33, 1.4), ("flat", 0.3, 3), ("free", 0.3, 0.7),
               ("flat", 0.37, 1), ("flat", 0.3, 1.4)]
     c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held13]
