@@ -312,7 +312,12 @@ fn the_missed_bonded_curve_is_mesh_converged_to_its_end() {
         .skip_while(|l| !l.starts_with(header))
         .skip(1)
         .filter(|l| l.starts_with("flat,0.3,1,mesh,40,60,"))
-        .map(|l| l.split(',').skip(6).map(|v| v.parse().expect("a number")).collect())
+        .map(|l| {
+            l.split(',')
+                .skip(6)
+                .map(|v| v.parse().expect("a number"))
+                .collect()
+        })
         .collect();
     let worst = rows.iter().map(|r| r[3].abs()).fold(0.0, f64::max);
     let end = rows.iter().map(|r| r[0]).fold(0.0, f64::max);
