@@ -29,6 +29,7 @@ macro_rules! counterpart_file {
 pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("ball/free/force_nu0.35_k3.csv", Force, 0.35, "free", Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, free, nu = 0.35, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.3_k0.5.csv", Force, 0.3, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.3, x = 0.01..0.7"),
+    counterpart_file!("ball/free/force_nu0.3_k0.7.csv", Force, 0.3, "free", Counterpart::Ball { k: 0.7 }, "held out of every fit: ball k = 0.7, free, nu = 0.3, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.3_k1.csv", Force, 0.3, "free", Counterpart::Ball { k: 1.0 }, "ball k = 1, free, nu = 0.3, x = 0.01..0.7"),
     counterpart_file!("ball/free/force_nu0.3_k10.csv", Force, 0.3, "free", Counterpart::Ball { k: 10.0 }, "ball k = 10, free, nu = 0.3, x = 0.01..0.64"),
     counterpart_file!("ball/free/force_nu0.3_k2.csv", Force, 0.3, "free", Counterpart::Ball { k: 2.0 }, "ball k = 2, free, nu = 0.3, x = 0.01..0.7"),
@@ -52,6 +53,9 @@ pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("ball/free/pressure_nu0.3_k0.5_d0.1.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.3, pressure at x = 0.1"),
     counterpart_file!("ball/free/pressure_nu0.3_k0.5_d0.3.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.3, pressure at x = 0.3"),
     counterpart_file!("ball/free/pressure_nu0.3_k0.5_d0.5.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.5 }, "ball k = 0.5, free, nu = 0.3, pressure at x = 0.5"),
+    counterpart_file!("ball/free/pressure_nu0.3_k0.7_d0.1.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.7 }, "held out of every fit: ball k = 0.7, free, nu = 0.3, pressure at x = 0.1"),
+    counterpart_file!("ball/free/pressure_nu0.3_k0.7_d0.3.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.7 }, "held out of every fit: ball k = 0.7, free, nu = 0.3, pressure at x = 0.3"),
+    counterpart_file!("ball/free/pressure_nu0.3_k0.7_d0.5.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 0.7 }, "held out of every fit: ball k = 0.7, free, nu = 0.3, pressure at x = 0.5"),
     counterpart_file!("ball/free/pressure_nu0.3_k10_d0.1.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 10.0 }, "ball k = 10, free, nu = 0.3, pressure at x = 0.1"),
     counterpart_file!("ball/free/pressure_nu0.3_k10_d0.3.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 10.0 }, "ball k = 10, free, nu = 0.3, pressure at x = 0.3"),
     counterpart_file!("ball/free/pressure_nu0.3_k10_d0.5.csv", Pressure, 0.3, "free", Counterpart::Ball { k: 10.0 }, "ball k = 10, free, nu = 0.3, pressure at x = 0.5"),
