@@ -117,6 +117,7 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/flat/force_nu0.33_k1.4.csv" => 4.14,
         "ball/flat/force_nu0.3_k3.csv" => 2.28,
         "ball/free/force_nu0.3_k0.7.csv" => 1.36,
+        "ball/flat/force_nu0.37_k1.csv" => 3.32,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
@@ -151,10 +152,12 @@ const RANGE_SHORT: &[&str] = &[
 ///
 /// Session 13's blind run of the bonded pad at nu = 0.33 on the ball of 1.4 R misses the same
 /// way: 4.14 % at x = 0.66 (the law too soft past x = 0.6, -3.14 % at 0.64 where the FE's
-/// smallest element keeps 24 % of its volume), 2.69 % to 0.63.
+/// smallest element keeps 24 % of its volume), 2.69 % to 0.63; and the blind run at nu = 0.37 on
+/// R: 3.32 % at its end, x = 0.64 (the FE diverged; -2.56 % at 0.60), 2.94 % to 0.62.
 const KNOWN_MISSES: &[&str] = &[
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.33_k1.4.csv",
+    "ball/flat/force_nu0.37_k1.csv",
 ];
 
 /// Where the curves past 3 % (or near it) are within the 3 % below the FE's collapse:
@@ -163,6 +166,7 @@ const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
     ("ball/free/force_nu0.3_k4.csv", 0.65, 1.43),
     ("ball/flat/force_nu0.3_k1.csv", 0.64, 2.33),
     ("ball/flat/force_nu0.33_k1.4.csv", 0.63, 2.69),
+    ("ball/flat/force_nu0.37_k1.csv", 0.62, 2.94),
 ];
 
 #[test]
@@ -210,7 +214,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         }
         seen += 1;
     }
-    assert!(seen >= 48, "{seen} curves");
+    assert!(seen >= 49, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
