@@ -118,6 +118,7 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/flat/force_nu0.3_k3.csv" => 2.28,
         "ball/free/force_nu0.3_k0.7.csv" => 1.36,
         "ball/flat/force_nu0.37_k1.csv" => 3.32,
+        "ball/flat/force_nu0.3_k1.4.csv" => 2.67,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
@@ -214,7 +215,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         }
         seen += 1;
     }
-    assert!(seen >= 49, "{seen} curves");
+    assert!(seen >= 50, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
