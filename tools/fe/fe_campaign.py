@@ -107,6 +107,16 @@ def curved_cases():
     # /work/fe-scratch/runs/law-curved-s11/
     held11 = [("flat", 0.35, 0.7), ("free", 0.42, 1.5)]
     c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held11]
+    # session 13 (law-curved): blind tests of the session-12 law (no constant ever saw them;
+    # started before any change was tried): the most compressible pad on balls no other run
+    # has (0.7 R, 1.4 R, 3 R), nu between the fitted ones (0.33, 0.37), and the free sphere at
+    # nu = 0.3 on 0.7 R; the campaign's increments, under /work/fe-scratch/runs/law-curved-s13/
+    held13 = [("flat", 0.3, 0.7), ("flat", 0.33, 1.4), ("flat", 0.3, 3), ("free", 0.3, 0.7),
+              ("flat", 0.37, 1), ("flat", 0.3, 1.4)]
+    c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held13]
+    # ... and the mesh convergence of that curve to its end (role "conv-reach": to x = 0.7, where
+    # the material under the contact collapses, the smallest element keeping 21 % of its volume)
+    c += [("flat", 0.3, 0, 60, "conv-reach", "ball", 1)]
     return c + core_ball_cases() + cases_3d()
 
 
@@ -177,7 +187,7 @@ def make_curved(geometry, nu, t, h, role, cp, k):
         tend = 0.6 if role in ("main", "heldout") else 0.3
         return fe_run.make_case(geometry, nu, t, h, tend, dt_small=0.005, late_dt=0.02,
                                 counterpart=cp, k=k, dim=3)
-    tend = TEND if role in ("main", "heldout") else 0.5
+    tend = TEND if role in ("main", "heldout", "conv-reach") else 0.5
     dt_small = 0.0025 if geometry == "free" else 0.005
     late_dt = 0.005 if nu >= 0.499 else 0.01
     if geometry == "core":
@@ -448,7 +458,7 @@ def cmd_export(a):
                 curved.setdefault("cylinder", {})[key] = (prov, rows)
                 print(f"3D vs axisymmetric {g} nu={nu:g}: max |dF| / F = {worst:.3f} %")
             continue
-        if role not in ("conv", "smoke", "facets"):
+        if role not in ("conv", "conv-reach", "smoke", "facets"):
             continue
         other = load(a.runs, g, nu, t, h, role, cp, k)
         if other is None or (g, nu, t, cp, k) not in done:

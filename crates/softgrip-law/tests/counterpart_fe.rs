@@ -111,19 +111,31 @@ fn stated_force_error(path: &str) -> f64 {
         "cylinder/flat/force_nu0.3_k3.csv" => 1.49,
         "cylinder/free/force_nu0.48_k1.csv" => 1.48,
         "cylinder/free/force_nu0.48_k3.csv" => 0.72,
+        // Session 13, blind (run after the constants were fixed, session 12, and never
+        // fitted): the bonded pad at nu 0.3-0.37 on balls no other run has.
+        "ball/flat/force_nu0.3_k0.7.csv" => 1.72,
+        "ball/flat/force_nu0.33_k1.4.csv" => 4.14,
+        "ball/flat/force_nu0.3_k3.csv" => 2.28,
+        "ball/free/force_nu0.3_k0.7.csv" => 1.36,
+        "ball/flat/force_nu0.37_k1.csv" => 3.32,
+        "ball/flat/force_nu0.3_k1.4.csv" => 2.67,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
     (pct + 0.2) / 100.0
 }
 
-/// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the balls of R/2
+/// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the balls of 0.7 R
+/// (session 13: the FE to x = 0.70, the law to the bonded reach constant 0.66), at nu = 0.33 on
+/// 1.4 R (session 13: 0.66 of 0.69), R/2
 /// (0.66, the bonded reach constant, of 0.68) and R (0.654, where the plane law ends at rho x,
 /// of 0.68), on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69), and at nu = 0.499 on 2R, 4R and
 /// 10R (the plane law of the bonded pad ends at x = 0.44 at nu >= 0.48, at rho x: 0.62 of
 /// the FE's 0.65, 0.53 of 0.57, 0.48 of 0.53; the nearly incompressible pad on a large ball
 /// folds over its bonded edge later than on the plane, where the plane law was fitted).
 const RANGE_SHORT: &[&str] = &[
+    "ball/flat/force_nu0.3_k0.7.csv",
+    "ball/flat/force_nu0.33_k1.4.csv",
     "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.4_k0.7.csv",
@@ -138,13 +150,24 @@ const RANGE_SHORT: &[&str] = &[
 /// 3 % below). Session 11 missed four (the bonded pad on R/2, R, 2R: 3.76, 5.05, 3.44 %; the
 /// free sphere on 4R, blind: 3.64 %): the cap scaled by the pressed area (`cap_map`) brought
 /// them to 2.22, 3.46, 2.69 and 2.97 %.
-const KNOWN_MISSES: &[&str] = &["ball/flat/force_nu0.3_k1.csv"];
+///
+/// Session 13's blind run of the bonded pad at nu = 0.33 on the ball of 1.4 R misses the same
+/// way: 4.14 % at x = 0.66 (the law too soft past x = 0.6, -3.14 % at 0.64 where the FE's
+/// smallest element keeps 24 % of its volume), 2.69 % to 0.63; and the blind run at nu = 0.37 on
+/// R: 3.32 % at its end, x = 0.64 (the FE diverged; -2.56 % at 0.60), 2.94 % to 0.62.
+const KNOWN_MISSES: &[&str] = &[
+    "ball/flat/force_nu0.3_k1.csv",
+    "ball/flat/force_nu0.33_k1.4.csv",
+    "ball/flat/force_nu0.37_k1.csv",
+];
 
 /// Where the curves past 3 % (or near it) are within the 3 % below the FE's collapse:
 /// `(file, to x, its error there %)`; the test allows 0.2 % more.
 const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
     ("ball/free/force_nu0.3_k4.csv", 0.65, 1.43),
     ("ball/flat/force_nu0.3_k1.csv", 0.64, 2.33),
+    ("ball/flat/force_nu0.33_k1.4.csv", 0.63, 2.69),
+    ("ball/flat/force_nu0.37_k1.csv", 0.62, 2.94),
 ];
 
 #[test]
@@ -192,7 +215,7 @@ fn force_on_balls_and_cylinders_is_within_its_stated_error_of_the_fe() {
         }
         seen += 1;
     }
-    assert!(seen >= 44, "{seen} curves");
+    assert!(seen >= 50, "{seen} curves");
 }
 
 /// The FE's trustworthy radius, as the plane's (`radius_pressure.rs`): the column smoothed plus
@@ -281,4 +304,36 @@ fn force_on_an_edge_is_within_its_stated_error_of_the_fe() {
         seen += 1;
     }
     assert!(seen >= 2, "{seen} edge curves");
+}
+
+/// The FE the bonded pad at nu = 0.3 on R misses is converged where it misses (session 13,
+/// `fe_campaign.py` role `conv-reach`: R/60 against the campaign's R/40 to x = 0.68, where the
+/// smallest element keeps 21 % of its volume): the two meshes' forces agree within 0.233 % at
+/// every x (0.015 % at x = 0.66), so the 3.46 % there is the law's, not the mesh's.
+#[test]
+fn the_missed_bonded_curve_is_mesh_converged_to_its_end() {
+    let text = include_str!("../../../tests/data/fe/ball/convergence.csv");
+    let header = "geometry,nu,k,check,campaign,other,delta_over_R,force_N_campaign,";
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip_while(|l| !l.starts_with(header))
+        .skip(1)
+        .filter(|l| l.starts_with("flat,0.3,1,mesh,40,60,"))
+        .map(|l| {
+            l.split(',')
+                .skip(6)
+                .map(|v| v.parse().expect("a number"))
+                .collect()
+        })
+        .collect();
+    let worst = rows.iter().map(|r| r[3].abs()).fold(0.0, f64::max);
+    let end = rows.iter().map(|r| r[0]).fold(0.0, f64::max);
+    println!("flat nu 0.3 on R: R/40 vs R/60 within {worst:.3} % to x = {end}");
+    assert!(rows.len() >= 60, "{} rows", rows.len());
+    assert!(end >= 0.68 - 1e-9, "to x = {end}");
+    assert!(worst <= 0.25, "{worst} %");
+    for r in &rows {
+        // reldiff = (F_R/40 - F_R/60) / F_R/60, in %: the columns agree with it.
+        assert!((100.0 * (r[1] - r[2]) / r[2] - r[3]).abs() < 2e-3, "{r:?}");
+    }
 }
