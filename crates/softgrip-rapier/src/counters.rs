@@ -34,6 +34,13 @@ pub struct SoftCounters {
     pub coupled_passes: u64,
     /// Coupled solves that used every pass allowed without settling, total.
     pub coupled_unsettled: u64,
+    /// Coupled solves whose answer was degenerate, total: rapier's contacts of the group could
+    /// not all hold at once (a finger link pressing a box that the table holds, under a
+    /// kinematic base), so the hard rows balanced by their compliance at up to 1e9 times the
+    /// velocity they missed. Such a group's soft contacts are solved on their bodies alone
+    /// for that (sub)step, rapier's contacts left to rapier. Not an error; before session 13
+    /// the answer was applied (2e8 N on a 20 g link) and the hand went to 1e24 rad/s.
+    pub coupled_degenerate: u64,
     /// Rows of coupled solves (rapier's contacts in them, and soft rows) along which their
     /// bodies cannot move (mobility below `f32::EPSILON` of the bodies' at that point: a
     /// prismatic finger's vertical on a table), solved as immobile (no impulse), total. Not an

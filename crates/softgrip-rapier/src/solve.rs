@@ -424,9 +424,9 @@ pub(crate) struct SolveScratch {
 }
 
 impl SolveScratch {
-    /// Full coupled solves, their outer passes, those that did not settle and the rows found
-    /// immobile, total.
-    pub(crate) fn coupled_stats(&self) -> [u64; 4] {
+    /// Full coupled solves, their outer passes, those that did not settle, the rows found
+    /// immobile and the solves found degenerate, total.
+    pub(crate) fn coupled_stats(&self) -> [u64; 5] {
         self.coupled.stats
     }
 
@@ -588,28 +588,48 @@ pub(crate) fn solve(
                     .filter(|(_, rg)| **rg == g)
                     .map(|(r, _)| r.clone()),
             );
-            let ok = rigid::solve_coupled(bodies, group_rows, group_rigid, h, coupled);
-            if ok {
-                for (&i, r) in members.iter().zip(group_rows.iter()) {
-                    rows[i] = r.clone();
-                }
-                let mut k = 0;
-                for (r, rg) in rigid.iter_mut().zip(rigid_group.iter()) {
-                    if *rg == g {
-                        *r = group_rigid[k].clone();
-                        k += 1;
+            let outcome = rigid::solve_coupled(bodies, group_rows, group_rigid, h, coupled);
+            match outcome {
+                rigid::Coupled::Solved => {
+                    for (&i, r) in members.iter().zip(group_rows.iter()) {
+                        rows[i] = r.clone();
                     }
+                    let mut k = 0;
+                    for (r, rg) in rigid.iter_mut().zip(rigid_group.iter()) {
+                        if *rg == g {
+                            *r = group_rigid[k].clone();
+                            k += 1;
+                        }
+                    }
+                    true
                 }
-            } else {
-                for &i in members {
-                    let r = &mut rows[i];
-                    r.jn = 0.0;
-                    r.jt = Vector3::zeros();
-                    r.jtw = 0.0;
-                    r.vn_end = normal_velocity(bodies, r);
+                rigid::Coupled::Degenerate => {
+                    // rapier's contacts of the group cannot all hold (a link pressing a box
+                    // that the table holds: `rigid::degenerate`): the soft rows are solved
+                    // as a group of their bodies alone, rapier's contacts left to rapier.
+                    for (r, rg) in rigid.iter_mut().zip(rigid_group.iter()) {
+                        if *rg == g {
+                            r.jn = 0.0;
+                            r.jt = Vector3::zeros();
+                        }
+                    }
+                    let ok = solve_group(bodies, base, group_rows, h, n);
+                    for (&i, r) in members.iter().zip(group_rows.iter()) {
+                        rows[i] = r.clone();
+                    }
+                    ok
+                }
+                rigid::Coupled::NotFinite => {
+                    for &i in members {
+                        let r = &mut rows[i];
+                        r.jn = 0.0;
+                        r.jt = Vector3::zeros();
+                        r.jtw = 0.0;
+                        r.vn_end = normal_velocity(bodies, r);
+                    }
+                    false
                 }
             }
-            ok
         } else if let [i] = members {
             solve_group(bodies, base, std::slice::from_mut(&mut rows[*i]), h, n)
         } else {

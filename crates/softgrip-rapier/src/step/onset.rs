@@ -41,12 +41,13 @@ impl Step<'_> {
             }
             if !again || pass + 1 == MAX_ONSET_PASSES {
                 self.soft.counters.non_finite += failed;
-                let [solves, passes, unsettled, immobile] = s.solve.coupled_stats();
+                let [solves, passes, unsettled, immobile, degenerate] = s.solve.coupled_stats();
                 self.soft.counters.immobile_rows =
                     immobile + self.soft.counters.locked_link_contacts;
                 self.soft.counters.coupled_solves = solves;
                 self.soft.counters.coupled_passes = passes;
                 self.soft.counters.coupled_unsettled = unsettled;
+                self.soft.counters.coupled_degenerate = degenerate;
                 break;
             }
         }
