@@ -156,7 +156,10 @@ mod tests {
         for rate in [1e-6, 0.25, 0.948, 0.978, 0.9999] {
             let n = sweeps_for(rate).unwrap();
             assert!(rate.powi(n as i32) <= SWEEP_TOLERANCE, "{rate} {n}");
-            assert!(n == 1 || rate.powi(n as i32 - 1) > SWEEP_TOLERANCE, "{rate} {n}");
+            assert!(
+                n == 1 || rate.powi(n as i32 - 1) > SWEEP_TOLERANCE,
+                "{rate} {n}"
+            );
         }
         assert_eq!(sweeps_for(0.978), Some(518));
         assert_eq!(sweeps_for(1.0), None);

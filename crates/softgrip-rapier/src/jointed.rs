@@ -282,7 +282,16 @@ pub(crate) fn sweeps_needed(
             }
             seen.push(jh);
             let first = rows.len();
-            joint_rows(bodies, ctx, &kin_vel, &ms, &minv, (b1, b2), joint, &mut rows);
+            joint_rows(
+                bodies,
+                ctx,
+                &kin_vel,
+                &ms,
+                &minv,
+                (b1, b2),
+                joint,
+                &mut rows,
+            );
             for r in &mut rows[first..] {
                 r.joint = seen.len() - 1;
             }

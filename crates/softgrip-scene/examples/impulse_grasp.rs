@@ -28,7 +28,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         if a == "--trace" {
             trace = true;
         } else if a == "--pgs" {
-            pgs = args.next().and_then(|n| n.parse().ok()).ok_or("--pgs takes a count")?;
+            pgs = args
+                .next()
+                .and_then(|n| n.parse().ok())
+                .ok_or("--pgs takes a count")?;
         } else if let Ok(f) = a.parse::<f64>() {
             forces.push(f);
         } else {

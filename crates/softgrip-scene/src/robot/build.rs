@@ -220,10 +220,15 @@ impl Robot {
                 })
             })
             .max();
-        let Some(need) = need else { return };
+        let own = world
+            .physics
+            .integration_parameters
+            .num_internal_pgs_iterations;
+        let Some(need) = need.filter(|&n| n > own) else {
+            return;
+        };
         let need = (need as f64 * JOINTED_SWEEPS_MARGIN).ceil() as usize;
-        let own = world.physics.integration_parameters.num_internal_pgs_iterations;
-        if need > MAX_JOINTED_SWEEPS || need <= own {
+        if need > MAX_JOINTED_SWEEPS {
             return;
         }
         for &l in &h.links {
