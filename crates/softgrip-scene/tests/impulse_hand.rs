@@ -66,6 +66,10 @@ struct Grasped {
     slip: f64,
     /// `SoftCounters::jointed_free` over the run.
     jointed_free: u64,
+    /// The most sweeps a link's assembly needs in the hold (`None`: no assembly) and the most
+    /// a link is given (rapier's one plus `additional_pgs_iterations`).
+    sweeps_hold: Option<usize>,
+    sweeps_given: usize,
 }
 
 fn grasp(object: &str, model: &str) -> Grasped {
@@ -79,6 +83,8 @@ fn grasp(object: &str, model: &str) -> Grasped {
         .collect();
     let mut peak = vec![0.0f64; pads.len()];
     let (mut held, mut hold) = (Vec::new(), Vec::<[f64; 3]>::new());
+    let links = run.handles.robots[0].1.links.clone();
+    let mut sweeps_hold = None;
     for _ in 0..scene.steps() {
         run.step();
         for (k, &p) in pads.iter().enumerate() {
@@ -93,8 +99,21 @@ fn grasp(object: &str, model: &str) -> Grasped {
             held = (pads.iter())
                 .map(|&p| run.world.soft.contacts_of(p).map(|c| c.normal_force).sum())
                 .collect();
+            let need = (links.iter())
+                .filter_map(|&l| run.world.jointed_sweeps_needed(l, DT))
+                .max();
+            sweeps_hold = sweeps_hold.max(need);
         }
     }
+    let sweeps_given = (links.iter())
+        .map(|&l| run.world.physics.bodies[l].additional_pgs_iterations())
+        .max()
+        .unwrap()
+        + run
+            .world
+            .physics
+            .integration_parameters
+            .num_internal_pgs_iterations;
     assert!(hold.len() > 2, "{object} {model}: never held");
     let slip = (hold.iter())
         .map(|p| {
@@ -109,6 +128,8 @@ fn grasp(object: &str, model: &str) -> Grasped {
         held,
         slip,
         jointed_free: run.world.soft.counters().jointed_free,
+        sweeps_hold,
+        sweeps_given,
     };
     println!("{object} {model}: {g:.4?}");
     g
@@ -120,6 +141,13 @@ fn grasp(object: &str, model: &str) -> Grasped {
 fn check(object: &str, force: f64, rel: f64) -> (Grasped, Grasped) {
     let (m, i) = (grasp(object, "multibody"), grasp(object, "impulse"));
     assert_eq!(i.jointed_free, 0, "{object}: fingers taken as free bodies");
+    // The margin on the start pose's sweeps covers the closed hand's.
+    let need = i.sweeps_hold.unwrap();
+    assert!(
+        need <= i.sweeps_given,
+        "{object}: {need} needed, {}",
+        i.sweeps_given
+    );
     let bound = force + K * W * DT / LEVER;
     for g in [&m, &i] {
         for &p in &g.peak {

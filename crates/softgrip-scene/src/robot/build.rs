@@ -19,8 +19,9 @@ pub const FALLBACK_DENSITY: f64 = 1000.0;
 
 /// The factor on the sweeps a padded link's assembly needs at the start pose
 /// ([`Robot::set_jointed_sweeps`]): the rate of rapier's sweeps moves with the pose as a finger
-/// curls (the three-finger hand's fingers: 0.97807 at the start, 0.97807 closed on the ball),
-/// and with 25 % more sweeps a rate up to `r^0.8` of the start's `r` still converges.
+/// curls, and with 25 % more sweeps a rate up to `r^0.8` of the start's `r` still converges
+/// (the three-finger hand's fingers need 520 at the start and 520 closed on the ball, the box
+/// and the cylinder, `tests/impulse_hand.rs`; given 650).
 pub const JOINTED_SWEEPS_MARGIN: f64 = 1.25;
 
 /// The most Gauss-Seidel sweeps per solver pass [`Robot::set_jointed_sweeps`] gives an
@@ -183,17 +184,18 @@ impl Robot {
 
     /// Gives the links of an impulse-jointed robot the Gauss-Seidel sweeps per solver pass at
     /// which the soft solve sees its padded links (`pads`, link indices) through their joints:
-    /// each link's `additional_pgs_iterations` is the most any padded link's assembly needs
-    /// ([`SoftWorld::jointed_sweeps_needed`], the largest over the step `dt` and the substeps
-    /// `dt / 2^k` down to `dt / 64`) times [`JOINTED_SWEEPS_MARGIN`], less rapier's own
-    /// `num_internal_pgs_iterations`. A hinged finger needs hundreds (rapier solves a motor row
-    /// against the link's free inertia about its centre of mass, off the hinge, and does not
-    /// orthogonalise it against the locked rows): the shipped three-finger hand's fingers 518,
-    /// so 648 with the margin; a prismatic jaw anchored at its centre of mass
+    /// every link's `additional_pgs_iterations` becomes the most any padded link's assembly
+    /// needs ([`SoftWorld::jointed_sweeps_needed`], the largest over the step `dt` and the
+    /// substeps `dt / 2^k` down to `dt / 64`) times [`JOINTED_SWEEPS_MARGIN`], less rapier's
+    /// own `num_internal_pgs_iterations` (rapier takes the largest of an island's bodies). A
+    /// hinged finger needs hundreds (rapier solves a motor row against the link's free inertia
+    /// about its centre of mass, off the hinge, and does not orthogonalise it against the
+    /// locked rows): the shipped three-finger hand's fingers 518 at the step, 520 at its
+    /// substeps, so 649 more with the margin; a prismatic jaw anchored at its centre of mass
     /// ([`Robot::anchor_prismatic_at_com`]) needs 1 and gets none. Above
     /// [`MAX_JOINTED_SWEEPS`] nothing is set, and the solve sees the links as free bodies
-    /// (`SoftCounters::jointed_free`). Multibody robots, and links without a pad, are left
-    /// as they are. Call it after the fingertips are attached and the anchors moved.
+    /// (`SoftCounters::jointed_free`). Multibody robots and robots without a pad are left as
+    /// they are. Call it after the fingertips are attached and the anchors moved.
     pub fn set_jointed_sweeps(&self, world: &mut SoftWorld, h: &RobotHandles, pads: &[usize]) {
         if self.joint_model() != JointModel::Impulse {
             return;
