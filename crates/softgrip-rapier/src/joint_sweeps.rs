@@ -47,6 +47,19 @@ pub(crate) fn converges(minv: &DMatrix<f64>, rows: &[SweepRow<'_>], sweeps: usiz
     Some(rate.powi(sweeps.min(i32::MAX as usize) as i32) <= SWEEP_TOLERANCE)
 }
 
+/// The fewest sweeps at which sweeps of `rate` converge to [`SWEEP_TOLERANCE`]: 1 for a rate
+/// of 0; `None` if `rate` is not in `[0, 1)`.
+pub(crate) fn sweeps_for(rate: f64) -> Option<usize> {
+    if !(0.0..1.0).contains(&rate) {
+        return None;
+    }
+    if rate <= SWEEP_TOLERANCE {
+        return Some(1);
+    }
+    let n = (SWEEP_TOLERANCE.ln() / rate.ln()).ceil();
+    (n.is_finite() && n < usize::MAX as f64).then_some((n as usize).max(1))
+}
+
 /// The rate at which rapier's Gauss-Seidel sweeps over the assembly's joint rows converge: the
 /// spectral radius of the error's propagation over one sweep, `E = I - (D + L)^-1 S` with `S =
 /// G M^-1 G^T + A`, in rapier's order (per joint its motor rows one by one, then its hard rows
@@ -134,6 +147,23 @@ mod tests {
         }
         let rate = sweep_rate(&minv, &rows).unwrap();
         assert!(rate < 1e-9, "{rate}");
+    }
+
+    /// The sweeps for a rate meet the tolerance and one fewer does not; rates outside [0, 1)
+    /// give none.
+    #[test]
+    fn sweeps_for_a_rate_are_the_fewest_that_converge() {
+        for rate in [1e-6, 0.25, 0.948, 0.978, 0.9999] {
+            let n = sweeps_for(rate).unwrap();
+            assert!(rate.powi(n as i32) <= SWEEP_TOLERANCE, "{rate} {n}");
+            assert!(
+                n == 1 || rate.powi(n as i32 - 1) > SWEEP_TOLERANCE,
+                "{rate} {n}"
+            );
+        }
+        assert_eq!(sweeps_for(0.978), Some(518));
+        assert_eq!(sweeps_for(1.0), None);
+        assert_eq!(sweeps_for(f64::NAN), None);
     }
 
     /// A row that is not finite gives no rate (the assembly is then seen as free bodies), not a

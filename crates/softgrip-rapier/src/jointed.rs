@@ -256,6 +256,58 @@ pub(crate) fn assembly_states(
     Some(out)
 }
 
+/// The Gauss-Seidel sweeps per solver pass at which rapier's sweeps over the joint rows of the
+/// assembly of `handle` converge as the solve requires (`rate^sweeps <= 1e-5`,
+/// `joint_sweeps::converges`), at the (sub)step `ctx.h` and the bodies' present pose: 1 for a
+/// rate of 0; `None` if `handle` is not in an assembly the solve can see (see [`members`]) or the
+/// sweeps never converge (rate >= 1, or not finite).
+pub(crate) fn sweeps_needed(
+    bodies: &RigidBodySet,
+    ctx: &LinkCtx<'_>,
+    handle: RigidBodyHandle,
+) -> Option<usize> {
+    let handles = members(bodies, ctx, handle)?;
+    let ms: Vec<Member> = handles
+        .iter()
+        .map(|h| bodies.get(*h).map(|rb| member(rb, *h)))
+        .collect::<Option<_>>()?;
+    let (minv, _, _) = free_motion(bodies, ctx, &ms)?;
+    let kin_vel = KinematicVelocity::default();
+    let mut rows = Vec::new();
+    let mut seen = Vec::new();
+    for m in &ms {
+        for (b1, b2, jh, joint) in ctx.impulse_joints.attached_enabled_joints(m.handle) {
+            if seen.contains(&jh) {
+                continue;
+            }
+            seen.push(jh);
+            let first = rows.len();
+            joint_rows(
+                bodies,
+                ctx,
+                &kin_vel,
+                &ms,
+                &minv,
+                (b1, b2),
+                joint,
+                &mut rows,
+            );
+            for r in &mut rows[first..] {
+                r.joint = seen.len() - 1;
+            }
+        }
+    }
+    let sweep_rows: Vec<SweepRow<'_>> = rows
+        .iter()
+        .map(|r| SweepRow {
+            g: &r.g,
+            compliance: r.compliance,
+            joint: r.joint,
+        })
+        .collect();
+    joint_sweeps::sweeps_for(joint_sweeps::sweep_rate(&minv, &sweep_rows)?)
+}
+
 /// The members' free inverse mass and inertia (`6k x 6k`, block diagonal), their velocity with
 /// gravity and the user's forces over the whole (sub)step, and those forces (per member: the
 /// force at the centre of mass, then the torque).

@@ -1,6 +1,8 @@
 //! [`SoftWorld`]: rapier's own [`PhysicsWorld`] with the plugin's [`SoftContacts`] beside it.
 
-use rapier3d::prelude::{ColliderHandle, EventHandler, PhysicsHooks, PhysicsWorld};
+use rapier3d::prelude::{
+    ColliderHandle, EventHandler, PhysicsHooks, PhysicsWorld, RigidBodyHandle,
+};
 
 use crate::contacts::SoftContacts;
 use crate::error::Result;
@@ -28,6 +30,32 @@ impl SoftWorld {
     /// dt = 1/60 s) and no fingertip.
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// The Gauss-Seidel sweeps per solver pass (`num_internal_pgs_iterations` plus the largest
+    /// `RigidBody::additional_pgs_iterations` of the island) at which the soft solve sees
+    /// `body` through its impulse joints (crate README, What one step does, 9), at a (sub)step
+    /// of `h` \[s\] (> 0; rapier's `num_solver_iterations` passes) and the bodies' present
+    /// pose: 1 for a body on a fixed or kinematic base whose motor acts through its centre of
+    /// mass (a prismatic jaw anchored there), 214 for the suite's two-link finger, 518 for a
+    /// finger of the shipped three-finger hand. `None` if `body` is not held by impulse joints
+    /// in an assembly the solve can see (not dynamic, asleep, a multibody link, more than 8
+    /// bodies) or rapier's sweeps over it never converge.
+    pub fn jointed_sweeps_needed(&self, body: RigidBodyHandle, h: f64) -> Option<usize> {
+        if !(h > 0.0 && h.is_finite()) {
+            return None;
+        }
+        let w = &self.physics;
+        let ctx = crate::multibody::LinkCtx {
+            multibodies: &w.multibody_joints,
+            impulse_joints: &w.impulse_joints,
+            h,
+            h_drift: h,
+            passes: w.integration_parameters.num_solver_iterations.max(1),
+            sweeps: w.integration_parameters.num_internal_pgs_iterations,
+            gravity: crate::detect::to_f64(w.gravity),
+        };
+        crate::jointed::sweeps_needed(&w.bodies, &ctx, body)
     }
 
     /// Registers `collider` as the soft fingertip `fingertip` (see [`SoftContacts::register`]).

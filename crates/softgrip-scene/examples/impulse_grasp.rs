@@ -3,7 +3,9 @@
 //! hold, the hold's slip (the object's largest motion relative to the hand's base) and the
 //! time per step.
 //!
-//! `cargo run --release -p softgrip-scene --example impulse_grasp [scene.toml] [force N]... [--trace]`
+//! `cargo run --release -p softgrip-scene --example impulse_grasp [scene.toml] [force N]... [--pgs N] [--trace]`
+//! (`--pgs N`: N Gauss-Seidel sweeps per solver pass more on the robot's links than the scene
+//! gives them; the row ends with `SoftCounters::jointed_free`)
 //! (default: `scenes/robots/parallel_gripper_box.toml` at 3, 5 and 7 N).
 
 use std::path::{Path, PathBuf};
@@ -20,9 +22,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     ));
     let mut forces = Vec::new();
     let mut trace = false;
-    for a in std::env::args().skip(1) {
+    let mut pgs = 0usize;
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
         if a == "--trace" {
             trace = true;
+        } else if a == "--pgs" {
+            pgs = args
+                .next()
+                .and_then(|n| n.parse().ok())
+                .ok_or("--pgs takes a count")?;
         } else if let Ok(f) = a.parse::<f64>() {
             forces.push(f);
         } else {
@@ -38,7 +47,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for &force in &forces {
         for model in ["multibody", "impulse"] {
             let scene = variant(&text, &path, model, force)?;
-            run(&scene, model, force, trace);
+            run(&scene, model, force, trace, pgs);
         }
     }
     Ok(())
@@ -76,10 +85,16 @@ fn variant(
 }
 
 /// Runs `scene` and prints its row (and with `trace` each step).
-fn run(scene: &Scene, model: &str, force: f64, trace: bool) {
+fn run(scene: &Scene, model: &str, force: f64, trace: bool, pgs: usize) {
     let mut run = PlainRun::new(scene);
     let robot = &scene.robots()[0];
     let h = run.handles.robots[0].1.clone();
+    // `--pgs N`: N sweeps more than the scene gives the robot's links.
+    for &l in h.links.iter().filter(|_| pgs > 0) {
+        if let Some(rb) = run.world.physics.bodies.get_mut(l) {
+            rb.set_additional_pgs_iterations(rb.additional_pgs_iterations() + pgs);
+        }
+    }
     let base = h.links[robot.root()];
     let pads: Vec<_> = (scene.file().fingertips.iter())
         .filter_map(|t| run.handles.fingertip(&t.name))
@@ -143,7 +158,8 @@ fn run(scene: &Scene, model: &str, force: f64, trace: bool) {
         })
         .fold(0.0, f64::max);
     println!(
-        "{model:10} {force:5.2}  {peak:8.4?}  {held:8.4?}  {:9.2}  {ms:.2}",
-        slip * 1e6
+        "{model:10} {force:5.2}  {peak:8.4?}  {held:8.4?}  {:9.2}  {ms:.2}  jointed_free {}",
+        slip * 1e6,
+        run.world.soft.counters().jointed_free
     );
 }

@@ -190,8 +190,15 @@ impl Scene {
             out.fingertips.push((t.name.clone(), h));
         }
         // The fingertips moved their links' centres of mass.
-        for (r, (_, h)) in self.robots().iter().zip(&out.robots) {
+        for (i, (r, (_, h))) in self.robots().iter().zip(&out.robots).enumerate() {
             r.anchor_prismatic_at_com(&mut world.physics, h);
+            let pads: Vec<usize> = (self.carriers().iter())
+                .filter_map(|c| match *c {
+                    Carrier::Link { robot, link } if robot == i => Some(link),
+                    _ => None,
+                })
+                .collect();
+            r.set_jointed_sweeps(world, h, &pads);
         }
         out
     }

@@ -4,17 +4,30 @@
 
 use rapier3d_urdf::UrdfMultibodyOptions;
 use softgrip_rapier::rapier3d::prelude::{
-    ColliderHandle, ImpulseJointHandle, JointAxis, MotorModel, MultibodyDofCoupling,
+    ColliderHandle, ImpulseJointHandle, JointAxis, LockedAxes, MotorModel, MultibodyDofCoupling,
     MultibodyJointHandle, PhysicsWorld, Pose, RigidBodyHandle, RigidBodyType,
 };
 
 use crate::robot::model::{JointKind, Robot, RobotJoint};
 use crate::robot::spec::{BaseKind, JointModel};
 use crate::robot::state::fk_impulse;
+use softgrip_rapier::SoftWorld;
 
 /// Density given to the collision shapes of a link whose URDF has no mass [kg/m³] (so that
 /// every dynamic link has one).
 pub const FALLBACK_DENSITY: f64 = 1000.0;
+
+/// The factor on the sweeps a padded link's assembly needs at the start pose
+/// ([`Robot::set_jointed_sweeps`]): the rate of rapier's sweeps moves with the pose as a finger
+/// curls, and with 25 % more sweeps a rate up to `r^0.8` of the start's `r` still converges
+/// (the three-finger hand's fingers need 520 at the start and 520 closed on the ball, the box
+/// and the cylinder, `tests/impulse_hand.rs`; given 650).
+pub const JOINTED_SWEEPS_MARGIN: f64 = 1.25;
+
+/// The most Gauss-Seidel sweeps per solver pass [`Robot::set_jointed_sweeps`] gives an
+/// impulse-jointed robot's links: rapier's step time grows with them (the three-finger hand:
+/// see SCENES.md); an assembly that needs more is seen as free bodies.
+pub const MAX_JOINTED_SWEEPS: usize = 4096;
 
 /// How a robot joint is held in rapier.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -166,6 +179,65 @@ impl Robot {
             let shift = Pose::from_translation(d);
             ij.data.local_frame1 *= shift;
             ij.data.local_frame2 *= shift;
+        }
+    }
+
+    /// Gives the links of an impulse-jointed robot the Gauss-Seidel sweeps per solver pass at
+    /// which the soft solve sees its padded links (`pads`, link indices) through their joints:
+    /// every link's `additional_pgs_iterations` becomes the most any padded link's assembly
+    /// needs ([`SoftWorld::jointed_sweeps_needed`], the largest over the step `dt` and the
+    /// substeps `dt / 2^k` down to `dt / 64`) times [`JOINTED_SWEEPS_MARGIN`], less rapier's
+    /// own `num_internal_pgs_iterations` (rapier takes the largest of an island's bodies). A
+    /// hinged finger needs hundreds (rapier solves a motor row against the link's free inertia
+    /// about its centre of mass, off the hinge, and does not orthogonalise it against the
+    /// locked rows): the shipped three-finger hand's fingers 518 at the step, 520 at its
+    /// substeps, so 649 more with the margin; a prismatic jaw anchored at its centre of mass
+    /// ([`Robot::anchor_prismatic_at_com`]) needs 1 and gets none. Above
+    /// [`MAX_JOINTED_SWEEPS`] nothing is set, and the solve sees the links as free bodies
+    /// (`SoftCounters::jointed_free`). Multibody robots and robots without a pad are left as
+    /// they are. Call it after the fingertips are attached and the anchors moved.
+    pub fn set_jointed_sweeps(&self, world: &mut SoftWorld, h: &RobotHandles, pads: &[usize]) {
+        if self.joint_model() != JointModel::Impulse {
+            return;
+        }
+        // rapier computes a body's world (effective) mass properties at its first step; the
+        // rate needs them now. Setting the locked axes updates them (only on a change, hence
+        // there and back).
+        let w = &mut world.physics;
+        for &l in &h.links {
+            if let Some(rb) = w.bodies.get_mut(l) {
+                rb.recompute_mass_properties_from_colliders(&w.colliders);
+                let axes = rb.locked_axes();
+                rb.set_locked_axes(axes ^ LockedAxes::TRANSLATION_LOCKED_X, false);
+                rb.set_locked_axes(axes, false);
+            }
+        }
+        let dt = world.physics.integration_parameters.dt as f64;
+        let need = (pads.iter())
+            .filter_map(|&l| h.links.get(l))
+            .flat_map(|&body| {
+                let world = &*world;
+                (0..=6).filter_map(move |k| {
+                    world.jointed_sweeps_needed(body, dt / f64::from(1u32 << k))
+                })
+            })
+            .max();
+        let own = world
+            .physics
+            .integration_parameters
+            .num_internal_pgs_iterations;
+        let Some(need) = need.filter(|&n| n > own) else {
+            return;
+        };
+        let need = (need as f64 * JOINTED_SWEEPS_MARGIN).ceil() as usize;
+        if need > MAX_JOINTED_SWEEPS {
+            return;
+        }
+        for &l in &h.links {
+            if let Some(rb) = world.physics.bodies.get_mut(l) {
+                let extra = rb.additional_pgs_iterations().max(need - own);
+                rb.set_additional_pgs_iterations(extra);
+            }
         }
     }
 

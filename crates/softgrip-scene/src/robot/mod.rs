@@ -12,7 +12,9 @@ mod spec;
 mod state;
 mod urdf;
 
-pub use build::{FALLBACK_DENSITY, RobotHandles, RobotJointHandle};
+pub use build::{
+    FALLBACK_DENSITY, JOINTED_SWEEPS_MARGIN, MAX_JOINTED_SWEEPS, RobotHandles, RobotJointHandle,
+};
 pub use inertial::MAX_LINK_MASS;
 pub use load::{joint_load, joint_state_loaded};
 pub(crate) use model::moving_names;
