@@ -9,7 +9,6 @@
 //! (trimesh, compound, heightfield) parry returns the best single contact, so a ball over a
 //! shared edge or vertex gives one contact, never one per triangle.
 
-use std::collections::HashMap;
 use std::sync::Arc;
 
 use nalgebra::Vector3;
@@ -23,6 +22,7 @@ use softgrip_law::{Backing, ContactLaw, ContactParams};
 
 use crate::counters::SoftCounters;
 use crate::curvature::{self, Touch};
+use crate::fast_hash::FastMap;
 use crate::fingertip::SoftFingertip;
 use crate::series::SeriesLaw;
 
@@ -180,7 +180,7 @@ pub(crate) struct Scene<'a> {
     pub narrow_phase: &'a NarrowPhase,
     pub broad_phase: &'a BroadPhaseBvh,
     /// The fingertips' collision groups (their colliders' own are `none()`).
-    pub groups: &'a HashMap<ColliderHandle, InteractionGroups>,
+    pub groups: &'a FastMap<ColliderHandle, InteractionGroups>,
     /// The fingertips and their collision groups, in handle order.
     pub tip_order: &'a [(ColliderHandle, InteractionGroups)],
     /// The world's gravity magnitude [m/s^2]: what a body at rest gains in speed over the step
@@ -207,7 +207,7 @@ pub(crate) struct Scene<'a> {
 /// their AABBs.
 pub(crate) fn detect(
     scene: &Scene<'_>,
-    tips: &HashMap<ColliderHandle, SoftFingertip>,
+    tips: &FastMap<ColliderHandle, SoftFingertip>,
     dt: f64,
     out: &mut Vec<Geom>,
     candidates: &mut Vec<ColliderHandle>,
@@ -276,7 +276,7 @@ impl<'a> Tip<'a> {
     /// centre (a non-finite centre is counted).
     fn of(
         scene: &Scene<'a>,
-        tips: &HashMap<ColliderHandle, SoftFingertip>,
+        tips: &FastMap<ColliderHandle, SoftFingertip>,
         handle: ColliderHandle,
         groups: InteractionGroups,
         dt: f64,
@@ -375,7 +375,7 @@ impl<'a> Tip<'a> {
     fn contact_with(
         &self,
         scene: &Scene<'_>,
-        tips: &HashMap<ColliderHandle, SoftFingertip>,
+        tips: &FastMap<ColliderHandle, SoftFingertip>,
         other_h: ColliderHandle,
         counters: &mut SoftCounters,
     ) -> Option<Geom> {
