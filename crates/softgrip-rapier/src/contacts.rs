@@ -62,8 +62,8 @@ pub(crate) struct Scratch {
     pub stamp: u64,
     /// Net impulse per body (linear, angular) of a substep.
     pub net: Vec<(Vector3<f64>, Vector3<f64>)>,
-    /// Detection candidates of one fingertip.
-    pub candidates: Vec<ColliderHandle>,
+    /// Detection candidates of one fingertip, each with its AABB gap to it \[m\].
+    pub candidates: Vec<(ColliderHandle, f32)>,
     /// Per-contact sums over the substeps of a step.
     pub accums: Accums,
     /// What the soft impulses did to each dynamic body in the last step when it was not split

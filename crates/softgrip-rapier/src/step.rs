@@ -108,7 +108,7 @@ impl Step<'_> {
         self.soft.counters.pipeline_time += t.elapsed();
     }
 
-    fn detect(&mut self, dt: f64, candidates: &mut Vec<ColliderHandle>) {
+    fn detect(&mut self, dt: f64, candidates: &mut Vec<(ColliderHandle, f32)>) {
         let t = Instant::now();
         let soft = &mut *self.soft;
         let scene = Scene {
