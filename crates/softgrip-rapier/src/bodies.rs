@@ -2,7 +2,6 @@
 //! `f64`), the paths of position-based kinematic bodies over a split step, and the gravity
 //! bookkeeping of a split step.
 
-
 use nalgebra::{Matrix3, Vector3};
 use rapier3d::prelude::{Pose, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector};
 
