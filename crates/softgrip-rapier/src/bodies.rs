@@ -2,20 +2,19 @@
 //! `f64`), the paths of position-based kinematic bodies over a split step, and the gravity
 //! bookkeeping of a split step.
 
-use std::collections::HashMap;
-
 use nalgebra::{Matrix3, Vector3};
 use rapier3d::prelude::{Pose, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector};
 
 use crate::counters::SoftCounters;
 use crate::detect::{to_f32, to_f64};
+use crate::fast_hash::FastMap;
 use crate::jointed;
 use crate::multibody::{self, Hosts, LinkCtx, SavedForce};
 use crate::rigid::RigidRow;
 use crate::solve::{BodyState, Row};
 
 /// Velocity of a kinematic body over the coming (sub)step: (linear [m/s], angular [rad/s]).
-pub(crate) type KinematicVelocity = HashMap<RigidBodyHandle, (Vector3<f64>, Vector3<f64>)>;
+pub(crate) type KinematicVelocity = FastMap<RigidBodyHandle, (Vector3<f64>, Vector3<f64>)>;
 
 /// A position-based kinematic body's path over one step: (handle, start pose, target pose).
 pub(crate) type KinematicPath = (RigidBodyHandle, Pose, Pose);
@@ -23,7 +22,7 @@ pub(crate) type KinematicPath = (RigidBodyHandle, Pose, Pose);
 /// The solver's body table under construction.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct BodyTable {
-    index: HashMap<RigidBodyHandle, usize>,
+    index: FastMap<RigidBodyHandle, usize>,
     pub table: Vec<BodyState>,
     pub handles: Vec<RigidBodyHandle>,
     /// The multibodies in the table: the index of their host link (`multibody`).
@@ -68,7 +67,7 @@ pub(crate) fn kinematic_velocities(
     s: f64,
     h: f64,
 ) -> KinematicVelocity {
-    let mut out = HashMap::new();
+    let mut out = KinematicVelocity::default();
     for (handle, start, target) in kinematic {
         let Some(rb) = bodies.get(*handle) else {
             continue;

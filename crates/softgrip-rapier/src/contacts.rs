@@ -14,6 +14,7 @@ use crate::counters::SoftCounters;
 use crate::curved_models::CurvedModels;
 use crate::detect::{Geom, Model, raw};
 use crate::error::{Error, Result};
+use crate::fast_hash::{FastMap, FastSet};
 use crate::fingertip::SoftFingertip;
 use crate::readout::{Accums, TipContact};
 use crate::rigid::RigidRow;
@@ -40,10 +41,12 @@ pub(crate) struct Scratch {
     pub rows: Vec<Row>,
     /// rapier's touching rigid contacts of the bodies the soft contacts move (`rigid`).
     pub rigid: Vec<RigidRow>,
-    /// The bodies visited while gathering `rigid`, and the collider pairs already taken.
+    /// The bodies to visit while gathering `rigid` (in order), the set of them, and the
+    /// collider pairs already taken.
     pub rigid_visit: (
         Vec<RigidBodyHandle>,
-        HashSet<(ColliderHandle, ColliderHandle)>,
+        FastSet<RigidBodyHandle>,
+        FastSet<(ColliderHandle, ColliderHandle)>,
     ),
     /// The law and coefficients of each row.
     pub models: Vec<Arc<Model>>,
@@ -59,8 +62,8 @@ pub(crate) struct Scratch {
     pub stamp: u64,
     /// Net impulse per body (linear, angular) of a substep.
     pub net: Vec<(Vector3<f64>, Vector3<f64>)>,
-    /// Detection candidates of one fingertip.
-    pub candidates: Vec<ColliderHandle>,
+    /// Detection candidates of one fingertip, each with its AABB gap to it \[m\].
+    pub candidates: Vec<(ColliderHandle, f32)>,
     /// Per-contact sums over the substeps of a step.
     pub accums: Accums,
     /// What the soft impulses did to each dynamic body in the last step when it was not split
@@ -74,12 +77,12 @@ pub(crate) struct Scratch {
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.
 #[derive(Debug, Clone, Default)]
 pub struct SoftContacts {
-    pub(crate) tips: HashMap<ColliderHandle, SoftFingertip>,
+    pub(crate) tips: FastMap<ColliderHandle, SoftFingertip>,
     /// The collision groups each fingertip's collider had at registration (the collider's own
     /// are set to `InteractionGroups::none()`, which keeps rapier's narrow phase off it).
-    pub(crate) groups: HashMap<ColliderHandle, InteractionGroups>,
+    pub(crate) groups: FastMap<ColliderHandle, InteractionGroups>,
     /// The solver groups each fingertip's collider had at registration.
-    pub(crate) solver_groups: HashMap<ColliderHandle, InteractionGroups>,
+    pub(crate) solver_groups: FastMap<ColliderHandle, InteractionGroups>,
     /// The backed fingertips and their facing, in their collider's frame (for the hooks:
     /// rapier's rigid contacts behind the flat face).
     pub(crate) backed: HashMap<ColliderHandle, Vector3<f64>>,
@@ -92,10 +95,10 @@ pub struct SoftContacts {
     pub(crate) link_contacts: crate::link_contacts::LinkContacts,
     /// The first step has primed rapier's broad and narrow phases (`step`).
     pub(crate) started: bool,
-    pub(crate) pairs: HashMap<(ColliderHandle, ColliderHandle), PairState>,
-    pub(crate) soft_pairs: HashMap<(ColliderHandle, ColliderHandle), Option<Arc<Model>>>,
+    pub(crate) pairs: FastMap<(ColliderHandle, ColliderHandle), PairState>,
+    pub(crate) soft_pairs: FastMap<(ColliderHandle, ColliderHandle), Option<Arc<Model>>>,
     /// The contact model of each fingertip on a rigid body (shared by its contacts).
-    pub(crate) tip_models: HashMap<ColliderHandle, Arc<Model>>,
+    pub(crate) tip_models: FastMap<ColliderHandle, Arc<Model>>,
     /// The models of contacts on curved counterparts and edges (`curved_models`).
     pub(crate) curved_models: CurvedModels,
     pub(crate) contacts: Vec<TipContact>,
@@ -217,8 +220,15 @@ impl SoftContacts {
         self.tips.insert(collider, fingertip);
         self.groups.insert(collider, groups);
         self.solver_groups.insert(collider, solver_groups);
-        self.tip_order = self.groups.iter().map(|(h, g)| (*h, *g)).collect();
-        self.tip_order.sort_unstable_by_key(|(h, _)| raw(*h));
+        // In handle order, kept sorted by insertion (not rebuilt: N registrations were
+        // quadratic).
+        match self
+            .tip_order
+            .binary_search_by_key(&raw(collider), |(h, _)| raw(*h))
+        {
+            Ok(i) => self.tip_order[i] = (collider, groups),
+            Err(i) => self.tip_order.insert(i, (collider, groups)),
+        }
         Ok(())
     }
 

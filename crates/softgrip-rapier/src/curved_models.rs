@@ -2,7 +2,6 @@
 //! (`curvature`), one per contact, kept while the counterpart and the patch's direction stay
 //! the same (a ball, a cylinder at rest: built once per contact, not per substep).
 
-use std::collections::HashMap;
 use std::sync::Arc;
 
 use rapier3d::prelude::ColliderHandle;
@@ -10,6 +9,7 @@ use rapier3d::prelude::ColliderHandle;
 use crate::counters::SoftCounters;
 use crate::curvature::Touch;
 use crate::detect::Model;
+use crate::fast_hash::FastMap;
 
 /// A contact: (fingertip, other).
 type Key = (ColliderHandle, ColliderHandle);
@@ -17,7 +17,7 @@ type Key = (ColliderHandle, ColliderHandle);
 /// The models of the contacts on curved counterparts and edges.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct CurvedModels {
-    map: HashMap<Key, (Touch, Arc<Model>)>,
+    map: FastMap<Key, (Touch, Arc<Model>)>,
 }
 
 impl CurvedModels {

@@ -9,7 +9,6 @@
 //! (trimesh, compound, heightfield) parry returns the best single contact, so a ball over a
 //! shared edge or vertex gives one contact, never one per triangle.
 
-use std::collections::HashMap;
 use std::sync::Arc;
 
 use nalgebra::Vector3;
@@ -23,6 +22,7 @@ use softgrip_law::{Backing, ContactLaw, ContactParams};
 
 use crate::counters::SoftCounters;
 use crate::curvature::{self, Touch};
+use crate::fast_hash::FastMap;
 use crate::fingertip::SoftFingertip;
 use crate::series::SeriesLaw;
 
@@ -180,7 +180,7 @@ pub(crate) struct Scene<'a> {
     pub narrow_phase: &'a NarrowPhase,
     pub broad_phase: &'a BroadPhaseBvh,
     /// The fingertips' collision groups (their colliders' own are `none()`).
-    pub groups: &'a HashMap<ColliderHandle, InteractionGroups>,
+    pub groups: &'a FastMap<ColliderHandle, InteractionGroups>,
     /// The fingertips and their collision groups, in handle order.
     pub tip_order: &'a [(ColliderHandle, InteractionGroups)],
     /// The world's gravity magnitude [m/s^2]: what a body at rest gains in speed over the step
@@ -207,10 +207,10 @@ pub(crate) struct Scene<'a> {
 /// their AABBs.
 pub(crate) fn detect(
     scene: &Scene<'_>,
-    tips: &HashMap<ColliderHandle, SoftFingertip>,
+    tips: &FastMap<ColliderHandle, SoftFingertip>,
     dt: f64,
     out: &mut Vec<Geom>,
-    candidates: &mut Vec<ColliderHandle>,
+    candidates: &mut Vec<(ColliderHandle, f32)>,
     counters: &mut SoftCounters,
 ) {
     out.clear();
@@ -227,8 +227,8 @@ pub(crate) fn detect(
             continue;
         };
         tip.candidates(&qp, v_max, w_max, candidates);
-        for &other_h in candidates.iter() {
-            if let Some(g) = tip.contact_with(scene, tips, other_h, counters) {
+        for &(other_h, gap) in candidates.iter() {
+            if let Some(g) = tip.contact_with(scene, tips, other_h, gap, counters) {
                 out.push(g);
             }
         }
@@ -276,7 +276,7 @@ impl<'a> Tip<'a> {
     /// centre (a non-finite centre is counted).
     fn of(
         scene: &Scene<'a>,
-        tips: &HashMap<ColliderHandle, SoftFingertip>,
+        tips: &FastMap<ColliderHandle, SoftFingertip>,
         handle: ColliderHandle,
         groups: InteractionGroups,
         dt: f64,
@@ -329,8 +329,8 @@ impl<'a> Tip<'a> {
                 * 1.5
     }
 
-    /// The candidate colliders of the fingertip, in handle order, each once, written to
-    /// `out`: one query of the broad-phase BVH over the swept AABB grown by the largest
+    /// The candidate colliders of the fingertip, in handle order, each once, with the gap
+    /// between their current AABBs (`gap_to`, computed once per pair), written to `out`: one query of the broad-phase BVH over the swept AABB grown by the largest
     /// prediction distance of its pairs (the other side at up to `v_max` [m/s] and `w_max`
     /// [rad/s]), prefiltered on the query's own iteration by their current AABBs (no second
     /// collider lookup, nothing sorted but the survivors).
@@ -339,7 +339,7 @@ impl<'a> Tip<'a> {
         qp: &QueryPipeline<'_>,
         v_max: f32,
         w_max: f32,
-        out: &mut Vec<ColliderHandle>,
+        out: &mut Vec<(ColliderHandle, f32)>,
     ) {
         let centre = self.collider.position().translation;
         let r = self.r;
@@ -361,26 +361,28 @@ impl<'a> Tip<'a> {
         out.clear();
         out.extend(
             qp.intersect_aabb_conservative(Aabb::new(lo, hi))
-                .filter(|(h, co)| *h != self.handle && self.gap_to(co) <= max_prediction + 0.01 * r)
-                .map(|(h, _)| h),
+                .filter(|(h, _)| *h != self.handle)
+                .map(|(h, co)| (h, self.gap_to(co)))
+                .filter(|(_, gap)| *gap <= max_prediction + 0.01 * r),
         );
         // Each candidate once (sort + dedup: linear-logarithmic in the candidates).
-        out.sort_unstable_by_key(|h| raw(*h));
-        out.dedup();
+        out.sort_unstable_by_key(|(h, _)| raw(*h));
+        out.dedup_by_key(|(h, _)| *h);
     }
 
     /// The contact of the fingertip with the candidate `other_h`, if the pair is one the
     /// plugin handles (not a sensor, not disabled, not the same body, groups that interact,
-    /// a soft-soft pair from its smaller handle) and is within its prediction distance.
+    /// a soft-soft pair from its smaller handle) and is within its prediction distance;
+    /// `gap` is the AABB gap `candidates` found.
     fn contact_with(
         &self,
         scene: &Scene<'_>,
-        tips: &HashMap<ColliderHandle, SoftFingertip>,
+        tips: &FastMap<ColliderHandle, SoftFingertip>,
         other_h: ColliderHandle,
+        gap: f32,
         counters: &mut SoftCounters,
     ) -> Option<Geom> {
         let other_co = scene.colliders.get(other_h)?;
-        let gap = self.gap_to(other_co);
         if other_co.is_sensor() || !other_co.is_enabled() {
             return None;
         }

@@ -9,6 +9,7 @@ mod curvature;
 mod curved_models;
 mod detect;
 mod error;
+mod fast_hash;
 mod fingertip;
 mod hooks;
 mod joint_sweeps;

@@ -42,6 +42,7 @@ use rapier3d::prelude::{
 
 use crate::bodies::{KinematicPath, interpolate};
 use crate::detect::{to_f32, to_f64};
+use crate::fast_hash::FastMap;
 use crate::solve::BodyState;
 
 /// A link of a multibody in the solver's body table.
@@ -134,7 +135,7 @@ pub(crate) struct LinkCtx<'a> {
 }
 
 /// The multibodies already in a body table: their host's index.
-pub(crate) type Hosts = HashMap<MultibodyIndex, usize>;
+pub(crate) type Hosts = FastMap<MultibodyIndex, usize>;
 
 /// The link velocity (linear at its centre of mass, angular) of generalised velocity `q`.
 fn link_velocity(jac: &DMatrix<f64>, q: &DVector<f64>) -> (Vector3<f64>, Vector3<f64>) {

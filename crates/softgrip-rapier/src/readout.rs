@@ -1,7 +1,6 @@
 //! [`TipContact`]: what one soft contact did over the last step, and its assembly from the
 //! substeps' impulses.
 
-use std::collections::HashMap;
 use std::ops::Deref;
 use std::sync::Arc;
 
@@ -10,6 +9,7 @@ use rapier3d::prelude::ColliderHandle;
 use softgrip_law::{ContactLaw, ContactPatch, ContactReading, Regime};
 
 use crate::detect::{Model, Series, raw};
+use crate::fast_hash::FastMap;
 use crate::solve::Row;
 
 /// One soft contact after a step: the law crate's plain [`ContactReading`] (`reading`; the
@@ -135,7 +135,7 @@ type Key = (ColliderHandle, ColliderHandle);
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Accums {
     list: Vec<(Key, Accum)>,
-    index: HashMap<Key, usize>,
+    index: FastMap<Key, usize>,
     /// Contacts of the current substep are looked up in `index` (not the first substep).
     indexed: bool,
 }

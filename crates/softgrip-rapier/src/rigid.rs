@@ -247,14 +247,7 @@ fn mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
     let mut m = 0.0;
     for i in [x.a, x.b].into_iter().flatten() {
         if bodies[i].link.is_some() {
-            let (sx, lx, ax) = x.on(i).unwrap_or((0.0, Vector3::zeros(), Vector3::zeros()));
-            for k in [y.a, y.b].into_iter().flatten() {
-                if let Some((sy, ly, ay)) = y.on(k)
-                    && let Some(w) = multibody::pair(bodies, i, (&lx, &ax), k, (&ly, &ay))
-                {
-                    m += sx * sy * w;
-                }
-            }
+            link_mobility(bodies, i, x, y, &mut m);
             continue;
         }
         if let (Some((sx, lx, ax)), Some((sy, ly, ay))) = (x.on(i), y.on(i)) {
@@ -263,6 +256,44 @@ fn mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
         }
     }
     m
+}
+
+/// [`mobility`] of two rows whose `response` is set ([`build`]): the same products, read from
+/// `y`'s response instead of recomputed (`inv_m . lin` and `inv_i ang` of the same operands,
+/// so the same bits), for the solve's whole matrix of them.
+fn built_mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
+    let mut m = 0.0;
+    for i in [x.a, x.b].into_iter().flatten() {
+        if bodies[i].link.is_some() {
+            link_mobility(bodies, i, x, y, &mut m);
+            continue;
+        }
+        // `on`'s side of `y` on body `i`: a first.
+        let side = if y.a == Some(i) {
+            Some((1.0, 0))
+        } else if y.b == Some(i) {
+            Some((-1.0, 1))
+        } else {
+            None
+        };
+        if let (Some((sx, lx, ax)), Some((sy, k))) = (x.on(i), side) {
+            let (rl, ra) = &y.response[k];
+            m += sx * sy * (lx.dot(rl) + ax.dot(ra));
+        }
+    }
+    m
+}
+
+/// The part of [`mobility`] through the multibody of link `i` (a body of `x`), added to `m`.
+fn link_mobility(bodies: &[BodyState], i: usize, x: &Scalar, y: &Scalar, m: &mut f64) {
+    let (sx, lx, ax) = x.on(i).unwrap_or((0.0, Vector3::zeros(), Vector3::zeros()));
+    for k in [y.a, y.b].into_iter().flatten() {
+        if let Some((sy, ly, ay)) = y.on(k)
+            && let Some(w) = multibody::pair(bodies, i, (&lx, &ax), k, (&ly, &ay))
+        {
+            *m += sx * sy * w;
+        }
+    }
 }
 
 /// A row's state in the active set.
@@ -411,7 +442,7 @@ fn solve_scalars(
     let m = rows.len();
     // The rows' mutual mobility: the impulses change the bodies' velocities, never their mass,
     // inertia or centre, so it is computed once per solve (was: once per LU pass).
-    let mut mob = DMatrix::from_fn(m, m, |r, c| mobility(bodies, &rows[r], &rows[c]));
+    let mut mob = DMatrix::from_fn(m, m, |r, c| built_mobility(bodies, &rows[r], &rows[c]));
     *immobile_count += immobile(bodies, rows, &mut mob);
     let bound = impulse_bound(bodies, rows, &mob, h);
     // The friction pairs' inverse 2 x 2 mobility.
@@ -686,6 +717,8 @@ struct LuCache {
     v0: Vec<f64>,
     /// The system of the LU rows and its right-hand side.
     a: DMatrix<f64>,
+    /// The LU rows `a` is of (it depends on nothing else that changes within a solve).
+    a_rows: Vec<usize>,
     b: Vec<f64>,
     /// The solution (0 for the rows that do not act).
     x: Vec<f64>,
@@ -727,6 +760,7 @@ fn lu_pass(
         lu: factor,
         v0,
         a,
+        a_rows,
         b,
         x,
         idx,
@@ -735,29 +769,40 @@ fn lu_pass(
     v0.clear();
     v0.extend(lu.iter().map(|&i| rows[i].velocity(bodies)));
     let w = |r: usize, c: usize| mob[(lu[r], lu[c])];
-    a.resize_mut(n, n, 0.0);
-    a.fill(0.0);
+    // The matrix depends on the rows only (the mobility and coefficients are fixed over a
+    // solve): rebuilt when the set of LU rows changes, not every pass.
+    if a_rows.as_slice() != lu || a.nrows() != n {
+        a.resize_mut(n, n, 0.0);
+        a.fill(0.0);
+        for (r, &i) in lu.iter().enumerate() {
+            match rows[i].kind {
+                Kind::SoftNormal { d, .. } => {
+                    for c in 0..n {
+                        a[(r, c)] = h * d * w(r, c);
+                    }
+                    a[(r, r)] += 1.0;
+                }
+                _ if w(r, r) == 0.0 => {}
+                _ => {
+                    for c in 0..n {
+                        a[(r, c)] = w(r, c);
+                    }
+                    a[(r, r)] += rows[i].compliance * w(r, r);
+                }
+            }
+        }
+        a_rows.clear();
+        a_rows.extend_from_slice(lu);
+    }
     b.clear();
     b.resize(n, 0.0);
     for (r, &i) in lu.iter().enumerate() {
         match rows[i].kind {
-            Kind::SoftNormal { force, d } => {
-                for c in 0..n {
-                    a[(r, c)] = h * d * w(r, c);
-                }
-                a[(r, r)] += 1.0;
-                b[r] = h * (force - d * v0[r]);
-            }
+            Kind::SoftNormal { force, d } => b[r] = h * (force - d * v0[r]),
             _ if w(r, r) == 0.0 => {}
-            _ => {
-                for c in 0..n {
-                    a[(r, c)] = w(r, c);
-                }
-                a[(r, r)] += rows[i].compliance * w(r, r);
-                // The compliance acts on the change from rapier's own part (`prox`): among
-                // redundant rows it picks the answer closest to what rapier makes anyway.
-                b[r] = rows[i].target - v0[r] + rows[i].compliance * w(r, r) * rows[i].prox;
-            }
+            // The compliance acts on the change from rapier's own part (`prox`): among
+            // redundant rows it picks the answer closest to what rapier makes anyway.
+            _ => b[r] = rows[i].target - v0[r] + rows[i].compliance * w(r, r) * rows[i].prox,
         }
     }
     x.clear();

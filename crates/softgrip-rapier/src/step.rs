@@ -114,7 +114,7 @@ impl Step<'_> {
         self.soft.counters.pipeline_time += t.elapsed();
     }
 
-    fn detect(&mut self, dt: f64, candidates: &mut Vec<ColliderHandle>) {
+    fn detect(&mut self, dt: f64, candidates: &mut Vec<(ColliderHandle, f32)>) {
         let t = Instant::now();
         let soft = &mut *self.soft;
         let scene = Scene {
@@ -320,19 +320,21 @@ impl Step<'_> {
         if s.rows.is_empty() {
             return;
         }
-        let (queue, pairs) = &mut s.rigid_visit;
+        let (queue, queued, pairs) = &mut s.rigid_visit;
         queue.clear();
+        queued.clear();
         pairs.clear();
         let tb = &mut s.body_table;
         // The dynamic bodies of the touching soft contacts (one that does not touch has no
-        // impulse).
+        // impulse), each once (`queued`: a set, not a scan of the queue, which was quadratic in
+        // the resting fingertips).
         for (row, &gi) in s.rows.iter().zip(&s.geom) {
             if !(compression_from_signed_distance(self.soft.geoms[gi].dist) > 0.0) {
                 continue;
             }
             for i in [row.a, row.b].into_iter().flatten() {
                 let handle = tb.handles[i];
-                if tb.table[i].is_dynamic() && !queue.contains(&handle) {
+                if tb.table[i].is_dynamic() && queued.insert(handle) {
                     queue.push(handle);
                 }
             }
@@ -356,6 +358,11 @@ impl Step<'_> {
                 continue;
             };
             for &ch in rb.colliders() {
+                // Every pair of a fingertip's collider is left out below: its narrow-phase
+                // pairs (the fattened AABBs' neighbours, dozens in a grid) are not walked.
+                if self.soft.tips.contains_key(&ch) {
+                    continue;
+                }
                 for pair in w.narrow_phase.contact_pairs_with(ch) {
                     let (c1, c2) = (pair.collider1, pair.collider2);
                     if self.soft.tips.contains_key(&c1)
@@ -376,7 +383,7 @@ impl Step<'_> {
                     };
                     let b = other.parent().and_then(|ob| {
                         let i = body_index(&w.bodies, ob, &ctx, w.gravity, kin_vel, tb)?;
-                        if tb.table[i].is_dynamic() && !queue.contains(&ob) {
+                        if tb.table[i].is_dynamic() && queued.insert(ob) {
                             queue.push(ob);
                         }
                         Some(i)
