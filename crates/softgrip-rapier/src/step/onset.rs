@@ -47,6 +47,10 @@ impl Step<'_> {
                 self.soft.counters.coupled_solves = solves;
                 self.soft.counters.coupled_passes = passes;
                 self.soft.counters.coupled_unsettled = unsettled;
+                let [solves, passes, unsettled] = s.solve.group_stats();
+                self.soft.counters.group_solves = solves;
+                self.soft.counters.group_passes = passes;
+                self.soft.counters.group_unsettled = unsettled;
                 break;
             }
         }
