@@ -41,6 +41,14 @@ pub struct SoftCounters {
     /// for that (sub)step, rapier's contacts left to rapier. Not an error; before session 13
     /// the answer was applied (2e8 N on a 20 g link) and the hand went to 1e24 rad/s.
     pub coupled_degenerate: u64,
+    /// Solves of a group of two or more soft contacts on a dynamic body without rigid
+    /// supports (a box held by fingertips alone; `solve.rs`'s `solve_group`), total.
+    pub group_solves: u64,
+    /// Outer passes (the normals by a dense LU, then friction sweeps) of those solves, total;
+    /// each stops once its impulses move by less than 1e-6 of its largest normal impulse.
+    pub group_passes: u64,
+    /// Group solves that used every pass allowed (256) without settling, total.
+    pub group_unsettled: u64,
     /// Rows of coupled solves (rapier's contacts in them, and soft rows) along which their
     /// bodies cannot move (mobility below `f32::EPSILON` of the bodies' at that point: a
     /// prismatic finger's vertical on a table), solved as immobile (no impulse), total. Not an

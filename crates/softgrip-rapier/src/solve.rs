@@ -136,7 +136,13 @@ pub(crate) struct Row {
 /// Positional correction factor of static friction (fraction of the anchor offset removed
 /// per step).
 pub(crate) const FRICTION_BETA: f64 = 0.3;
-const OUTER_ITERATIONS: usize = 3;
+/// Most outer passes (normals, then friction sweeps) of one [`solve_group`] of two or more
+/// contacts on a dynamic body; it stops earlier once converged ([`GROUP_CONVERGED`]).
+const OUTER_ITERATIONS: usize = 256;
+/// Relative change of a group's impulses between outer passes below which [`solve_group`]
+/// stops: the largest change of any row's normal or tangential impulse (or torsional impulse
+/// over its arm) since the previous pass, against the group's largest normal impulse.
+const GROUP_CONVERGED: f64 = 1e-6;
 const FRICTION_SWEEPS: usize = 4;
 
 fn body(bodies: &[BodyState], i: Option<usize>) -> Option<&BodyState> {
@@ -421,6 +427,18 @@ pub(crate) struct SolveScratch {
     group_rigid: Vec<RigidRow>,
     /// The coupled solve's buffers (`rigid`).
     coupled: CoupledScratch,
+    /// [`solve_group`]'s impulses of its previous outer pass, and its counts (solves of
+    /// groups of two or more rows, their outer passes, those that hit the cap).
+    group_solve: GroupScratch,
+}
+
+/// [`solve_group`]'s buffer and counts.
+#[derive(Debug, Clone, Default)]
+struct GroupScratch {
+    /// Each row's normal, tangential and torsional-over-arm impulses after the previous pass.
+    previous: Vec<[f64; 5]>,
+    /// Group solves, their outer passes, and those that used every pass allowed.
+    stats: [u64; 3],
 }
 
 impl SolveScratch {
@@ -428,6 +446,12 @@ impl SolveScratch {
     /// immobile and the solves found degenerate, total.
     pub(crate) fn coupled_stats(&self) -> [u64; 5] {
         self.coupled.stats
+    }
+
+    /// Solves of soft groups of two or more rows on a dynamic body without rigid supports
+    /// ([`solve_group`]), their outer passes, and those that used every pass allowed, total.
+    pub(crate) fn group_stats(&self) -> [u64; 3] {
+        self.group_solve.stats
     }
 
     /// The most soft rows of one group in the last [`solve`] (0 if it had none).
@@ -486,6 +510,7 @@ pub(crate) fn solve(
         rigid_group,
         group_rigid,
         coupled,
+        group_solve: group_scratch,
     } = scratch;
     parent.clear();
     parent.extend(0..nb);
@@ -613,7 +638,7 @@ pub(crate) fn solve(
                             r.jt = Vector3::zeros();
                         }
                     }
-                    let ok = solve_group(bodies, base, group_rows, h, n);
+                    let ok = solve_group(bodies, base, group_rows, h, n, group_scratch);
                     for (&i, r) in members.iter().zip(group_rows.iter()) {
                         rows[i] = r.clone();
                     }
@@ -631,11 +656,18 @@ pub(crate) fn solve(
                 }
             }
         } else if let [i] = members {
-            solve_group(bodies, base, std::slice::from_mut(&mut rows[*i]), h, n)
+            solve_group(
+                bodies,
+                base,
+                std::slice::from_mut(&mut rows[*i]),
+                h,
+                n,
+                group_scratch,
+            )
         } else {
             group_rows.clear();
             group_rows.extend(members.iter().map(|&i| rows[i].clone()));
-            let ok = solve_group(bodies, base, group_rows, h, n);
+            let ok = solve_group(bodies, base, group_rows, h, n, group_scratch);
             for (&i, r) in members.iter().zip(group_rows.iter()) {
                 rows[i] = r.clone();
             }
@@ -706,6 +738,7 @@ fn solve_group(
     rows: &mut [Row],
     h: f64,
     bound: usize,
+    scratch: &mut GroupScratch,
 ) -> bool {
     if let [r] = rows {
         return solve_single(bodies, base, r, h);
@@ -718,7 +751,9 @@ fn solve_group(
     });
     let mut ok = true;
     let outer = if any_dynamic { OUTER_ITERATIONS } else { 1 };
-    for _ in 0..outer {
+    let mut passes = 0;
+    for pass in 0..outer {
+        passes = pass + 1;
         restore(bodies, base, rows);
         for r in rows.iter() {
             apply_linear(bodies, r, &r.jt);
@@ -741,6 +776,14 @@ fn solve_group(
         for _ in 0..FRICTION_SWEEPS {
             friction_sweep(bodies, rows, h);
         }
+        if settled(rows, &mut scratch.previous, pass) {
+            break;
+        }
+    }
+    if any_dynamic {
+        scratch.stats[0] += 1;
+        scratch.stats[1] += passes as u64;
+        scratch.stats[2] += u64::from(ok && passes == outer);
     }
     if !ok {
         restore(bodies, base, rows);
@@ -754,6 +797,36 @@ fn solve_group(
         r.vn_end = normal_velocity(bodies, r);
     }
     ok
+}
+
+/// Whether a group's outer passes have converged: after the second pass or later, no row's
+/// normal or tangential impulse (nor its torsional impulse over its arm) moved by more than
+/// [`GROUP_CONVERGED`] of the group's largest normal impulse since the previous pass.
+/// Stores this pass's impulses in `previous` for the next call.
+fn settled(rows: &[Row], previous: &mut Vec<[f64; 5]>, pass: usize) -> bool {
+    let now = |r: &Row| {
+        let tw = if r.torsion_arm > 0.0 {
+            r.jtw / r.torsion_arm
+        } else {
+            0.0
+        };
+        [r.jn, r.jt.x, r.jt.y, r.jt.z, tw]
+    };
+    if pass == 0 {
+        previous.clear();
+        previous.extend(rows.iter().map(now));
+        return false;
+    }
+    let scale = rows.iter().fold(0.0f64, |a, r| a.max(r.jn.abs()));
+    let mut moved = 0.0f64;
+    for (r, p) in rows.iter().zip(previous.iter_mut()) {
+        let q = now(r);
+        for (x, y) in q.iter().zip(p.iter()) {
+            moved = moved.max((x - y).abs());
+        }
+        *p = q;
+    }
+    moved <= GROUP_CONVERGED * scale
 }
 
 /// [`solve_group`] for a lone contact (a fingertip on the ground): no outer or friction

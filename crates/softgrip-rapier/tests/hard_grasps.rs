@@ -22,6 +22,8 @@ const HALF: f64 = 0.025;
 const GRIP: f64 = 5.0;
 /// Time step \[s\].
 const DT: f64 = 1.0 / 60.0;
+/// Window of the box's mean speed in the hold \[s\].
+const WINDOW: f64 = 0.5;
 
 struct Hands {
     world: SoftWorld,
@@ -96,6 +98,15 @@ struct Held {
     worst_law: f64,
     /// Worst |F / GRIP - 1| of any pad over the hold.
     worst_grip: f64,
+    /// Worst |sum F / (n GRIP) - 1| of the n pads' sum over the hold.
+    worst_sum: f64,
+    /// Largest mean speed of the box over a WINDOW in the second half of the hold (its
+    /// displacement over the window / WINDOW) [m/s].
+    speed_window: f64,
+    /// Displacement from the hold's start at its middle \[m\] (drift in the first half).
+    drift_half: f64,
+    /// Largest displacement over the hold's second half from the box's pose at its middle \[m\].
+    drift_late: f64,
     /// Largest speed of the box (from its poses, rotation at its corners) over the second
     /// half of the hold [m/s].
     speed_hold: f64,
@@ -136,6 +147,7 @@ impl Hands {
         let start = *self.world.physics.bodies[self.object].position();
         let mut last = start;
         let steps = n(hold);
+        let mut poses = Vec::with_capacity(steps);
         for i in 0..steps {
             self.pads_to(self.x_closed, y0 + lift);
             self.world.step();
@@ -146,13 +158,33 @@ impl Hands {
                 + HALF * turn.abs() as f64)
                 / DT;
             last = pose;
+            poses.push(pose);
             if i >= steps / 2 {
                 m.speed_hold = m.speed_hold.max(v);
+                let w = n(WINDOW);
+                if i >= steps / 2 + w {
+                    let p0 = poses[i - w];
+                    let turn = (pose.rotation * p0.rotation.inverse()).to_axis_angle().1;
+                    let d = (pose.translation - p0.translation).length() as f64
+                        + HALF * turn.abs() as f64;
+                    m.speed_window = m.speed_window.max(d / WINDOW);
+                }
             }
             let turn0 = (pose.rotation * start.rotation.inverse()).to_axis_angle().1;
             let d =
                 (pose.translation - start.translation).length() as f64 + HALF * turn0.abs() as f64;
             m.drift_hold = m.drift_hold.max(d);
+            if i + 1 == steps / 2 {
+                m.drift_half = d;
+            }
+            if i >= steps / 2 {
+                let p0 = poses[steps / 2 - 1];
+                let turn = (pose.rotation * p0.rotation.inverse()).to_axis_angle().1;
+                let d =
+                    (pose.translation - p0.translation).length() as f64 + HALF * turn.abs() as f64;
+                m.drift_late = m.drift_late.max(d);
+            }
+            let mut sum = 0.0;
             for &(_, c, _) in &self.pads {
                 let f: f64 = self
                     .world
@@ -165,53 +197,59 @@ impl Hands {
                     })
                     .sum();
                 m.worst_grip = m.worst_grip.max((f / GRIP - 1.0).abs());
+                sum += f;
             }
+            let total = GRIP * self.pads.len() as f64;
+            m.worst_sum = m.worst_sum.max((sum / total - 1.0).abs());
         }
         m.height = last.translation.y as f64;
         m
     }
 }
 
-/// The law within 0.5 % (issue 23 item 4's tolerance for a held contact); lifted, each pad at
-/// the grip within 0.5 % (`grasp_and_hold`); on the ground, the ground's friction takes the
-/// pads' imbalance of a box that settled a few micrometres off the jaws' centre.
-fn assert_held(m: &Held, lifted: bool) {
+/// On the ground: the law within 0.5 % (issue 23 item 4's tolerance for a held contact), the
+/// pads not held to the grip (the ground's friction takes the pads' imbalance of a box that
+/// settled a few micrometres off the jaws' centre).
+fn assert_held(m: &Held) {
     assert!(m.worst_law < 5e-3, "{m:?}");
-    assert!(!lifted || m.worst_grip < 5e-3, "{m:?}");
     assert!(m.speed_hold < 1e-6, "{m:?}");
     assert!(m.drift_hold < 1e-6, "{m:?}");
 }
 
 /// Two hands, four pads (+-x, +-z) at 5 N each, lift a 200 g box 5 cm and hold it 2 s.
-/// Still and without drift (9 nm over 2 s), at the grip (0.18 %), but the +-z pads are 1.1 %
-/// off the law at their compression, steadily over the hold (5.009 N where the law at the
-/// readout's compression says 5.064 N; the +-x pads 0.05 %).
+/// Measured (session 13, `solve_group` converged): every pad 1.2e-7 off the law at its
+/// compression, the pads' sum 1.8e-5 off 4 x 5 N, each pad up to 1.29 % off 5 N, the box's
+/// mean speed over 0.5 s in the hold's second half 0.031 um/s (step to step 0.95 um/s),
+/// 16 nm over the second half, 1.16 um over the whole hold (all in its first half).
 ///
-/// Why (session 12): the lifted box is held by the four pads alone, one group of four rows
-/// solved by `solve.rs`'s `solve_group`: 3 outer passes of (the normals by the dense LU, with
-/// the friction impulses of the previous pass fixed; then 4 friction sweeps), and the last
-/// friction sweeps move the box after its normals were solved. The box settled 9.5 um off the
-/// jaws' centre along z while closing on the ground (held there by the +-x pads' friction
-/// along z), so the law asks 5.064 / 4.936 N of the +z / -z pads; the +-x pads' friction
-/// along z must carry the difference (0.128 N), but the alternation passes it on slowly: after
-/// 3 passes they carry 0.018 N and the z pads read 5.009 / 4.991 N, not the law at their
-/// compressions. Measured with the outer passes raised (a diagnostic build, not committed):
-/// 3 / 6 / 10 / 30 passes, worst `|F / F_law - 1|` 1.1 / 0.96 / 0.79 / 0.30 %, worst
-/// `|F / GRIP - 1|` 0.18 / 0.33 / 0.50 / 0.99 %: with the solve converged the pads follow the
-/// law and then cannot all be at the grip (the box is off centre, the +z pad 5.049 N, the -z
-/// 4.951 N), so this test's grip bound (0.5 %) asks for what the physics does not give; its
-/// speed bound is also at the f32 resolution of the pose (1.04e-6 m/s step to step at 7.5 cm:
-/// two steps of the pose's last bit, with a turn of one). The cure is the group's solve
-/// converged (a convergence-based stop of its outer passes, `solve.rs`, issue 23 item 1/3),
-/// not in this test.
+/// The lifted box is held by the four pads alone, one group of four rows solved by
+/// `solve.rs`'s `solve_group`, whose outer passes (the normals by the dense LU with the
+/// friction fixed, then friction sweeps) now stop once converged (session 12: a fixed 3, which
+/// left the +-z pads 1.1 % off the law; this test was ignored). Each bound, and why:
+/// - the law at each pad's compression within 1e-5 (as `press_on_table`): a converged solve
+///   gives the law; the 3-pass solve was 1.1e-2 off.
+/// - the grip on the pads' *sum* within 0.5 % (`grasp_and_hold`'s tolerance), not per pad:
+///   the box settled 9.5 um off the jaws' centre along z while closing on the ground, so the
+///   law at the +-z pads' compressions differs by 2.6 % and the +-x pads' friction along z
+///   carries the difference (the physics, not an error); the sum is 4 x 5 N to second order.
+/// - the speed as the mean over a 0.5 s window in the hold's second half within 1 um/s (issue
+///   23 item 4): step to step the box's pose moves by its `f32` resolution (1.04e-6 m/s at
+///   7.5 cm: two steps of the last bit, with a turn of one), a window averages that out and
+///   still catches a rattle or a creep of 1 um/s.
+/// - no drift: within 1 um over the hold's second half; over the whole hold within 2 um: the
+///   box settles ~1.2 um in the hold's first half as the lift's end (smoothstep's -0.3 m/s^2
+///   at its end, 0.06 N on the pads' friction) gives way to the static load, then stays.
 #[test]
-#[ignore = "the +-z pads read 1.1 % off the law (< 0.5 % asked): solve_group's 3 outer passes do not converge (see the doc comment), issue 23 item 4"]
 fn two_hands_lift_and_hold_one_box() {
     let mut h = hands(0.2, &[Vector::X, -Vector::X, Vector::Z, -Vector::Z]);
     let m = h.run(0.05, 2.0);
     println!("two hands, 200 g box lifted 5 cm, held 2 s: {m:?}");
     assert!((m.height - (HALF + 0.05)).abs() < 2e-3, "{m:?}");
-    assert_held(&m, true);
+    assert!(m.worst_law < 1e-5, "{m:?}");
+    assert!(m.worst_sum < 5e-3, "{m:?}");
+    assert!(m.speed_window < 1e-6, "{m:?}");
+    assert!(m.drift_late < 1e-6, "{m:?}");
+    assert!(m.drift_hold < 2e-6, "{m:?}");
 }
 
 /// Two hands, four pads at 5 N each, squeeze a 200 g box standing on the ground. Measured:
@@ -222,7 +260,7 @@ fn two_hands_squeeze_one_box_on_the_ground() {
     let m = h.run(0.0, 2.0);
     println!("two hands, 200 g box on the ground, held 2 s: {m:?}");
     assert!((m.height - HALF).abs() < 1e-3, "{m:?}");
-    assert_held(&m, false);
+    assert_held(&m);
 }
 
 /// A 2 kg box (10x the default grasp's) squeezed at 5 N by one pair on the ground (the grip
@@ -234,5 +272,5 @@ fn heavy_box_squeezed_on_the_ground() {
     let m = h.run(0.0, 2.0);
     println!("one pair, 2 kg box on the ground, held 2 s: {m:?}");
     assert!((m.height - HALF).abs() < 1e-3, "{m:?}");
-    assert_held(&m, false);
+    assert_held(&m);
 }

@@ -1,6 +1,6 @@
 //! The default grasp (`scenes/default.toml`, or the scene file given) on the plain plugin: its
 //! wall time, the plugin's own timers and how its coupled solves settled
-//! (`SoftCounters::coupled_*`), its substeps per step (`SoftCounters::substeps_total`), and
+//! (`SoftCounters::coupled_*`, `group_*`), its substeps per step (`SoftCounters::substeps_total`), and
 //! the golden digest line, to compare solver changes.
 //!
 //! `cargo run --release -p softgrip-scene --example solve_counters [scene.toml]`
@@ -51,6 +51,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         c.coupled_passes,
         c.coupled_passes as f64 / c.coupled_solves.max(1) as f64,
         c.coupled_unsettled
+    );
+    println!(
+        "group solves {}, passes {} ({:.2} per solve), unsettled {}",
+        c.group_solves,
+        c.group_passes,
+        c.group_passes as f64 / c.group_solves.max(1) as f64,
+        c.group_unsettled
     );
     println!(
         "substeps {} ({:.2} per step, {} at the cap), largest group {} rows",
