@@ -169,6 +169,7 @@ pub(crate) fn body_index(
             inv_i,
             com,
             a_ext,
+            passive: (v, w),
             link: None,
         }
     } else if rb.is_kinematic() {
@@ -183,6 +184,7 @@ pub(crate) fn body_index(
             inv_i: Matrix3::zeros(),
             com,
             a_ext: Vector3::zeros(),
+            passive: (v, w),
             link: None,
         }
     } else {
@@ -193,6 +195,7 @@ pub(crate) fn body_index(
             inv_i: Matrix3::zeros(),
             com,
             a_ext: Vector3::zeros(),
+            passive: (Vector3::zeros(), Vector3::zeros()),
             link: None,
         }
     };

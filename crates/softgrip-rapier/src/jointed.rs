@@ -238,6 +238,8 @@ pub(crate) fn assembly_states(
                 inv_i: Matrix3::zeros(),
                 com: m.com,
                 a_ext: part(&acc, 0),
+                // The motors are not separated from the joints here (`Generalised::passive`).
+                passive: (part(&qdot, 0), part(&qdot, 3)),
                 link: Some(Box::new(Link {
                     host: next,
                     slot,

@@ -66,6 +66,9 @@ pub(crate) struct Generalised {
     pub qdot: DVector<f64>,
     /// The generalised acceleration of gravity and the user's forces.
     pub acc: DVector<f64>,
+    /// The generalised velocity over the (sub)step without the joint motors' push (the
+    /// velocity now plus `acc` over the step; `qdot` where the motors are not separated).
+    pub passive: DVector<f64>,
     /// Table indices of the multibody's links in the table (the host first).
     pub links: Vec<usize>,
     /// Each link's jacobian (6 x n: the linear velocity of its centre of mass, then its
@@ -84,6 +87,7 @@ impl Generalised {
     pub(crate) fn new(mobility: DMatrix<f64>, qdot: DVector<f64>, acc: DVector<f64>) -> Self {
         Self {
             mobility,
+            passive: qdot.clone(),
             qdot,
             acc,
             links: Vec::with_capacity(2),
@@ -284,14 +288,15 @@ pub(crate) fn link_state(
         Some(&host) => (host, None),
         None => (next, Some(generalised(mb, bodies, ctx)?)),
     };
-    let (qdot, acc) = {
+    let (qdot, acc, passive) = {
         let g = multi
             .as_ref()
             .or_else(|| table[host].link.as_deref()?.multi.as_ref())?;
-        (g.qdot.clone(), g.acc.clone())
+        (g.qdot.clone(), g.acc.clone(), g.passive.clone())
     };
     let com = to_f64(rb.mass_properties().world_com);
     let (mut v, mut w) = link_velocity(&jac, &qdot);
+    let (mut vp, mut wp) = link_velocity(&jac, &passive);
     // A kinematic root (a lifted hand) carries its links along: rapier moves a multibody's
     // links to its root body's pose at the start of its step (`forward_kinematics`), with no
     // velocity, and the plugin moves the root there before each pipeline step
@@ -309,8 +314,11 @@ pub(crate) fn link_state(
         }
         let wr = to_f64(axis * angle) / ctx.h;
         let vr = to_f64(now.translation - frame.translation) / ctx.h;
-        v += vr + wr.cross(&(com - to_f64(frame.translation)));
+        let carried = vr + wr.cross(&(com - to_f64(frame.translation)));
+        v += carried;
         w += wr;
+        vp += carried;
+        wp += wr;
     }
     let (a_ext, _) = link_velocity(&jac, &acc);
     if !(v
@@ -342,6 +350,7 @@ pub(crate) fn link_state(
         inv_i: nalgebra::Matrix3::zeros(),
         com,
         a_ext,
+        passive: (vp, wp),
         link: Some(Box::new(Link { host, slot, multi })),
     })
 }
@@ -384,6 +393,7 @@ fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Opti
     let mut w_eff = m_eff.try_inverse()?;
     let mut qf_r = &w_eff * momentum;
     couple(mb, &pos, &mut w_eff, &mut qf_r);
+    let passive = passive_velocity(mb, &pos, &w_r, q_r, &q0);
     let mut mobility = DMatrix::<f64>::zeros(n, n);
     let mut qdot = DVector::from_vec(q0);
     for (a, &da) in free.iter().enumerate() {
@@ -396,7 +406,28 @@ fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Opti
     if !finite.into_iter().all(|x| x.is_finite()) {
         return None;
     }
-    Some(Generalised::new(mobility, qdot, acc))
+    let mut g = Generalised::new(mobility, qdot, acc);
+    g.passive = passive;
+    Some(g)
+}
+
+/// The generalised velocity `q0` (all dofs; `q_r` its free dofs, reduced order, `pos` their
+/// place) with the dof couplings applied on the bare mobility `w_r`, without the motors: what
+/// the multibody does over the step if no motor pushed (`Generalised::passive`).
+fn passive_velocity(
+    mb: &Multibody,
+    pos: &HashMap<usize, usize>,
+    w_r: &DMatrix<f64>,
+    mut q_r: DVector<f64>,
+    q0: &[f64],
+) -> DVector<f64> {
+    let mut w = w_r.clone();
+    couple(mb, pos, &mut w, &mut q_r);
+    let mut passive = DVector::from_column_slice(q0);
+    for (&d, &k) in pos {
+        passive[d] = q_r[k];
+    }
+    passive
 }
 
 /// rapier's inverse augmented mass of `mb` (the mobility its solver uses for a contact or a

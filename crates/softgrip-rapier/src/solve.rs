@@ -46,6 +46,11 @@ pub(crate) struct BodyState {
     pub com: Vector3<f64>,
     /// External acceleration (gravity, user force / m) [m/s^2]; zero if not dynamic.
     pub a_ext: Vector3<f64>,
+    /// The body's linear and angular velocity over the (sub)step without the push of the
+    /// joint motors that hold it \[m/s, rad/s\]: its velocity now plus its external
+    /// accelerations' (what the step's substep count reads, `step::split`). Equal to `(v, w)`
+    /// for a free, fixed or kinematic body.
+    pub passive: (Vector3<f64>, Vector3<f64>),
     /// A link of a multibody: its response comes from the multibody (`multibody`; `inv_m`
     /// and `inv_i` are then zero). `None`: a free, fixed or kinematic body.
     pub link: Option<Box<Link>>,
@@ -231,6 +236,17 @@ pub(crate) fn normal_external_acceleration(bodies: &[BodyState], r: &Row) -> f64
     let aa = body(bodies, r.a).map(|b| b.a_ext).unwrap_or_default();
     let ab = body(bodies, r.b).map(|b| b.a_ext).unwrap_or_default();
     (aa - ab).dot(&r.n)
+}
+
+/// Normal separation velocity of a row [m/s] (> 0 separating) from its bodies' velocities
+/// without their joint motors' push ([`BodyState::passive`]).
+pub(crate) fn passive_normal_velocity(bodies: &[BodyState], r: &Row) -> f64 {
+    let at = |i: Option<usize>| {
+        body(bodies, i)
+            .map(|b| b.passive.0 + b.passive.1.cross(&(r.p - b.com)))
+            .unwrap_or_default()
+    };
+    (at(r.a) - at(r.b)).dot(&r.n)
 }
 
 /// Normal separation velocity of a row [m/s] (> 0 separating).

@@ -8,7 +8,8 @@
 //! `omega_est = sqrt(K(delta_est) w)`, `w = 1/m_eff` the contact's normal mobility and
 //! `delta_est` the compression at which the law's energy reaches `W(delta) + m_eff v_n^2 / 2`
 //! (the deepest point of the impact, found by Newton on `W` with `W' = F`).
-//! Quasi-static contacts (resting, held in a grasp) take no substeps.
+//! Quasi-static contacts (resting) take no substeps; a contact held by joint motors takes the
+//! substeps its motors' push needs (`step::split`).
 
 use softgrip_law::ContactLaw;
 

@@ -27,8 +27,8 @@ use softgrip_rapier::SoftWorld;
 /// with 5.6 N on the pads throws both fingers 36 mm open where the plugin predicts 0.3 mm;
 /// the motor brings them back, the next contact is split (~460 substeps, 2.1 / 2.4 N), and
 /// the cycle repeats every 4 steps; the box creeps along z. At 8 sweeps the cycle is 2 steps
-/// (5.48 N unsplit, 3.8 N split, motor 19.4 N against `J^T F` 11.0 N); at 64 sweeps every
-/// step is unsplit and settled ([`multibody_mimic_jaws_settle_with_converged_pgs`]). The fix
+/// (5.48 N unsplit, 3.8 N split, motor 19.4 N against `J^T F` 11.0 N); at 64 sweeps the hold
+/// settles, split only for the motor's push ([`multibody_mimic_jaws_settle_with_converged_pgs`]). The fix
 /// is a mobility that is rapier's PGS after its sweeps (or rapier's coupling carried as an
 /// exact elimination), not done. The shipped URDF gripper (a mimic finger at 2000 N/m)
 /// reaches 5.07 / 5.09 N against its 5 N, lifts and holds (softgrip-scene `robots`).
@@ -44,15 +44,24 @@ fn multibody_mimic_jaws_squeeze_a_box() {
 
 /// The mimic-coupled jaws of [`multibody_mimic_jaws_squeeze_a_box`] with rapier's PGS run to
 /// convergence (64 sweeps), where the plugin's exact fold of the motor and the coupling is
-/// what rapier does: every step of the hold unsplit, the two pads equal (3.1e-5), the motor's
-/// effort `J^T F` of both pads through the coupling (2.1e-5), both fingers where the coupling
-/// puts them (8e-10 m).
+/// what rapier does: the hold's steps split only for the motor's push (5 substeps), the two
+/// pads equal (4.5e-4), the motor's effort `J^T F` of both pads through the coupling
+/// (9.2e-5), both fingers where the coupling puts them (6e-11 m).
 #[test]
 fn multibody_mimic_jaws_settle_with_converged_pgs() {
     let m = mimic_jaws(64);
     assert!(m.forces[0] > 5.0 && m.forces[0] < 6.0, "{:?}", m.forces);
-    assert_eq!(m.max_substeps_hold, 1, "the hold's steps are split");
-    assert!(m.balance < 1e-4, "pads differ {}", m.balance);
+    // The motor's push on the held pads (2e4 N/m at 5.6 N: a free run of 1.3 compressions per
+    // step) splits the hold into the substeps that keep it within a quarter of the compression
+    // (`step::split::DRIVE_RUN_FRACTION`), not into an impact's hundreds.
+    assert!(
+        (2..=8).contains(&m.max_substeps_hold),
+        "the hold's steps: {} substeps",
+        m.max_substeps_hold
+    );
+    // Split, the hold ends each step with the pads' rows sharing the motor's push over 5
+    // substeps: 4.5e-4 apart (3.1e-5 when every hold step was one unsplit step).
+    assert!(m.balance < 1e-3, "pads differ {}", m.balance);
     assert!(m.effort_error < 1e-4, "motor vs J^T F {}", m.effort_error);
     assert!(
         m.mimic_error < 1e-8,
