@@ -123,6 +123,7 @@ fn stated_force_error(path: &str) -> f64 {
         // pad on R, 1.5 R and 2 R at nu 0.35-0.45), measured against the unchanged law of
         // session 12 (no constant has seen them yet).
         "ball/flat/force_nu0.35_k1.csv" => 4.00,
+        "ball/flat/force_nu0.4_k1.csv" => 2.70,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
