@@ -124,6 +124,7 @@ fn stated_force_error(path: &str) -> f64 {
         // session 12 (no constant has seen them yet).
         "ball/flat/force_nu0.35_k1.csv" => 4.00,
         "ball/flat/force_nu0.4_k1.csv" => 2.70,
+        "ball/flat/force_nu0.35_k1.5.csv" => 3.11,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
@@ -164,12 +165,14 @@ const RANGE_SHORT: &[&str] = &[
 ///
 /// Session 13's fit data (`fit13mid`, not fitted yet) at nu = 0.35 on R: 4.00 % at the law's
 /// end, x = 0.66 (-2.26 % at 0.60, -3.06 % at 0.63; the FE reached 0.68, where it diverged with
-/// the free surface folding over the bonded edge), 2.77 % to 0.62.
+/// the free surface folding over the bonded edge), 2.77 % to 0.62; on 1.5 R: 3.11 % at the FE's
+/// end, x = 0.63 (diverged; -2.13 % at 0.60), 2.76 % to 0.62.
 const KNOWN_MISSES: &[&str] = &[
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.33_k1.4.csv",
     "ball/flat/force_nu0.37_k1.csv",
     "ball/flat/force_nu0.35_k1.csv",
+    "ball/flat/force_nu0.35_k1.5.csv",
 ];
 
 /// Where the curves past 3 % (or near it) are within the 3 % below the FE's collapse:
@@ -180,6 +183,7 @@ const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
     ("ball/flat/force_nu0.33_k1.4.csv", 0.63, 2.69),
     ("ball/flat/force_nu0.37_k1.csv", 0.62, 2.94),
     ("ball/flat/force_nu0.35_k1.csv", 0.62, 2.77),
+    ("ball/flat/force_nu0.35_k1.5.csv", 0.62, 2.76),
 ];
 
 #[test]
