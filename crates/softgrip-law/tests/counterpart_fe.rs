@@ -119,6 +119,15 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/free/force_nu0.3_k0.7.csv" => 1.36,
         "ball/flat/force_nu0.37_k1.csv" => 3.32,
         "ball/flat/force_nu0.3_k1.4.csv" => 2.67,
+        // Session 13, fit data for the next refit (`fe_campaign.py`'s `fit13mid`: the bonded
+        // pad on R, 1.5 R and 2 R at nu 0.35-0.45), measured against the unchanged law of
+        // session 12 (no constant has seen them yet).
+        "ball/flat/force_nu0.35_k1.csv" => 4.00,
+        "ball/flat/force_nu0.4_k1.csv" => 2.70,
+        "ball/flat/force_nu0.35_k1.5.csv" => 3.11,
+        "ball/flat/force_nu0.4_k1.5.csv" => 2.26,
+        "ball/flat/force_nu0.45_k1.csv" => 1.87,
+        "ball/flat/force_nu0.35_k2.csv" => 2.09,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
@@ -127,7 +136,7 @@ fn stated_force_error(path: &str) -> f64 {
 
 /// The curves whose FE runs past the law's range: the flat pad at nu = 0.3 on the balls of 0.7 R
 /// (session 13: the FE to x = 0.70, the law to the bonded reach constant 0.66), at nu = 0.33 on
-/// 1.4 R (session 13: 0.66 of 0.69), R/2
+/// 1.4 R (session 13: 0.66 of 0.69), at nu = 0.35 on R (session 13's fit data: 0.66 of 0.68), R/2
 /// (0.66, the bonded reach constant, of 0.68) and R (0.654, where the plane law ends at rho x,
 /// of 0.68), on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69), and at nu = 0.499 on 2R, 4R and
 /// 10R (the plane law of the bonded pad ends at x = 0.44 at nu >= 0.48, at rho x: 0.62 of
@@ -136,6 +145,7 @@ fn stated_force_error(path: &str) -> f64 {
 const RANGE_SHORT: &[&str] = &[
     "ball/flat/force_nu0.3_k0.7.csv",
     "ball/flat/force_nu0.33_k1.4.csv",
+    "ball/flat/force_nu0.35_k1.csv",
     "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.4_k0.7.csv",
@@ -155,10 +165,17 @@ const RANGE_SHORT: &[&str] = &[
 /// way: 4.14 % at x = 0.66 (the law too soft past x = 0.6, -3.14 % at 0.64 where the FE's
 /// smallest element keeps 24 % of its volume), 2.69 % to 0.63; and the blind run at nu = 0.37 on
 /// R: 3.32 % at its end, x = 0.64 (the FE diverged; -2.56 % at 0.60), 2.94 % to 0.62.
+///
+/// Session 13's fit data (`fit13mid`, not fitted yet) at nu = 0.35 on R: 4.00 % at the law's
+/// end, x = 0.66 (-2.26 % at 0.60, -3.06 % at 0.63; the FE reached 0.68, where it diverged with
+/// the free surface folding over the bonded edge), 2.77 % to 0.62; on 1.5 R: 3.11 % at the FE's
+/// end, x = 0.63 (diverged; -2.13 % at 0.60), 2.76 % to 0.62.
 const KNOWN_MISSES: &[&str] = &[
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.33_k1.4.csv",
     "ball/flat/force_nu0.37_k1.csv",
+    "ball/flat/force_nu0.35_k1.csv",
+    "ball/flat/force_nu0.35_k1.5.csv",
 ];
 
 /// Where the curves past 3 % (or near it) are within the 3 % below the FE's collapse:
@@ -168,6 +185,8 @@ const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
     ("ball/flat/force_nu0.3_k1.csv", 0.64, 2.33),
     ("ball/flat/force_nu0.33_k1.4.csv", 0.63, 2.69),
     ("ball/flat/force_nu0.37_k1.csv", 0.62, 2.94),
+    ("ball/flat/force_nu0.35_k1.csv", 0.62, 2.77),
+    ("ball/flat/force_nu0.35_k1.5.csv", 0.62, 2.76),
 ];
 
 #[test]
