@@ -49,67 +49,12 @@ struct SoftContactArrayBeforeBacking {
     contacts: Vec<SoftContactBeforeBacking>,
 }
 
-/// `softgrip_msgs/SoftContact` with `backing` and `core_thickness`, before the counterpart
-/// (CDR has no field names: the fields are spelled out in order, no `serde(flatten)`).
+/// `softgrip_msgs/SoftContact` with `backing` and `core_thickness`, before the counterpart:
+/// the fields before `backing`, then `backing` and `core_thickness`. CDR has no field names and
+/// aligns each field at its offset in the stream, so a struct nested first decodes the same
+/// bytes as the fields spelled out in order.
 #[derive(Deserialize)]
-struct SoftContactBeforeCounterpart {
-    header: Header,
-    fingertip: String,
-    other: String,
-    point: Point,
-    normal: Vector3,
-    compression: f64,
-    ratio_x: f64,
-    normal_force: f64,
-    friction_force: Vector3,
-    torsional_moment: f64,
-    contact_radius: f64,
-    mean_pressure: f64,
-    peak_pressure: f64,
-    stiffness: f64,
-    level: u8,
-    level_name: String,
-    validity_exceeded: bool,
-    sliding: bool,
-    peak_normal_force: f64,
-    max_compression: f64,
-    contact_duration: f64,
-    backing: u8,
-    core_thickness: f64,
-}
-
-impl SoftContactBeforeCounterpart {
-    /// Its fields before `backing`, and `(backing, core_thickness)`.
-    fn split(self) -> (SoftContactBeforeBacking, u8, f64) {
-        (
-            SoftContactBeforeBacking {
-                header: self.header,
-                fingertip: self.fingertip,
-                other: self.other,
-                point: self.point,
-                normal: self.normal,
-                compression: self.compression,
-                ratio_x: self.ratio_x,
-                normal_force: self.normal_force,
-                friction_force: self.friction_force,
-                torsional_moment: self.torsional_moment,
-                contact_radius: self.contact_radius,
-                mean_pressure: self.mean_pressure,
-                peak_pressure: self.peak_pressure,
-                stiffness: self.stiffness,
-                level: self.level,
-                level_name: self.level_name,
-                validity_exceeded: self.validity_exceeded,
-                sliding: self.sliding,
-                peak_normal_force: self.peak_normal_force,
-                max_compression: self.max_compression,
-                contact_duration: self.contact_duration,
-            },
-            self.backing,
-            self.core_thickness,
-        )
-    }
-}
+struct SoftContactBeforeCounterpart(SoftContactBeforeBacking, u8, f64);
 
 #[derive(Deserialize)]
 struct SoftContactArrayBeforeCounterpart {
@@ -135,7 +80,7 @@ pub(crate) fn contacts_before_counterpart(data: &[u8]) -> Result<SoftContactArra
             .contacts
             .into_iter()
             .map(|c| {
-                let (before, backing, core_thickness) = c.split();
+                let SoftContactBeforeCounterpart(before, backing, core_thickness) = c;
                 SoftContactMsg {
                     backing,
                     core_thickness,
