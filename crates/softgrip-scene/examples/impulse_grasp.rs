@@ -8,6 +8,9 @@
 //! gives them; the row ends with `SoftCounters::jointed_free`)
 //! (default: `scenes/robots/parallel_gripper_box.toml` at 3, 5 and 7 N).
 
+#[path = "../tests/common/mod.rs"]
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -149,14 +152,7 @@ fn run(scene: &Scene, model: &str, force: f64, trace: bool, pgs: usize) {
         }
     }
     let ms = t0.elapsed().as_secs_f64() * 1e3 / scene.steps() as f64;
-    let slip = (hold.iter())
-        .map(|p| {
-            (0..3)
-                .map(|i| (p[i] - hold[0][i]).powi(2))
-                .sum::<f64>()
-                .sqrt()
-        })
-        .fold(0.0, f64::max);
+    let slip = common::excursion(&hold, 0);
     println!(
         "{model:10} {force:5.2}  {peak:8.4?}  {held:8.4?}  {:9.2}  {ms:.2}  jointed_free {}",
         slip * 1e6,

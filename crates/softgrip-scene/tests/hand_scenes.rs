@@ -8,6 +8,8 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
 use softgrip_scene::control::Phase;
@@ -73,19 +75,13 @@ fn grasp(name: &str, object: &str) -> Grasped {
         }
     }
     assert!(hold.len() > 2, "{name}: the grasp never held");
-    let dist = |a: &[f64; 3], b: &[f64; 3]| (0..3).map(|i| (a[i] - b[i]).powi(2)).sum::<f64>();
-    let worst_from = |k: usize| {
-        (hold[k..].iter())
-            .map(|p| dist(p, &hold[k]).sqrt())
-            .fold(0.0, f64::max)
-    };
     let g = Grasped {
         reached,
         pads: pads_held,
         rise,
         base_rise,
-        slip: worst_from(0),
-        creep: worst_from(1),
+        slip: common::excursion(&hold, 0),
+        creep: common::excursion(&hold, 1),
         peak_x,
     };
     eprintln!(

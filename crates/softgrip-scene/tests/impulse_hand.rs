@@ -25,6 +25,8 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
 use softgrip_scene::control::Phase;
@@ -115,14 +117,7 @@ fn grasp(object: &str, model: &str) -> Grasped {
             .integration_parameters
             .num_internal_pgs_iterations;
     assert!(hold.len() > 2, "{object} {model}: never held");
-    let slip = (hold.iter())
-        .map(|p| {
-            (0..3)
-                .map(|i| (p[i] - hold[0][i]).powi(2))
-                .sum::<f64>()
-                .sqrt()
-        })
-        .fold(0.0, f64::max);
+    let slip = common::excursion(&hold, 0);
     let g = Grasped {
         peak,
         held,

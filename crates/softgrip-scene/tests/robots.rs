@@ -4,6 +4,8 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
 use softgrip_scene::control::Phase;
@@ -141,16 +143,8 @@ fn grasp_reaches_its_force_and_lifts_the_box() {
                 .sum();
         }
     }
-    let dist =
-        |a: &[f64; 3], b: &[f64; 3]| (0..3).map(|i| (a[i] - b[i]).powi(2)).sum::<f64>().sqrt();
-    let worst_from = |k: usize| {
-        hold[k..]
-            .iter()
-            .map(|p| dist(p, &hold[k]))
-            .fold(0.0, f64::max)
-    };
     assert!(hold.len() > 2, "the grasp never held");
-    let (slip, creep) = (worst_from(0), worst_from(1));
+    let (slip, creep) = (common::excursion(&hold, 0), common::excursion(&hold, 1));
     eprintln!(
         "base lifted {base_lift:.6} m, box lifted {lifted:.6} m, hold slip {:.2} um (after \
          the stop step {:.3} um), pads' total force at the end of the hold {hold_force:.4} N, \
