@@ -1,40 +1,17 @@
 //! `softgrip curve`, run as a user runs it: the CSV it prints and how it refuses bad input.
 
-use std::process::{Command, Output};
+mod common;
+
+use common::softgrip;
 
 const HEADER: &str = "x,force_norm,stiffness_norm,energy_norm,radius_norm,p_mean_norm,valid";
 
-fn softgrip(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_softgrip"))
-        .args(args)
-        .output()
-        .expect("the softgrip binary runs")
-}
-
 /// Runs `softgrip curve ARGS`, checks success and returns the data rows as numbers.
 fn curve(args: &[&str]) -> Vec<Vec<f64>> {
-    let mut all = vec!["curve"];
-    all.extend_from_slice(args);
-    let out = softgrip(&all);
-    assert!(
-        out.status.success(),
-        "softgrip {all:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8(out.stdout).expect("UTF-8 output");
-    let mut lines = text.lines();
-    assert_eq!(lines.next(), Some(HEADER));
-    lines
-        .map(|l| {
-            l.split(',')
-                .map(|v| {
-                    v.parse::<f64>()
-                        .unwrap_or_else(|_| panic!("bad number `{v}` in `{l}`"))
-                })
-                .collect::<Vec<f64>>()
-        })
-        .inspect(|row| assert_eq!(row.len(), 7))
-        .collect()
+    let (header, rows) = common::curve_csv(args);
+    assert_eq!(header, HEADER);
+    assert!(rows.iter().all(|row| row.len() == 7), "{rows:?}");
+    rows
 }
 
 fn close(a: f64, b: f64, rel: f64) -> bool {

@@ -4,39 +4,10 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
-use std::process::{Command, Output};
+mod common;
 
+use common::{curve_csv as csv, softgrip_curve as softgrip};
 use softgrip_law::{Backing, ContactLaw, ContactParams, Level};
-
-fn softgrip(args: &[&str]) -> Output {
-    let mut all = vec!["curve"];
-    all.extend_from_slice(args);
-    Command::new(env!("CARGO_BIN_EXE_softgrip"))
-        .args(&all)
-        .output()
-        .expect("the softgrip binary runs")
-}
-
-/// The CSV of `softgrip curve ARGS` (success checked): its header and its rows as numbers.
-fn csv(args: &[&str]) -> (String, Vec<Vec<f64>>) {
-    let out = softgrip(args);
-    assert!(
-        out.status.success(),
-        "softgrip curve {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8(out.stdout).expect("UTF-8 output");
-    let mut lines = text.lines();
-    let header = lines.next().expect("a header").to_string();
-    let rows = lines
-        .map(|l| {
-            l.split(',')
-                .map(|v| v.parse::<f64>().expect("a number"))
-                .collect()
-        })
-        .collect();
-    (header, rows)
-}
 
 /// The law the command should print: E* = 1 Pa, R = 1 m (so t = T m), `nu`, `backing`.
 fn law(level: Level, nu: f64, backing: Backing) -> ContactLaw {

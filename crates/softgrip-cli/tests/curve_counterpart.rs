@@ -4,34 +4,10 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
-use std::process::{Command, Output};
+mod common;
 
+use common::{curve_csv as csv, softgrip_curve as softgrip};
 use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level};
-
-fn softgrip(args: &[&str]) -> Output {
-    let mut all = vec!["curve"];
-    all.extend_from_slice(args);
-    Command::new(env!("CARGO_BIN_EXE_softgrip"))
-        .args(&all)
-        .output()
-        .expect("the softgrip binary runs")
-}
-
-fn csv(args: &[&str]) -> (String, Vec<Vec<f64>>) {
-    let out = softgrip(args);
-    assert!(
-        out.status.success(),
-        "softgrip curve {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8(out.stdout).unwrap();
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().to_string();
-    let rows = lines
-        .map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap()).collect())
-        .collect();
-    (header, rows)
-}
 
 /// The law the command should print: E* = 1 Pa, R = 1 m, so a counterpart of K = R2/R has
 /// curvature 1/K.

@@ -49,3 +49,35 @@ pub fn python() -> String {
         )
     })
 }
+
+/// `softgrip curve ARGS`, waited for.
+pub fn softgrip_curve(args: &[&str]) -> Output {
+    let mut all = vec!["curve"];
+    all.extend_from_slice(args);
+    softgrip(&all)
+}
+
+/// The CSV of `softgrip curve ARGS` (success checked): its header and its rows as numbers
+/// (a cell that is not a number fails, naming it and its line).
+pub fn curve_csv(args: &[&str]) -> (String, Vec<Vec<f64>>) {
+    let out = softgrip_curve(args);
+    assert!(
+        out.status.success(),
+        "softgrip curve {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).expect("UTF-8 output");
+    let mut lines = text.lines();
+    let header = lines.next().expect("a header").to_string();
+    let rows = lines
+        .map(|l| {
+            l.split(',')
+                .map(|v| {
+                    v.parse::<f64>()
+                        .unwrap_or_else(|_| panic!("bad number `{v}` in `{l}`"))
+                })
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}
