@@ -177,6 +177,33 @@ pub enum SceneError {
         /// Penetration depth at the start \[m\].
         depth: f64,
     },
+    /// A fingertip sits on a link of a robot with `joints = "impulse"` that the soft solve
+    /// cannot see through its joints: its assembly needs more Gauss-Seidel sweeps per solver
+    /// pass than [`MAX_JOINTED_SWEEPS`](crate::robot::MAX_JOINTED_SWEEPS), or is not one the
+    /// solve reads (more than 8 bodies held together by impulse joints, or rapier's sweeps over
+    /// it never converge). The solve would take the link as a free body and get its contact
+    /// force wrong; as a multibody (the default) the solve reads the link through rapier's
+    /// multibody.
+    #[error(
+        "{origin}: `{field}` = \"impulse\": the contact solve cannot see `{link}` through its impulse joints ({}): the fingertip's force would be computed as on a free body; use joints = \"multibody\" (the default) (SCENES.md, `[[robot]]`, `joints`)",
+        match needed {
+            Some(n) => format!("rapier would need {n} Gauss-Seidel sweeps per solver pass over its joints, at most {max} are given"),
+            None => "its assembly has more than 8 bodies held by impulse joints, or rapier's sweeps over its joints never converge".to_string(),
+        }
+    )]
+    JointedUnseen {
+        /// The file.
+        origin: String,
+        /// The robot's field, e.g. `robot[0].joints`.
+        field: String,
+        /// The padded link, e.g. `robot[0] (`hand`) link `f0_distal``.
+        link: String,
+        /// The sweeps per solver pass it would need (with the margin); `None` where its
+        /// assembly is not one the solve reads.
+        needed: Option<usize>,
+        /// [`MAX_JOINTED_SWEEPS`](crate::robot::MAX_JOINTED_SWEEPS).
+        max: usize,
+    },
     /// A robot's link starts inside a dynamic body deeper than rapier's allowed linear error:
     /// rapier would push the two apart in the first steps, through whatever holds the body.
     #[error(
@@ -225,7 +252,8 @@ impl SceneError {
             | SceneError::Name { field, .. }
             | SceneError::Fingertip { field, .. }
             | SceneError::Law { field, .. }
-            | SceneError::Urdf { field, .. } => Some(field),
+            | SceneError::Urdf { field, .. }
+            | SceneError::JointedUnseen { field, .. } => Some(field),
             _ => None,
         }
     }

@@ -24,7 +24,8 @@ use crate::validate::Checker;
 /// not quadratic; 1000 resting fingertips spent seconds here), in file order, so the first
 /// error is the one a check of every pair would find first.
 pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> {
-    let built = scene.build();
+    let mut built = scene.build();
+    check_jointed_sweeps(c, scene, &mut built)?;
     let (world, h) = (&built.world, &built.handles);
     let labels = labels(scene, h);
     check_links(c, scene, &built)?;
@@ -95,6 +96,38 @@ fn start_pose(world: &softgrip_rapier::SoftWorld, co: &Collider) -> Pose {
         },
         _ => *co.position(),
     }
+}
+
+/// Every impulse-jointed robot's padded links are ones the soft solve sees through their
+/// joints ([`Robot::set_jointed_sweeps`](crate::Robot::set_jointed_sweeps), asked again of
+/// the built world: it only raises sweeps, so a second call sets nothing new): otherwise
+/// [`SceneError::JointedUnseen`] names the link and what it would need.
+fn check_jointed_sweeps(
+    c: &Checker,
+    scene: &Scene,
+    built: &mut crate::build::BuiltScene,
+) -> Result<(), SceneError> {
+    for (i, ((name, rh), robot)) in built.handles.robots.iter().zip(scene.robots()).enumerate() {
+        let pads: Vec<usize> = (scene.carriers().iter())
+            .filter_map(|carrier| match *carrier {
+                crate::Carrier::Link { robot, link } if robot == i => Some(link),
+                _ => None,
+            })
+            .collect();
+        if let Err(unseen) = robot.set_jointed_sweeps(&mut built.world, rh, &pads) {
+            return Err(SceneError::JointedUnseen {
+                origin: c.origin.to_string(),
+                field: format!("robot[{i}].joints"),
+                link: format!(
+                    "robot[{i}] (`{name}`) link `{}`",
+                    robot.links()[unseen.link].name
+                ),
+                needed: unseen.needed,
+                max: crate::robot::MAX_JOINTED_SWEEPS,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Every robot link's collision shape against every shape of a dynamic body at the start poses

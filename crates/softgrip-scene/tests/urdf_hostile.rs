@@ -587,3 +587,85 @@ fn a_multibody_of_more_joints_than_rapier_solves_in_time_is_an_error() {
     let scene = load(&urdf, "joints = \"impulse\"", &[]).unwrap();
     assert_eq!(scene.robots()[0].joints().len(), 300);
 }
+
+/// A chain of `n` revolute links below the fixed base, with a fingertip on its last link
+/// (`extra` lines in the `[[robot]]`).
+fn padded_chain(n: usize, extra: &str) -> Result<Scene, SceneError> {
+    let mut parts: Vec<String> = (0..=n).map(|i| link(&format!("l{i}"))).collect();
+    for i in 1..=n {
+        let (p, c) = (format!("l{}", i - 1), format!("l{i}"));
+        parts.push(joint(&format!("j{i}"), "revolute", &p, &c, ""));
+    }
+    let pad = format!(
+        "{extra}\n[[fingertip]]\nname = \"pad\"\nlink = \"r/l{n}\"\noffset = [0.0, 0.0, -0.12]\n\
+         radius = 0.008\npreset = \"dragon-skin-30\"\n"
+    );
+    load(&robot(&parts), &pad, &[])
+}
+
+#[test]
+fn a_pad_the_solve_cannot_see_through_impulse_joints_is_an_error_naming_the_link() {
+    // Ten moving links held together by impulse joints: more than the 8 bodies of an
+    // assembly the contact solve reads, so it would take the padded link as a free body.
+    let e = padded_chain(10, "joints = \"impulse\"")
+        .map(|_| ())
+        .unwrap_err();
+    assert!(
+        matches!(e, SceneError::JointedUnseen { needed: None, .. }),
+        "{e:?}"
+    );
+    assert_eq!(e.field(), Some("robot[0].joints"), "{e}");
+    let text = e.to_string();
+    assert!(text.contains("link `l10`"), "{text}");
+    assert!(text.contains("more than 8 bodies"), "{text}");
+    assert!(text.contains("joints = \"multibody\""), "{text}");
+    // The same chain as a multibody (the default) loads and runs; two links with impulse
+    // joints are an assembly the solve reads.
+    run_50(&padded_chain(10, "").unwrap());
+    run_50(&padded_chain(2, "joints = \"impulse\"").unwrap());
+}
+
+#[test]
+fn a_pad_whose_joints_would_need_more_sweeps_than_given_is_an_error_saying_how_many() {
+    // A 1 g proximal link carrying a 10 kg distal one: rapier's sweeps over the two hinges
+    // converge so slowly that the solve would need millions per solver pass.
+    let l = |name: &str, m: &str, i: &str| {
+        format!(
+            r#"<link name="{name}">{}<collision><origin xyz="0 0 -0.05"/><geometry><box size="0.01 0.01 0.1"/></geometry></collision></link>"#,
+            inertial(m, i)
+        )
+    };
+    let parts = [
+        link("l0"),
+        l("l1", "0.001", "1e-7"),
+        l("l2", "10", "1e-1"),
+        joint("j1", "revolute", "l0", "l1", ""),
+        joint("j2", "revolute", "l1", "l2", ""),
+    ];
+    let pad = "[[fingertip]]\nname = \"pad\"\nlink = \"r/l2\"\noffset = [0.0, 0.0, -0.12]\n\
+               radius = 0.008\npreset = \"dragon-skin-30\"\n";
+    let e = load(&robot(&parts), &format!("joints = \"impulse\"\n{pad}"), &[])
+        .map(|_| ())
+        .unwrap_err();
+    let SceneError::JointedUnseen {
+        needed: Some(n),
+        max,
+        ..
+    } = e
+    else {
+        panic!("{e:?}");
+    };
+    assert_eq!(max, softgrip_scene::robot::MAX_JOINTED_SWEEPS);
+    assert!(n > 1_000_000, "{n}");
+    let text = e.to_string();
+    assert!(
+        text.contains(&format!("would need {n} Gauss-Seidel sweeps")),
+        "{text}"
+    );
+    assert!(
+        text.contains("link `l2`") && text.contains("at most 4096"),
+        "{text}"
+    );
+    // As a multibody the same finger loads and runs.
+    run_50(&load(&robot(&parts), pad, &[]).unwrap());
+}

@@ -29,6 +29,18 @@ pub const JOINTED_SWEEPS_MARGIN: f64 = 1.25;
 /// see SCENES.md); an assembly that needs more is seen as free bodies.
 pub const MAX_JOINTED_SWEEPS: usize = 4096;
 
+/// A padded link of an impulse-jointed robot that the soft solve cannot see through its joints
+/// ([`Robot::set_jointed_sweeps`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct JointedUnseen {
+    /// The link (index into [`Robot::links`]).
+    pub link: usize,
+    /// The Gauss-Seidel sweeps per solver pass it would need, with the margin (more than
+    /// [`MAX_JOINTED_SWEEPS`]); `None` where its assembly is not one the solve reads (more than
+    /// 8 bodies held together by impulse joints, or rapier's sweeps over it never converge).
+    pub needed: Option<usize>,
+}
+
 /// How a robot joint is held in rapier.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RobotJointHandle {
@@ -192,13 +204,25 @@ impl Robot {
     /// about its centre of mass, off the hinge, and does not orthogonalise it against the
     /// locked rows): the shipped three-finger hand's fingers 518 at the step, 520 at its
     /// substeps, so 649 more with the margin; a prismatic jaw anchored at its centre of mass
-    /// ([`Robot::anchor_prismatic_at_com`]) needs 1 and gets none. Above
-    /// [`MAX_JOINTED_SWEEPS`] nothing is set, and the solve sees the links as free bodies
-    /// (`SoftCounters::jointed_free`). Multibody robots and robots without a pad are left as
-    /// they are. Call it after the fingertips are attached and the anchors moved.
-    pub fn set_jointed_sweeps(&self, world: &mut SoftWorld, h: &RobotHandles, pads: &[usize]) {
+    /// ([`Robot::anchor_prismatic_at_com`]) needs 1 and gets none. Multibody robots and
+    /// robots without a pad are left as they are. Call it after the fingertips are attached
+    /// and the anchors moved.
+    ///
+    /// # Errors
+    /// [`JointedUnseen`] names the first padded link the solve cannot see through its impulse
+    /// joints: its assembly needs more than [`MAX_JOINTED_SWEEPS`] with the margin, or is not
+    /// one the solve reads (more than 8 bodies, or rapier's sweeps over it never converge).
+    /// Nothing is set then, and a run would take the links as free bodies
+    /// (`SoftCounters::jointed_free`): [`Scene::parse`](crate::Scene::parse) refuses such a
+    /// scene ([`SceneError::JointedUnseen`](crate::SceneError::JointedUnseen)).
+    pub fn set_jointed_sweeps(
+        &self,
+        world: &mut SoftWorld,
+        h: &RobotHandles,
+        pads: &[usize],
+    ) -> Result<(), JointedUnseen> {
         if self.joint_model() != JointModel::Impulse {
-            return;
+            return Ok(());
         }
         // rapier computes a body's world (effective) mass properties at its first step; the
         // rate needs them now. Setting the locked axes updates them (only on a change, hence
@@ -213,25 +237,43 @@ impl Robot {
             }
         }
         let dt = world.physics.integration_parameters.dt as f64;
-        let need = (pads.iter())
-            .filter_map(|&l| h.links.get(l))
-            .flat_map(|&body| {
-                let world = &*world;
-                (0..=6).filter_map(move |k| {
-                    world.jointed_sweeps_needed(body, dt / f64::from(1u32 << k))
-                })
-            })
-            .max();
+        // The most sweeps any padded link held by impulse joints needs, at the step and its
+        // substeps, and the link that needs them.
+        let mut most: Option<(usize, usize)> = None;
+        for &l in pads {
+            let Some(&body) = h.links.get(l) else {
+                continue;
+            };
+            let w = &world.physics;
+            let jointed = w.bodies.get(body).is_some_and(|rb| rb.is_dynamic())
+                && w.impulse_joints.attached_joints(body).next().is_some();
+            if !jointed {
+                continue;
+            }
+            let need = (0..=6)
+                .filter_map(|k| world.jointed_sweeps_needed(body, dt / f64::from(1u32 << k)))
+                .max()
+                .ok_or(JointedUnseen {
+                    link: l,
+                    needed: None,
+                })?;
+            if most.is_none_or(|(n, _)| need > n) {
+                most = Some((need, l));
+            }
+        }
         let own = world
             .physics
             .integration_parameters
             .num_internal_pgs_iterations;
-        let Some(need) = need.filter(|&n| n > own) else {
-            return;
+        let Some((need, link)) = most.filter(|&(n, _)| n > own) else {
+            return Ok(());
         };
         let need = (need as f64 * JOINTED_SWEEPS_MARGIN).ceil() as usize;
         if need > MAX_JOINTED_SWEEPS {
-            return;
+            return Err(JointedUnseen {
+                link,
+                needed: Some(need),
+            });
         }
         for &l in &h.links {
             if let Some(rb) = world.physics.bodies.get_mut(l) {
@@ -239,6 +281,7 @@ impl Robot {
                 rb.set_additional_pgs_iterations(extra);
             }
         }
+        Ok(())
     }
 
     /// Start positions and mimic couplings of a multibody robot.

@@ -13,7 +13,8 @@ mod state;
 mod urdf;
 
 pub use build::{
-    FALLBACK_DENSITY, JOINTED_SWEEPS_MARGIN, MAX_JOINTED_SWEEPS, RobotHandles, RobotJointHandle,
+    FALLBACK_DENSITY, JOINTED_SWEEPS_MARGIN, JointedUnseen, MAX_JOINTED_SWEEPS, RobotHandles,
+    RobotJointHandle,
 };
 pub use inertial::MAX_LINK_MASS;
 pub use load::{joint_load, joint_state_loaded};
