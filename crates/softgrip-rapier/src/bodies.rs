@@ -5,8 +5,8 @@
 use nalgebra::{Matrix3, Vector3};
 use rapier3d::prelude::{Pose, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector};
 
+use crate::boundary::{to_f32, to_f64};
 use crate::counters::SoftCounters;
-use crate::detect::{to_f32, to_f64};
 use crate::fast_hash::FastMap;
 use crate::jointed;
 use crate::multibody::{self, Hosts, LinkCtx, SavedForce};

@@ -1,26 +1,28 @@
 //! [`SoftContacts`]: the plugin's state: registered fingertips, per-contact memory, readout.
 
-use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use nalgebra::Vector3;
 use rapier3d::prelude::{
-    ActiveCollisionTypes, ActiveHooks, ColliderHandle, InteractionGroups, PhysicsWorld,
-    RigidBodyHandle,
+    ActiveCollisionTypes, ActiveHooks, ColliderHandle, ColliderSet, InteractionGroups,
+    PhysicsWorld, RigidBodyHandle,
 };
 
 use crate::bodies::{BodyTable, UnsplitCarry};
+use crate::boundary::raw;
 use crate::counters::SoftCounters;
 use crate::curved_models::CurvedModels;
-use crate::detect::{Geom, Model, raw};
+use crate::detect::Geom;
 use crate::error::{Error, Result};
 use crate::fast_hash::{FastMap, FastSet};
 use crate::fingertip::SoftFingertip;
+use crate::model::Model;
 use crate::readout::{Accums, TipContact};
 use crate::rigid::RigidRow;
 use crate::solve::{Row, SolveScratch};
 use crate::substep::SoftAccuracy;
-use crate::taxels::TactileSlot;
+use crate::taxels::{TactileImage, TactileSlot};
+use crate::tip_record::TipRecord;
 
 /// Memory of one contact between steps.
 #[derive(Debug, Clone, Copy)]
@@ -77,19 +79,20 @@ pub(crate) struct Scratch {
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.
 #[derive(Debug, Clone, Default)]
 pub struct SoftContacts {
-    pub(crate) tips: FastMap<ColliderHandle, SoftFingertip>,
-    /// The collision groups each fingertip's collider had at registration (the collider's own
-    /// are set to `InteractionGroups::none()`, which keeps rapier's narrow phase off it).
-    pub(crate) groups: FastMap<ColliderHandle, InteractionGroups>,
-    /// The solver groups each fingertip's collider had at registration.
-    pub(crate) solver_groups: FastMap<ColliderHandle, InteractionGroups>,
-    /// The backed fingertips and their facing, in their collider's frame (for the hooks:
-    /// rapier's rigid contacts behind the flat face).
-    pub(crate) backed: HashMap<ColliderHandle, Vector3<f64>>,
+    // A fingertip's state is one `TipRecord` (`tips`); `tip_order` and `hook_view` are indexes
+    // derived from the records at registration, for the two readers that cannot use the map:
+    // the detection walks the fingertips in handle order, and rapier's hooks read which
+    // colliders are soft while the rest of the state is written (`step`). A contact's memory
+    // between steps is its `PairState` (`pairs`): the slot where a law with memory keeps its
+    // variables.
+    /// The registered fingertips.
+    pub(crate) tips: FastMap<ColliderHandle, TipRecord>,
     /// The fingertips and their collision groups, in handle order (the detection's order).
     pub(crate) tip_order: Vec<(ColliderHandle, InteractionGroups)>,
-    /// The fingertips' colliders, for the hooks and events passed to rapier (`hooks`).
-    pub(crate) soft_colliders: HashSet<ColliderHandle>,
+    /// The fingertips' colliders, each with its facing in its collider's frame if it is backed
+    /// (for the hooks and events passed to rapier: rapier's rigid contacts behind the flat
+    /// face).
+    pub(crate) hook_view: HookView,
     /// The multibody links' jacobians, for dropping rapier's contacts along directions they
     /// cannot move (`link_contacts`; refreshed each step).
     pub(crate) link_contacts: crate::link_contacts::LinkContacts,
@@ -97,8 +100,6 @@ pub struct SoftContacts {
     pub(crate) started: bool,
     pub(crate) pairs: FastMap<(ColliderHandle, ColliderHandle), PairState>,
     pub(crate) soft_pairs: FastMap<(ColliderHandle, ColliderHandle), Option<Arc<Model>>>,
-    /// The contact model of each fingertip on a rigid body (shared by its contacts).
-    pub(crate) tip_models: FastMap<ColliderHandle, Arc<Model>>,
     /// The models of contacts on curved counterparts and edges (`curved_models`).
     pub(crate) curved_models: CurvedModels,
     pub(crate) contacts: Vec<TipContact>,
@@ -106,9 +107,11 @@ pub struct SoftContacts {
     pub(crate) accuracy: SoftAccuracy,
     pub(crate) geoms: Vec<Geom>,
     pub(crate) scratch: Scratch,
-    /// The tactile image of each fingertip with a pad, in handle order.
-    pub(crate) tactile: Vec<(ColliderHandle, TactileSlot)>,
 }
+
+/// The fingertips' colliders as rapier's hooks see them: each with its facing in its
+/// collider's frame if it is backed, `None` if it is soft all round.
+pub(crate) type HookView = FastMap<ColliderHandle, Option<Vector3<f64>>>;
 
 impl SoftContacts {
     /// An empty plugin state with the default accuracy.
@@ -168,21 +171,11 @@ impl SoftContacts {
                 fingertip_radius: fingertip.radius(),
             });
         }
-        let (groups, solver_groups) = if self.tips.contains_key(&collider) {
-            (
-                self.groups
-                    .get(&collider)
-                    .copied()
-                    .unwrap_or(co.collision_groups()),
-                self.solver_groups
-                    .get(&collider)
-                    .copied()
-                    .unwrap_or(co.solver_groups()),
-            )
-        } else {
-            (co.collision_groups(), co.solver_groups())
+        let (groups, solver_groups) = match self.tips.get(&collider) {
+            Some(old) => (old.groups, old.solver_groups),
+            None => (co.collision_groups(), co.solver_groups()),
         };
-        match fingertip.facing() {
+        let facing = match fingertip.facing() {
             // A backed fingertip: rapier's narrow phase computes its pairs (its own groups),
             // and the hooks keep only the solver contacts behind its flat face (`hooks`).
             Some([x, y, z]) if !fingertip.backing().is_free() => {
@@ -193,14 +186,14 @@ impl SoftContacts {
                         | ActiveHooks::FILTER_CONTACT_PAIRS
                         | ActiveHooks::MODIFY_SOLVER_CONTACTS,
                 );
-                self.backed.insert(collider, Vector3::new(x, y, z));
+                Some(Vector3::new(x, y, z))
             }
             _ => {
                 co.set_collision_groups(InteractionGroups::none());
                 co.set_solver_groups(InteractionGroups::none());
-                self.backed.remove(&collider);
+                None
             }
-        }
+        };
         co.set_active_collision_types(
             co.active_collision_types()
                 | ActiveCollisionTypes::KINEMATIC_FIXED
@@ -209,17 +202,15 @@ impl SoftContacts {
         // A pair's model holds the fingertips' own: rebuilt with the new one on first use.
         self.soft_pairs
             .retain(|(a, b), _| *a != collider && *b != collider);
-        self.soft_colliders.insert(collider);
-        self.tip_models
-            .insert(collider, Arc::new(Model::of_tip(&fingertip)));
-        self.tactile.retain(|(h, _)| *h != collider);
-        if let Some(grid) = fingertip.tactile() {
-            self.tactile.push((collider, TactileSlot::new(*grid)));
-            self.tactile.sort_unstable_by_key(|(h, _)| raw(*h));
-        }
-        self.tips.insert(collider, fingertip);
-        self.groups.insert(collider, groups);
-        self.solver_groups.insert(collider, solver_groups);
+        self.hook_view.insert(collider, facing);
+        let record = TipRecord {
+            model: Arc::new(Model::of_tip(&fingertip)),
+            tactile: fingertip.tactile().map(|grid| TactileSlot::new(*grid)),
+            fingertip,
+            groups,
+            solver_groups,
+        };
+        self.tips.insert(collider, record);
         // In handle order, kept sorted by insertion (not rebuilt: N registrations were
         // quadratic).
         match self
@@ -239,7 +230,7 @@ impl SoftContacts {
 
     /// The fingertip registered on `collider`.
     pub fn fingertip(&self, collider: ColliderHandle) -> Option<&SoftFingertip> {
-        self.tips.get(&collider)
+        self.tips.get(&collider).map(|t| &t.fingertip)
     }
 
     /// The soft contacts of the last step.
@@ -269,20 +260,51 @@ impl SoftContacts {
         self.accuracy = accuracy;
     }
 
+    /// The tactile image of the fingertip `collider` after the last step (`None` unless the
+    /// fingertip was built with a pad, [`SoftFingertipBuilder::tactile`]). Computed on the
+    /// first read after a step.
+    ///
+    /// [`SoftFingertipBuilder::tactile`]: crate::SoftFingertipBuilder::tactile
+    pub fn tactile_image(&self, collider: ColliderHandle) -> Option<&TactileImage> {
+        let slot = self.tips.get(&collider)?.tactile.as_ref()?;
+        Some(slot.image(collider, &self.contacts))
+    }
+
+    /// Every tactile image, in the fingertips' handle order (each computed on its first read
+    /// after a step).
+    pub fn tactile_images(&self) -> impl Iterator<Item = (ColliderHandle, &TactileImage)> {
+        self.tip_order.iter().filter_map(|(h, _)| {
+            let slot = self.tips.get(h)?.tactile.as_ref()?;
+            Some((*h, slot.image(*h, &self.contacts)))
+        })
+    }
+
+    /// Marks the images stale after a step (from the readout; read-only for the physics):
+    /// keeps each fingertip's orientation for the deferred image.
+    pub(crate) fn update_tactile(&mut self, colliders: &ColliderSet) {
+        for (handle, tip) in &mut self.tips {
+            if let Some(slot) = &mut tip.tactile {
+                slot.refresh(colliders.get(*handle).map(|c| {
+                    let q = c.position().rotation;
+                    [q.x as f64, q.y as f64, q.z as f64, q.w as f64]
+                }));
+            }
+        }
+    }
+
     /// The contact model of a geometry (the fingertip's, or the combined one of two).
     pub(crate) fn model(&mut self, g: &Geom) -> Option<Arc<Model>> {
         if g.soft_pair {
             let (a, b) = (self.tips.get(&g.tip)?, self.tips.get(&g.other)?);
-            let (ma, mb) = (
-                self.tip_models.get(&g.tip)?.clone(),
-                self.tip_models.get(&g.other)?.clone(),
-            );
             self.soft_pairs
                 .entry((g.tip, g.other))
-                .or_insert_with(|| Model::of_pair(a, b, ma, mb).map(Arc::new))
+                .or_insert_with(|| {
+                    let (ma, mb) = (a.model.clone(), b.model.clone());
+                    Model::of_pair(&a.fingertip, &b.fingertip, ma, mb).map(Arc::new)
+                })
                 .clone()
         } else {
-            let base = self.tip_models.get(&g.tip)?;
+            let base = &self.tips.get(&g.tip)?.model;
             if g.touch.counterpart.is_plane() {
                 return Some(base.clone());
             }

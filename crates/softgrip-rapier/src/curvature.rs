@@ -41,7 +41,7 @@ use rapier3d::parry::shape::{Shape, Triangle, TypedShape};
 use rapier3d::prelude::{Aabb, Collider, Pose, Vector};
 use softgrip_law::{Counterpart, MAX_RELATIVE_CURVATURE};
 
-use crate::detect::{to_f32, to_f64};
+use crate::boundary::{to_f32, to_f64};
 
 /// The dihedral angle from which two facets meet at a sharp edge, not a tessellated smooth
 /// surface: 30° \[rad\].

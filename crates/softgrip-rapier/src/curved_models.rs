@@ -8,8 +8,8 @@ use rapier3d::prelude::ColliderHandle;
 
 use crate::counters::SoftCounters;
 use crate::curvature::Touch;
-use crate::detect::Model;
 use crate::fast_hash::FastMap;
+use crate::model::Model;
 
 /// A contact: (fingertip, other).
 type Key = (ColliderHandle, ColliderHandle);

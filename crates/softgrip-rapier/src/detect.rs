@@ -9,8 +9,6 @@
 //! (trimesh, compound, heightfield) parry returns the best single contact, so a ball over a
 //! shared edge or vertex gives one contact, never one per triangle.
 
-use std::sync::Arc;
-
 use nalgebra::Vector3;
 use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query;
@@ -18,13 +16,13 @@ use rapier3d::prelude::{
     BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, NarrowPhase,
     QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
 };
-use softgrip_law::{Backing, ContactLaw, ContactParams};
 
+use crate::boundary::{raw, to_f64};
 use crate::counters::SoftCounters;
 use crate::curvature::{self, Touch};
 use crate::fast_hash::FastMap;
 use crate::fingertip::SoftFingertip;
-use crate::series::SeriesLaw;
+use crate::tip_record::TipRecord;
 
 /// The compression `delta` \[m\] of the law from parry's signed distance `dist` \[m\] (negative =
 /// penetration): `delta = -dist`. The one place where the engine's sign convention meets the
@@ -38,105 +36,6 @@ use crate::series::SeriesLaw;
 #[inline]
 pub fn compression_from_signed_distance(dist: f64) -> f64 {
     -dist
-}
-
-/// The law and coefficients of one contact (a fingertip on a rigid body, or two fingertips).
-#[derive(Debug, Clone)]
-pub(crate) struct Model {
-    pub law: ContactLaw,
-    /// Hunt-Crossley dissipation coefficient `alpha` [s/m]: `F (1 + alpha d delta/dt)`.
-    pub alpha: f64,
-    pub friction: f64,
-    /// Torsional friction from the contact patch is on.
-    pub torsion: bool,
-    /// Effective radius R of the contact \[m\].
-    pub radius: f64,
-    /// Two fingertips: the readout reports the contact on both (`readout::assemble`).
-    pub soft_pair: bool,
-    /// Two fingertips of which one is backed, in series (`series`): the split of the
-    /// approach and each fingertip's own model, for the readout.
-    pub series: Option<Series>,
-    /// The fingertip's construction (a combined pair of free fingertips: free).
-    pub backing: Backing,
-    /// The world direction of the patch's first semi-axis (`curvature::Touch::direction`);
-    /// zero for a plane or a pair of fingertips (a disc: any tangent).
-    pub patch_direction: Vector3<f64>,
-}
-
-/// The parts of a pair in series: its law (for the split) and the two fingertips' own models.
-#[derive(Debug, Clone)]
-pub(crate) struct Series {
-    pub law: Arc<SeriesLaw>,
-    /// The model of the pair's first fingertip (`Geom::tip`) against a rigid body.
-    pub first: Arc<Model>,
-    /// The model of its second fingertip (`Geom::other`).
-    pub second: Arc<Model>,
-}
-
-impl Model {
-    pub(crate) fn of_tip(tip: &SoftFingertip) -> Self {
-        Self {
-            law: tip.law().clone(),
-            alpha: tip.damping_alpha(),
-            friction: tip.friction(),
-            torsion: tip.torsional_friction(),
-            radius: tip.radius(),
-            soft_pair: false,
-            series: None,
-            backing: tip.backing(),
-            patch_direction: Vector3::zeros(),
-        }
-    }
-
-    /// Two fingertips `a` and `b` (their own models `model_a`, `model_b`): the larger
-    /// dissipation coefficient alpha and the geometric mean of the frictions; torsional
-    /// friction only if both have it. Both free: one combined law (combined E*, R and nu,
-    /// `ContactParams::try_combine`, `a`'s level). Either backed: the two own laws in series
-    /// ([`SeriesLaw`]), normalised by `a`'s E* and the larger radius.
-    pub(crate) fn of_pair(
-        a: &SoftFingertip,
-        b: &SoftFingertip,
-        model_a: Arc<Model>,
-        model_b: Arc<Model>,
-    ) -> Option<Self> {
-        let (law, radius, series) = if a.backing().is_free() && b.backing().is_free() {
-            let p = ContactParams::try_combine(a.material(), a.radius(), b.material(), b.radius())
-                .ok()?;
-            (ContactLaw::try_new(p, a.level()).ok()?, p.radius(), None)
-        } else {
-            let radius = a.radius().max(b.radius());
-            let reference = ContactParams::try_from_parts(
-                a.material().effective_modulus(),
-                radius,
-                a.material().poisson_ratio(),
-            )
-            .ok()?;
-            let series = Arc::new(SeriesLaw::new(
-                model_a.law.clone(),
-                model_b.law.clone(),
-                reference.effective_modulus(),
-                radius,
-            ));
-            let law = ContactLaw::custom(reference, series.clone()).ok()?;
-            let parts = Series {
-                law: series,
-                first: model_a,
-                second: model_b,
-            };
-            (law, radius, Some(parts))
-        };
-        Some(Self {
-            alpha: a.damping_alpha().max(b.damping_alpha()),
-            friction: (a.friction() * b.friction()).sqrt(),
-            torsion: a.torsional_friction() && b.torsional_friction(),
-            radius,
-            soft_pair: true,
-            series,
-            law,
-            backing: Backing::Free,
-            patch_direction: Vector3::zeros(),
-        })
-    }
 }
 
 /// One soft contact at the current poses.
@@ -161,26 +60,12 @@ pub(crate) struct Geom {
     pub touch: Touch,
 }
 
-/// Converts a glam `f32` vector into the plugin's `f64` algebra (the one boundary).
-#[inline]
-pub(crate) fn to_f64(v: Vector) -> Vector3<f64> {
-    Vector3::new(v.x as f64, v.y as f64, v.z as f64)
-}
-
-/// Converts the plugin's `f64` vector back to rapier's `f32` (the other boundary).
-#[inline]
-pub(crate) fn to_f32(v: &Vector3<f64>) -> Vector {
-    Vector::new(v.x as f32, v.y as f32, v.z as f32)
-}
-
 /// Everything the detection reads.
 pub(crate) struct Scene<'a> {
     pub bodies: &'a RigidBodySet,
     pub colliders: &'a ColliderSet,
     pub narrow_phase: &'a NarrowPhase,
     pub broad_phase: &'a BroadPhaseBvh,
-    /// The fingertips' collision groups (their colliders' own are `none()`).
-    pub groups: &'a FastMap<ColliderHandle, InteractionGroups>,
     /// The fingertips and their collision groups, in handle order.
     pub tip_order: &'a [(ColliderHandle, InteractionGroups)],
     /// The world's gravity magnitude [m/s^2]: what a body at rest gains in speed over the step
@@ -207,7 +92,7 @@ pub(crate) struct Scene<'a> {
 /// their AABBs.
 pub(crate) fn detect(
     scene: &Scene<'_>,
-    tips: &FastMap<ColliderHandle, SoftFingertip>,
+    tips: &FastMap<ColliderHandle, TipRecord>,
     dt: f64,
     out: &mut Vec<Geom>,
     candidates: &mut Vec<(ColliderHandle, f32)>,
@@ -276,7 +161,7 @@ impl<'a> Tip<'a> {
     /// centre (a non-finite centre is counted).
     fn of(
         scene: &Scene<'a>,
-        tips: &FastMap<ColliderHandle, SoftFingertip>,
+        tips: &FastMap<ColliderHandle, TipRecord>,
         handle: ColliderHandle,
         groups: InteractionGroups,
         dt: f64,
@@ -307,7 +192,9 @@ impl<'a> Tip<'a> {
             r: ball.radius,
             aabb: collider.compute_aabb(),
             dt: dt as f32,
-            facing: tips.get(&handle).and_then(|t| facing_world(t, collider)),
+            facing: tips
+                .get(&handle)
+                .and_then(|t| facing_world(&t.fingertip, collider)),
         })
     }
 
@@ -377,7 +264,7 @@ impl<'a> Tip<'a> {
     fn contact_with(
         &self,
         scene: &Scene<'_>,
-        tips: &FastMap<ColliderHandle, SoftFingertip>,
+        tips: &FastMap<ColliderHandle, TipRecord>,
         other_h: ColliderHandle,
         gap: f32,
         counters: &mut SoftCounters,
@@ -390,17 +277,10 @@ impl<'a> Tip<'a> {
         if self.body.is_some() && self.body == other_body {
             return None;
         }
-        // A fingertip's own collision groups are `none()` (moved into `scene.groups`).
-        let soft_pair = tips.contains_key(&other_h);
-        let other_groups = if soft_pair {
-            scene
-                .groups
-                .get(&other_h)
-                .copied()
-                .unwrap_or(other_co.collision_groups())
-        } else {
-            other_co.collision_groups()
-        };
+        // A fingertip's own collision groups are `none()` (moved into its record).
+        let other_tip = tips.get(&other_h);
+        let soft_pair = other_tip.is_some();
+        let other_groups = other_tip.map_or(other_co.collision_groups(), |t| t.groups);
         if !self.groups.test(other_groups) {
             return None;
         }
@@ -458,7 +338,9 @@ impl<'a> Tip<'a> {
                 curvature::counterpart_at(other_co, &s.point_other, &s.normal, f64::from(self.r));
             return (!tip_behind).then_some(Geom { touch, ..g });
         }
-        let other_facing = tips.get(&other_h).and_then(|t| facing_world(t, other_co));
+        let other_facing = tips
+            .get(&other_h)
+            .and_then(|t| facing_world(&t.fingertip, other_co));
         let other_behind = behind_face(other_facing, &s.normal);
         match (tip_behind, other_behind) {
             (false, false) => Some(g),
@@ -553,10 +435,4 @@ fn surfaces(c: &query::Contact, counters: &mut SoftCounters) -> Option<Surfaces>
         normal: n / norm,
         dist,
     })
-}
-
-/// A collider handle as a sortable pair (index, generation).
-#[inline]
-pub(crate) fn raw(h: ColliderHandle) -> (u32, u32) {
-    h.into_raw_parts()
 }

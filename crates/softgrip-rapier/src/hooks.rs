@@ -12,8 +12,6 @@
 //!
 //! [`SoftContacts::register`]: crate::SoftContacts::register
 
-use std::collections::{HashMap, HashSet};
-
 use nalgebra::Vector3;
 use rapier3d::prelude::{
     ColliderHandle, ColliderSet, CollisionEvent, ContactModificationContext, ContactPair,
@@ -21,50 +19,46 @@ use rapier3d::prelude::{
     SolverFlags,
 };
 
-use crate::detect::{behind_face, to_f64};
+use crate::boundary::to_f64;
+use crate::contacts::HookView;
+use crate::detect::behind_face;
 use crate::link_contacts::LinkContacts;
 
 /// The user's [`PhysicsHooks`], with the pairs of a fingertip answered by the plugin.
 pub(crate) struct SoftHooks<'a> {
-    soft: &'a HashSet<ColliderHandle>,
-    /// The backed fingertips and their facing in their collider's frame.
-    backed: &'a HashMap<ColliderHandle, Vector3<f64>>,
+    /// The fingertips, each with its facing in its collider's frame if it is backed.
+    soft: &'a HookView,
     /// rapier's contacts of multibody links along directions they cannot move (dropped).
     links: &'a LinkContacts,
     user: &'a dyn PhysicsHooks,
 }
 
 impl<'a> SoftHooks<'a> {
-    /// `user`'s hooks, for every pair without a collider of `soft`; `backed` are the backed
-    /// fingertips (a subset of `soft`) with their facing.
+    /// `user`'s hooks, for every pair without a collider of `soft`; the backed fingertips
+    /// are those of `soft` with a facing.
     pub(crate) fn new(
-        soft: &'a HashSet<ColliderHandle>,
-        backed: &'a HashMap<ColliderHandle, Vector3<f64>>,
+        soft: &'a HookView,
         links: &'a LinkContacts,
         user: &'a dyn PhysicsHooks,
     ) -> Self {
-        Self {
-            soft,
-            backed,
-            links,
-            user,
-        }
+        Self { soft, links, user }
     }
 
     fn is_soft_pair(&self, a: ColliderHandle, b: ColliderHandle) -> bool {
-        self.soft.contains(&a) || self.soft.contains(&b)
+        self.soft.contains_key(&a) || self.soft.contains_key(&b)
     }
 
     /// A pair that rapier's solver handles where it is behind a backed fingertip's face:
     /// at least one backed fingertip, and no free one (a free fingertip is soft all round).
     fn is_rigid_capable(&self, a: ColliderHandle, b: ColliderHandle) -> bool {
-        let free = |h| self.soft.contains(&h) && !self.backed.contains_key(&h);
-        (self.backed.contains_key(&a) || self.backed.contains_key(&b)) && !free(a) && !free(b)
+        let backed = |h| matches!(self.soft.get(&h), Some(Some(_)));
+        let free = |h| matches!(self.soft.get(&h), Some(None));
+        (backed(a) || backed(b)) && !free(a) && !free(b)
     }
 
     /// The world facing of backed fingertip `h` (its collider's rotation applied to it).
     fn facing(&self, colliders: &ColliderSet, h: ColliderHandle) -> Option<Vector3<f64>> {
-        let f = self.backed.get(&h)?;
+        let f = self.soft.get(&h)?.as_ref()?;
         let co = colliders.get(h)?;
         let local = rapier3d::prelude::Vector::new(f.x as f32, f.y as f32, f.z as f32);
         Some(to_f64(co.position().rotation * local))
@@ -142,18 +136,18 @@ impl PhysicsHooks for SoftHooks<'_> {
 
 /// The user's [`EventHandler`], without the events of a fingertip's pairs.
 pub(crate) struct SoftEvents<'a> {
-    soft: &'a HashSet<ColliderHandle>,
+    soft: &'a HookView,
     user: &'a dyn EventHandler,
 }
 
 impl<'a> SoftEvents<'a> {
     /// `user`'s handler, for every event without a collider of `soft`.
-    pub(crate) fn new(soft: &'a HashSet<ColliderHandle>, user: &'a dyn EventHandler) -> Self {
+    pub(crate) fn new(soft: &'a HookView, user: &'a dyn EventHandler) -> Self {
         Self { soft, user }
     }
 
     fn is_soft_pair(&self, a: ColliderHandle, b: ColliderHandle) -> bool {
-        self.soft.contains(&a) || self.soft.contains(&b)
+        self.soft.contains_key(&a) || self.soft.contains_key(&b)
     }
 }
 

@@ -61,7 +61,7 @@ use rapier3d::prelude::{
 };
 
 use crate::bodies::{KinematicVelocity, free_mobility};
-use crate::detect::to_f64;
+use crate::boundary::to_f64;
 use crate::joint_sweeps::{self, HARD_COMPLIANCE, SweepRow};
 use crate::multibody::{Generalised, Link, LinkCtx, motor_fold};
 use crate::solve::BodyState;

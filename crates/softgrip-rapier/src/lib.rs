@@ -3,6 +3,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 mod bodies;
+mod boundary;
 mod contacts;
 mod counters;
 mod curvature;
@@ -15,6 +16,7 @@ mod hooks;
 mod joint_sweeps;
 mod jointed;
 mod link_contacts;
+mod model;
 mod multibody;
 mod presets;
 mod readout;
@@ -26,6 +28,7 @@ mod step;
 mod substep;
 mod tactile;
 mod taxels;
+mod tip_record;
 mod world;
 
 pub use contacts::SoftContacts;

@@ -42,7 +42,7 @@ use rapier3d::prelude::{
     RigidBodySet,
 };
 
-use crate::detect::to_f64;
+use crate::boundary::to_f64;
 use crate::multibody::rapier_mobility;
 use crate::rigid::IMMOBILE;
 

@@ -41,7 +41,7 @@ use rapier3d::prelude::{
 };
 
 use crate::bodies::{KinematicPath, interpolate};
-use crate::detect::{to_f32, to_f64};
+use crate::boundary::{to_f32, to_f64};
 use crate::fast_hash::FastMap;
 use crate::solve::BodyState;
 

@@ -8,8 +8,9 @@ use nalgebra::Vector3;
 use rapier3d::prelude::ColliderHandle;
 use softgrip_law::{ContactLaw, ContactPatch, ContactReading, Regime};
 
-use crate::detect::{Model, Series, raw};
+use crate::boundary::raw;
 use crate::fast_hash::FastMap;
+use crate::model::{Model, Series};
 use crate::solve::Row;
 
 /// One soft contact after a step: the law crate's plain [`ContactReading`] (`reading`; the

@@ -25,8 +25,9 @@ use rapier3d::prelude::{ColliderHandle, EventHandler, PhysicsHooks, PhysicsWorld
 use softgrip_law::Regime;
 
 use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
+use crate::boundary::{to_f32, to_f64};
 use crate::contacts::{PairState, Scratch, SoftContacts};
-use crate::detect::{self, Geom, Scene, compression_from_signed_distance, to_f32, to_f64};
+use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
 use crate::hooks::{SoftEvents, SoftHooks};
 use crate::multibody::{self, LinkCtx};
 use crate::readout;
@@ -58,12 +59,11 @@ impl SoftContacts {
         events: &dyn EventHandler,
     ) {
         // The set is read by the adapters while the rest of `self` is written.
-        let soft = std::mem::take(&mut self.soft_colliders);
-        let backed = std::mem::take(&mut self.backed);
+        let soft = std::mem::take(&mut self.hook_view);
         let mut links = std::mem::take(&mut self.link_contacts);
         links.refresh(world);
         let (hooks, events) = (
-            SoftHooks::new(&soft, &backed, &links, hooks),
+            SoftHooks::new(&soft, &links, hooks),
             SoftEvents::new(&soft, events),
         );
         Step {
@@ -73,8 +73,7 @@ impl SoftContacts {
             events: &events,
         }
         .run();
-        self.soft_colliders = soft;
-        self.backed = backed;
+        self.hook_view = soft;
         let dropped = links.take_dropped();
         self.counters.locked_link_contacts += dropped;
         self.counters.immobile_rows += dropped;
@@ -122,7 +121,6 @@ impl Step<'_> {
             colliders: &self.physics.colliders,
             narrow_phase: &self.physics.narrow_phase,
             broad_phase: &self.physics.broad_phase,
-            groups: &soft.groups,
             tip_order: &soft.tip_order,
             gravity: self.physics.gravity.length(),
         };
@@ -190,9 +188,7 @@ impl Step<'_> {
         // 5. Readout.
         readout::assemble(&mut scratch.accums, dt, &mut self.soft.contacts);
         self.soft.scratch = scratch;
-        if !self.soft.tactile.is_empty() {
-            self.soft.update_tactile(&self.physics.colliders);
-        }
+        self.soft.update_tactile(&self.physics.colliders);
     }
 
     /// `n` substeps of `h` \[s\]: fresh contacts (the first substep's are the prepared ones),

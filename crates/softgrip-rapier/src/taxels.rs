@@ -3,9 +3,9 @@
 
 use std::sync::OnceLock;
 
-use rapier3d::prelude::{ColliderHandle, ColliderSet};
+use rapier3d::prelude::ColliderHandle;
 
-use crate::contacts::SoftContacts;
+use crate::readout::TipContact;
 use crate::tactile::TactileGrid;
 
 /// Mean pressure \[Pa\] of each taxel of a fingertip's pad over the last step, row-major
@@ -351,77 +351,59 @@ impl TactileSlot {
     }
 }
 
-impl SoftContacts {
-    /// The tactile image of the fingertip `collider` after the last step (`None` unless the
-    /// fingertip was built with a pad, [`SoftFingertipBuilder::tactile`]). Computed on the
-    /// first read after a step.
-    ///
-    /// [`SoftFingertipBuilder::tactile`]: crate::SoftFingertipBuilder::tactile
-    pub fn tactile_image(&self, collider: ColliderHandle) -> Option<&TactileImage> {
-        self.tactile
-            .iter()
-            .find(|(h, _)| *h == collider)
-            .map(|(h, slot)| self.image_of(*h, slot))
-    }
-
-    /// Every tactile image, in the fingertips' handle order (each computed on its first read
-    /// after a step).
-    pub fn tactile_images(&self) -> impl Iterator<Item = (ColliderHandle, &TactileImage)> {
-        self.tactile
-            .iter()
-            .map(|(h, slot)| (*h, self.image_of(*h, slot)))
-    }
-
-    /// The image of `slot` (fingertip `handle`), computing it if not read since the step.
-    fn image_of<'a>(&'a self, handle: ColliderHandle, slot: &'a TactileSlot) -> &'a TactileImage {
-        slot.image.get_or_init(|| {
-            let mut image = TactileImage::new(slot.grid);
-            if let Some(q) = slot.rotation {
-                self.lay_contacts(handle, q, &mut image);
+impl TactileSlot {
+    /// The image of the last step of the fingertip `handle` (its rows of `contacts`),
+    /// computing it if not read since the step.
+    pub(crate) fn image(&self, handle: ColliderHandle, contacts: &[TipContact]) -> &TactileImage {
+        self.image.get_or_init(|| {
+            let mut image = TactileImage::new(self.grid);
+            if let Some(q) = self.rotation {
+                lay_contacts(contacts, handle, q, &mut image);
             }
             image
         })
     }
 
-    /// Marks the images stale after a step (from the readout; read-only for the physics):
-    /// keeps each fingertip's orientation for the deferred image (`image_of`).
-    pub(crate) fn update_tactile(&mut self, colliders: &ColliderSet) {
-        for (handle, slot) in &mut self.tactile {
-            slot.image.take();
-            slot.rotation = colliders.get(*handle).map(|c| {
-                let q = c.position().rotation;
-                [q.x as f64, q.y as f64, q.z as f64, q.w as f64]
-            });
-        }
+    /// Marks the image stale after a step and keeps the fingertip's orientation at its end
+    /// for the deferred image (`image`): `rotation` `[x, y, z, w]`, `None` if its collider is
+    /// gone.
+    pub(crate) fn refresh(&mut self, rotation: Option<[f64; 4]>) {
+        self.image.take();
+        self.rotation = rotation;
     }
+}
 
-    /// Lays each contact of fingertip `handle` (orientation `q`) on its pad's `image`. A
-    /// soft-soft pair has a readout row for each of its two fingertips, so every pad takes
-    /// only the rows of its own fingertip.
-    fn lay_contacts(&self, handle: ColliderHandle, q: [f64; 4], image: &mut TactileImage) {
-        for c in self.contacts.iter().filter(|c| c.fingertip == handle) {
-            // The patch's direction from the fingertip's centre: against the normal
-            // (other -> fingertip).
-            let local = rotate_inverse(q, c.normal.map(|n| -n));
-            let Some(center) = image.grid.coordinates(local) else {
-                continue;
-            };
-            let patch = c.patch();
-            if patch.is_disc() {
-                image.add_disc(center, patch.radius, c.normal_force);
-                continue;
-            }
-            // The first semi-axis in pad coordinates: the image of a short step along it
-            // from the contact's point on the sphere.
-            let d = rotate_inverse(q, c.patch_direction);
-            let n = crate::tactile::norm(local);
-            let step: [f64; 3] = std::array::from_fn(|i| local[i] / n + 1e-6 * d[i]);
-            let Some(ahead) = image.grid.coordinates(step) else {
-                continue;
-            };
-            let axis = [ahead[0] - center[0], ahead[1] - center[1]];
-            image.add_ellipse(center, [patch.radius, patch.radius2], axis, c.normal_force);
+/// Lays each contact of fingertip `handle` (orientation `q`) on its pad's `image`. A
+/// soft-soft pair has a readout row for each of its two fingertips, so every pad takes only
+/// the rows of its own fingertip.
+fn lay_contacts(
+    contacts: &[TipContact],
+    handle: ColliderHandle,
+    q: [f64; 4],
+    image: &mut TactileImage,
+) {
+    for c in contacts.iter().filter(|c| c.fingertip == handle) {
+        // The patch's direction from the fingertip's centre: against the normal
+        // (other -> fingertip).
+        let local = rotate_inverse(q, c.normal.map(|n| -n));
+        let Some(center) = image.grid.coordinates(local) else {
+            continue;
+        };
+        let patch = c.patch();
+        if patch.is_disc() {
+            image.add_disc(center, patch.radius, c.normal_force);
+            continue;
         }
+        // The first semi-axis in pad coordinates: the image of a short step along it
+        // from the contact's point on the sphere.
+        let d = rotate_inverse(q, c.patch_direction);
+        let n = crate::tactile::norm(local);
+        let step: [f64; 3] = std::array::from_fn(|i| local[i] / n + 1e-6 * d[i]);
+        let Some(ahead) = image.grid.coordinates(step) else {
+            continue;
+        };
+        let axis = [ahead[0] - center[0], ahead[1] - center[1]];
+        image.add_ellipse(center, [patch.radius, patch.radius2], axis, c.normal_force);
     }
 }
 

@@ -53,7 +53,7 @@ impl SoftWorld {
             h_drift: h,
             passes: w.integration_parameters.num_solver_iterations.max(1),
             sweeps: w.integration_parameters.num_internal_pgs_iterations,
-            gravity: crate::detect::to_f64(w.gravity),
+            gravity: crate::boundary::to_f64(w.gravity),
         };
         crate::jointed::sweeps_needed(&w.bodies, &ctx, body)
     }

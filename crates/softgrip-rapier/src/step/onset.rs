@@ -2,7 +2,8 @@
 
 use super::Step;
 use crate::contacts::Scratch;
-use crate::detect::{Model, compression_from_signed_distance};
+use crate::detect::compression_from_signed_distance;
+use crate::model::Model;
 use crate::solve::{self, Row};
 use crate::substep::{self, theta_blend};
 

@@ -4,8 +4,9 @@
 use nalgebra::Vector3;
 
 use super::Step;
+use crate::boundary::{to_f32, to_f64};
 use crate::contacts::Scratch;
-use crate::detect::{compression_from_signed_distance, to_f32, to_f64};
+use crate::detect::compression_from_signed_distance;
 use crate::solve;
 use crate::substep;
 
