@@ -29,6 +29,7 @@ macro_rules! core_counterpart_file {
 pub const CORE_COUNTERPART_FILES: &[FeFile] = &[
     core_counterpart_file!("ball/core/force_nu0.33_t0.45_k3.csv", Force, 0.33, 0.45, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.45, nu = 0.33, x = 0.01..0.36"),
     core_counterpart_file!("ball/core/force_nu0.36_t0.3_k1.csv", Force, 0.36, 0.3, Counterpart::Ball { k: 1.0 }, "held out of every fit: ball k = 1, core t/R = 0.3, nu = 0.36, x = 0.01..0.23"),
+    core_counterpart_file!("ball/core/force_nu0.3_t0.4_k2.csv", Force, 0.3, 0.4, Counterpart::Ball { k: 2.0 }, "ball k = 2, core t/R = 0.4, nu = 0.3, x = 0.01..0.33"),
     core_counterpart_file!("ball/core/force_nu0.48_t0.3_k1.csv", Force, 0.48, 0.3, Counterpart::Ball { k: 1.0 }, "ball k = 1, core t/R = 0.3, nu = 0.48, x = 0.01..0.2"),
     core_counterpart_file!("ball/core/force_nu0.48_t0.3_k3.csv", Force, 0.48, 0.3, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.3, nu = 0.48, x = 0.01..0.2"),
     core_counterpart_file!("ball/core/force_nu0.48_t0.4_k2.csv", Force, 0.48, 0.4, Counterpart::Ball { k: 2.0 }, "held out of every fit: ball k = 2, core t/R = 0.4, nu = 0.48, x = 0.01..0.29"),
@@ -38,6 +39,8 @@ pub const CORE_COUNTERPART_FILES: &[FeFile] = &[
     core_counterpart_file!("ball/core/pressure_nu0.33_t0.45_k3_d0.1.csv", Pressure, 0.33, 0.45, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.45, nu = 0.33, pressure at x = 0.1"),
     core_counterpart_file!("ball/core/pressure_nu0.33_t0.45_k3_d0.3.csv", Pressure, 0.33, 0.45, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.45, nu = 0.33, pressure at x = 0.3"),
     core_counterpart_file!("ball/core/pressure_nu0.36_t0.3_k1_d0.1.csv", Pressure, 0.36, 0.3, Counterpart::Ball { k: 1.0 }, "held out of every fit: ball k = 1, core t/R = 0.3, nu = 0.36, pressure at x = 0.1"),
+    core_counterpart_file!("ball/core/pressure_nu0.3_t0.4_k2_d0.1.csv", Pressure, 0.3, 0.4, Counterpart::Ball { k: 2.0 }, "ball k = 2, core t/R = 0.4, nu = 0.3, pressure at x = 0.1"),
+    core_counterpart_file!("ball/core/pressure_nu0.3_t0.4_k2_d0.3.csv", Pressure, 0.3, 0.4, Counterpart::Ball { k: 2.0 }, "ball k = 2, core t/R = 0.4, nu = 0.3, pressure at x = 0.3"),
     core_counterpart_file!("ball/core/pressure_nu0.48_t0.3_k1_d0.1.csv", Pressure, 0.48, 0.3, Counterpart::Ball { k: 1.0 }, "ball k = 1, core t/R = 0.3, nu = 0.48, pressure at x = 0.1"),
     core_counterpart_file!("ball/core/pressure_nu0.48_t0.3_k3_d0.1.csv", Pressure, 0.48, 0.3, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.3, nu = 0.48, pressure at x = 0.1"),
     core_counterpart_file!("ball/core/pressure_nu0.48_t0.4_k2_d0.1.csv", Pressure, 0.48, 0.4, Counterpart::Ball { k: 2.0 }, "held out of every fit: ball k = 2, core t/R = 0.4, nu = 0.48, pressure at x = 0.1"),
