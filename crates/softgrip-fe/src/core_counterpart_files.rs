@@ -36,6 +36,7 @@ pub const CORE_COUNTERPART_FILES: &[FeFile] = &[
     core_counterpart_file!("ball/core/force_nu0.48_t0.5_k1.csv", Force, 0.48, 0.5, Counterpart::Ball { k: 1.0 }, "ball k = 1, core t/R = 0.5, nu = 0.48, x = 0.01..0.38"),
     core_counterpart_file!("ball/core/force_nu0.48_t0.5_k3.csv", Force, 0.48, 0.5, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.5, nu = 0.48, x = 0.01..0.38"),
     core_counterpart_file!("ball/core/force_nu0.4_t0.35_k1.5.csv", Force, 0.4, 0.35, Counterpart::Ball { k: 1.5 }, "held out of every fit: ball k = 1.5, core t/R = 0.35, nu = 0.4, x = 0.01..0.27"),
+    core_counterpart_file!("ball/core/force_nu0.4_t0.5_k3.csv", Force, 0.4, 0.5, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.5, nu = 0.4, x = 0.01..0.4"),
     core_counterpart_file!("ball/core/pressure_nu0.33_t0.45_k3_d0.1.csv", Pressure, 0.33, 0.45, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.45, nu = 0.33, pressure at x = 0.1"),
     core_counterpart_file!("ball/core/pressure_nu0.33_t0.45_k3_d0.3.csv", Pressure, 0.33, 0.45, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.45, nu = 0.33, pressure at x = 0.3"),
     core_counterpart_file!("ball/core/pressure_nu0.36_t0.3_k1_d0.1.csv", Pressure, 0.36, 0.3, Counterpart::Ball { k: 1.0 }, "held out of every fit: ball k = 1, core t/R = 0.3, nu = 0.36, pressure at x = 0.1"),
@@ -49,4 +50,6 @@ pub const CORE_COUNTERPART_FILES: &[FeFile] = &[
     core_counterpart_file!("ball/core/pressure_nu0.48_t0.5_k3_d0.1.csv", Pressure, 0.48, 0.5, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.5, nu = 0.48, pressure at x = 0.1"),
     core_counterpart_file!("ball/core/pressure_nu0.48_t0.5_k3_d0.3.csv", Pressure, 0.48, 0.5, Counterpart::Ball { k: 3.0 }, "ball k = 3, core t/R = 0.5, nu = 0.48, pressure at x = 0.3"),
     core_counterpart_file!("ball/core/pressure_nu0.4_t0.35_k1.5_d0.1.csv", Pressure, 0.4, 0.35, Counterpart::Ball { k: 1.5 }, "held out of every fit: ball k = 1.5, core t/R = 0.35, nu = 0.4, pressure at x = 0.1"),
+    core_counterpart_file!("ball/core/pressure_nu0.4_t0.5_k3_d0.1.csv", Pressure, 0.4, 0.5, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.5, nu = 0.4, pressure at x = 0.1"),
+    core_counterpart_file!("ball/core/pressure_nu0.4_t0.5_k3_d0.3.csv", Pressure, 0.4, 0.5, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.5, nu = 0.4, pressure at x = 0.3"),
 ];
