@@ -157,7 +157,10 @@ const CONFINED_SHARE: f64 = 0.036952;
 /// increasing for `s < 1` (the range keeps `s <= 0.8`).
 fn tangent(s: f64) -> f64 {
     let lam = 1.0 - s;
-    2.0 / 3.0 * (lam.powf(-2.0 / 3.0) / 3.0 + 5.0 / 3.0 * lam.powf(-8.0 / 3.0)) - 4.0 / 3.0
+    // lam^(-2/3) by a cube root (binding evaluates this ~4000 times; powf is 3-4x slower).
+    let c = lam.cbrt();
+    let m23 = 1.0 / (c * c);
+    2.0 / 3.0 * (m23 / 3.0 + 5.0 / 3.0 * m23 / (lam * lam)) - 4.0 / 3.0
 }
 
 /// The curve and map of the calibrated core law of `params` on a curved counterpart whose
