@@ -142,7 +142,14 @@ def core_ball_cases():
     # increments beyond x = 0.2 are 0.01: the t/R 0.3 case here takes 0.005 there)
     return c + [("core", 0.4, 0.35, 40, "heldout", "ball", 1.5),
                 ("core", 0.33, 0.45, 40, "heldout", "ball", 3),
-                ("core", 0.36, 0.3, 40, "heldout", "ball", 1)]
+                ("core", 0.36, 0.3, 40, "heldout", "ball", 1),
+                # session 14 (/work/fe-scratch/runs/core-s14): cores on balls at compressible nu,
+                # for the confined skin's stiffening at deep squeeze (core_map.rs,
+                # SqueezeExcess::confined): its one constant w is fitted on the first (role
+                # "main"); the other two are held out of it (a blind test, queued after it)
+                ("core", 0.3, 0.4, 40, "main", "ball", 2),
+                ("core", 0.4, 0.5, 40, "heldout", "ball", 3),
+                ("core", 0.3, 0.5, 40, "heldout", "ball", 1)]
 
 
 def cases_3d():

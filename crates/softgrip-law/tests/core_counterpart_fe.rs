@@ -1,6 +1,6 @@
 //! A skin on a rigid core pressed on a rigid ball, against softgrip's FE of it
 //! (`tests/data/fe/ball/core/`, `tools/fe`, session 11: t/R 0.3 and 0.5 at nu 0.48 on balls of
-//! R and 3R): force per curve against the number this test prints, with the 3 % as the
+//! R and 3R; sessions 12-14: t/R 0.3-0.45 at nu 0.3-0.48 on balls of R to 3R): force per curve against the number this test prints, with the 3 % as the
 //! ceiling, and the law's range against the FE's reach.
 //!
 //! `cargo test -p softgrip-law --test core_counterpart_fe -- --nocapture` prints every number.
@@ -34,26 +34,35 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
 }
 
 /// The largest force error each curve is allowed to the FE's end: what this test printed
-/// when the law was fixed (session 12), rounded up by 0.2 % (so a real change of the law
-/// breaks it). No constant of the law was fitted on these curves (`core_map`: the plane law at
-/// Hertz's patch, the bonded pad's squeeze excess at the skin's `delta/t`).
-/// `force_nu0.48_t0.4_k2.csv` was run after session 11's map and before this one was
-/// written (3.20 % with session 11's, 1.44 % with this one).
+/// when the law was fixed (session 14: the confined skin, `core_map`), rounded up by 0.2 % (so
+/// a real change of the law breaks it). One constant of the map was fitted, on one curve
+/// (`force_nu0.3_t0.4_k2.csv`, the confined skin's share `w`); the others saw none
+/// (`core_map`: the plane law at Hertz's patch, the bonded pad's squeeze excess at the skin's
+/// `delta/t`). `force_nu0.48_t0.4_k2.csv` was run after session 11's map and before session
+/// 12's was written (3.20 % with session 11's, 1.44 % with 12's and 14's).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/core/force_nu0.48_t0.3_k1.csv" => 2.42,
-        "ball/core/force_nu0.48_t0.3_k3.csv" => 3.74,
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 3.83,
         "ball/core/force_nu0.48_t0.4_k2.csv" => 1.44,
-        "ball/core/force_nu0.48_t0.5_k1.csv" => 3.26,
-        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.73,
-        // Session 13, held out: the first core on a ball away from nu = 0.48 (nu 0.4, t/R
-        // 0.35, R2/R 1.5, none of which any other run has).
-        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 3.35,
-        // Session 13, held out: a compressible skin (nu 0.33, t/R 0.45 on 3R), 10.4 % too soft
-        // at the FE's end (x = 0.36, delta/t 0.8, smallest element volume ratio 0.25).
-        "ball/core/force_nu0.33_t0.45_k3.csv" => 10.38,
-        // and a third (nu 0.36, t/R 0.3 on R): 6.57 % too soft at its end (x = 0.23, delta/t 0.77)
-        "ball/core/force_nu0.36_t0.3_k1.csv" => 6.57,
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 3.19,
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.82,
+        // Session 13, held out of the constant (the confined skin's form was chosen with them
+        // in view): the first cores on a ball away from nu = 0.48, at their FE's ends 3.35 %,
+        // 10.38 % and 6.57 % too soft with session 12's map (delta/t 0.77, 0.8, 0.77).
+        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 0.98,
+        "ball/core/force_nu0.33_t0.45_k3.csv" => 1.07,
+        "ball/core/force_nu0.36_t0.3_k1.csv" => 1.66,
+        // Session 14, the confined skin's constant fitted on it (14.02 % too soft at its end,
+        // x = 0.32, delta/t 0.8, with session 12's map; 4.03 % with the constant set to the
+        // plane form's own share and the secant `D`).
+        "ball/core/force_nu0.3_t0.4_k2.csv" => 0.95,
+        // Session 14, blind (run after w was fitted): nu 0.4, t/R 0.5 on 3R, +2.22 % at its end
+        // (x = 0.4, delta/t 0.8; 1.29 % without the confined skin: here it adds too much).
+        "ball/core/force_nu0.4_t0.5_k3.csv" => 2.22,
+        // and nu 0.3, t/R 0.5 on R: -2.39 % at x = 0.39-0.4 (delta/t 0.8; 9.23 % too soft there
+        // without the confined skin).
+        "ball/core/force_nu0.3_t0.5_k1.csv" => 2.39,
         // A curve that landed after: the target.
         _ => 2.8,
     };
@@ -61,24 +70,15 @@ fn stated_force_error(path: &str) -> f64 {
 }
 
 /// The curves the law misses the 3 % on, each within it below an x (its error there,
-/// the test allows 0.2 % more), each at the FE's last points: t/R 0.3 on 3R, +3.7 % at its end
-/// (x = 0.2, delta/t 0.67; the plane law at the patch's x = 0.15 is itself 1-2 % stiff
-/// there, t/R 0.3 at nu 0.4 and 0.49); t/R 0.5 on R, -3.3 % at its end (x = 0.38, delta/t 0.76;
-/// the plane law at the patch's x = 0.19 is itself 2 % soft, t/R 0.5 at nu 0.45). Session 13's
-/// held-out nu 0.4, t/R 0.35 on 1.5R: within 1.62 % to x = 0.25, -3.35 % at its last two
-/// points (x = 0.26-0.27, delta/t 0.74-0.77), where the FE's force over the plane law at the
-/// patch rises to 1.25 at delta/t 0.71 (nu 0.48: 1.10-1.15 at 0.70-0.74): the squeeze excess grows faster
-/// for a more compressible skin than the bonded pad's map gives. The second, nu 0.33 t/R 0.45
-/// on 3R: within 1.99 % to x = 0.31 (delta/t 0.69), then -3.0, -4.3, -6.0, -8.0, -10.4 % at
-/// x = 0.32-0.36 (delta/t 0.71-0.8, the FE's smallest element keeping 25-34 % of its volume).
-/// The third, nu 0.36 t/R 0.3 on R: within 2.51 % to x = 0.2 (delta/t 0.67), then -3.5, -4.7,
-/// -6.6 % at x = 0.21-0.23 (delta/t 0.7-0.77).
+/// the test allows 0.2 % more), each at the FE's last points, all at nu 0.48: t/R 0.3 on 3R,
+/// +3.8 % at its end (x = 0.2, delta/t 0.67; the plane law at the patch's x = 0.15 is itself
+/// 1-2 % stiff there, t/R 0.3 at nu 0.4 and 0.49); t/R 0.5 on R, -3.2 % at its end (x = 0.38,
+/// delta/t 0.76; the plane law at the patch's x = 0.19 is itself 2 % soft, t/R 0.5 at nu
+/// 0.45). The compressible skins squeezed past delta/t 0.7 (session 13: 3.4-10.4 % too soft)
+/// are within 1.07 % since session 14's confined skin (`core_map`).
 const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
-    ("ball/core/force_nu0.48_t0.3_k3.csv", 0.17, 2.82),
-    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.36, 2.50),
-    ("ball/core/force_nu0.4_t0.35_k1.5.csv", 0.25, 1.62),
-    ("ball/core/force_nu0.33_t0.45_k3.csv", 0.31, 1.99),
-    ("ball/core/force_nu0.36_t0.3_k1.csv", 0.2, 2.51),
+    ("ball/core/force_nu0.48_t0.3_k3.csv", 0.17, 2.85),
+    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.36, 2.46),
 ];
 
 #[test]
@@ -160,6 +160,11 @@ fn a_skin_on_a_core_on_a_ball_has_the_fe_contact_radius() {
             "ball/core/force_nu0.33_t0.45_k3.csv" => 0.0305,
             // and nu 0.36 t/R 0.3 on R: 3.51 % (the law's radius wider at x = 0.1-0.16)
             "ball/core/force_nu0.36_t0.3_k1.csv" => 0.0356,
+            // session 14's nu 0.3, t/R 0.4 on 2R: 3.48 % (the radius is the plane's at rho x,
+            // not changed by the confined skin)
+            "ball/core/force_nu0.3_t0.4_k2.csv" => 0.0353,
+            // and the blind nu 0.3, t/R 0.5 on R: 4.52 % (the 3 %: missed)
+            "ball/core/force_nu0.3_t0.5_k1.csv" => 0.0457,
             _ => RADIUS_TOLERANCE,
         };
         assert!(worst < tolerance, "{}: {:.2} %", file.path, 100.0 * worst);

@@ -311,6 +311,13 @@ const FLAT_CELLS: usize = 128;
 /// near `delta/t = 0.8` (`lam^(-5/3)` at lam = 0.2; on 128 cells the table would be 7.8e-7 off
 /// the form in force and 4.1e-5 in stiffness there).
 const CORE_CELLS: usize = 256;
+/// Cells of a core's tabulation on a curved counterpart (`crate::core_map`): 1.5 times the
+/// plane's, for the confined skin's tangent stiffening at the ball's true squeeze (`lam^(-8/3)`
+/// at lam = 0.2; on 256 cells the table was 3.4e-7 off the form in force and 2.1e-5 in
+/// stiffness there, on a ball of R/10; on 384 within the plane core's bounds, 1e-7, 1e-5 and
+/// 1e-8 with energy, `table_follows_the_form`). Binding builds one table of 1.5 times the
+/// knots; the hot path is the same lookup.
+const CORE_ON_CELLS: usize = 384;
 
 /// A backed construction's `chi` tabulated at construction: a cubic Hermite interpolant in
 /// `s = sqrt(x)` on equal cells (`FLAT_CELLS`, `CORE_CELLS`), through the exact form's value and
@@ -527,11 +534,15 @@ impl ChiForm {
     /// `chi` at `s = sqrt(x)`: analytic in `s` on `(-0.9, 0.9)` (`s < 0` only for the slope
     /// stencil at `s = 0`).
     fn chi(&self, s_true: f64) -> f64 {
-        let plane = self.plane_chi(s_true * self.x_plane.sqrt());
-        match &self.squeeze {
-            Some(squeeze) => plane * squeeze.factor(s_true, |s| self.flat(s)),
-            None => plane,
-        }
+        let s_patch = s_true * self.x_plane.sqrt();
+        let (flat, plane) = self.plane_chi(s_patch);
+        let Some(squeeze) = &self.squeeze else {
+            return plane;
+        };
+        // The layer's part of the plane form at the patch, its confined skin squeezed to the
+        // true delta/t (crate::core_map, the confined skin).
+        let confined_extra = (plane - flat) * squeeze.confined(s_true * s_true);
+        (plane + confined_extra) * squeeze.factor(s_true, |s| self.flat(s))
     }
 
     /// `chi_flat` at `s = sqrt(x)`: the bonded hemisphere (the module docs, Flat).
@@ -543,11 +554,12 @@ impl ChiForm {
         n * sf / (w * w + self.b2 * x * x)
     }
 
-    /// The plane's `chi` at `s = sqrt(x)`: `chi_flat`, and a core's layer excess.
-    fn plane_chi(&self, s: f64) -> f64 {
+    /// `(chi_flat, chi)` of the plane at `s = sqrt(x)`: the flat hemisphere, and with a core its
+    /// layer excess added.
+    fn plane_chi(&self, s: f64) -> (f64, f64) {
         let flat = self.flat(s);
         let Some(core) = &self.core else {
-            return flat;
+            return (flat, flat);
         };
         let x = s * s;
         // The layer of depth t h under the patch of the core's radius, less the layer of depth
@@ -559,7 +571,10 @@ impl ChiForm {
         let excess = core.layer(a * core.inv_tau_h, conf * core.inv_tau2)
             - core.layer(a_flat * core.inv_h, conf);
         let thinning = 1.0 + core.thinning * x + core.confined * confined(x * core.inv_tau);
-        flat + excess * thinning * (-core.k * (flat - 1.0)).exp()
+        (
+            flat,
+            flat + excess * thinning * (-core.k * (flat - 1.0)).exp(),
+        )
     }
 
     /// `(chi, d chi/ds)` at `s`: the slope by the 5-point central difference with step
@@ -713,15 +728,15 @@ impl Backed {
             core,
             radius,
             x_plane: on.map_or(1.0, |on| on.patch),
-            squeeze: on.map(|on| on.squeeze(tau.unwrap_or(1.0))),
+            squeeze: on.map(|on| on.squeeze(tau.unwrap_or(1.0), eps)),
         };
         Ok(Self {
             table: Arc::new(ChiTable::new(
                 x_max,
-                if form.core.is_some() {
-                    CORE_CELLS
-                } else {
-                    FLAT_CELLS
+                match (&form.core, &form.squeeze) {
+                    (Some(_), Some(_)) => CORE_ON_CELLS,
+                    (Some(_), None) => CORE_CELLS,
+                    _ => FLAT_CELLS,
                 },
                 |s| form.knot(s),
             )),
