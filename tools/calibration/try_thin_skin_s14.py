@@ -21,6 +21,8 @@ Letters of a variant (combined freely):
   w  the confinement lost as e0 exp(-m eps (1 + E)), E = eps x/tau^2 = (a_H/l)^2: faster as the
      patch outgrows the length l = t sqrt(kappa/mu) over which the skin can flow out
   y  the compressible thinning l1 eps s (1 + E): grows with the same measure
+  W, Y  as w, y with the measure saturating, 2 E/(1 + E) for E (the oedometer share is bounded)
+  B  as b, the widening from both orders of the layer, a^2 = a_H^2 (1 + (2/3) L(a_H/(t h)))
   1  the compressible thinning l1 eps s over the depth factor h (thinner skin: more of it)
   2  the confined term lc (mu/M) D(s) over h
   M  a sharper minimax (fit_core.fit, then powers 8 and 16 of 50 r)
@@ -49,7 +51,8 @@ import fit_core as f
 
 NUS = [0.3, 0.4, 0.48, 0.499]
 TABLE = ["x", "xM", "b", "bM", "bc", "bcM", "bq", "bcqM", "bg", "bE", "u", "v", "uv", "b1M", "b2M",
-         "w", "y", "bwy", "bwyM", "bcwyM", "bwyg", "bqwy", "bcn", "xMT"]
+         "w", "y", "bwy", "bwyM", "bcwyM", "bwyg", "bqwy", "bWY", "bWYM", "bWy", "BWy", "BWyM",
+         "BWY", "BwyM", "bcn", "xMT"]
 
 
 def extra(mode):
@@ -83,14 +86,18 @@ def form(mode):
         rate = m * eps / tau if "u" in mode else m * eps
         if "w" in mode:
             rate = rate * (1 + eps * x / tau ** 2)
+        if "W" in mode:
+            rate = rate * (1 + 2 * eps * x / tau ** 2 / (1 + eps * x / tau ** 2))
         e, g3 = e0 * np.exp(-rate), g0 * np.exp(-rate)
 
         def layer(v, conf):
             return v * (d1 + e * v / (1 + conf) + g3 * v * v / (1 + conf) ** 2)
 
         big_e = eps * x / tau ** 2
-        if "b" in mode:
+        if "b" in mode or "B" in mode:
             t1 = d1 / 3 * np.sqrt(x) / (tau * h)
+            if "B" in mode:  # both orders of the layer: a^2 = a_H^2 (1 + (2/3) L(a_H/(t h)))
+                t1 = np.sqrt(1 + 2 / 3 * layer(np.sqrt(x) / (tau * h), big_e)) - 1
             w = a_core / a_flat - 1
             a_core = a_flat * (1 + t1 * w / np.sqrt(t1 ** 2 + w ** 2))
         excess = layer(a_core / (tau * h), big_e) - layer(a_flat / h, eps * x)
@@ -100,6 +107,8 @@ def form(mode):
         thin = (l0 + l1 * eps / (depth if "1" in mode else 1.0) / (tau if "v" in mode else 1)) * s
         if "y" in mode:
             thin = thin + l1 * eps * s * big_e
+        if "Y" in mode:
+            thin = thin + l1 * eps * s * 2 * big_e / (1 + big_e)
         conf = lc * share * eps / (1 + 4 * eps / 3) * f.confined(s) / (depth if "2" in mode else 1)
         return fl + excess * (1 + thin + conf) * np.exp(-(k0 + k1 * eps) * (fl - 1))
     return chi
