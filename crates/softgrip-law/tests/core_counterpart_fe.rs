@@ -41,19 +41,22 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
 /// written (3.20 % with session 11's, 1.44 % with this one).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.42,
-        "ball/core/force_nu0.48_t0.3_k3.csv" => 3.74,
-        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.44,
-        "ball/core/force_nu0.48_t0.5_k1.csv" => 3.26,
-        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.73,
+        // Session 14 (law-curved): the bonded pad's refit (`mapping`'s FLAT, COLLAPSE_FLAT and
+        // the re-stiffening RESTIFFEN_FLAT, which the core's map takes) moved every curve;
+        // session 12's numbers in the comments.
+        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.35, // 2.42
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 2.53, // 3.74
+        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.49, // 1.44
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 4.70, // 3.26
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 1.18, // 2.73
         // Session 13, held out: the first core on a ball away from nu = 0.48 (nu 0.4, t/R
         // 0.35, R2/R 1.5, none of which any other run has).
-        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 3.35,
+        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 2.77, // 3.35
         // Session 13, held out: a compressible skin (nu 0.33, t/R 0.45 on 3R), 10.4 % too soft
         // at the FE's end (x = 0.36, delta/t 0.8, smallest element volume ratio 0.25).
-        "ball/core/force_nu0.33_t0.45_k3.csv" => 10.38,
+        "ball/core/force_nu0.33_t0.45_k3.csv" => 9.73, // 10.38
         // and a third (nu 0.36, t/R 0.3 on R): 6.57 % too soft at its end (x = 0.23, delta/t 0.77)
-        "ball/core/force_nu0.36_t0.3_k1.csv" => 6.57,
+        "ball/core/force_nu0.36_t0.3_k1.csv" => 4.54, // 6.57
         // A curve that landed after: the target.
         _ => 2.8,
     };
@@ -73,12 +76,16 @@ fn stated_force_error(path: &str) -> f64 {
 /// x = 0.32-0.36 (delta/t 0.71-0.8, the FE's smallest element keeping 25-34 % of its volume).
 /// The third, nu 0.36 t/R 0.3 on R: within 2.51 % to x = 0.2 (delta/t 0.67), then -3.5, -4.7,
 /// -6.6 % at x = 0.21-0.23 (delta/t 0.7-0.77).
+///
+/// Session 14 (law-curved, the bonded pad's refit, which the core's map takes): t/R 0.3 on 3R
+/// and nu 0.4 t/R 0.35 on 1.5R are now within 3 % (2.53, 2.77 %); t/R 0.5 on R is further off
+/// at its end (4.70 %, was 3.26 %; within 2.98 % to x = 0.33, was 2.50 % to 0.36): the refit's
+/// r0 at nu -> 1/2 rose (0.832 -> 0.861) with the nu = 0.499 pads on 2R and 4R in the fit; the
+/// nu 0.33 and 0.36 skins are within 1.11 % to x = 0.31 and 1.85 % to 0.2 (were 1.99, 2.51 %).
 const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
-    ("ball/core/force_nu0.48_t0.3_k3.csv", 0.17, 2.82),
-    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.36, 2.50),
-    ("ball/core/force_nu0.4_t0.35_k1.5.csv", 0.25, 1.62),
-    ("ball/core/force_nu0.33_t0.45_k3.csv", 0.31, 1.99),
-    ("ball/core/force_nu0.36_t0.3_k1.csv", 0.2, 2.51),
+    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.33, 2.98),
+    ("ball/core/force_nu0.33_t0.45_k3.csv", 0.31, 1.11),
+    ("ball/core/force_nu0.36_t0.3_k1.csv", 0.2, 1.85),
 ];
 
 #[test]
