@@ -126,6 +126,12 @@ def curved_cases():
     fit13mid = [(0.35, 1), (0.4, 1), (0.35, 1.5), (0.4, 1.5), (0.45, 1), (0.35, 2), (0.4, 2),
                 (0.45, 2)]
     c += [("flat", nu, 0, 40, "main", "ball", k) for nu, k in fit13mid]
+    # session 14 (law-curved): blind tests of the session-14 refit of the flat pad on balls (no
+    # constant saw them; started before the refit): nu 0.42, where the large-x term's
+    # nu-dependence switches off, on 0.8 R (small balls are where the candidates missed), then
+    # nu 0.32 on 2.5 R; under /work/fe-scratch/runs/law-curved-s14/
+    held14 = [("flat", 0.42, 0.8), ("flat", 0.32, 2.5)]
+    c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held14]
     return c + core_ball_cases() + cases_3d()
 
 

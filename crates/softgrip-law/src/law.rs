@@ -138,7 +138,7 @@ pub struct ContactLaw {
     stiffness_scale: f64,
     /// `R/rho` \[m\]: the energy is `w force_scale R/rho`.
     energy_length: f64,
-    /// The counterpart's terms (`mapping`, `tail`): the force `t5 x^(5/2) + t7 x^(7/2)` \[N\]
+    /// The counterpart's terms (`mapping`, `tail`): the force `t5 x^(5/2) + t7 x^(7/2) + t11 x^(11/2)` \[N\]
     /// subtracted from the mapped plane law (0 on a plane and an edge).
     tail: Tail,
     /// The counterpart and its map ([`with_counterpart`](Self::with_counterpart)).
@@ -309,6 +309,7 @@ impl ContactLaw {
             tail: Tail {
                 t5: map.tail[0] * e * r * r,
                 t7: map.tail[1] * e * r * r,
+                t11: map.tail[2] * e * r * r,
             },
             counterpart,
             map,

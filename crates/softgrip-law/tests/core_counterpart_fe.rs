@@ -34,35 +34,37 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
 }
 
 /// The largest force error each curve is allowed to the FE's end: what this test printed
-/// when the law was fixed (session 14: the confined skin, `core_map`), rounded up by 0.2 % (so
-/// a real change of the law breaks it). One constant of the map was fitted, on one curve
-/// (`force_nu0.3_t0.4_k2.csv`, the confined skin's share `w`); the others saw none
+/// when the law was fixed (session 14: the confined skin, `core_map`, on the bonded pad's
+/// session-14 refit, `mapping`'s FLAT, COLLAPSE_FLAT and RESTIFFEN_FLAT, which the core's map
+/// takes), rounded up by 0.2 % (so a real change of the law breaks it). One constant of the
+/// map was fitted, on one curve (`force_nu0.3_t0.4_k2.csv`, the confined skin's share `w`,
+/// refitted minimax on the refitted bonded map: 0.036952 -> 0.0276); the others saw none
 /// (`core_map`: the plane law at Hertz's patch, the bonded pad's squeeze excess at the skin's
-/// `delta/t`). `force_nu0.48_t0.4_k2.csv` was run after session 11's map and before session
-/// 12's was written (3.20 % with session 11's, 1.44 % with 12's and 14's).
+/// `delta/t`). Session 12's numbers in the comments, then session 14's before the bonded
+/// pad's refit.
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.42,
-        "ball/core/force_nu0.48_t0.3_k3.csv" => 3.83,
-        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.44,
-        "ball/core/force_nu0.48_t0.5_k1.csv" => 3.19,
-        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.82,
+        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.35, // 2.42, 2.42
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 2.60, // 3.74, 3.83
+        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.48, // 1.44, 1.44
+        // The bonded refit's r0 at nu -> 1/2 rose (0.832 -> 0.861) with the nu = 0.499 pads on
+        // 2R and 4R in its fit: this curve's end moved out of the 3 %.
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 4.65, // 3.26, 3.19
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 1.20, // 2.73, 2.82
         // Session 13, held out of the constant (the confined skin's form was chosen with them
         // in view): the first cores on a ball away from nu = 0.48, at their FE's ends 3.35 %,
         // 10.38 % and 6.57 % too soft with session 12's map (delta/t 0.77, 0.8, 0.77).
-        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 0.98,
-        "ball/core/force_nu0.33_t0.45_k3.csv" => 1.07,
-        "ball/core/force_nu0.36_t0.3_k1.csv" => 1.66,
+        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 0.79, // -, 0.98
+        "ball/core/force_nu0.33_t0.45_k3.csv" => 2.20,  // -, 1.07
+        "ball/core/force_nu0.36_t0.3_k1.csv" => 1.85,   // -, 1.66
         // Session 14, the confined skin's constant fitted on it (14.02 % too soft at its end,
-        // x = 0.32, delta/t 0.8, with session 12's map; 4.03 % with the constant set to the
-        // plane form's own share and the secant `D`).
-        "ball/core/force_nu0.3_t0.4_k2.csv" => 0.95,
-        // Session 14, blind (run after w was fitted): nu 0.4, t/R 0.5 on 3R, +2.22 % at its end
-        // (x = 0.4, delta/t 0.8; 1.29 % without the confined skin: here it adds too much).
-        "ball/core/force_nu0.4_t0.5_k3.csv" => 2.22,
-        // and nu 0.3, t/R 0.5 on R: -2.39 % at x = 0.39-0.4 (delta/t 0.8; 9.23 % too soft there
-        // without the confined skin).
-        "ball/core/force_nu0.3_t0.5_k1.csv" => 2.39,
+        // x = 0.32, delta/t 0.8, with session 12's map).
+        "ball/core/force_nu0.3_t0.4_k2.csv" => 2.28, // -, 0.95
+        // Session 14, blind (run after w was first fitted): nu 0.4, t/R 0.5 on 3R (1.29 %
+        // without the confined skin), and nu 0.3, t/R 0.5 on R (9.23 % too soft at its end
+        // without it).
+        "ball/core/force_nu0.4_t0.5_k3.csv" => 1.94, // -, 2.22
+        "ball/core/force_nu0.3_t0.5_k1.csv" => 1.38, // -, 2.39
         // A curve that landed after: the target.
         _ => 2.8,
     };
@@ -70,16 +72,12 @@ fn stated_force_error(path: &str) -> f64 {
 }
 
 /// The curves the law misses the 3 % on, each within it below an x (its error there,
-/// the test allows 0.2 % more), each at the FE's last points, all at nu 0.48: t/R 0.3 on 3R,
-/// +3.8 % at its end (x = 0.2, delta/t 0.67; the plane law at the patch's x = 0.15 is itself
-/// 1-2 % stiff there, t/R 0.3 at nu 0.4 and 0.49); t/R 0.5 on R, -3.2 % at its end (x = 0.38,
-/// delta/t 0.76; the plane law at the patch's x = 0.19 is itself 2 % soft, t/R 0.5 at nu
-/// 0.45). The compressible skins squeezed past delta/t 0.7 (session 13: 3.4-10.4 % too soft)
-/// are within 1.07 % since session 14's confined skin (`core_map`).
-const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
-    ("ball/core/force_nu0.48_t0.3_k3.csv", 0.17, 2.85),
-    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.36, 2.46),
-];
+/// the test allows 0.2 % more), at the FE's last points: nu 0.48, t/R 0.5 on R, -4.65 % at
+/// its end (x = 0.38, delta/t 0.76; the plane law at the patch's x = 0.19 is itself 2 % soft,
+/// t/R 0.5 at nu 0.45, and the bonded refit's r0 at nu -> 1/2 rose). The compressible skins
+/// squeezed past delta/t 0.7 (session 13: 3.4-10.4 % too soft) are within 2.20 % since
+/// session 14's confined skin (`core_map`).
+const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[("ball/core/force_nu0.48_t0.5_k1.csv", 0.33, 2.98)];
 
 #[test]
 fn a_skin_on_a_core_on_a_ball_is_within_its_stated_error_of_the_fe() {

@@ -51,7 +51,7 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 }
 
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
-/// (`r+g+q, eps, cap`, session 12), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
+/// (`r+g+q+q2, eps, cap`, session 14; the free sphere's constants are session 12's), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
 /// every fit: the campaign's held-out runs (`ball/*/force_nu0.4_k0.7.csv`,
 /// `ball/*/force_nu0.4_k6.csv`, `ball/flat/force_nu0.45_k1.5.csv`,
@@ -60,7 +60,8 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 /// session 10, R2/R = 4 and 10 at nu 0.3, 0.48 (10), 0.499 and R/2 at nu 0.499), and session
 /// 11's runs at nu and R2/R no other run has (`ball/free/force_nu0.42_k1.5.csv`,
 /// `ball/flat/force_nu0.35_k0.7.csv`: each stopped at the FE's wall-clock limit, x = 0.56 and
-/// 0.63).
+/// 0.63). Session 14 fitted the bonded pad at nu = 0.499 on 2R and 4R (without the range
+/// penalty) and session 13's `fit13mid`; session 13's and 14's blind runs stay out.
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/free/force_nu0.3_k0.5.csv" => 1.29,
@@ -83,51 +84,58 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/free/force_nu0.4_k6.csv" => 1.41,
         // Session 11's held-out runs (blind: run after the constants were fixed).
         "ball/free/force_nu0.42_k1.5.csv" => 1.69,
-        "ball/flat/force_nu0.35_k0.7.csv" => 1.72,
-        "ball/flat/force_nu0.3_k0.5.csv" => 2.22,
-        "ball/flat/force_nu0.3_k1.csv" => 3.46,
-        "ball/flat/force_nu0.3_k2.csv" => 2.69,
-        "ball/flat/force_nu0.3_k4.csv" => 2.10,
-        "ball/flat/force_nu0.3_k10.csv" => 1.03,
-        "ball/flat/force_nu0.45_k1.5.csv" => 1.88,
-        "ball/flat/force_nu0.48_k0.5.csv" => 2.12,
-        "ball/flat/force_nu0.48_k1.csv" => 1.26,
-        "ball/flat/force_nu0.48_k2.csv" => 1.35,
-        "ball/flat/force_nu0.48_k4.csv" => 0.95,
-        "ball/flat/force_nu0.48_k10.csv" => 0.68,
-        "ball/flat/force_nu0.499_k1.csv" => 1.28,
-        "ball/flat/force_nu0.499_k2.csv" => 2.77,
-        "ball/flat/force_nu0.499_k4.csv" => 2.06,
-        "ball/flat/force_nu0.499_k10.csv" => 1.36,
-        "ball/flat/force_nu0.4_k0.7.csv" => 2.00,
-        "ball/flat/force_nu0.4_k6.csv" => 0.89,
-        "cylinder/flat/force_nu0.48_k1.csv" => 1.13,
-        "cylinder/flat/force_nu0.48_k3.csv" => 0.94,
+        "ball/flat/force_nu0.35_k0.7.csv" => 2.01,
+        "ball/flat/force_nu0.3_k0.5.csv" => 2.81,
+        "ball/flat/force_nu0.3_k1.csv" => 1.53,
+        "ball/flat/force_nu0.3_k2.csv" => 2.36,
+        "ball/flat/force_nu0.3_k4.csv" => 2.20,
+        "ball/flat/force_nu0.3_k10.csv" => 1.19,
+        "ball/flat/force_nu0.45_k1.5.csv" => 2.44,
+        "ball/flat/force_nu0.48_k0.5.csv" => 2.94,
+        "ball/flat/force_nu0.48_k1.csv" => 1.78,
+        "ball/flat/force_nu0.48_k2.csv" => 2.02,
+        "ball/flat/force_nu0.48_k4.csv" => 1.40,
+        "ball/flat/force_nu0.48_k10.csv" => 0.88,
+        "ball/flat/force_nu0.499_k1.csv" => 1.27,
+        "ball/flat/force_nu0.499_k2.csv" => 1.78,
+        "ball/flat/force_nu0.499_k4.csv" => 1.44,
+        "ball/flat/force_nu0.499_k10.csv" => 1.03,
+        "ball/flat/force_nu0.4_k0.7.csv" => 2.79,
+        "ball/flat/force_nu0.4_k6.csv" => 0.96,
+        "cylinder/flat/force_nu0.48_k1.csv" => 1.37,
+        "cylinder/flat/force_nu0.48_k3.csv" => 1.01,
         // Session 12, blind (run after the constants were fixed): the free cylinders of R and
         // 3R and the flat pad on 3R at nu = 0.3, the first away from nu = 0.48 (session 11's
         // law: 1.91, 1.09 and 1.58 %).
         "cylinder/free/force_nu0.3_k1.csv" => 1.91,
         "cylinder/free/force_nu0.3_k3.csv" => 1.13,
-        "cylinder/flat/force_nu0.3_k3.csv" => 1.49,
+        "cylinder/flat/force_nu0.3_k3.csv" => 1.78,
         "cylinder/free/force_nu0.48_k1.csv" => 1.48,
         "cylinder/free/force_nu0.48_k3.csv" => 0.72,
         // Session 13, blind (run after the constants were fixed, session 12, and never
-        // fitted): the bonded pad at nu 0.3-0.37 on balls no other run has.
-        "ball/flat/force_nu0.3_k0.7.csv" => 1.72,
-        "ball/flat/force_nu0.33_k1.4.csv" => 4.14,
-        "ball/flat/force_nu0.3_k3.csv" => 2.28,
+        // fitted, session 14's refit included): the bonded pad at nu 0.3-0.37 on balls no
+        // other run has (session 12's law: 1.72, 4.14, 2.28, 1.36, 3.32, 2.67 %).
+        "ball/flat/force_nu0.3_k0.7.csv" => 0.66,
+        "ball/flat/force_nu0.33_k1.4.csv" => 1.63,
+        "ball/flat/force_nu0.3_k3.csv" => 2.27,
         "ball/free/force_nu0.3_k0.7.csv" => 1.36,
-        "ball/flat/force_nu0.37_k1.csv" => 3.32,
-        "ball/flat/force_nu0.3_k1.4.csv" => 2.67,
-        // Session 13, fit data for the next refit (`fe_campaign.py`'s `fit13mid`: the bonded
-        // pad on R, 1.5 R and 2 R at nu 0.35-0.45), measured against the unchanged law of
-        // session 12 (no constant has seen them yet).
-        "ball/flat/force_nu0.35_k1.csv" => 4.00,
-        "ball/flat/force_nu0.4_k1.csv" => 2.70,
-        "ball/flat/force_nu0.35_k1.5.csv" => 3.11,
-        "ball/flat/force_nu0.4_k1.5.csv" => 2.26,
-        "ball/flat/force_nu0.45_k1.csv" => 1.87,
-        "ball/flat/force_nu0.35_k2.csv" => 2.09,
+        "ball/flat/force_nu0.37_k1.csv" => 2.40,
+        "ball/flat/force_nu0.3_k1.4.csv" => 2.22,
+        // Session 13's fit data (`fe_campaign.py`'s `fit13mid`: the bonded pad on R, 1.5 R and
+        // 2 R at nu 0.35-0.45), fitted in session 14 (session 12's law: 4.00, 2.70, 3.11,
+        // 2.26, 1.87, 2.09, 1.58, 1.58 %).
+        "ball/flat/force_nu0.35_k1.csv" => 2.32,
+        "ball/flat/force_nu0.4_k1.csv" => 2.58,
+        "ball/flat/force_nu0.35_k1.5.csv" => 1.51,
+        "ball/flat/force_nu0.4_k1.5.csv" => 2.16,
+        "ball/flat/force_nu0.45_k1.csv" => 2.44,
+        "ball/flat/force_nu0.35_k2.csv" => 0.82,
+        "ball/flat/force_nu0.4_k2.csv" => 1.52,
+        "ball/flat/force_nu0.45_k2.csv" => 2.10,
+        // Session 14, blind (`fe_campaign.py`'s `held14`, run before the refit and never
+        // fitted; session 12's law: 1.98 and 2.03 %).
+        "ball/flat/force_nu0.42_k0.8.csv" => 2.63,
+        "ball/flat/force_nu0.32_k2.5.csv" => 1.92,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
@@ -138,7 +146,8 @@ fn stated_force_error(path: &str) -> f64 {
 /// (session 13: the FE to x = 0.70, the law to the bonded reach constant 0.66), at nu = 0.33 on
 /// 1.4 R (session 13: 0.66 of 0.69), at nu = 0.35 on R (session 13's fit data: 0.66 of 0.68), R/2
 /// (0.66, the bonded reach constant, of 0.68) and R (0.654, where the plane law ends at rho x,
-/// of 0.68), on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69), and at nu = 0.499 on 2R, 4R and
+/// of 0.68), on the ball of 0.7 R at nu = 0.4 (0.66 of 0.69), at nu = 0.42 on 0.8 R (session 14's
+/// blind run: 0.66 of 0.68), and at nu = 0.499 on 2R, 4R and
 /// 10R (the plane law of the bonded pad ends at x = 0.44 at nu >= 0.48, at rho x: 0.62 of
 /// the FE's 0.65, 0.53 of 0.57, 0.48 of 0.53; the nearly incompressible pad on a large ball
 /// folds over its bonded edge later than on the plane, where the plane law was fitted).
@@ -149,44 +158,30 @@ const RANGE_SHORT: &[&str] = &[
     "ball/flat/force_nu0.3_k0.5.csv",
     "ball/flat/force_nu0.3_k1.csv",
     "ball/flat/force_nu0.4_k0.7.csv",
+    "ball/flat/force_nu0.42_k0.8.csv",
     "ball/flat/force_nu0.499_k2.csv",
     "ball/flat/force_nu0.499_k4.csv",
     "ball/flat/force_nu0.499_k10.csv",
 ];
 
-/// The curve the law misses the 3 % on (COUNTERPART.md): the bonded pad at nu = 0.3
-/// on the ball of R, 3.46 % at its last two points, x = 0.65-0.66, where the FE's smallest
-/// element volume ratio is 0.22-0.21 (its data are cut at 0.2; [`WITHIN_TARGET_TO`] asserts
-/// 3 % below). Session 11 missed four (the bonded pad on R/2, R, 2R: 3.76, 5.05, 3.44 %; the
-/// free sphere on 4R, blind: 3.64 %): the cap scaled by the pressed area (`cap_map`) brought
-/// them to 2.22, 3.46, 2.69 and 2.97 %.
+/// The curves the law misses the 3 % on (COUNTERPART.md): none since session 14.
 ///
-/// Session 13's blind run of the bonded pad at nu = 0.33 on the ball of 1.4 R misses the same
-/// way: 4.14 % at x = 0.66 (the law too soft past x = 0.6, -3.14 % at 0.64 where the FE's
-/// smallest element keeps 24 % of its volume), 2.69 % to 0.63; and the blind run at nu = 0.37 on
-/// R: 3.32 % at its end, x = 0.64 (the FE diverged; -2.56 % at 0.60), 2.94 % to 0.62.
-///
-/// Session 13's fit data (`fit13mid`, not fitted yet) at nu = 0.35 on R: 4.00 % at the law's
-/// end, x = 0.66 (-2.26 % at 0.60, -3.06 % at 0.63; the FE reached 0.68, where it diverged with
-/// the free surface folding over the bonded edge), 2.77 % to 0.62; on 1.5 R: 3.11 % at the FE's
-/// end, x = 0.63 (diverged; -2.13 % at 0.60), 2.76 % to 0.62.
-const KNOWN_MISSES: &[&str] = &[
-    "ball/flat/force_nu0.3_k1.csv",
-    "ball/flat/force_nu0.33_k1.4.csv",
-    "ball/flat/force_nu0.37_k1.csv",
-    "ball/flat/force_nu0.35_k1.csv",
-    "ball/flat/force_nu0.35_k1.5.csv",
-];
+/// Session 13 left five, all the bonded pad at nu 0.3-0.37 going soft past x ≈ 0.55: on R at
+/// nu 0.3 (3.46 %), 0.35 (4.00 %) and 0.37 (3.32 %, blind), on 1.4 R at nu 0.33 (4.14 %,
+/// blind), on 1.5 R at nu 0.35 (3.11 %). Session 14's re-stiffening term (`mapping`, the
+/// collapsed column under a narrower patch, `q2 eps (1 - rho_H) rho_H x^(11/2)`) brought them
+/// to 1.53, 2.32, 2.40, 1.63 and 1.51 %.
+const KNOWN_MISSES: &[&str] = &[];
 
 /// Where the curves past 3 % (or near it) are within the 3 % below the FE's collapse:
 /// `(file, to x, its error there %)`; the test allows 0.2 % more.
 const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
     ("ball/free/force_nu0.3_k4.csv", 0.65, 1.43),
-    ("ball/flat/force_nu0.3_k1.csv", 0.64, 2.33),
-    ("ball/flat/force_nu0.33_k1.4.csv", 0.63, 2.69),
-    ("ball/flat/force_nu0.37_k1.csv", 0.62, 2.94),
-    ("ball/flat/force_nu0.35_k1.csv", 0.62, 2.77),
-    ("ball/flat/force_nu0.35_k1.5.csv", 0.62, 2.76),
+    ("ball/flat/force_nu0.3_k1.csv", 0.64, 1.53),
+    ("ball/flat/force_nu0.33_k1.4.csv", 0.63, 1.03),
+    ("ball/flat/force_nu0.37_k1.csv", 0.62, 2.29),
+    ("ball/flat/force_nu0.35_k1.csv", 0.62, 1.79),
+    ("ball/flat/force_nu0.35_k1.5.csv", 0.62, 1.32),
 ];
 
 #[test]
