@@ -3,6 +3,8 @@
 //! Each case runs the same scene twice, the ball allowed to sleep and not (`can_sleep(false)`),
 //! and compares the two.
 
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
 use rapier3d::prelude::*;
 use softgrip_law::Level;
 use softgrip_rapier::SoftWorld;
