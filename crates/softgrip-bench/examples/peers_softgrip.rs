@@ -3,7 +3,7 @@
 //! table. Single-threaded (rapier is built without `parallel`).
 //!
 //! ```text
-//! cargo run --release -p softgrip-bench --example peers_softgrip [squeeze] [rapier] [fem] [resting]
+//! cargo run --release -p softgrip-bench --example peers_softgrip [squeeze] [rapier] [fem] [resting] [resting-sleep]
 //! ```
 //!
 //! With no argument every part runs. The parts:
@@ -26,7 +26,9 @@
 //!   of `plugin_tables` (R = 1, mass x 1e6).
 //! - `resting`: N = 1, 10, 100, 1000 fingertips resting on a fixed ground
 //!   (`softgrip_bench::overhead::OverheadScene`, settled 120 steps), softgrip and rapier's own
-//!   contacts, µs per step (best of 3 rounds).
+//!   contacts, µs per step (best of 3 rounds). The balls never sleep (`can_sleep(false)`).
+//! - `resting-sleep`: the same with the balls allowed to sleep (rapier's default thresholds),
+//!   asleep once settled (kind `resting_sleep`; `peers.py` does not read it).
 //! - `grasp-law`: the default scene's fingertip law (Dragon Skin 30, E = 0.59 MPa, nu = 0.49,
 //!   R = 10 mm, `flat` backing, `auto`) at the squeeze depths of `sweeps/throughput.toml`, the
 //!   grip MuJoCo's grasp is matched to.
@@ -66,7 +68,10 @@ fn main() -> anyhow::Result<()> {
         fem_squeeze();
     }
     if wants("resting") {
-        resting();
+        resting(false);
+    }
+    if wants("resting-sleep") {
+        resting(true);
     }
     if wants("grasp-law") {
         grasp_law()?;
@@ -429,11 +434,19 @@ fn fem_squeeze() {
 /// N fingertips resting: softgrip and rapier's own contacts, µs per step (wall, and the
 /// thread's CPU time where Linux reports it: on a shared machine the wall time of a round
 /// includes the time other processes held the core).
-fn resting() {
+///
+/// With `sleep`, the balls may sleep (`OverheadScene::new_sleeping`; asleep once settled),
+/// printed as kind `resting_sleep`.
+fn resting(sleep: bool) {
+    let (kind, new): (_, fn(usize, bool) -> OverheadScene) = if sleep {
+        ("resting_sleep", OverheadScene::new_sleeping)
+    } else {
+        ("resting", OverheadScene::new)
+    };
     for n in [1usize, 10, 100, 1000] {
         let steps = (20_000 / n).clamp(60, 2000);
-        let mut rigid = OverheadScene::new(n, false);
-        let mut soft = OverheadScene::new(n, true);
+        let mut rigid = new(n, false);
+        let mut soft = new(n, true);
         let (mut best_rigid, mut best_soft) = ([f64::MAX; 2], [f64::MAX; 2]);
         for _ in 0..3 {
             for (scene, best) in [(&mut rigid, &mut best_rigid), (&mut soft, &mut best_soft)] {
@@ -452,7 +465,7 @@ fn resting() {
                 "null".to_string()
             };
             println!(
-                "{{\"kind\":\"resting\",\"peer\":\"{peer}\",\"n\":{n},\"dt\":{:.6e},\"steps\":{steps},\
+                "{{\"kind\":\"{kind}\",\"peer\":\"{peer}\",\"n\":{n},\"dt\":{:.6e},\"steps\":{steps},\
                  \"us_per_step\":{:.4},\"cpu_us_per_step\":{cpu}}}",
                 1.0 / 60.0,
                 us * 1e6

@@ -4,6 +4,7 @@
 
 use std::time::{Duration, Instant};
 
+use rapier3d::prelude::RigidBodyActivation;
 use softgrip_rapier::{SoftCounters, SoftWorld};
 use softgrip_testkit::resting::resting_grid;
 
@@ -12,8 +13,8 @@ pub use softgrip_testkit::scenes::{DENSITY, RADIUS};
 /// Steps run before measuring: long enough for the e = 0.5 contacts to come to rest.
 pub const SETTLE_STEPS: usize = 120;
 
-/// The overhead scene. Bodies never sleep in either variant (a sleeping rapier ball costs
-/// nothing, the comparison is about the contact work).
+/// The overhead scene. Bodies never sleep in either variant of [`new`](Self::new) (the
+/// comparison is about the contact work); [`new_sleeping`](Self::new_sleeping) lets them.
 pub struct OverheadScene {
     /// The world (`soft` is empty in the rapier-only variant).
     pub world: SoftWorld,
@@ -41,6 +42,23 @@ impl OverheadScene {
         } else {
             self.world.physics.step();
         }
+    }
+
+    /// [`new`](Self::new) with every ball allowed to sleep (rapier's default thresholds:
+    /// still for 0.5 s), settled the same [`SETTLE_STEPS`] (2 s), by which time they sleep:
+    /// the resting scene as a user would build it (`RigidBodyBuilder::dynamic()` sleeps).
+    pub fn new_sleeping(n: usize, soft: bool) -> Self {
+        let mut world = resting_grid(n, PITCH, soft);
+        for (_, rb) in world.physics.bodies.iter_mut() {
+            if rb.is_dynamic() {
+                *rb.activation_mut() = RigidBodyActivation::active();
+            }
+        }
+        let mut scene = Self { world, soft };
+        for _ in 0..SETTLE_STEPS {
+            scene.step();
+        }
+        scene
     }
 
     /// Runs `steps` steps; returns the wall time and what the plugin did over them.

@@ -130,7 +130,8 @@ impl SoftContacts {
     /// reads rapier's manifolds. What a fingertip's collider loses in rapier: contact
     /// manifolds (`NarrowPhase::contact_pair`), collision and contact-force events, sensor
     /// intersections, and island links through its contacts (a body resting only on
-    /// fingertips forms its own island for sleeping). Use [`contacts`](Self::contacts) for the
+    /// fingertips forms its own island for sleeping; the plugin wakes a sleeping side of a
+    /// soft contact whose other side moves, crate README, Sleeping). Use [`contacts`](Self::contacts) for the
     /// soft contacts. Set the fingertip's collision groups *before* registering it; changing
     /// them on the collider afterwards has no effect on the soft contacts, and setting them
     /// back to anything but `none()` makes rapier compute (and ignore, the solver groups being

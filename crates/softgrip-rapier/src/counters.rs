@@ -80,6 +80,11 @@ pub struct SoftCounters {
     /// solve is coupling contacts it need not (its cost grows with the cube of a group's
     /// size).
     pub largest_group: u64,
+    /// Sleeping dynamic bodies the plugin woke because the other side of one of their soft
+    /// contacts moved (an awake dynamic body, a kinematic body with a velocity), total. rapier
+    /// cannot see a soft contact (a fingertip's collision groups are `none()`), so it never
+    /// wakes a body through one (crate README, Sleeping).
+    pub woken: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the impulse solve.

@@ -228,6 +228,7 @@ impl Step<'_> {
         s.geom.clear();
         s.mobility.clear();
         s.skipped.clear();
+        self.wake_touched();
         let tb = &mut s.body_table;
         let geoms = std::mem::take(&mut self.soft.geoms);
         // rapier's step of h is N passes of "kick h/N, drift h/N": a constant acceleration a
@@ -295,6 +296,23 @@ impl Step<'_> {
         self.soft.geoms = geoms;
         self.prepare_rigid(h, h_drift, kin_vel, s);
         self.soft.counters.jointed_free += s.body_table.jointed_free;
+    }
+
+    /// Wakes (or keeps awake) the dynamic bodies of the found contacts whose other side is not
+    /// fixed or asleep (`bodies::wake_touched`), before any of them enters the body table (a
+    /// sleeping body is immobile there). Repeated until nothing more wakes: a woken body wakes
+    /// what sleeps on it in turn, as rapier wakes a whole island.
+    fn wake_touched(&mut self) {
+        loop {
+            let mut woken = 0;
+            for g in &self.soft.geoms {
+                woken += bodies::wake_touched(&mut self.physics.bodies, g.body_tip, g.body_other);
+            }
+            self.soft.counters.woken += woken;
+            if woken == 0 {
+                break;
+            }
+        }
     }
 
     /// rapier's touching rigid contacts of every dynamic body a soft contact moves, and of the
