@@ -22,6 +22,7 @@ mod presets;
 mod readout;
 mod rigid;
 mod rounded;
+mod saturation;
 mod series;
 mod solve;
 mod step;

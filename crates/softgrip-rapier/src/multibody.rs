@@ -43,6 +43,7 @@ use rapier3d::prelude::{
 use crate::bodies::{KinematicPath, interpolate};
 use crate::boundary::{to_f32, to_f64};
 use crate::fast_hash::FastMap;
+use crate::saturation::{Fold, Motor, couple};
 use crate::solve::BodyState;
 
 /// A link of a multibody in the solver's body table.
@@ -79,6 +80,9 @@ pub(crate) struct Generalised {
     /// The links' spatial mobility blocks `J_a W J_b^T` (6 x 6), by slots `[a][b]`: what a
     /// wrench on link `b` does to the velocity of link `a`.
     pub blocks: Vec<Vec<Matrix6<f64>>>,
+    /// What folding the motors again needs (`saturation`); `None` for a generalised body
+    /// whose motors are not folded here (`jointed`).
+    pub fold: Option<Fold>,
 }
 
 impl Generalised {
@@ -94,6 +98,19 @@ impl Generalised {
             jacs: Vec::with_capacity(2),
             wj: Vec::with_capacity(2),
             blocks: Vec::with_capacity(2),
+            fold: None,
+        }
+    }
+
+    /// Recomputes every link's `W J^T` and the blocks from `mobility` (after a new fold:
+    /// `saturation`).
+    pub(crate) fn refresh(&mut self) {
+        let jacs = std::mem::take(&mut self.jacs);
+        let links = std::mem::take(&mut self.links);
+        self.wj.clear();
+        self.blocks.clear();
+        for (index, jac) in links.into_iter().zip(jacs) {
+            self.add(index, jac);
         }
     }
 
@@ -381,24 +398,33 @@ fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Opti
         .zip(acc.iter())
         .map(|(v, a)| *v as f64 + a * ctx.h)
         .collect();
-    let mut m_eff = m_r.clone();
     let q_r = DVector::from_fn(r, |k, _| q0[free[k]]);
-    let mut momentum = &m_r * &q_r;
     let pos: HashMap<usize, usize> = free.iter().enumerate().map(|(k, &d)| (d, k)).collect();
-    for (dof, b, c) in motors(mb, ctx, &w_r, &pos) {
-        let k = pos[&dof];
-        m_eff[(k, k)] += b;
-        momentum[k] += c;
-    }
-    let mut w_eff = m_eff.try_inverse()?;
-    let mut qf_r = &w_eff * momentum;
-    couple(mb, &pos, &mut w_eff, &mut qf_r);
-    let passive = passive_velocity(mb, &pos, &w_r, q_r, &q0);
+    let motors = motors(mb, ctx, &w_r, &pos)
+        .into_iter()
+        .map(|(dof, b, c, max)| Motor {
+            k: pos[&dof],
+            dof,
+            b,
+            c,
+            max,
+            saturated: None,
+        })
+        .collect();
+    let fold = Fold {
+        couplings: couplings(mb, &pos),
+        free,
+        m_r,
+        q_r: q_r.clone(),
+        motors,
+    };
+    let (w_eff, qf_r) = fold.fold()?;
+    let passive = passive_velocity(&fold.couplings, &pos, &w_r, q_r, &q0);
     let mut mobility = DMatrix::<f64>::zeros(n, n);
     let mut qdot = DVector::from_vec(q0);
-    for (a, &da) in free.iter().enumerate() {
+    for (a, &da) in fold.free.iter().enumerate() {
         qdot[da] = qf_r[a];
-        for (b, &db) in free.iter().enumerate() {
+        for (b, &db) in fold.free.iter().enumerate() {
             mobility[(da, db)] = w_eff[(a, b)];
         }
     }
@@ -408,6 +434,7 @@ fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Opti
     }
     let mut g = Generalised::new(mobility, qdot, acc);
     g.passive = passive;
+    g.fold = Some(fold);
     Some(g)
 }
 
@@ -415,14 +442,14 @@ fn generalised(mb: &Multibody, bodies: &RigidBodySet, ctx: &LinkCtx<'_>) -> Opti
 /// place) with the dof couplings applied on the bare mobility `w_r`, without the motors: what
 /// the multibody does over the step if no motor pushed (`Generalised::passive`).
 fn passive_velocity(
-    mb: &Multibody,
+    couplings: &[(usize, usize, f64)],
     pos: &HashMap<usize, usize>,
     w_r: &DMatrix<f64>,
     mut q_r: DVector<f64>,
     q0: &[f64],
 ) -> DVector<f64> {
     let mut w = w_r.clone();
-    couple(mb, pos, &mut w, &mut q_r);
+    couple(couplings, &mut w, &mut q_r);
     let mut passive = DVector::from_column_slice(q0);
     for (&d, &k) in pos {
         passive[d] = q_r[k];
@@ -464,36 +491,20 @@ pub(crate) fn rapier_mobility(mb: &Multibody) -> Option<(Vec<usize>, DMatrix<f64
 }
 
 /// The multibody's dof couplings (a URDF `<mimic>`: `qdot_2 = coeff qdot_1`, a hard row of
-/// rapier's solver) applied to the reduced mobility `w` and free velocity `qf`: each a
-/// rank-one Schur complement, `w - (w g)(w g)^T / (g^T w g)`, `qf - w g (g^T qf) / (g^T w g)`
-/// with `g = e_2 - coeff e_1` (applied one after the other on the updated `w`, which is the
-/// Schur complement of all of them).
-fn couple(
-    mb: &Multibody,
-    pos: &HashMap<usize, usize>,
-    w: &mut DMatrix<f64>,
-    qf: &mut DVector<f64>,
-) {
+/// rapier's solver) as `(k1, k2, coeff)` in the reduced order `pos` (`saturation::couple`
+/// applies them).
+fn couplings(mb: &Multibody, pos: &HashMap<usize, usize>) -> Vec<(usize, usize, f64)> {
+    let mut out = Vec::new();
     for c in mb.couplings() {
         let (Some(l1), Some(l2)) = (mb.link(c.link1), mb.link(c.link2)) else {
             continue;
         };
         let (d1, d2) = (l1.assembly_id() + c.dof1, l2.assembly_id() + c.dof2);
-        let (Some(&k1), Some(&k2)) = (pos.get(&d1), pos.get(&d2)) else {
-            continue;
-        };
-        let mut g = DVector::<f64>::zeros(w.nrows());
-        g[k2] += 1.0;
-        g[k1] -= c.coeff as f64;
-        let wg = &*w * &g;
-        let gwg = g.dot(&wg);
-        if !(gwg > 0.0 && gwg.is_finite()) {
-            continue;
+        if let (Some(&k1), Some(&k2)) = (pos.get(&d1), pos.get(&d2)) {
+            out.push((k1, k2, c.coeff as f64));
         }
-        let along = g.dot(qf) / gwg;
-        *qf -= &wg * along;
-        *w -= (&wg * wg.transpose()) / gwg;
     }
+    out
 }
 
 /// The generalised force of gravity and the user's forces and torques on a multibody's links.
@@ -519,14 +530,15 @@ fn external_force(mb: &Multibody, bodies: &RigidBodySet, gravity: Vector3<f64>) 
     force
 }
 
-/// The motors of a multibody's free dofs as `(dof, b / a, c / a)` (see the module's docs):
-/// what each adds to the generalised mass's diagonal \[kg or kg m^2\] and to the momentum.
+/// The motors of a multibody's free dofs as `(dof, b / a, c / a, max_force h)` (see the
+/// module's docs): what each adds to the generalised mass's diagonal \[kg or kg m^2\] and to
+/// the momentum, and its largest impulse over the (sub)step (`saturation`).
 fn motors(
     mb: &Multibody,
     ctx: &LinkCtx<'_>,
     w_r: &DMatrix<f64>,
     pos: &HashMap<usize, usize>,
-) -> Vec<(usize, f64, f64)> {
+) -> Vec<(usize, f64, f64, f64)> {
     let mut out = Vec::new();
     for link in mb.links() {
         let joint = link.joint();
@@ -550,7 +562,7 @@ fn motors(
                 .then(|| [data.limits[i].min as f64, data.limits[i].max as f64]);
             let Some(&k) = pos.get(&d) else { continue };
             if let Some((b, c)) = motor_fold(motor, coords[i] as f64, limits, w_r[(k, k)], ctx) {
-                out.push((d, b, c));
+                out.push((d, b, c, motor.max_force as f64 * ctx.h));
             }
         }
     }
@@ -576,7 +588,11 @@ pub(crate) fn motor_fold(
             .combine_coefficients(dt_s as f32, motor.stiffness, motor.damping);
     let (erp, cfm_coeff, cfm_gain) = (erp as f64, cfm_coeff as f64, cfm_gain as f64);
     let mut target_vel = motor.target_vel as f64;
-    if let Some([lo, hi]) = limits {
+    // (`f64::clamp` panics on a NaN bound: a joint position gone non-finite is left to the
+    // step's non-finite checks, not turned into a panic here.)
+    if let Some([lo, hi]) = limits
+        && (lo - q) / dt_s <= (hi - q) / dt_s
+    {
         target_vel = target_vel.clamp((lo - q) / dt_s, (hi - q) / dt_s);
     }
     let mut rhs = -target_vel;

@@ -44,9 +44,10 @@
 //! F / m` (6 m/s for a 16 g box under 6 N at 60 Hz) is only partly cancelled per solver pass by
 //! rapier's soft contact constraint, and the box sank into the table and was thrown out.
 
-use nalgebra::{DMatrix, DVector, Dyn, LU, Matrix2, Vector2, Vector3};
+use nalgebra::{DMatrix, DVector, Dyn, LU, Matrix2, Vector2, Vector3, Vector6};
 
 use crate::multibody;
+use crate::saturation;
 use crate::solve::{BodyState, Row};
 
 /// One of rapier's touching contact points between a dynamic body `a` that the soft contacts
@@ -437,8 +438,7 @@ fn solve_scalars(
     state: &mut Vec<State>,
     passes: &mut usize,
     immobile_count: &mut u64,
-    degenerate_count: &mut u64,
-) -> Option<Vec<f64>> {
+) -> Option<(Vec<f64>, f64)> {
     let m = rows.len();
     // The rows' mutual mobility: the impulses change the bodies' velocities, never their mass,
     // inertia or centre, so it is computed once per solve (was: once per LU pass).
@@ -522,11 +522,7 @@ fn solve_scalars(
         }
         previous.copy_from_slice(&j);
     }
-    if degenerate(&j, bound) {
-        *degenerate_count += 1;
-        return None;
-    }
-    Some(j)
+    Some((j, bound))
 }
 
 /// How far past a group's impulse scale (`impulse_bound`) an answer may reach before it is
@@ -895,7 +891,7 @@ pub(crate) fn solve_coupled(
     let base: Vec<BodyState> = bodies.to_vec();
     build(bodies, &[], rigid, &[], h, scalars, &mut first);
     let [.., immobile, degenerate] = stats;
-    let Some(rest) = solve_scalars(bodies, scalars, h, state, &mut passes, immobile, degenerate)
+    let Some(rest) = solve_saturating(bodies, scalars, h, state, &mut passes, immobile, degenerate)
     else {
         bodies.clone_from_slice(&base);
         return failure(scratch_degenerate_before, stats[4]);
@@ -911,7 +907,7 @@ pub(crate) fn solve_coupled(
     // Everything.
     build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
     let [.., immobile, degenerate] = stats;
-    let Some(j) = solve_scalars(bodies, scalars, h, state, &mut passes, immobile, degenerate)
+    let Some(j) = solve_saturating(bodies, scalars, h, state, &mut passes, immobile, degenerate)
     else {
         bodies.clone_from_slice(&base);
         return failure(scratch_degenerate_before, stats[4]);
@@ -957,6 +953,54 @@ pub(crate) fn solve_coupled(
         }
     }
     Coupled::Solved
+}
+
+/// [`solve_scalars`] with the joint motors of the rows' multibodies held to their effort
+/// (`saturation`): after each answer the motors it pushes past their effort are saturated and
+/// the rows solved again from the velocities at the start (the set of saturated motors only
+/// grows: at most one more solve per motor). Leaves `bodies` at the last answer's end, with
+/// the multibodies' last fold.
+fn solve_saturating(
+    bodies: &mut [BodyState],
+    rows: &[Scalar],
+    h: f64,
+    state: &mut Vec<State>,
+    passes: &mut usize,
+    immobile_count: &mut u64,
+    degenerate_count: &mut u64,
+) -> Option<Vec<f64>> {
+    let links = rows
+        .iter()
+        .flat_map(|r| [r.a, r.b])
+        .flatten()
+        .any(|i| bodies[i].link.is_some());
+    let mut start = if links { bodies.to_vec() } else { Vec::new() };
+    let mut wrenches = vec![Vector6::zeros(); if links { bodies.len() } else { 0 }];
+    loop {
+        let mut immobile = 0;
+        let (j, bound) = solve_scalars(bodies, rows, h, state, passes, &mut immobile)?;
+        if links {
+            wrenches.iter_mut().for_each(|w| *w = Vector6::zeros());
+            for (r, &ji) in rows.iter().zip(&j) {
+                for (i, s, ang) in [(r.a, 1.0, r.ang_a), (r.b, -1.0, r.ang_b)] {
+                    if let Some(i) = i.filter(|&i| bodies[i].link.is_some()) {
+                        let (l, a) = (r.lin * (s * ji), ang * (s * ji));
+                        wrenches[i] += Vector6::new(l.x, l.y, l.z, a.x, a.y, a.z);
+                    }
+                }
+            }
+            if saturation::saturate(&mut start, &wrenches)? > 0 {
+                bodies.clone_from_slice(&start);
+                continue;
+            }
+        }
+        *immobile_count += immobile;
+        if degenerate(&j, bound) {
+            *degenerate_count += 1;
+            return None;
+        }
+        return Some(j);
+    }
 }
 
 /// What came of a coupled solve ([`solve_coupled`]).

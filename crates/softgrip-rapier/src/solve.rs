@@ -30,6 +30,7 @@ use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, Vector2, Vector3};
 
 use crate::multibody::{self, Link};
 use crate::rigid::{self, CoupledScratch, RigidRow};
+use crate::saturation;
 
 /// Velocity state and inverse mass of one body as the solver sees it.
 #[derive(Debug, Clone)]
@@ -654,7 +655,7 @@ pub(crate) fn solve(
                             r.jt = Vector3::zeros();
                         }
                     }
-                    let ok = solve_group(bodies, base, group_rows, h, n, group_scratch);
+                    let ok = solve_group_saturating(bodies, base, group_rows, h, n, group_scratch);
                     for (&i, r) in members.iter().zip(group_rows.iter()) {
                         rows[i] = r.clone();
                     }
@@ -741,6 +742,39 @@ fn restore(bodies: &mut [BodyState], base: &[BodyState], rows: &[Row]) {
     for r in rows {
         for i in [r.a, r.b].into_iter().flatten() {
             restore_body(bodies, base, i);
+        }
+    }
+}
+
+/// [`solve_group`] with the joint motors of the rows' multibodies held to their effort
+/// (`saturation`): after each answer the motors its impulses push past their effort are
+/// saturated and the group solved again from `base` with the multibodies folded again (the
+/// set only grows). Used where rapier's contacts of a coupled group could not all hold
+/// (`rigid::Coupled::Degenerate`): the pads on a wedged finger are then solved on their bodies
+/// alone, and a motor folded as holding read the kinematic palm's push as the pads' load
+/// (460 N on the three-finger hand's pads, issue 25).
+fn solve_group_saturating(
+    bodies: &mut [BodyState],
+    base: &[BodyState],
+    rows: &mut [Row],
+    h: f64,
+    bound: usize,
+    scratch: &mut GroupScratch,
+) -> bool {
+    let links = (rows.iter().flat_map(|r| [r.a, r.b]).flatten()).any(|i| bodies[i].link.is_some());
+    if !links {
+        return solve_group(bodies, base, rows, h, bound, scratch);
+    }
+    let mut start = base.to_vec();
+    let mut wrenches = Vec::new();
+    loop {
+        if !solve_group(bodies, &start, rows, h, bound, scratch) {
+            return false;
+        }
+        saturation::soft_wrenches(bodies, rows, &mut wrenches);
+        match saturation::saturate(&mut start, &wrenches) {
+            Some(0) | None => return true,
+            Some(_) => {}
         }
     }
 }
