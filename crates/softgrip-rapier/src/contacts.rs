@@ -108,6 +108,10 @@ pub struct SoftContacts {
     pub(crate) scratch: Scratch,
     /// The tactile image of each fingertip with a pad, in handle order.
     pub(crate) tactile: Vec<(ColliderHandle, TactileSlot)>,
+    /// The error that faulted the plugin (`step`): a faulted plugin steps no more.
+    pub(crate) fault: Option<crate::step_error::StepError>,
+    /// Simulated time of the steps taken \[s\].
+    pub(crate) time: f64,
 }
 
 impl SoftContacts {
