@@ -590,19 +590,6 @@ impl Step<'_> {
 
         if !s.rows.is_empty() {
             self.solve_with_onsets(h, s);
-            let geoms = &self.soft.geoms;
-            let contact = |i: usize| {
-                let g = &geoms[s.geom[i]];
-                Subject::Contact {
-                    fingertip: g.tip,
-                    other: g.other,
-                }
-            };
-            let at = At {
-                phase: Phase::SoftSolve,
-                ..self.at
-            };
-            guard::check_impulses(&s.rows, &s.mobility, contact, at)?;
         }
         bodies::apply_impulses(
             &mut self.physics.bodies,
@@ -615,6 +602,22 @@ impl Step<'_> {
             &mut self.soft.counters,
             &mut s.net,
         );
+        if !s.rows.is_empty() {
+            let geoms = &self.soft.geoms;
+            let contact = |i: usize| {
+                let g = &geoms[s.geom[i]];
+                Subject::Contact {
+                    fingertip: g.tip,
+                    other: g.other,
+                }
+            };
+            let at = At {
+                phase: Phase::SoftSolve,
+                ..self.at
+            };
+            let (bodies, touched) = (&self.physics.bodies, &s.body_table.handles);
+            guard::check_impulses(&s.rows, contact, bodies, touched, at)?;
+        }
         if fresh {
             bodies::unsplit_carry(&s.body_table, &s.net, &mut s.unsplit_carry);
         }

@@ -75,10 +75,10 @@ pub enum Quantity {
     JointPosition,
     /// A multibody joint coordinate's velocity \[rad/s or m/s\] (bound [`MAX_ANGULAR_SPEED`]).
     JointVelocity,
-    /// The velocity change a soft contact's impulse (normal plus tangential) makes along its
-    /// normal in one (sub)step: |impulse| times the contact's normal mobility \[m/s\] (bound
-    /// [`MAX_LINEAR_SPEED`]).
-    ContactVelocityChange,
+    /// A soft contact's impulse from the solve, its largest |component| (normal, tangential,
+    /// torsional) \[N s or N m s\]: must be finite (the velocities it gives the bodies are
+    /// then checked against their bounds).
+    ContactImpulse,
 }
 
 impl Quantity {
@@ -91,7 +91,7 @@ impl Quantity {
             Self::AngularVelocity => "angular velocity [rad/s]",
             Self::JointPosition => "joint position [rad or m]",
             Self::JointVelocity => "joint velocity [rad/s or m/s]",
-            Self::ContactVelocityChange => "contact impulse's velocity change [m/s]",
+            Self::ContactImpulse => "soft contact impulse [N s]",
         }
     }
 }
@@ -102,8 +102,9 @@ pub enum Phase {
     /// Before the step, on the state the user handed over: nothing was advanced, the world is
     /// as it was (not faulted; fix the state and step again).
     Before,
-    /// Inside the step, on the soft solve's impulses before they were applied: the step was
-    /// abandoned part way (at a substep boundary) and the world is faulted.
+    /// Inside the step, on the soft solve's impulses and the velocities they gave the bodies,
+    /// before rapier's pipeline took them: the step was abandoned part way (in a substep) and
+    /// the world is faulted.
     SoftSolve,
     /// After rapier's pipeline: the world holds the diverged state and is faulted.
     After,
