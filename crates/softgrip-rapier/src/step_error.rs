@@ -110,6 +110,16 @@ pub enum Phase {
     After,
 }
 
+impl std::fmt::Display for Phase {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Before => "before the step",
+            Self::SoftSolve => "in the step, after the soft solve",
+            Self::After => "after the step",
+        })
+    }
+}
+
 /// A step that could not be taken or went wrong numerically. Returned by
 /// [`SoftContacts::try_step`](crate::SoftContacts::try_step) and
 /// [`SoftWorld::try_step`](crate::SoftWorld::try_step); a world that returned one with a
@@ -119,7 +129,7 @@ pub enum StepError {
     /// A number of the state is non-finite or beyond what rapier's `f32` can hold
     /// meaningfully.
     #[error(
-        "the simulation diverged at step {step} (t = {} s, {phase:?} the step): {subject}{}: {} = {}, beyond its bound {}",
+        "the simulation diverged at step {step} (t = {} s, {phase}): {subject}{}: {} = {}, beyond its bound {}",
         Shortest(*time),
         name.as_ref().map(|n| format!(" (`{n}`)")).unwrap_or_default(),
         quantity.name(),
