@@ -56,8 +56,8 @@ fn a_diverging_run_exits_non_zero_with_its_recording_finished() {
         "{stderr}"
     );
     assert!(
-        // The recorder's frames: the start (t = 0) and every step before the fault.
-        stdout.contains(&format!("recorded {step} of {} steps", step - 1)),
+        // Every step before the fault, not the failed one (its state is not read out).
+        stdout.contains(&format!("recorded {0} of {0} steps", step - 1)),
         "{stdout}"
     );
     // Finished (not recovered), every step before the fault on /clock, the last one at the
@@ -65,7 +65,7 @@ fn a_diverging_run_exits_non_zero_with_its_recording_finished() {
     let rec = Recording::open(&out).unwrap();
     assert!(!rec.recovered());
     let clock: Vec<_> = rec.on_topic(topics::CLOCK).collect();
-    assert_eq!(clock.len() as u64, step);
+    assert_eq!(clock.len() as u64, step - 1);
     let last = clock.last().unwrap().log_time_ns as f64 * 1e-9;
     assert!((last - (step - 1) as f64).abs() < 1e-6, "{last}");
     // The mcap crate's own reader agrees: every message decodes, the same count.

@@ -42,7 +42,9 @@ pub fn build_schedule(world: &World) -> Schedule {
     s.configure_sets((Sync, Control, Physics, Readout, Record, Publish).chain());
     // A step that failed is not read out, recorded or published (its state is the diverged
     // one), and a faulted world's controllers stop too.
-    s.configure_sets((Control, Readout, Record, Publish).run_if(not_faulted));
+    // `distributive_run_if`: each set evaluates it when reached (a plain `run_if` on the tuple
+    // is evaluated once for all of them, at `Control`, before the physics step).
+    s.configure_sets((Control, Readout, Record, Publish).distributive_run_if(not_faulted));
     s.add_systems(sync_to_rapier.in_set(Sync));
     if world.contains_resource::<MessageRegistry>() {
         // Messages of your own, registered with bevy: rotated by bevy's system.
