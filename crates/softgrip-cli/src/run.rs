@@ -83,6 +83,9 @@ pub enum RunEnd {
     Complete,
     /// Stopped by this signal (SIGINT, SIGTERM or SIGHUP; the recording is finished).
     Interrupted(i32),
+    /// Stopped by a step that failed (`Simulation::fault`; the recording is finished with
+    /// every step before it). `run` returns it as its error.
+    Diverged,
 }
 
 /// Runs the command.
@@ -166,6 +169,10 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
     }
     if let (Some(out), Some(handle)) = (&args.out, sinks.recording) {
         print_recording(out, &handle, &done, every)?;
+    }
+    if let Some(e) = sim.fault().filter(|_| done.end == RunEnd::Diverged) {
+        // Printed by `main` as `error: ...`, exit code 1, after the summary and recording.
+        return Err(anyhow::Error::new(e.clone()));
     }
     Ok(done.end)
 }
@@ -329,6 +336,11 @@ fn step_loop(
             break;
         }
         sim.step();
+        if sim.fault().is_some() {
+            // Not read out, recorded or published (the schedule stops at a fault).
+            end = RunEnd::Diverged;
+            break;
+        }
         steps += 1;
         if let Some(d) = digest.as_deref_mut() {
             d.add_step(sim.world.resource::<Physics>().world.soft.contacts().iter());
@@ -408,6 +420,13 @@ fn print_summary(sim: &Simulation, done: &Done) {
             "interrupted at t = {:.4} s (step {steps} of {total}) by {}",
             steps as f64 * done.dt,
             crate::signals::name(sig)
+        );
+    }
+    if let (RunEnd::Diverged, Some(e)) = (done.end, sim.fault()) {
+        outln!(
+            "diverged at t = {:.4} s (step {} of {total}): {e}",
+            e.time(),
+            steps + 1
         );
     }
     for (_, tip) in &sim.world.resource::<Summary>().tips {

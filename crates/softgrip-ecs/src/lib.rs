@@ -26,8 +26,8 @@ pub use messages::{
     ContactEnded, ContactStarted, GoalEnded, GripReached, SlipStarted, ValidityExcursion,
 };
 pub use resources::{
-    CurrentFrame, PatchRequest, Physics, Publisher, RecordSelection, Recorder, SceneInfoResource,
-    SimClock, SinkSlot,
+    CurrentFrame, Names, PatchRequest, Physics, Publisher, RecordSelection, Recorder,
+    SceneInfoResource, SimClock, SinkSlot, StepFault,
 };
 pub use schedule::{SoftgripStep, SoftgripSystems, build_schedule};
 pub use simulation::{RunReport, Simulation};

@@ -103,6 +103,18 @@ pub struct SimClock {
     pub time: f64,
 }
 
+/// The error that stopped the simulation ([`StepError`](softgrip_rapier::StepError)), with the
+/// scene's names where the world was spawned from a scene (`SubjectNames`). Set by the
+/// physics system when `SoftWorld::try_step` fails; from then on the schedule's readout,
+/// record and publish sets do not run (the diverged state is never read out or recorded),
+/// the physics system does not step, and [`Simulation`](crate::Simulation) stops.
+#[derive(Resource, Debug, Clone, Default)]
+pub struct StepFault(pub Option<softgrip_rapier::StepError>);
+
+/// The scene's names of the rapier handles, for a [`StepFault`] (inserted by `spawn_scene`).
+#[derive(Resource, Debug, Clone, Default)]
+pub struct Names(pub softgrip_scene::SubjectNames);
+
 /// Its presence makes the readout compute every contact's radius and pressure
 /// (`FingertipContact::patch`). Without it no pressure is computed.
 #[derive(Resource, Debug, Clone, Copy, Default)]

@@ -4,7 +4,7 @@ use bevy_ecs::message::{MessageRegistry, message_update_system};
 use bevy_ecs::prelude::{IntoScheduleConfigs, Res, Schedule, SystemSet, World};
 use bevy_ecs::schedule::ScheduleLabel;
 
-use crate::resources::{Publisher, Recorder, SimClock};
+use crate::resources::{Physics, Publisher, Recorder, SimClock, StepFault};
 use crate::summary::{Summary, accumulate_summary};
 use crate::systems::{
     assemble_frame, physics_step, publish, readout, record, run_controllers, sync_to_rapier,
@@ -40,6 +40,11 @@ pub fn build_schedule(world: &World) -> Schedule {
     use SoftgripSystems::*;
     let mut s = Schedule::new(SoftgripStep);
     s.configure_sets((Sync, Control, Physics, Readout, Record, Publish).chain());
+    // A step that failed is not read out, recorded or published (its state is the diverged
+    // one), and a faulted world's controllers stop too.
+    // `distributive_run_if`: each set evaluates it when reached (a plain `run_if` on the tuple
+    // is evaluated once for all of them, at `Control`, before the physics step).
+    s.configure_sets((Control, Readout, Record, Publish).distributive_run_if(not_faulted));
     s.add_systems(sync_to_rapier.in_set(Sync));
     if world.contains_resource::<MessageRegistry>() {
         // Messages of your own, registered with bevy: rotated by bevy's system.
@@ -69,6 +74,11 @@ pub fn build_schedule(world: &World) -> Schedule {
         s.add_systems(publish.in_set(Publish));
     }
     s
+}
+
+/// Run condition: no step has failed ([`StepFault`], or the world's own fault).
+fn not_faulted(fault: Option<Res<StepFault>>, physics: Option<Res<Physics>>) -> bool {
+    fault.is_none_or(|f| f.0.is_none()) && physics.is_none_or(|p| p.world.fault().is_none())
 }
 
 /// Run condition: the recorder takes this step.

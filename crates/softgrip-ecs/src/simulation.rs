@@ -5,11 +5,12 @@ use std::time::{Duration, Instant};
 
 use bevy_ecs::prelude::{FromWorld, Schedule, World};
 
-use crate::resources::{Physics, Publisher, Recorder, SimClock};
+use crate::resources::{Physics, Publisher, Recorder, SimClock, StepFault};
 use crate::schedule::build_schedule;
 use crate::spawn::{SceneEntities, spawn_scene};
 use crate::summary::Summary;
 use crate::systems::{Unsynchronised, create_in_rapier};
+use softgrip_rapier::StepError;
 use softgrip_record::{SinkError, StepSink};
 use softgrip_scene::Scene;
 
@@ -96,12 +97,37 @@ impl Simulation {
         create_in_rapier(&mut self.world, &mut new);
     }
 
-    /// One step.
+    /// One step. A faulted simulation ([`fault`](Self::fault)) does not step any more.
     pub fn step(&mut self) {
+        if self.fault().is_some() {
+            return;
+        }
         self.schedule_mut();
         if let Some(s) = self.schedule.as_mut() {
             s.run(&mut self.world);
         }
+    }
+
+    /// [`step`](Self::step), with the [`StepError`] that stopped it (this step's, or an
+    /// earlier one's: a faulted simulation does not step any more).
+    pub fn try_step(&mut self) -> Result<(), StepError> {
+        self.step();
+        self.fault().map_or(Ok(()), |e| Err(e.clone()))
+    }
+
+    /// The error that stopped the simulation: a step whose state was non-finite or out of the
+    /// engine's bounds before or after it, or a panic inside rapier ([`StepFault`], named with
+    /// the scene's names). The steps before it were read out, recorded and published; the
+    /// failed one was not.
+    pub fn fault(&self) -> Option<&StepError> {
+        let fault = self
+            .world
+            .get_resource::<StepFault>()
+            .and_then(|f| f.0.as_ref());
+        fault.or_else(|| {
+            let physics = self.world.get_resource::<Physics>()?;
+            physics.world.fault()
+        })
     }
 
     /// Steps of the scene's duration.
@@ -109,7 +135,9 @@ impl Simulation {
         self.steps
     }
 
-    /// Runs the scene's duration; `progress(step, total)` is called after every step.
+    /// Runs the scene's duration; `progress(step, total)` is called after every step. Stops at
+    /// a step that fails ([`fault`](Self::fault) says why): the report then counts the steps
+    /// taken before it.
     pub fn run(&mut self, mut progress: impl FnMut(u64, u64)) -> RunReport {
         let start = Instant::now();
         let dt = self
@@ -119,13 +147,17 @@ impl Simulation {
             .physics
             .integration_parameters
             .dt as f64;
+        let mut steps = 0;
         for k in 0..self.steps {
-            self.step();
-            progress(k + 1, self.steps);
+            if self.try_step().is_err() {
+                break;
+            }
+            steps = k + 1;
+            progress(steps, self.steps);
         }
         RunReport {
-            steps: self.steps,
-            sim_time: self.steps as f64 * dt,
+            steps,
+            sim_time: steps as f64 * dt,
             wall: start.elapsed(),
         }
     }

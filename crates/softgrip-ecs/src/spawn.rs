@@ -15,7 +15,9 @@ use crate::controller::{ControllerEntities, ControllerEntity, Controllers, Robot
 use crate::messages::{
     ContactEnded, ContactStarted, GoalEnded, GripReached, SlipStarted, ValidityExcursion,
 };
-use crate::resources::{CurrentFrame, Physics, RecordSelection, SceneInfoResource, SimClock};
+use crate::resources::{
+    CurrentFrame, Names, Physics, RecordSelection, SceneInfoResource, SimClock, StepFault,
+};
 
 /// The entities of a spawned scene, in scene order.
 #[derive(Debug, Clone, Default)]
@@ -48,6 +50,7 @@ pub fn init_world(world: &mut World, soft_world: SoftWorld) {
     }
     world.init_resource::<SimClock>();
     world.init_resource::<CurrentFrame>();
+    world.init_resource::<StepFault>();
 }
 
 /// Builds a scene into the world's [`Physics`] (a new one with the scene's settings if there
@@ -59,6 +62,7 @@ pub fn spawn_scene(world: &mut World, scene: &Scene) -> SceneEntities {
     world.insert_resource(RecordSelection(scene.file().record.clone()));
     world.insert_resource(SceneInfoResource(crate::to_record::scene_info(scene)));
     let handles = scene.build_into(&mut world.resource_mut::<Physics>().world);
+    world.insert_resource(Names(softgrip_scene::SubjectNames::new(scene, &handles)));
     let mut out = SceneEntities {
         bodies: spawn_bodies(world, scene, &handles),
         ..SceneEntities::default()

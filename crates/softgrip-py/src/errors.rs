@@ -3,12 +3,14 @@
 //! `ParameterError` (a `ValueError`) and its `OutOfRangeError` for the law,
 //! `ArgumentTypeError` (a `TypeError`, raised by `args`), `SceneError` for scenes,
 //! `SweepError` and `TrialIndexError` (an `IndexError`) for sweeps, `RecordingError` and its
-//! `RecordingExistsError` / `RecordingFormatError` for MCAP files. Each carries the Rust
+//! `RecordingExistsError` / `RecordingFormatError` for MCAP files, `SimulationDiverged` (an
+//! `ArithmeticError`) for a run stopped by a step error. Each carries the Rust
 //! error's message and, where the error names one, the field (`.field`) and the value
 //! (`.value`).
 
 use pyo3::prelude::*;
 use softgrip_ecs::SceneError;
+use softgrip_ecs::softgrip_rapier::{Phase, StepError, Subject};
 use softgrip_sweep::SweepError;
 
 /// A `softgrip.errors.<class>` exception with `message`, `.field` and `.value` set.
@@ -109,4 +111,55 @@ pub fn parameter(py: Python<'_>, field: &str, value: impl ToString, expected: &s
         Some(field),
         Some(value),
     )
+}
+
+/// A step error: `SimulationDiverged` with its fields (`softgrip/errors.py`), and `result`,
+/// the run's readout up to the fault.
+pub fn diverged(py: Python<'_>, e: &StepError, result: Bound<'_, PyAny>) -> PyErr {
+    let message = e.to_string();
+    let make = || -> PyResult<PyErr> {
+        let cls = py
+            .import("softgrip.errors")?
+            .getattr("SimulationDiverged")?;
+        let exc = cls.call1((message.clone(),))?;
+        exc.setattr("step", e.step())?;
+        exc.setattr("time", e.time())?;
+        exc.setattr("result", result)?;
+        match e {
+            StepError::Diverged {
+                subject,
+                name,
+                quantity,
+                value,
+                bound,
+                phase,
+                ..
+            } => {
+                exc.setattr("kind", "diverged")?;
+                let subject = match subject {
+                    Subject::Body(_) => "body",
+                    Subject::Joint { .. } => "joint",
+                    Subject::Contact { .. } => "contact",
+                };
+                exc.setattr("subject", subject)?;
+                exc.setattr("name", name.clone())?;
+                exc.setattr("quantity", quantity.name())?;
+                exc.setattr("field", quantity.name())?;
+                exc.setattr("found", *value)?;
+                exc.setattr("value", value.to_string())?;
+                exc.setattr("bound", *bound)?;
+                let phase = match phase {
+                    Phase::Before => "before",
+                    Phase::SoftSolve => "soft_solve",
+                    Phase::After => "after",
+                };
+                exc.setattr("phase", phase)?;
+            }
+            StepError::EnginePanicked { .. } => exc.setattr("kind", "engine_panicked")?,
+        }
+        Ok(PyErr::from_value(exc))
+    };
+    make().unwrap_or_else(|err| {
+        pyo3::exceptions::PyRuntimeError::new_err(format!("{message} (and raising it: {err})"))
+    })
 }

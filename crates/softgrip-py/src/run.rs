@@ -9,6 +9,7 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use softgrip_ecs::bevy_ecs::entity::Entity;
+use softgrip_ecs::softgrip_rapier::StepError;
 use softgrip_ecs::to_record::{JointMemory, joint_rates, joint_samples};
 use softgrip_ecs::{
     Controllers, McapSink, Physics, Scene, SceneError, SimClock, Simulation, Summary, TipSummary,
@@ -17,7 +18,7 @@ use softgrip_record::JointSample;
 use softgrip_scene::{ContactDigest, DEFAULT_SCENE};
 
 use crate::args;
-use crate::errors::{parameter, raise, scene_error};
+use crate::errors::{diverged, parameter, raise, scene_error};
 use crate::readout::{BodySeries, JointTable, TactileSeries, TipSeries};
 
 /// Steps between two checks for a pending Python signal (Ctrl-C) during a run.
@@ -59,6 +60,8 @@ struct RunData {
     digest: ContactDigest,
     wall: f64,
     recording: Option<Recording>,
+    /// The step error that stopped the run, if one did (`steps` were taken before it).
+    fault: Option<StepError>,
 }
 
 /// Why a run has no result.
@@ -122,6 +125,10 @@ fn simulate(
             break;
         }
         sim.step();
+        if sim.fault().is_some() {
+            // The failed step is not read out (nor recorded: the schedule stops at a fault).
+            break;
+        }
         steps += 1;
         let physics = sim.world.resource::<Physics>();
         let contacts = physics.world.soft.contacts();
@@ -170,6 +177,7 @@ fn simulate(
         digest,
         wall,
         recording,
+        fault: sim.fault().cloned(),
     })
 }
 
@@ -413,5 +421,11 @@ pub fn run_scene<'py>(
         // The recording is finished; the interrupt goes on to the caller.
         return Err(e);
     }
-    to_python(py, data)
+    let fault = data.fault.clone();
+    let result = to_python(py, data)?;
+    match fault {
+        // The recording is finished; the readout up to the fault goes with the exception.
+        Some(e) => Err(diverged(py, &e, result.into_any())),
+        None => Ok(result),
+    }
 }

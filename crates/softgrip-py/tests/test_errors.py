@@ -346,6 +346,7 @@ def test_the_hierarchy_is_the_builtins_a_user_catches():
         "TrialIndexError": IndexError,
         "RecordingExistsError": FileExistsError,
         "RecordingFormatError": ValueError,
+        "SimulationDiverged": ArithmeticError,
     }
     for name in errors.__all__:
         cls = getattr(errors, name)

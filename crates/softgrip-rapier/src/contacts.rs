@@ -107,6 +107,10 @@ pub struct SoftContacts {
     pub(crate) accuracy: SoftAccuracy,
     pub(crate) geoms: Vec<Geom>,
     pub(crate) scratch: Scratch,
+    /// The error that faulted the plugin (`step`): a faulted plugin steps no more.
+    pub(crate) fault: Option<crate::step_error::StepError>,
+    /// Simulated time of the steps taken \[s\].
+    pub(crate) time: f64,
 }
 
 /// The fingertips' colliders as rapier's hooks see them: each with its facing in its

@@ -12,6 +12,7 @@ mod detect;
 mod error;
 mod fast_hash;
 mod fingertip;
+mod guard;
 mod hooks;
 mod joint_sweeps;
 mod jointed;
@@ -26,6 +27,7 @@ mod saturation;
 mod series;
 mod solve;
 mod step;
+mod step_error;
 mod substep;
 mod tactile;
 mod taxels;
@@ -45,6 +47,10 @@ pub use fingertip::{
 pub use presets::Preset;
 pub use readout::TipContact;
 pub use rigid::IMMOBILE;
+pub use step_error::{
+    MAX_ANGULAR_SPEED, MAX_JOINT_COORDINATE, MAX_LINEAR_SPEED, MAX_POSITION, Phase, Quantity,
+    StepError, Subject,
+};
 pub use substep::{AMPLITUDE_FRACTION, MAX_SUBSTEPS, SoftAccuracy};
 pub use tactile::{MAX_TAXELS_PER_SIDE, MIN_TAXEL_SIDE_OVER_RADIUS, TactileGrid, TactilePad};
 pub use taxels::TactileImage;

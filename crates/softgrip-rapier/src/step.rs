@@ -28,11 +28,13 @@ use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpol
 use crate::boundary::{to_f32, to_f64};
 use crate::contacts::{PairState, Scratch, SoftContacts};
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
+use crate::guard::{self, At};
 use crate::hooks::{SoftEvents, SoftHooks};
 use crate::multibody::{self, LinkCtx};
 use crate::readout;
 use crate::rigid::RigidRow;
 use crate::solve::{self, Row};
+use crate::step_error::{Phase, StepError, Subject};
 use crate::substep;
 use onset::update_blend;
 
@@ -52,32 +54,99 @@ impl SoftContacts {
     /// user's hooks and events are called per substep then. The first step of this
     /// `SoftContacts` runs one pipeline step of `dt = 0` first (with the same hooks and
     /// events), which fills rapier's broad and narrow phases for the first detection.
+    ///
+    /// A step that goes wrong is not reported here: see [`try_step`](Self::try_step), which
+    /// this calls, discarding its error. A faulted plugin ([`fault`](Self::fault)) does not
+    /// advance `world` any more.
     pub fn step(
         &mut self,
         world: &mut PhysicsWorld,
         hooks: &dyn PhysicsHooks,
         events: &dyn EventHandler,
     ) {
+        // The error stays in `self.fault` when it faults the world.
+        let _ = self.try_step(world, hooks, events);
+    }
+
+    /// [`step`](Self::step), with what went wrong as a [`StepError`]: the state handed over
+    /// is checked first ([`Phase::Before`]: `world` is left untouched, not faulted), the soft
+    /// solve's impulses before they are applied ([`Phase::SoftSolve`]), the state after
+    /// rapier's pipeline ([`Phase::After`]), against the bounds of the crate README ("When a
+    /// step goes wrong"); a panic inside rapier's pipeline is caught
+    /// ([`StepError::EnginePanicked`]). Every error but a `Before` one faults the plugin: the
+    /// step was abandoned part way or left a diverged state, and rapier's sets may be
+    /// half-updated after a panic, so this and every later call return the same error
+    /// without touching `world` ([`fault`](Self::fault)). The checks only read: a step that
+    /// passes them is bit-identical to the step without them.
+    pub fn try_step(
+        &mut self,
+        world: &mut PhysicsWorld,
+        hooks: &dyn PhysicsHooks,
+        events: &dyn EventHandler,
+    ) -> Result<(), StepError> {
+        if let Some(f) = &self.fault {
+            return Err(f.clone());
+        }
+        let at = At {
+            step: self.counters.steps + 1,
+            time: self.time,
+            phase: Phase::Before,
+        };
+        guard::check_state(world, at)?;
+        let dt = world.integration_parameters.dt as f64;
         // The set is read by the adapters while the rest of `self` is written.
         let soft = std::mem::take(&mut self.hook_view);
         let mut links = std::mem::take(&mut self.link_contacts);
-        links.refresh(world);
-        let (hooks, events) = (
-            SoftHooks::new(&soft, &links, hooks),
-            SoftEvents::new(&soft, events),
-        );
-        Step {
-            physics: world,
-            soft: self,
-            hooks: &hooks,
-            events: &events,
-        }
-        .run();
+        let r = guard::catch(at.step, at.time, || {
+            links.refresh(world);
+            let (hooks, events) = (
+                SoftHooks::new(&soft, &links, hooks),
+                SoftEvents::new(&soft, events),
+            );
+            Step {
+                physics: world,
+                soft: self,
+                hooks: &hooks,
+                events: &events,
+                at,
+            }
+            .run()
+        });
         self.hook_view = soft;
         let dropped = links.take_dropped();
         self.counters.locked_link_contacts += dropped;
         self.counters.immobile_rows += dropped;
         self.link_contacts = links;
+        let after = At {
+            phase: Phase::After,
+            ..at
+        };
+        match r
+            .and_then(|r| r)
+            .and_then(|()| guard::check_state(world, after))
+        {
+            Ok(()) => {
+                if dt > 0.0 {
+                    self.time += dt;
+                }
+                Ok(())
+            }
+            Err(e) => {
+                self.fault = Some(e.clone());
+                Err(e)
+            }
+        }
+    }
+
+    /// The error that faulted this plugin ([`try_step`](Self::try_step)), if any: a faulted
+    /// plugin does not step its world any more.
+    pub fn fault(&self) -> Option<&StepError> {
+        self.fault.as_ref()
+    }
+
+    /// Simulated time of the steps taken \[s\]: the sum of their `dt`.
+    pub fn time(&self) -> f64 {
+        self.time
     }
 }
 
@@ -87,6 +156,8 @@ struct Step<'a> {
     soft: &'a mut SoftContacts,
     hooks: &'a SoftHooks<'a>,
     events: &'a SoftEvents<'a>,
+    /// The step's number and start time, for a [`StepError`].
+    at: At,
 }
 
 impl Step<'_> {
@@ -136,11 +207,11 @@ impl Step<'_> {
     }
 
     /// The step: `physics.integration_parameters.dt`.
-    fn run(&mut self) {
+    fn run(&mut self) -> Result<(), StepError> {
         let dt = self.physics.integration_parameters.dt as f64;
         if !(dt > 0.0) {
             self.pipeline_step(0.0);
-            return;
+            return Ok(());
         }
         if !self.soft.started {
             // Fill the broad phase and narrow phase before the first soft detection (a
@@ -179,7 +250,11 @@ impl Step<'_> {
         }
 
         // 4. Substeps.
-        self.substeps(n, h, &kinematic, &mut scratch);
+        let substeps = self.substeps(n, h, &kinematic, &mut scratch);
+        if substeps.is_err() {
+            self.soft.scratch = scratch;
+            return substeps;
+        }
         if n > 1 {
             let gravity = self.physics.gravity;
             bodies::gravity_kick(&mut self.physics.bodies, gravity, -lag * (dt - h));
@@ -189,11 +264,18 @@ impl Step<'_> {
         readout::assemble(&mut scratch.accums, dt, &mut self.soft.contacts);
         self.soft.scratch = scratch;
         self.soft.update_tactile(&self.physics.colliders);
+        Ok(())
     }
 
     /// `n` substeps of `h` \[s\]: fresh contacts (the first substep's are the prepared ones),
     /// kinematic bodies along their paths, impulses, rapier's pipeline.
-    fn substeps(&mut self, n: u32, h: f64, kinematic: &[KinematicPath], scratch: &mut Scratch) {
+    fn substeps(
+        &mut self,
+        n: u32,
+        h: f64,
+        kinematic: &[KinematicPath],
+        scratch: &mut Scratch,
+    ) -> Result<(), StepError> {
         scratch.accums.clear();
         for i in 0..n {
             if i > 0 {
@@ -210,12 +292,13 @@ impl Step<'_> {
             }
             let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
             multibody::carry_kinematic_roots(self.physics, kinematic, s as f32);
-            self.substep_contacts(h, &kin_vel, fresh, scratch);
+            self.substep_contacts(h, &kin_vel, fresh, scratch)?;
             self.pipeline_step(h);
             if !scratch.link_forces.is_empty() {
                 multibody::restore_forces(&mut self.physics.bodies, &mut scratch.link_forces);
             }
         }
+        Ok(())
     }
 
     /// Body table and rows of the current geometry, for a step of `h` seconds, written to
@@ -517,7 +600,7 @@ impl Step<'_> {
         kin_vel: &KinematicVelocity,
         fresh: bool,
         s: &mut Scratch,
-    ) {
+    ) -> Result<(), StepError> {
         let t = Instant::now();
         if !fresh {
             self.prepare(h, kin_vel, s);
@@ -539,6 +622,22 @@ impl Step<'_> {
             &mut self.soft.counters,
             &mut s.net,
         );
+        if !s.rows.is_empty() {
+            let geoms = &self.soft.geoms;
+            let contact = |i: usize| {
+                let g = &geoms[s.geom[i]];
+                Subject::Contact {
+                    fingertip: g.tip,
+                    other: g.other,
+                }
+            };
+            let at = At {
+                phase: Phase::SoftSolve,
+                ..self.at
+            };
+            let (bodies, touched) = (&self.physics.bodies, &s.body_table.handles);
+            guard::check_impulses(&s.rows, contact, bodies, touched, at)?;
+        }
         if fresh {
             bodies::unsplit_carry(&s.body_table, &s.net, &mut s.unsplit_carry);
         }
@@ -560,6 +659,7 @@ impl Step<'_> {
             readout::accumulate(&mut s.accums, key, row, model, delta, delta_end, h);
         }
         self.soft.counters.solve_time += t.elapsed();
+        Ok(())
     }
 }
 

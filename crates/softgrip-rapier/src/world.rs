@@ -7,6 +7,7 @@ use rapier3d::prelude::{
 use crate::contacts::SoftContacts;
 use crate::error::Result;
 use crate::fingertip::SoftFingertip;
+use crate::step_error::StepError;
 
 /// A rapier [`PhysicsWorld`] with soft fingertips. Build the scene with rapier's own API on
 /// `physics` (`physics.insert(..)`, or `physics.bodies` and `physics.colliders`), register
@@ -64,9 +65,32 @@ impl SoftWorld {
     }
 
     /// Advances the world by `physics.integration_parameters.dt`, with no user hooks and no
-    /// event handler.
+    /// event handler. A step that goes wrong is not reported here: a faulted world
+    /// ([`fault`](Self::fault)) stops advancing; [`try_step`](Self::try_step) says why.
     pub fn step(&mut self) {
         self.step_with(&(), &());
+    }
+
+    /// [`step`](Self::step), with a [`StepError`] if the state is non-finite or out of the
+    /// engine's bounds before or after the step, or rapier panicked (see
+    /// [`SoftContacts::try_step`]).
+    pub fn try_step(&mut self) -> std::result::Result<(), StepError> {
+        self.try_step_with(&(), &())
+    }
+
+    /// [`step_with`](Self::step_with), with a [`StepError`] (see [`SoftContacts::try_step`]).
+    pub fn try_step_with(
+        &mut self,
+        hooks: &dyn PhysicsHooks,
+        events: &dyn EventHandler,
+    ) -> std::result::Result<(), StepError> {
+        self.soft.try_step(&mut self.physics, hooks, events)
+    }
+
+    /// The error that faulted this world, if any ([`SoftContacts::fault`]): a faulted world
+    /// does not advance any more.
+    pub fn fault(&self) -> Option<&StepError> {
+        self.soft.fault()
     }
 
     /// Advances the world by `physics.integration_parameters.dt`, passing the user's `hooks`

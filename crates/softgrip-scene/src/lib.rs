@@ -11,6 +11,7 @@ mod format;
 mod level;
 mod limits;
 mod mesh;
+mod names;
 mod plain;
 mod read;
 pub mod robot;
@@ -41,6 +42,7 @@ pub use limits::{
     MAX_TIME, MIN_DENSITY, MIN_DT, MIN_SIZE, RESERVED_FRAME_NAMES,
 };
 pub use mesh::{Mesh, load_mesh, parse_obj, parse_stl};
+pub use names::SubjectNames;
 pub use plain::PlainRun;
 pub use read::{UTF8_BOM, same_file, strip_bom};
 pub use robot::{JointState, Robot, RobotHandles, RobotSpec};

@@ -3,11 +3,12 @@
 //! ECS's overhead benchmark and equivalence tests: the ECS spawns from the same builder and
 //! calls the same controller logic, so its contact values are bit-identical.
 
-use softgrip_rapier::SoftWorld;
 use softgrip_rapier::rapier3d::prelude::RigidBodyHandle;
+use softgrip_rapier::{SoftWorld, StepError};
 
 use crate::build::SceneHandles;
 use crate::control::{ControlEvent, ControlSet};
+use crate::names::SubjectNames;
 use crate::scene::Scene;
 use crate::trajectory::Trajectory;
 use crate::vector::vector;
@@ -23,6 +24,7 @@ pub struct PlainRun {
     paths: Vec<(RigidBodyHandle, Trajectory)>,
     events: Vec<(usize, ControlEvent)>,
     step: u64,
+    names: SubjectNames,
 }
 
 impl PlainRun {
@@ -36,7 +38,9 @@ impl PlainRun {
             .map(|(b, (_, h))| (*h, Trajectory::of(b)))
             .collect();
         let control = scene.control_set(&built.handles);
+        let names = SubjectNames::new(scene, &built.handles);
         Self {
+            names,
             world: built.world,
             handles: built.handles,
             control,
@@ -52,8 +56,23 @@ impl PlainRun {
     }
 
     /// One step: trajectories and gripper write the kinematic targets for the end of the
-    /// step, then `SoftWorld::step`.
+    /// step, then `SoftWorld::step`. A step that goes wrong is not reported here (see
+    /// [`try_step`](Self::try_step)): a faulted world stops advancing, and so does the count
+    /// of steps.
     pub fn step(&mut self) {
+        // The error stays in the world's fault (`SoftWorld::fault`).
+        let _ = self.try_step();
+    }
+
+    /// [`step`](Self::step), with a [`StepError`] naming the step, its start time and what
+    /// diverged by its scene name (a body, `<robot>/<link>`, `<robot>/<joint>`, or a
+    /// fingertip's contact), if the world's state is non-finite or out of the engine's bounds
+    /// before or after the step, or rapier panicked (`SoftWorld::try_step`). A faulted run
+    /// returns its error again on every call and advances no more ([`fault`](Self::fault)).
+    pub fn try_step(&mut self) -> Result<(), StepError> {
+        if let Some(e) = self.world.fault() {
+            return Err(self.names.named(e.clone()));
+        }
         let dt = self.world.physics.integration_parameters.dt as f64;
         let t = (self.step + 1) as f64 * dt;
         for (h, path) in &self.paths {
@@ -64,8 +83,19 @@ impl PlainRun {
             }
         }
         self.events = self.control.step(&mut self.world, t, dt);
-        self.world.step();
+        self.world.try_step().map_err(|e| self.names.named(e))?;
         self.step += 1;
+        Ok(())
+    }
+
+    /// The error that faulted the run, with its scene names, if any.
+    pub fn fault(&self) -> Option<StepError> {
+        self.world.fault().map(|e| self.names.named(e.clone()))
+    }
+
+    /// The scene's names of the handles a [`StepError`] points at.
+    pub fn names(&self) -> &SubjectNames {
+        &self.names
     }
 
     /// What the controllers did in the last step, by controller index.
@@ -73,11 +103,22 @@ impl PlainRun {
         &self.events
     }
 
-    /// Steps `n` times; `each(run)` is called after every step.
+    /// Steps `n` times; `each(run)` is called after every step. A faulted world stops
+    /// advancing ([`step`](Self::step)); [`try_run`](Self::try_run) says why.
     pub fn run(&mut self, n: u64, mut each: impl FnMut(&Self)) {
         for _ in 0..n {
             self.step();
             each(self);
         }
+    }
+
+    /// Steps `n` times; `each(run)` is called after every step. Stops at the first step
+    /// that fails and returns its error ([`try_step`](Self::try_step)).
+    pub fn try_run(&mut self, n: u64, mut each: impl FnMut(&Self)) -> Result<(), StepError> {
+        for _ in 0..n {
+            self.try_step()?;
+            each(self);
+        }
+        Ok(())
     }
 }

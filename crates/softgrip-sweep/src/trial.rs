@@ -47,7 +47,9 @@ struct Heights {
 /// if given; `object` is the body whose hold decides `held`. The run takes the scene's
 /// duration, and goes on past it until the grasp's hold ends when that can be later (a `grasp`
 /// controller's timeline, `trial_steps`). The error says why the trial
-/// has no outcome (no such object, no gripper, the hold never ended, the recorder failed).
+/// has no outcome (no such object, no gripper, the hold never ended, the recorder failed, a
+/// step diverged: `the simulation diverged at step N (t = ... s, ...)`, the recording then
+/// finished with every step before it).
 pub fn run_scene(
     scene: &Scene,
     text: &str,
@@ -88,6 +90,9 @@ pub fn run_scene(
         }
         let before = phase(&sim);
         sim.step();
+        if sim.fault().is_some() {
+            break;
+        }
         let after = phase(&sim);
         if after == Phase::Lift && before != Phase::Lift {
             lift_start = heights(&sim, &view, object_entity, up);
@@ -99,6 +104,10 @@ pub fn run_scene(
     }
     sim.finish()
         .map_err(|e| format!("finishing the recording: {e}"))?;
+    if let Some(e) = sim.fault() {
+        // The trial's row carries the reason; the recording holds every step before it.
+        return Err(e.to_string());
+    }
     let (Some(start), Some((end, grip))) = (lift_start, hold_end) else {
         let (dt, total) = (scene.file().dt, sim.total_steps());
         let t = total as f64 * dt;

@@ -42,6 +42,7 @@ from .errors import (
     RecordingExistsError,
     RecordingFormatError,
     SceneError,
+    SimulationDiverged,
     SoftgripError,
     SweepError,
     TrialIndexError,
@@ -69,6 +70,7 @@ __all__ = [
     "RunResult",
     "SUMMARY_FIELDS",
     "SceneError",
+    "SimulationDiverged",
     "SoftgripError",
     "Sweep",
     "SweepError",
@@ -217,8 +219,21 @@ def run(
         RecordingError: the recording could not be written.
         ArgumentTypeError: an argument of the wrong type.
         KeyboardInterrupt: Ctrl-C during the run (the recording is finished first).
+        SimulationDiverged: a step went wrong numerically (``e.step``, ``e.time``,
+            ``e.name``, ``e.quantity``, ``e.found``, ``e.bound``); the recording is finished
+            with every step before it and ``e.result`` is the :class:`RunResult` over them.
     """
-    r = _native.run_scene(scene, mcap=mcap, every=every, overwrite=overwrite)
+    return _result(lambda: _native.run_scene(scene, mcap=mcap, every=every, overwrite=overwrite))
+
+
+def _result(call) -> RunResult:
+    """``RunResult`` of a native run; a ``SimulationDiverged``'s ``result`` made one too."""
+    try:
+        r = call()
+    except SimulationDiverged as e:
+        if isinstance(e.result, dict):
+            e.result = RunResult(**e.result)
+        raise
     return RunResult(**r)
 
 
@@ -239,10 +254,11 @@ def run_toml(
         )
         err.field, err.value = "toml", repr(text)
         raise err
-    r = _native.run_scene(
-        None, toml=text, base_dir=base_dir, mcap=mcap, every=every, overwrite=overwrite
+    return _result(
+        lambda: _native.run_scene(
+            None, toml=text, base_dir=base_dir, mcap=mcap, every=every, overwrite=overwrite
+        )
     )
-    return RunResult(**r)
 
 
 def open_recording(path: PathLike, *, frame: str = "scene") -> Recording:

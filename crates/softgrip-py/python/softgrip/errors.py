@@ -15,9 +15,11 @@ Every class is also the built-in exception a Python user catches for that kind o
     ├── SceneError (ValueError)               a scene that does not load (file, TOML, a field)
     ├── SweepError (ValueError)               a sweep file that does not load, a bad shard
     │   └── TrialIndexError (IndexError)       a trial index outside 0..trials
-    └── RecordingError                         an MCAP recording that cannot be written or read
-        ├── RecordingExistsError (FileExistsError)   the output exists (pass overwrite=True)
-        └── RecordingFormatError (ValueError)        not MCAP, damaged, or not decodable
+    ├── RecordingError                         an MCAP recording that cannot be written or read
+    │   ├── RecordingExistsError (FileExistsError)   the output exists (pass overwrite=True)
+    │   └── RecordingFormatError (ValueError)        not MCAP, damaged, or not decodable
+    └── SimulationDiverged (ArithmeticError)  a run whose state went non-finite or out of the
+                                               engine's bounds, or rapier panicked
 
 A missing input file is the built-in ``FileNotFoundError`` where Python's ``open`` would raise
 it (``softgrip.open_recording``); a scene or sweep file that cannot be read is its
@@ -39,6 +41,7 @@ __all__ = [
     "RecordingError",
     "RecordingExistsError",
     "RecordingFormatError",
+    "SimulationDiverged",
 ]
 
 
@@ -102,3 +105,42 @@ class RecordingExistsError(RecordingError, FileExistsError):
 class RecordingFormatError(RecordingError, ValueError):
     """A file that is not an MCAP recording, is damaged (the message names the part), or
     holds a message that does not decode."""
+
+
+class SimulationDiverged(SoftgripError, ArithmeticError):
+    """A run stopped by a step that went wrong numerically (``softgrip.run``): a body's
+    position or velocity, or a multibody joint's coordinate, non-finite or beyond what the
+    engine's ``f32`` holds, before or after the step (``kind == "diverged"``), or a panic
+    inside rapier's pipeline (``kind == "engine_panicked"``). Everything up to the failed step
+    is kept: the recording (``mcap=``) is finished with every step before it, and
+    ``e.result`` is the run's dict as :func:`softgrip.run` returns it, over those steps.
+
+    Attributes: ``step`` (the failed step, from 1), ``time`` (simulated time at its start,
+    s), ``subject`` (``"body"``, ``"joint"`` or ``"contact"``; None for a panic), ``name`` (the
+    scene's name of it: a body, ``robot/link``, ``robot/joint``, ``tip on other``; or None),
+    ``quantity`` (e.g. ``"linear velocity [m/s]"``; None for a panic), ``found`` (the value,
+    a float, NaN or inf included; None for a panic), ``bound`` (float; None for a panic),
+    ``phase`` (``"before"``, ``"soft_solve"``, ``"after"``; None for a panic), ``result``.
+    ``e.field`` is ``quantity`` and ``e.value`` the value as text; ``str(e)`` says it all,
+    and for a panic rapier's message and where it was raised.
+    """
+
+    kind: Optional[str] = None
+    step: Optional[int] = None
+    time: Optional[float] = None
+    subject: Optional[str] = None
+    name: Optional[str] = None
+    quantity: Optional[str] = None
+    found: Optional[float] = None
+    bound: Optional[float] = None
+    phase: Optional[str] = None
+    result: Optional[dict] = None
+
+    def __reduce__(self):
+        return (_rebuild_with, (type(self), self.args, dict(self.__dict__)))
+
+
+def _rebuild_with(cls, args, attrs):
+    e = cls(*args)
+    e.__dict__.update(attrs)
+    return e
