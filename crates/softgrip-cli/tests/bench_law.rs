@@ -100,21 +100,22 @@ fn quick_run_prints_every_level_and_writes_five_pngs() {
 
     // Each counterpart has its own section; calibrated on it is within its stated error of
     // its FE (crates/softgrip-law/tests/counterpart_fe.rs: ball K = 1 free 1.55 %, R/2 free
-    // 1.17 %, 2R flat 1.21 %, cylinder K = 1 flat 1.11 %, K = 3 free 0.72 %: fails at 2 %;
-    // the edge 4.25 % flat, 3.31 % free: fails at 5 %; the stated misses, the free sphere on
-    // 4R at nu 0.3 3.64 % and the flat pad on R at nu 0.3 5.05 %, and the held-out 0.7 R at
-    // nu 0.4 2.42 %, fail past their numbers); the plane law would be 89 % off on the ball of
-    // R at x = 0.7 (the 'softgrip is too stiff').
+    // 1.17 %, cylinder K = 1 flat 1.11 %, K = 3 free 0.72 %: fails at 2 %; 2R flat 2.02 %
+    // since session 14's refit of the flat pad on balls (1.21 % before): fails at 2.3 %; the
+    // edge 4.25 % flat, 3.31 % free: fails at 5 %; the free sphere on 4R at nu 0.3 3.64 %
+    // fails past it; the flat pad on R at nu 0.3, 5.05 % before the refit, 1.53 % since:
+    // fails at 1.8 %; the held-out 0.7 R at nu 0.4 2.42 %, fails past it); the plane law
+    // would be 89 % off on the ball of R at x = 0.7 (the 'softgrip is too stiff').
     for (heading, limit) in [
         ("free on ball:1 nu = 0.48 ", 2.0),
         ("free on ball:0.5 nu = 0.48 ", 2.0),
-        ("flat on ball:2 nu = 0.48 ", 2.0),
+        ("flat on ball:2 nu = 0.48 ", 2.3),
         ("flat on cylinder:1 nu = 0.48 ", 2.0),
         ("free on cylinder:3 nu = 0.48 ", 2.0),
         ("flat on edge nu = 0.48 ", 5.0),
         ("free on edge nu = 0.48 ", 5.0),
         ("free on ball:4 nu = 0.3 ", 3.9),
-        ("flat on ball:1 nu = 0.3 ", 5.3),
+        ("flat on ball:1 nu = 0.3 ", 1.8),
         ("free on ball:0.7 nu = 0.4 ", 2.7),
     ] {
         let cal = section_cells(&table, heading, "calibrated");
