@@ -91,7 +91,15 @@ HELD = {(0.35, 0.7), (0.45, 0.5), (0.4, 0.3), (0.49, 0.3),
         # the third (session 11): a skin thinner than any fitted, and one between them
         (0.47, 0.15), (0.42, 0.25),
         # the fourth (session 13): skins thinner than any fitted (t/R 0.1-0.14, R/60-R/75)
-        (0.38, 0.12), (0.46, 0.1), (0.32, 0.14), (0.49, 0.12)}
+        (0.38, 0.12), (0.46, 0.1), (0.32, 0.14), (0.49, 0.12),
+        # the fifth (session 15): a blind test of session 15's thin-skin variant (run after its
+        # constants were fixed), beside the held-out miss (0.46, 0.25)
+        (0.47, 0.25)}
+# Fit data made after the law's constants (session 15, role "main" in tools/fe/fe_campaign.py:
+# t/R 0.3 between the fitted 0.2 and 0.4). The law was not refitted (CORE_FORM.md, "Thin skins:
+# session 15"), so this script keeps them out of its fit and reports them as held out; a refit
+# of the form moves them into the fit by deleting this set.
+LATER = {(0.48, 0.3), (0.35, 0.3)}
 # The flat construction's constants (backed.rs FLAT: c0, c1, e0, e1, b, d), not refitted here.
 FLAT = (0.681614, -0.341872, 1.754842, -2.984330, 0.791282, 0.329388)
 # The law's radius (backed.rs G, RADIUS, RADIUS_CORE), not refitted here.
@@ -188,7 +196,8 @@ def load():
         hi = min(flat_x_max(nu), SQUEEZE * tau)
         keep = (x >= 0.01 - 1e-9) & (x <= hi + 1e-9)
         curves.append(dict(nu=nu, tau=tau, x=x[keep], chi=chi[keep], reach=x[-1],
-                           held=(nu, tau) in HELD, name=os.path.basename(path)))
+                           held=(nu, tau) in HELD or (nu, tau) in LATER,
+                           name=os.path.basename(path)))
     return curves
 
 

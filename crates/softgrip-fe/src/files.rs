@@ -388,6 +388,22 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.12)
     ),
+    fe_file!(
+        "core/force_nu0.48_t0.3.csv",
+        Force,
+        Some(0.48),
+        "softgrip's own FE (session 15, fit data between the fitted t/R 0.2 and 0.4): skin t/R = 0.3 over a rigid core, nu = 0.48, x = 0.01..0.2",
+        "core",
+        Some(0.3)
+    ),
+    fe_file!(
+        "core/force_nu0.35_t0.3.csv",
+        Force,
+        Some(0.35),
+        "softgrip's own FE (session 15, fit data between the fitted t/R 0.2 and 0.4): skin t/R = 0.3 over a rigid core, nu = 0.35, x = 0.01..0.24",
+        "core",
+        Some(0.3)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
