@@ -404,6 +404,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.3)
     ),
+    fe_file!(
+        "core/force_nu0.47_t0.25.csv",
+        Force,
+        Some(0.47),
+        "held out of every fit (session 15, blind): skin t/R = 0.25 over a rigid core, nu = 0.47, x = 0.01..0.17",
+        "core",
+        Some(0.25)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
