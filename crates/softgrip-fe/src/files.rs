@@ -412,6 +412,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.25)
     ),
+    fe_file!(
+        "core/force_nu0.45_t0.35.csv",
+        Force,
+        Some(0.45),
+        "softgrip's own FE (session 15, fit data between the fitted t/R 0.2 and 0.4): skin t/R = 0.35 over a rigid core, nu = 0.45, x = 0.01..0.25",
+        "core",
+        Some(0.35)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
