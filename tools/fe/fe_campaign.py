@@ -88,10 +88,11 @@ def cases():
     # fitted t/R 0.2 and 0.4, where the core law's thin-skin part had only held-out curves (the
     # fitted nu 0.48, then a compressible skin); a blind test of the refit (run after its
     # constants were fixed: nu 0.47, t/R 0.25, next to the held-out miss at nu 0.46); the mesh
-    # check of the first (R/30, the recipe's coarser mesh); then t/R 0.35 at nu 0.45 (fit data)
+    # check of the first (R/30, the recipe's coarser mesh); then t/R 0.35 at nu 0.45 and
+    # t/R 0.25 at nu 0.49 (fit data)
     c += [("core", 0.48, 0.3, 40, "main"), ("core", 0.35, 0.3, 40, "main"),
           ("core", 0.47, 0.25, 40, "heldout"), ("core", 0.48, 0.3, 30, "conv"),
-          ("core", 0.45, 0.35, 40, "main")]
+          ("core", 0.45, 0.35, 40, "main"), ("core", 0.49, 0.25, 40, "main")]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
 

@@ -420,6 +420,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.35)
     ),
+    fe_file!(
+        "core/force_nu0.49_t0.25.csv",
+        Force,
+        Some(0.49),
+        "softgrip's own FE (session 15, fit data between the fitted t/R 0.2 and 0.4): skin t/R = 0.25 over a rigid core, nu = 0.49, x = 0.01..0.15",
+        "core",
+        Some(0.25)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then

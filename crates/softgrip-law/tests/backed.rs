@@ -85,8 +85,9 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // at 0.01), (0.49, 0.12) 2.49 % (at its end x = 0.05, -; +0.01 % at 0.01): the 2 % target
     // is missed, more the thinner the skin (crate README). Session 15, t/R 0.3 (fit data for
     // the next refit, made after the constants): (0.48, 0.3) 1.46 % (x = 0.01; to 0.20), (0.35,
-    // 0.3) 2.07 % (x = 0.19, delta/t 0.63; to 0.24), (0.45, 0.35) 1.86 % (x = 0.09; to 0.25);
-    // and a blind run, (0.47, 0.25) 1.67 % (x = 0.01, +; to 0.17). Each tolerance: seen + 0.1 %.
+    // 0.3) 2.07 % (x = 0.19, delta/t 0.63; to 0.24), (0.45, 0.35) 1.86 % (x = 0.09; to 0.25),
+    // (0.49, 0.25) 2.11 % (at its end x = 0.15, delta/t 0.6: a miss of the 2 %); and a blind run,
+    // (0.47, 0.25) 1.67 % (x = 0.01, +; to 0.17). Each tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -210,6 +211,12 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             Backing::Core { thickness: 0.35 },
             0.0196,
         ),
+        (
+            "core/force_nu0.49_t0.25.csv",
+            0.49,
+            Backing::Core { thickness: 0.25 },
+            0.0221,
+        ),
         // Session 15, blind (run after every constant tried that session was fixed).
         (
             "core/force_nu0.47_t0.25.csv",
@@ -281,7 +288,7 @@ fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
 }
 
 /// Issue 24 item 5: the core's validity reaches the FE's. Every committed FE core curve (the 14
-/// fitted, the 16 held out and session 15's four) lies inside the law's range to its
+/// fitted, the 16 held out and session 15's five) lies inside the law's range to its
 /// last converged point, or to the flat construction's x_max where that comes first (nu 0.499 t/R 0.6: FE 0.47, flat 0.44; nu
 /// 0.35 t/R 0.7: FE 0.50, flat 0.495), and the issue's two marks hold at every nu the level
 /// takes: x = 0.22 at t/R 0.3 (FE: 0.23 at nu 0.4, 0.20 at 0.49) and 0.38 at t/R 0.5 (FE: 0.39
@@ -303,7 +310,7 @@ fn core_validity_reaches_the_fe_reach() {
         );
         files += 1;
     }
-    assert_eq!(files, 34);
+    assert_eq!(files, 35);
     for j in 0..=20 {
         let nu = 0.3 + 0.01 * f64::from(j);
         for (t, x) in [(0.3, 0.22), (0.5, 0.38)] {
