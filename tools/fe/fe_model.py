@@ -27,6 +27,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from fe_counterpart import SAG_MAX, Counterpart
+from fe_deck import (neo_hooke, write_contact, write_master_elements, write_materials,
+                     write_nset, write_steps, write_surface)
 
 R = 1.0  # mm
 GEOMETRIES = ("free", "flat", "core")
@@ -69,9 +71,7 @@ class Case:
         return self.steps[-1][0]
 
     def material(self):
-        c10 = self.mu / 2
-        kappa = 2 * self.mu * (1 + self.nu) / (3 * (1 - 2 * self.nu))
-        return c10, 2 / kappa
+        return neo_hooke(self.mu, self.nu)
 
 
 def mesh(case: Case):
@@ -185,44 +185,15 @@ def deck(case: Case, path: str) -> dict:
     w("*ELEMENT, TYPE=CAX8R, ELSET=EBODY")
     for k, c in enumerate(E):
         w(f"{k + 1}, " + ", ".join(str(int(v)) for v in c))
-    for typ in ("C3D8", "C3D6"):
-        els = [(k, ids) for k, (t, ids) in enumerate(master.elements) if t == typ]
-        if els:
-            w(f"*ELEMENT, TYPE={typ}, ELSET={ELSETS[typ]}")
-            for k, ids in els:
-                w(f"{base + k + 1}, " + ", ".join(str(base + v + 1) for v in ids))
-
-    def nset(name, ids):
-        w(f"*NSET, NSET={name}")
-        ids = [int(v) for v in ids]
-        for i in range(0, len(ids), 12):
-            w(", ".join(str(v) for v in ids[i:i + 12]) + ",")
-
-    nset("NAXIS", np.where(on_axis)[0] + 1)
-    nset("NPUSH", np.where(push)[0] + 1)
-    nset("NARC", np.where(on_arc)[0] + 1)
-    nset("NPOLE", [ipole])
-    w("*SURFACE, NAME=SSLAVE, TYPE=ELEMENT")
-    for k, j in slave:
-        w(f"{k}, S{j}")
-    w("*SURFACE, NAME=SMASTER, TYPE=ELEMENT")
-    for k, j in master.faces:
-        w(f"{base + k + 1}, S{j}")
-    w("*MATERIAL, NAME=RUBBER")
-    w("*HYPERELASTIC, NEO HOOKE")
-    w(f"{c10:.10g}, {d1:.10g}")
-    w("*MATERIAL, NAME=RIGID")
-    w("*ELASTIC")
-    w("1e6, 0.3")
-    w("*SOLID SECTION, ELSET=EBODY, MATERIAL=RUBBER")
-    for typ in ("C3D8", "C3D6"):
-        if any(t == typ for t, _ in master.elements):
-            w(f"*SOLID SECTION, ELSET={ELSETS[typ]}, MATERIAL=RIGID")
-    w("*SURFACE INTERACTION, NAME=SI")
-    w("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR")
-    w(f"{case.kpen:g}")
-    w("*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE")
-    w("SSLAVE, SMASTER")
+    write_master_elements(w, master, base, ELSETS)
+    write_nset(w, "NAXIS", np.where(on_axis)[0] + 1)
+    write_nset(w, "NPUSH", np.where(push)[0] + 1)
+    write_nset(w, "NARC", np.where(on_arc)[0] + 1)
+    write_nset(w, "NPOLE", [ipole])
+    write_surface(w, "SSLAVE", slave)
+    write_surface(w, "SMASTER", [(base + k + 1, j) for k, j in master.faces])
+    write_materials(w, c10, d1, master, ELSETS)
+    write_contact(w, case.kpen)
     w("*BOUNDARY")
     w("NPLATE, 1, 3, 0.")
     w("NAXIS, 1, 1, 0.")
@@ -241,34 +212,7 @@ def deck(case: Case, path: str) -> dict:
                     w("*EQUATION")
                     w("2")
                     w(f"{n}, 2, 1.0, {nc}, 2, -1.0")
-    # output time points of every step, relative to the step's start (CalculiX step time);
-    # all must be defined before the first *STEP
-    x0 = 0.0
-    for s, (x1, _) in enumerate(case.steps):
-        n0, n1 = int(round(x0 / case.tp)), int(round(x1 / case.tp))
-        pts = [n * case.tp - x0 for n in range(n0 + 1, n1 + 1)]
-        w(f"*TIME POINTS, NAME=T{s + 1}")
-        for i in range(0, len(pts), 8):
-            w(", ".join(f"{p:.6f}" for p in pts[i:i + 8]) + ",")
-        x0 = x1
-    x0 = 0.0
-    for s, (x1, dtmax) in enumerate(case.steps):
-        w("*STEP, NLGEOM, INC=1000000")
-        w("*STATIC")
-        w(f"{dtmax / 2:g}, {x1 - x0:.6g}, {case.dtmin:g}, {dtmax:g}")
-        # more iterations before a cutback, more cutbacks (nearly incompressible, late x)
-        w("*CONTROLS, PARAMETERS=TIME INCREMENTATION")
-        w("4,8,9,40,10,4,,10")
-        w("*BOUNDARY")
-        w(f"NPUSH, 2, 2, {-x1 * R:.6g}")
-        w(f"*NODE PRINT, NSET=NPUSH, TOTALS=ONLY, TIME POINTS=T{s + 1}")
-        w("RF")
-        w(f"*NODE FILE, TIME POINTS=T{s + 1}")
-        w("U")
-        w(f"*CONTACT FILE, TIME POINTS=T{s + 1}")
-        w("CDIS, CSTR")
-        w("*END STEP")
-        x0 = x1
+    write_steps(w, case, tp_per_increment=False)
     with open(path, "w") as fh:
         fh.write("\n".join(o) + "\n")
     return dict(elements=len(E), nodes=nn, slave_faces=len(slave), h_surface=h_surf,

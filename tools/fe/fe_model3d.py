@@ -30,6 +30,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from fe_counterpart import SAG_MAX, Counterpart
+from fe_deck import (neo_hooke, write_contact, write_master_elements, write_materials,
+                     write_nset, write_steps, write_surface)
 
 R = 1.0
 GEOMETRIES = ("free", "flat")
@@ -38,6 +40,7 @@ TET_FACES = {1: (0, 1, 2), 2: (0, 3, 1), 3: (1, 3, 2), 4: (2, 3, 0)}
 # gmsh's 10-node tetrahedron -> CalculiX's: gmsh midsides 4:(0,1) 5:(1,2) 6:(2,0) 7:(3,0)
 # 8:(3,2) 9:(3,1); CalculiX 5:(1,2) 6:(2,3) 7:(3,1) 8:(1,4) 9:(2,4) 10:(3,4) (1-based)
 GMSH_TO_CCX_TET10 = (0, 1, 2, 3, 4, 5, 6, 7, 9, 8)
+ELSETS = {"C3D8": "EPLATE8"}  # the counterpart's element set (fe_counterpart.master_3d: hexahedra)
 
 
 @dataclass
@@ -72,9 +75,7 @@ class Case3D:
         return R / self.n
 
     def material(self):
-        c10 = self.mu / 2
-        kappa = 2 * self.mu * (1 + self.nu) / (3 * (1 - 2 * self.nu))
-        return c10, 2 / kappa
+        return neo_hooke(self.mu, self.nu)
 
 
 def mesh(case: Case3D):
@@ -223,40 +224,15 @@ def deck(case: Case3D, path: str) -> dict:
     w("*ELEMENT, TYPE=C3D10, ELSET=EBODY")
     for e, c in enumerate(T):
         w(f"{e + 1}, " + ", ".join(str(int(v) + 1) for v in c))
-    w("*ELEMENT, TYPE=C3D8, ELSET=EPLATE8")
-    for e, (typ, ids) in enumerate(master.elements):
-        assert typ == "C3D8"
-        w(f"{base + e + 1}, " + ", ".join(str(base + v + 1) for v in ids))
-
-    def nset(name, mask):
-        w(f"*NSET, NSET={name}")
-        ids = [int(v) + 1 for v in np.where(mask)[0]]
-        for i in range(0, len(ids), 12):
-            w(", ".join(str(v) for v in ids[i:i + 12]) + ",")
-
-    nset("NSYMX", X[:, 0] == 0.0)
-    nset("NSYMZ", X[:, 2] == 0.0)
-    nset("NPUSH", X[:, 1] == R)
-    nset("NSURF", on_sphere)
-    w("*SURFACE, NAME=SSLAVE, TYPE=ELEMENT")
-    for e, j in slave:
-        w(f"{e + 1}, S{j}")
-    w("*SURFACE, NAME=SMASTER, TYPE=ELEMENT")
-    for e, j in master.faces:
-        w(f"{base + e + 1}, S{j}")
-    w("*MATERIAL, NAME=RUBBER")
-    w("*HYPERELASTIC, NEO HOOKE")
-    w(f"{c10:.10g}, {d1:.10g}")
-    w("*MATERIAL, NAME=RIGID")
-    w("*ELASTIC")
-    w("1e6, 0.3")
-    w("*SOLID SECTION, ELSET=EBODY, MATERIAL=RUBBER")
-    w("*SOLID SECTION, ELSET=EPLATE8, MATERIAL=RIGID")
-    w("*SURFACE INTERACTION, NAME=SI")
-    w("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR")
-    w(f"{case.kpen:g}")
-    w("*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE")
-    w("SSLAVE, SMASTER")
+    write_master_elements(w, master, base, ELSETS)
+    write_nset(w, "NSYMX", np.where(X[:, 0] == 0.0)[0] + 1)
+    write_nset(w, "NSYMZ", np.where(X[:, 2] == 0.0)[0] + 1)
+    write_nset(w, "NPUSH", np.where(X[:, 1] == R)[0] + 1)
+    write_nset(w, "NSURF", np.where(on_sphere)[0] + 1)
+    write_surface(w, "SSLAVE", [(e + 1, j) for e, j in slave])
+    write_surface(w, "SMASTER", [(base + e + 1, j) for e, j in master.faces])
+    write_materials(w, c10, d1, master, ELSETS)
+    write_contact(w, case.kpen)
     w("*BOUNDARY")
     w("NPLATE, 1, 3, 0.")
     w("NSYMX, 1, 1, 0.")
@@ -264,41 +240,10 @@ def deck(case: Case3D, path: str) -> dict:
     if case.geometry == "flat":
         w("NPUSH, 1, 1, 0.")
         w("NPUSH, 3, 3, 0.")
-    write_steps(w, case)
+    write_steps(w, case, tp_per_increment=True)  # an output point per increment at most
     with open(path, "w") as fh:
         fh.write("\n".join(o) + "\n")
     return dict(elements=len(T), nodes=nn, slave_faces=len(slave), h_surface=R / case.n,
                 gmsh=gmsh_version, master=master.about, master_elements=len(master.elements),
                 facet_sag_mm=case.cp.sag())
 
-
-def write_steps(w, case):
-    """Time points (all before the first *STEP, relative to their step; every tp in x, or every
-    increment where the step's largest increment is longer) and the load steps: u_y = -x R of
-    the pushed face, step time = x; force totals and the fields at each point."""
-    x0 = 0.0
-    for s, (x1, dtmax) in enumerate(case.steps):
-        tp = max(case.tp, dtmax)  # an output point per increment at most
-        n0, n1 = int(round(x0 / tp)), int(round(x1 / tp))
-        pts = [n * tp - x0 for n in range(n0 + 1, n1 + 1)]
-        w(f"*TIME POINTS, NAME=T{s + 1}")
-        for i in range(0, len(pts), 8):
-            w(", ".join(f"{p:.6f}" for p in pts[i:i + 8]) + ",")
-        x0 = x1
-    x0 = 0.0
-    for s, (x1, dtmax) in enumerate(case.steps):
-        w("*STEP, NLGEOM, INC=1000000")
-        w("*STATIC")
-        w(f"{dtmax / 2:g}, {x1 - x0:.6g}, {case.dtmin:g}, {dtmax:g}")
-        w("*CONTROLS, PARAMETERS=TIME INCREMENTATION")
-        w("4,8,9,40,10,4,,10")
-        w("*BOUNDARY")
-        w(f"NPUSH, 2, 2, {-x1 * R:.6g}")
-        w(f"*NODE PRINT, NSET=NPUSH, TOTALS=ONLY, TIME POINTS=T{s + 1}")
-        w("RF")
-        w(f"*NODE FILE, TIME POINTS=T{s + 1}")
-        w("U")
-        w(f"*CONTACT FILE, TIME POINTS=T{s + 1}")
-        w("CDIS, CSTR")
-        w("*END STEP")
-        x0 = x1
