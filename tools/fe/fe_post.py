@@ -31,7 +31,10 @@ R = 1.0
 N_DROP_PRESSURE = 4
 
 
-def read_inp(path):
+def read_inp(path, element="CAX", dim=2):
+    """Nodes of NBODY {number: (x, y[, z])} (the first `dim` coordinates), the connectivity of
+    the `*ELEMENT` blocks whose type contains `element` (CAX: the axisymmetric body; C3D10: the
+    3D one), every `*NSET` {name: [numbers]} and the contact penalty (None without one)."""
     X, E, sets, kpen, mode, cur = {}, [], {}, None, None, None
     for line in open(path):
         line = line.rstrip("\n")
@@ -40,7 +43,7 @@ def read_inp(path):
             mode = None
             if u.startswith("*NODE,NSET=NBODY"):
                 mode = "n"
-            elif u.startswith("*ELEMENT") and "CAX" in u:
+            elif u.startswith("*ELEMENT") and element in u:
                 mode = "e"
             elif u.startswith("*NSET,NSET="):
                 cur = u.split("=")[1]
@@ -51,7 +54,7 @@ def read_inp(path):
             continue
         if mode == "n":
             p = line.split(",")
-            X[int(p[0])] = (float(p[1]), float(p[2]))
+            X[int(p[0])] = tuple(float(v) for v in p[1:1 + dim])
         elif mode == "e":
             E.append([int(v) for v in line.split(",")][1:])
         elif mode == "s":
@@ -75,13 +78,12 @@ def read_dat_force(path, nset="NPUSH", scale=-180.0):
     return F
 
 
-def read_frd(path, nodes):
-    """DISP (u_r, u_y) of `nodes` and CONTACT (COPEN, CPRESS) per output time."""
+def read_frd(path, nodes, dim=2):
+    """DISP (the first `dim` components: u_r, u_y; or u_x, u_y, u_z) of `nodes` and CONTACT
+    (COPEN, CPRESS) per output time."""
     pos = {n: i for i, n in enumerate(nodes)}
     U, C = {}, {}
-    t = None
-    blk = None
-    cur = None
+    t = blk = cur = None
     with open(path) as fh:
         for line in fh:
             if line.startswith("  100CL"):
@@ -89,7 +91,7 @@ def read_frd(path, nodes):
             elif line.startswith(" -4"):
                 blk = line.split()[1]
                 if blk == "DISP":
-                    cur = np.zeros((len(nodes), 2))
+                    cur = np.zeros((len(nodes), dim))
                 elif blk == "CONTACT":
                     cur = np.zeros((len(nodes), 2))
             elif line.startswith(" -3"):
@@ -99,12 +101,11 @@ def read_frd(path, nodes):
                     C[t] = cur
                 blk = None
             elif line.startswith(" -1") and blk in ("DISP", "CONTACT"):
-                n = int(line[3:13])
-                i = pos.get(n)
+                i = pos.get(int(line[3:13]))
                 if i is None:
                     continue
                 if blk == "DISP":
-                    cur[i] = (float(line[13:25]), float(line[25:37]))
+                    cur[i] = [float(line[13 + 12 * j:25 + 12 * j]) for j in range(dim)]
                 else:  # COPEN, CSLIP1, CSLIP2, CPRESS, ...
                     cur[i] = (-float(line[13:25]), float(line[49:61]))
     return U, C

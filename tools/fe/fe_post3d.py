@@ -20,74 +20,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from fe_post import counterpart_of, edge_crossing, read_dat_force
+from fe_post import counterpart_of, edge_crossing, read_dat_force, read_frd, read_inp
 
 R = 1.0
-
-
-def read_inp3d(path):
-    X, T, sets, mode, cur = {}, [], {}, None, None
-    for line in open(path):
-        line = line.rstrip("\n")
-        if line.startswith("*"):
-            u = line.upper().replace(" ", "")
-            mode = None
-            if u.startswith("*NODE,NSET=NBODY"):
-                mode = "n"
-            elif u.startswith("*ELEMENT") and "C3D10" in u:
-                mode = "e"
-            elif u.startswith("*NSET,NSET="):
-                cur = u.split("=")[1]
-                sets[cur] = []
-                mode = "s"
-            continue
-        if mode == "n":
-            p = line.split(",")
-            X[int(p[0])] = (float(p[1]), float(p[2]), float(p[3]))
-        elif mode == "e":
-            T.append([int(v) for v in line.split(",")][1:])
-        elif mode == "s":
-            sets[cur] += [int(v) for v in line.split(",") if v.strip()]
-    return X, T, sets
-
-
-def read_frd3d(path, nodes):
-    """DISP (u_x, u_y, u_z) of `nodes` and CONTACT (COPEN, CPRESS) per output time."""
-    pos = {n: i for i, n in enumerate(nodes)}
-    U, C = {}, {}
-    t = blk = cur = None
-    with open(path) as fh:
-        for line in fh:
-            if line.startswith("  100CL"):
-                t = round(float(line[12:24]), 6)
-            elif line.startswith(" -4"):
-                blk = line.split()[1]
-                if blk == "DISP":
-                    cur = np.zeros((len(nodes), 3))
-                elif blk == "CONTACT":
-                    cur = np.zeros((len(nodes), 2))
-            elif line.startswith(" -3"):
-                if blk == "DISP":
-                    U[t] = cur
-                elif blk == "CONTACT":
-                    C[t] = cur
-                blk = None
-            elif line.startswith(" -1") and blk in ("DISP", "CONTACT"):
-                i = pos.get(int(line[3:13]))
-                if i is None:
-                    continue
-                if blk == "DISP":
-                    cur[i] = (float(line[13:25]), float(line[25:37]), float(line[37:49]))
-                else:  # COPEN, CSLIP1, CSLIP2, CPRESS, ...
-                    cur[i] = (-float(line[13:25]), float(line[49:61]))
-    return U, C
 
 
 class Run3D:
     def __init__(self, rundir, job="job"):
         base = f"{rundir}/{job}"
         self.cp = counterpart_of(rundir)
-        X, T, sets = read_inp3d(base + ".inp")
+        X, T, sets, _ = read_inp(base + ".inp", element="C3D10", dim=3)
         self.ids = sorted(X)
         pos = {n: i for i, n in enumerate(self.ids)}
         self.X0 = np.array([X[n] for n in self.ids])
@@ -101,7 +43,7 @@ class Run3D:
         self.line_z = on_x0[np.argsort(np.arctan2(self.X0[on_x0, 2], R - self.X0[on_x0, 1]))]
         self.V0 = self._vol(self.X0)
         self.F = read_dat_force(base + ".dat", scale=-4.0)
-        self.U, self.C = read_frd3d(base + ".frd", self.ids)
+        self.U, self.C = read_frd(base + ".frd", self.ids, dim=3)
         self.times = sorted(set(self.F) & set(self.U))
 
     def _vol(self, P):
