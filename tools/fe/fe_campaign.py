@@ -500,20 +500,13 @@ def cmd_export(a):
             curved.setdefault(cp, {})[key] = (prov, rows)
             print(f"{role} {cp} k={k:g} {g} nu={nu:g}: max |dF| / F = {worst:.3f} %")
             continue
-        Fb = {r["x"]: r for r in base["rows"]}
         prov = provenance(other, f"; mesh convergence of {g} nu = {nu:g}" +
                           (f" t/R = {t:g}" if g == "core" else "") +
                           f": R/{hb:g} (the campaign mesh) against R/{h:g}; reldiff = "
                           f"(F_R/{hb:g} - F_R/{h:g}) / F_R/{h:g}")
-        rows, worst = [], 0.0
-        for r in other["rows"]:
-            b = Fb.get(r["x"])
-            if b is None:
-                continue
-            d = 100 * (b["F"] - r["F"]) / r["F"]
-            worst = max(worst, abs(d))
-            rows.append(f"{nu:g},{t:g},{hb:g},{h:g},{r['x']:g},{b['F']:.6g},{r['F']:.6g},{d:.3f},"
-                        f"{b['a']:.5g},{r['a']:.5g}")
+        rows, worst = force_reldiff(
+            base, other, lambda b, r, d: f"{nu:g},{t:g},{hb:g},{h:g},{r['x']:g},{b['F']:.6g},"
+                                         f"{r['F']:.6g},{d:.3f},{b['a']:.5g},{r['a']:.5g}")
         checks.setdefault(g, {})[(nu, t, hb, h)] = (prov, rows)
         print(f"convergence {g} nu={nu:g} t={t:g}: max |F_h{hb:g} - F_h{h:g}| / F = {worst:.3f} %")
     for g, new in checks.items():
@@ -546,6 +539,16 @@ def curved_check(g, nu, k, hb, base, h, other, role):
         what = (f"mesh convergence of {g} nu = {nu:g} k = {k:g}: R/{hb:g} (the campaign mesh) "
                 f"against R/{h:g}")
     prov = provenance(other, f"; {what}; reldiff = (F_campaign - F_other) / F_other")
+    rows, worst = force_reldiff(
+        base, other, lambda b, r, d: f"{g},{nu:g},{k:g},{check},{vb:.6g},{vo:.6g},{r['x']:g},"
+                                     f"{b['F']:.6g},{r['F']:.6g},{d:.3f},{b['a']:.5g},{r['a']:.5g}")
+    return (g, nu, k, check, vb, vo), prov, rows, worst
+
+
+def force_reldiff(base, other, row):
+    """The campaign run `base` against the check run `other` (fe_run.analyse results) at every
+    output x both have: row(b, r, d) of each (b, r the two rows, d = 100 (F_base - F_other) /
+    F_other [%]), in `other`'s order, and the largest |d| [%] (0 without a common x)."""
     Fb = {r["x"]: r for r in base["rows"]}
     rows, worst = [], 0.0
     for r in other["rows"]:
@@ -554,9 +557,8 @@ def curved_check(g, nu, k, hb, base, h, other, role):
             continue
         d = 100 * (b["F"] - r["F"]) / r["F"]
         worst = max(worst, abs(d))
-        rows.append(f"{g},{nu:g},{k:g},{check},{vb:.6g},{vo:.6g},{r['x']:g},{b['F']:.6g},"
-                    f"{r['F']:.6g},{d:.3f},{b['a']:.5g},{r['a']:.5g}")
-    return (g, nu, k, check, vb, vo), prov, rows, worst
+        rows.append(row(b, r, d))
+    return rows, worst
 
 
 def check_3d(g, nu, n, res):
