@@ -39,6 +39,9 @@ pub(crate) struct PairState {
 pub(crate) struct Scratch {
     /// The solver's body table.
     pub body_table: BodyTable,
+    /// The body table before the solve, restored for each further onset solve
+    /// (`step::onset`).
+    pub onset_base: Vec<crate::solve::BodyState>,
     /// The contacts prepared for the solve.
     pub rows: Vec<Row>,
     /// rapier's touching rigid contacts of the bodies the soft contacts move (`rigid`).
@@ -98,6 +101,8 @@ pub struct SoftContacts {
     pub(crate) link_contacts: crate::link_contacts::LinkContacts,
     /// The first step has primed rapier's broad and narrow phases (`step`).
     pub(crate) started: bool,
+    /// The step's parts are timed (`SoftCounters::step_time` ..; `set_profiling`).
+    pub(crate) profiling: bool,
     pub(crate) pairs: FastMap<(ColliderHandle, ColliderHandle), PairState>,
     pub(crate) soft_pairs: FastMap<(ColliderHandle, ColliderHandle), Option<Arc<Model>>>,
     /// The models of contacts on curved counterparts and edges (`curved_models`).
@@ -263,6 +268,21 @@ impl SoftContacts {
     /// Sets the accuracy (phase per substep).
     pub fn set_accuracy(&mut self, accuracy: SoftAccuracy) {
         self.accuracy = accuracy;
+    }
+
+    /// Turns the timing of a step's parts on or off (default off): with it on, each step adds
+    /// its parts' wall time to [`SoftCounters`]' `step_time`, `rows_time`, `supports_time`,
+    /// `law_time`, `soft_solve_time`, `apply_time` and `readout_time` (a dozen clock reads per
+    /// substep, 1.7 % of a sweep trial's CPU; crate README, "Session 15, where a grasp step's
+    /// time goes"). The physics is the same either way. `detect_time`, `solve_time` and
+    /// `pipeline_time` are always timed.
+    pub fn set_profiling(&mut self, on: bool) {
+        self.profiling = on;
+    }
+
+    /// Whether the step's parts are timed ([`set_profiling`](Self::set_profiling)).
+    pub fn profiling(&self) -> bool {
+        self.profiling
     }
 
     /// The tactile image of the fingertip `collider` after the last step (`None` unless the

@@ -27,6 +27,7 @@ use softgrip_law::Regime;
 use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
 use crate::boundary::{to_f32, to_f64};
 use crate::contacts::{PairState, Scratch, SoftContacts};
+use crate::counters::Lap;
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
 use crate::guard::{self, At};
 use crate::hooks::{SoftEvents, SoftHooks};
@@ -87,6 +88,7 @@ impl SoftContacts {
         if let Some(f) = &self.fault {
             return Err(f.clone());
         }
+        let mut started = Lap::start(self.profiling);
         let at = At {
             step: self.counters.steps + 1,
             time: self.time,
@@ -121,10 +123,11 @@ impl SoftContacts {
             phase: Phase::After,
             ..at
         };
-        match r
+        let r = r
             .and_then(|r| r)
-            .and_then(|()| guard::check_state(world, after))
-        {
+            .and_then(|()| guard::check_state(world, after));
+        started.lap(&mut self.counters.step_time);
+        match r {
             Ok(()) => {
                 if dt > 0.0 {
                     self.time += dt;
@@ -261,7 +264,9 @@ impl Step<'_> {
         }
 
         // 5. Readout.
+        let mut lap = Lap::start(self.soft.profiling);
         readout::assemble(&mut scratch.accums, dt, &mut self.soft.contacts);
+        lap.lap(&mut self.soft.counters.readout_time);
         self.soft.scratch = scratch;
         self.soft.update_tactile(&self.physics.colliders);
         Ok(())
@@ -305,6 +310,7 @@ impl Step<'_> {
     /// `s` (`body_table`, `rows`, `models`, `geom`, `mobility`), without the law's response
     /// (see [`prepare_state`](Self::prepare_state)).
     fn prepare(&mut self, h: f64, kin_vel: &KinematicVelocity, s: &mut Scratch) {
+        let mut lap = Lap::start(self.soft.profiling);
         s.body_table.clear();
         s.rows.clear();
         s.models.clear();
@@ -377,7 +383,9 @@ impl Step<'_> {
             s.mobility.push(w);
         }
         self.soft.geoms = geoms;
+        lap.lap(&mut self.soft.counters.rows_time);
         self.prepare_rigid(h, h_drift, kin_vel, s);
+        lap.lap(&mut self.soft.counters.supports_time);
         self.soft.counters.jointed_free += s.body_table.jointed_free;
     }
 
@@ -605,12 +613,15 @@ impl Step<'_> {
         if !fresh {
             self.prepare(h, kin_vel, s);
         }
+        let mut lap = Lap::start(self.soft.profiling);
         self.prepare_state(h, s);
         s.accums.begin_substep();
+        lap.lap(&mut self.soft.counters.law_time);
 
         if !s.rows.is_empty() {
             self.solve_with_onsets(h, s);
         }
+        lap.lap(&mut self.soft.counters.soft_solve_time);
         bodies::apply_impulses(
             &mut self.physics.bodies,
             h,
@@ -641,6 +652,7 @@ impl Step<'_> {
         if fresh {
             bodies::unsplit_carry(&s.body_table, &s.net, &mut s.unsplit_carry);
         }
+        lap.lap(&mut self.soft.counters.apply_time);
         for ((row, model), gi) in s.rows.iter().zip(s.models.drain(..)).zip(&s.geom) {
             let g = &self.soft.geoms[*gi];
             let key = (g.tip, g.other);
@@ -658,6 +670,7 @@ impl Step<'_> {
             let delta = compression_from_signed_distance(g.dist);
             readout::accumulate(&mut s.accums, key, row, model, delta, delta_end, h);
         }
+        lap.lap(&mut self.soft.counters.readout_time);
         self.soft.counters.solve_time += t.elapsed();
         Ok(())
     }

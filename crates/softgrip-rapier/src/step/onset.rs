@@ -14,10 +14,17 @@ impl Step<'_> {
     /// body table is restored before each solve again.
     pub(super) fn solve_with_onsets(&mut self, h: f64, s: &mut Scratch) {
         let capped = self.soft.counters.substeps_last >= substep::MAX_SUBSTEPS;
-        let base = s.body_table.table.clone();
+        // Only a row open at the start can begin within the (sub)step (`onset`): without one
+        // the solve runs once and the table need not be kept (a held grasp's every substep).
+        let geoms = &self.soft.geoms;
+        let may_begin =
+            (s.geom.iter()).any(|&gi| !(compression_from_signed_distance(geoms[gi].dist) > 0.0));
+        if may_begin {
+            s.onset_base.clone_from(&s.body_table.table);
+        }
         for pass in 0..MAX_ONSET_PASSES {
             if pass > 0 {
-                s.body_table.table.clone_from_slice(&base);
+                s.body_table.table.clone_from_slice(&s.onset_base);
                 self.soft.counters.onset_solves += 1;
             }
             let failed = solve::solve(
