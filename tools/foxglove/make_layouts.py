@@ -110,6 +110,14 @@ def build_sphere(_old: dict) -> dict:
     return layout
 
 
+def legend_height(rows: int) -> int:
+    """A plot legend's height [px] that shows `rows` series without scrolling: Foxglove 1.48's
+    legend rows are 24 px, with 24 px for its margins (64 px showed 2 rows; the three-finger hand's
+    force plot at 64 px hid its third pad, and its joint plots at 112 px four of six joints:
+    seen with ../shared/tools/view_mcap.sh, session 15)."""
+    return 24 + 24 * rows
+
+
 def build_hand_for(tips: list, joints: list) -> dict:
     """softgrip.json with a hand's pads (a normal force plot and a tactile image per pad) and
     its joints (as /joint_states lists them) in two plots: positions [m or rad] and efforts
@@ -119,6 +127,7 @@ def build_hand_for(tips: list, joints: list) -> dict:
         text = text.replace(old, new)
     layout = json.loads(text)
     plot = layout["configById"]["Plot!force"]
+    plot["sidebarDimension"] = legend_height(len(tips))
     plot["paths"] = [
         {
             "value": f'/softgrip/contacts.contacts[:]{{fingertip=="{tip}"}}.normal_force',
@@ -144,7 +153,7 @@ def build_hand_for(tips: list, joints: list) -> dict:
             for j, name in enumerate(joints)
         ]
         cfg["title"] = title
-        cfg["sidebarDimension"] = 40 + 12 * len(joints)
+        cfg["sidebarDimension"] = legend_height(len(joints))
         layout["configById"][panel] = cfg
     images = [f"ImageViewPanel!{tip}" for tip in tips]
     for tip in tips[len(TIPS):]:
@@ -158,15 +167,18 @@ def build_hand_for(tips: list, joints: list) -> dict:
         # Equal widths: the first of the n - k images left takes 1 / (n - k) of the row.
         share = round(100.0 / (len(images) - k), 3)
         row = {"first": images[k], "second": row, "direction": "row", "splitPercentage": share}
+    # The joint plots' legends are the tallest (a row per joint): they get 60 % of the plots'
+    # height, the plots 68 % of the column (the 16 x 16 tactile images need little).
     layout["layout"]["second"] = {
         "first": {
             "first": "Plot!force",
             "second": {"first": "Plot!radius", "second": "Plot!effort", "direction": "row"},
             "direction": "column",
+            "splitPercentage": 40,
         },
         "second": row,
         "direction": "column",
-        "splitPercentage": 60,
+        "splitPercentage": 68,
     }
     return layout
 

@@ -32,17 +32,20 @@ pub struct Group {
     pub inbox: SharedInbox,
     /// The joints a goal may name.
     pub joints: Vec<String>,
+    /// Each joint's URDF limits `[lower, upper]` \[m or rad\]: a goal's position must lie
+    /// within them.
+    pub limits: Vec<[f64; 2]>,
 }
 
 /// The gripper groups of a scene's controllers (see the module's documentation).
 pub fn groups(set: &mut ControlSet) -> Vec<Group> {
     let robots = set.robots().to_vec();
-    let mut found: Vec<(usize, String, Vec<String>)> = Vec::new();
+    let mut found: Vec<(usize, String, Vec<(String, [f64; 2])>)> = Vec::new();
     for c in set.controllers_mut() {
         if let Some(g) = c.as_any_mut().downcast_mut::<Grasp>() {
             let model = &robots[g.robot];
             let names = (g.joints.iter())
-                .map(|&j| model.joints()[j].name.clone())
+                .map(|&j| (model.joints()[j].name.clone(), model.joints()[j].limits))
                 .collect();
             found.push((g.robot, g.name.clone(), names));
         }
@@ -51,9 +54,9 @@ pub fn groups(set: &mut ControlSet) -> Vec<Group> {
         if found.iter().any(|(fr, _, _)| *fr == r) {
             continue;
         }
-        let names: Vec<String> = (model.joints().iter())
+        let names: Vec<(String, [f64; 2])> = (model.joints().iter())
             .filter(|j| j.kind.moves() && j.mimic.is_none())
-            .map(|j| j.name.clone())
+            .map(|j| (j.name.clone(), j.limits))
             .collect();
         if !names.is_empty() {
             found.push((r, model.name().to_owned(), names));
@@ -64,15 +67,16 @@ pub fn groups(set: &mut ControlSet) -> Vec<Group> {
             set.inbox(r).map(|inbox| Group {
                 name,
                 inbox,
-                joints,
+                limits: joints.iter().map(|j| j.1).collect(),
+                joints: joints.into_iter().map(|j| j.0).collect(),
             })
         })
         .collect()
 }
 
 /// Why a goal's command is refused, if it is: every name a joint of the group (no name: the
-/// group's joints in order), one finite position per joint, and `velocity` and `effort` empty
-/// or one finite value > 0 per joint.
+/// group's joints in order), one finite position per joint within the joint's URDF limits, and
+/// `velocity` and `effort` empty or one finite value > 0 per joint.
 pub fn check_goal(group: &Group, command: &JointState) -> Result<Vec<GoalJoint>, String> {
     let names: Vec<String> = if command.name.is_empty() {
         group.joints.clone()
@@ -106,6 +110,14 @@ pub fn check_goal(group: &Group, command: &JointState) -> Result<Vec<GoalJoint>,
             let position = command.position[k];
             if !position.is_finite() {
                 return Err(format!("position[{k}] = {position} is not finite"));
+            }
+            let i = (group.joints.iter().position(|j| j == name)).unwrap_or_default();
+            if let Some(&[lo, hi]) = group.limits.get(i)
+                && !(lo..=hi).contains(&position)
+            {
+                return Err(format!(
+                    "position[{k}] = {position} is outside joint `{name}`'s limits [{lo}, {hi}]"
+                ));
             }
             Ok(GoalJoint {
                 name: name.clone(),
@@ -283,6 +295,7 @@ mod tests {
             name: "gripper".into(),
             inbox: SharedInbox::default(),
             joints: vec!["a".into(), "b".into()],
+            limits: vec![[0.0, 0.5], [-1.0, 1.0]],
         }
     }
 
@@ -333,6 +346,26 @@ mod tests {
             (
                 command(&["a", "b"], &[0.0, 0.0], &[1.0], &[]),
                 "1 velocity values for 2 joints",
+            ),
+            (
+                command(&["a"], &[0.0], &[], &[f64::NAN]),
+                "effort[0] = NaN is not finite and > 0",
+            ),
+            (
+                command(&["a"], &[0.0], &[], &[-5.0]),
+                "effort[0] = -5 is not finite and > 0",
+            ),
+            (
+                command(&["a"], &[0.0], &[], &[0.0]),
+                "effort[0] = 0 is not finite and > 0",
+            ),
+            (
+                command(&["b", "a"], &[0.5, 0.6], &[], &[]),
+                "position[1] = 0.6 is outside joint `a`'s limits [0, 0.5]",
+            ),
+            (
+                command(&[], &[-0.001, 0.0], &[], &[]),
+                "position[0] = -0.001 is outside joint `a`'s limits [0, 0.5]",
             ),
         ];
         for (c, want) in cases {

@@ -12,7 +12,7 @@ use softgrip_record::RecorderOptions;
 use softgrip_record::units::{si, sig};
 
 use crate::gripper_action::GripperActions;
-use crate::joint_commands::{CommandBridge, Routes};
+use crate::joint_commands::{CommandBridge, Route, Routes};
 use softgrip_ros2::PublisherStats;
 use softgrip_scene::{ContactDigest, DEFAULT_SCENE, Scene};
 
@@ -150,11 +150,14 @@ pub fn run(args: &RunArgs) -> Result<RunEnd> {
         let topic = b.topic().to_owned();
         let c = b.finish()?;
         outln!(
-            "ros2: {} joint command messages on {topic}: {} joint targets applied, {} naming no robot",
+            "ros2: {} joint command messages on {topic}: {} joint targets applied, {} refused",
             c.messages,
             c.routed,
-            c.unrouted
+            c.refused
         );
+        for (name, why) in &c.refused_names {
+            outln!("ros2: joint command `{name}` refused: {why}");
+        }
     }
     if let Some(a) = actions {
         let names = a.names().join(", ");
@@ -207,9 +210,23 @@ fn start_commands(sim: &mut Simulation, topic: &str) -> Result<Option<CommandBri
         return Ok(None);
     };
     let set = &mut controllers.0;
-    let names: Vec<String> = set.robots().iter().map(|r| r.name().to_owned()).collect();
-    let routes: Routes = (names.into_iter().enumerate())
-        .filter_map(|(i, name)| set.inbox(i).map(|inbox| (name, inbox)))
+    let robots: Vec<(String, Vec<String>)> = (set.robots().iter())
+        .map(|r| {
+            let joints = (r.joints().iter())
+                .filter(|j| j.kind.moves() && j.mimic.is_none())
+                .map(|j| j.name.clone());
+            (r.name().to_owned(), joints.collect())
+        })
+        .collect();
+    let routes: Routes = (robots.into_iter().enumerate())
+        .filter_map(|(i, (robot, joints))| {
+            let inbox = set.inbox(i)?;
+            Some(Route {
+                robot,
+                joints,
+                inbox,
+            })
+        })
         .collect();
     if routes.is_empty() {
         return Ok(None);

@@ -30,6 +30,11 @@ fn run_ros2_takes_joint_commands_and_publishes_joint_states() {
         stdout.contains("joint command messages on /robot_joint_command"),
         "{stdout}"
     );
+    // Every entry named the commandable `finger_joint` with a finite target: none refused.
+    assert!(
+        stdout.contains("joint targets applied, 0 refused"),
+        "{stdout}"
+    );
     let urdf_path = root.join("robots/parallel_gripper/parallel_gripper.urdf");
     let urdf = std::fs::read_to_string(&urdf_path).expect("urdf");
     assert_eq!(received["description"].as_str(), Some(urdf.as_str()));

@@ -47,8 +47,12 @@ fn array(v: Vector) -> [f64; 3] {
     [f64::from(v.x), f64::from(v.y), f64::from(v.z)]
 }
 
+/// How finely a capsule is drawn: subdivisions around its axis and along its two caps.
+const CAPSULE_SUBDIVISIONS: [u32; 2] = [24, 12];
+
 /// A built shape's geometry as plain numbers (`None` for a kind softgrip's scenes do not
-/// make).
+/// make). A capsule (a URDF link's `<capsule>`) becomes a triangle mesh of its surface: before
+/// session 15 it was `None`, and such a link was simulated but not drawn.
 pub fn shape_geometry(shape: &SharedShape) -> Option<ShapeGeometry> {
     if let Some(h) = shape.as_halfspace() {
         return Some(ShapeGeometry::Plane {
@@ -73,6 +77,10 @@ pub fn shape_geometry(shape: &SharedShape) -> Option<ShapeGeometry> {
     }
     let (vertices, triangles) = if let Some(c) = shape.as_convex_polyhedron() {
         let (v, t) = c.to_trimesh();
+        (v.into_iter().map(array).collect(), t)
+    } else if let Some(c) = shape.as_capsule() {
+        // A URDF `<capsule>` (no Marker type draws one): its surface as triangles.
+        let (v, t) = c.to_trimesh(CAPSULE_SUBDIVISIONS[0], CAPSULE_SUBDIVISIONS[1]);
         (v.into_iter().map(array).collect(), t)
     } else {
         let m = shape.as_trimesh()?;

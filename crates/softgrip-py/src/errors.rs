@@ -125,37 +125,29 @@ pub fn diverged(py: Python<'_>, e: &StepError, result: Bound<'_, PyAny>) -> PyEr
         exc.setattr("step", e.step())?;
         exc.setattr("time", e.time())?;
         exc.setattr("result", result)?;
-        match e {
-            StepError::Diverged {
-                subject,
-                name,
-                quantity,
-                value,
-                bound,
-                phase,
-                ..
-            } => {
+        match e.divergence() {
+            Some(d) => {
                 exc.setattr("kind", "diverged")?;
-                let subject = match subject {
+                let subject = match d.subject {
                     Subject::Body(_) => "body",
                     Subject::Joint { .. } => "joint",
                     Subject::Contact { .. } => "contact",
                 };
                 exc.setattr("subject", subject)?;
-                exc.setattr("name", name.clone())?;
-                exc.setattr("quantity", quantity.name())?;
-                exc.setattr("field", quantity.name())?;
-                exc.setattr("found", *value)?;
-                exc.setattr("value", value.to_string())?;
-                exc.setattr("bound", *bound)?;
-                let phase = match phase {
+                exc.setattr("name", d.name)?;
+                exc.setattr("quantity", d.quantity.name())?;
+                exc.setattr("field", d.quantity.name())?;
+                exc.setattr("found", d.value)?;
+                exc.setattr("value", d.value.to_string())?;
+                exc.setattr("bound", d.bound)?;
+                let phase = match d.phase {
                     Phase::Before => "before",
                     Phase::SoftSolve => "soft_solve",
                     Phase::After => "after",
                 };
                 exc.setattr("phase", phase)?;
             }
-            StepError::EnginePanicked { .. } => exc.setattr("kind", "engine_panicked")?,
+            None => exc.setattr("kind", "engine_panicked")?,
         }
         Ok(PyErr::from_value(exc))
     };

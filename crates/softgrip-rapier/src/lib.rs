@@ -48,8 +48,8 @@ pub use presets::Preset;
 pub use readout::TipContact;
 pub use rigid::IMMOBILE;
 pub use step_error::{
-    MAX_ANGULAR_SPEED, MAX_JOINT_COORDINATE, MAX_LINEAR_SPEED, MAX_POSITION, Phase, Quantity,
-    StepError, Subject,
+    Divergence, MAX_ANGULAR_SPEED, MAX_JOINT_COORDINATE, MAX_LINEAR_SPEED, MAX_POSITION, Phase,
+    Quantity, StepError, Subject,
 };
 pub use substep::{AMPLITUDE_FRACTION, MAX_SUBSTEPS, SoftAccuracy};
 pub use tactile::{MAX_TAXELS_PER_SIDE, MIN_TAXEL_SIDE_OVER_RADIUS, TactileGrid, TactilePad};

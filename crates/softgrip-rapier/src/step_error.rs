@@ -120,6 +120,24 @@ impl std::fmt::Display for Phase {
     }
 }
 
+/// What diverged in a [`StepError::Diverged`] (see its fields), borrowed from it by
+/// [`StepError::divergence`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Divergence<'a> {
+    /// What diverged.
+    pub subject: Subject,
+    /// Its name, where a layer above the plugin knows it.
+    pub name: Option<&'a str>,
+    /// Which number.
+    pub quantity: Quantity,
+    /// The value found (NaN or infinite included).
+    pub value: f64,
+    /// The bound it broke.
+    pub bound: f64,
+    /// When in the step it was found.
+    pub phase: Phase,
+}
+
 /// A step that could not be taken or went wrong numerically. Returned by
 /// [`SoftContacts::try_step`](crate::SoftContacts::try_step) and
 /// [`SoftWorld::try_step`](crate::SoftWorld::try_step); a world that returned one with a
@@ -193,6 +211,30 @@ impl StepError {
     pub fn subject(&self) -> Option<Subject> {
         match self {
             Self::Diverged { subject, .. } => Some(*subject),
+            Self::EnginePanicked { .. } => None,
+        }
+    }
+
+    /// The fields of a [`StepError::Diverged`], borrowed: what the layers above (the scene's
+    /// tests, Python's `SimulationDiverged`) read, in one place.
+    pub fn divergence(&self) -> Option<Divergence<'_>> {
+        match self {
+            Self::Diverged {
+                subject,
+                name,
+                quantity,
+                value,
+                bound,
+                phase,
+                ..
+            } => Some(Divergence {
+                subject: *subject,
+                name: name.as_deref(),
+                quantity: *quantity,
+                value: *value,
+                bound: *bound,
+                phase: *phase,
+            }),
             Self::EnginePanicked { .. } => None,
         }
     }

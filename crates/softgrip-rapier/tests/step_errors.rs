@@ -65,17 +65,8 @@ fn arm(limits: [f32; 2]) -> (SoftWorld, RigidBodyHandle) {
 }
 
 fn diverged(e: &StepError) -> (Subject, Quantity, f64, f64, Phase) {
-    match e {
-        StepError::Diverged {
-            subject,
-            quantity,
-            value,
-            bound,
-            phase,
-            ..
-        } => (*subject, *quantity, *value, *bound, *phase),
-        other => panic!("expected Diverged, got {other}"),
-    }
+    let d = (e.divergence()).unwrap_or_else(|| panic!("expected Diverged, got {e}"));
+    (d.subject, d.quantity, d.value, d.bound, d.phase)
 }
 
 #[test]

@@ -9,23 +9,18 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
-use std::path::{Path, PathBuf};
+mod common;
 
 use softgrip_scene::control::Phase;
-use softgrip_scene::{PlainRun, Scene};
-
-fn repo() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
+use softgrip_scene::{PlainRun, Scene, SceneError};
 
 /// The shipped box grasp with the hand `drop` metres lower.
-fn lowered(drop: f64) -> Scene {
-    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
-    let shipped = "position = [0.0, 0.065, 0.0]";
-    let text = std::fs::read_to_string(&path).unwrap();
-    assert!(text.contains(shipped), "the shipped scene's hand moved");
-    let text = text.replace(shipped, &format!("position = [0.0, {}, 0.0]", 0.065 - drop));
-    Scene::parse(&text, "low.toml", path.parent().unwrap()).unwrap()
+fn lowered(drop: f64) -> Result<Scene, SceneError> {
+    let to = format!("position = [0.0, {}, 0.0]", 0.065 - drop);
+    common::shipped_robot_scene(
+        "parallel_gripper_box",
+        &[("position = [0.0, 0.065, 0.0]", to.as_str())],
+    )
 }
 
 /// What [`run_checked`] measured.
@@ -106,7 +101,7 @@ fn run_checked(scene: &Scene) -> Run {
 /// within 10 % of the grasp's 5 N, and the 200 g box is lifted 10 cm.
 #[test]
 fn gripper_whose_fingers_touch_the_table_grasps_without_blowing_up() {
-    let r = run_checked(&lowered(0.005));
+    let r = run_checked(&lowered(0.005).unwrap());
     assert!(r.held_steps > 60, "held {} steps", r.held_steps);
     assert!(r.law_err < 5e-3, "hold force {} off the law", r.law_err);
     assert!(
@@ -127,14 +122,7 @@ fn gripper_whose_fingers_touch_the_table_grasps_without_blowing_up() {
 /// along its joint in step 1; 0.1 um blows up too). Touching (5 mm lower) and the shipped pose are not errors.
 #[test]
 fn finger_starting_inside_the_table_is_a_typed_error() {
-    let scene = |drop: f64| {
-        let path = repo().join("scenes/robots/parallel_gripper_box.toml");
-        let text = std::fs::read_to_string(&path).unwrap().replace(
-            "position = [0.0, 0.065, 0.0]",
-            &format!("position = [0.0, {}, 0.0]", 0.065 - drop),
-        );
-        Scene::parse(&text, "low.toml", path.parent().unwrap())
-    };
+    let scene = lowered;
     for drop in [0.0, 0.005] {
         assert!(scene(drop).is_ok(), "drop {drop}: {:?}", scene(drop).err());
     }

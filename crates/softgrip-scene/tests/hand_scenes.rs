@@ -387,12 +387,10 @@ fn gripper_joint_efforts_equal_jt_f() {
 /// the engine's range is an error naming the field and the value.
 #[test]
 fn a_bad_lift_acceleration_is_an_error_naming_it() {
-    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
-    let text = std::fs::read_to_string(&path).unwrap();
     for bad in ["0.0", "-1.0", "nan", "1e9"] {
-        let edited = text.replace("acceleration = 1.0", &format!("acceleration = {bad}"));
-        assert_ne!(edited, text);
-        let e = Scene::parse(&edited, "g.toml", path.parent().unwrap())
+        let to = format!("acceleration = {bad}");
+        let edits = [("acceleration = 1.0", to.as_str())];
+        let e = common::shipped_robot_scene("parallel_gripper_box", &edits)
             .unwrap_err()
             .to_string();
         assert!(e.contains("controller[0].lift.acceleration"), "{bad}: {e}");
@@ -405,17 +403,16 @@ fn a_bad_lift_acceleration_is_an_error_naming_it() {
 /// and it toppled. Lying (the shipped scene) it clears the palm by 25 mm and loads.
 #[test]
 fn a_body_starting_inside_a_link_is_an_error_naming_both_and_the_depth() {
-    let path = repo().join("scenes/robots/parallel_gripper_cylinder.toml");
-    let text = std::fs::read_to_string(&path).unwrap();
-    Scene::parse(&text, "c.toml", path.parent().unwrap()).expect("the lying cylinder loads");
-    let standing = text
-        .replace(
+    common::shipped_robot_scene("parallel_gripper_cylinder", &[])
+        .expect("the lying cylinder loads");
+    let standing = [
+        (
             "rotation = [1.5707963267948966, 0.0, 0.0] # lying",
             "# standing",
-        )
-        .replace("position = [0.0, 0.02, 0.0]", "position = [0.0, 0.04, 0.0]");
-    assert_ne!(standing, text);
-    let e = Scene::parse(&standing, "c.toml", path.parent().unwrap()).unwrap_err();
+        ),
+        ("position = [0.0, 0.02, 0.0]", "position = [0.0, 0.04, 0.0]"),
+    ];
+    let e = common::shipped_robot_scene("parallel_gripper_cylinder", &standing).unwrap_err();
     let softgrip_scene::SceneError::StartOverlap {
         link,
         other,

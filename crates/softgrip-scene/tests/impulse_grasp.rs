@@ -191,11 +191,10 @@ fn impulse_gripper_grasps_the_cylinder_as_the_multibody() {
 #[test]
 fn anchors_at_the_centre_of_mass_keep_the_urdf_joints() {
     use softgrip_scene::robot::{RobotJointHandle, joint_state};
-    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
-    let text = std::fs::read_to_string(&path).unwrap();
     let build = |model: &str| {
-        let t = text.replace("urdf = ", &format!("joints = \"{model}\"\nurdf = "));
-        let scene = Scene::parse(&t, "gripper.toml", path.parent().unwrap()).unwrap();
+        let to = format!("joints = \"{model}\"\nurdf = ");
+        let edits = [("urdf = ", to.as_str())];
+        let scene = common::shipped_robot_scene("parallel_gripper_box", &edits).unwrap();
         let built = scene.build();
         (scene, built)
     };
@@ -240,11 +239,8 @@ fn anchors_at_the_centre_of_mass_keep_the_urdf_joints() {
 #[test]
 fn impulse_finger_efforts_equal_jt_f() {
     use softgrip_scene::robot::{joint_load, joint_state_loaded};
-    let path = repo().join("scenes/robots/parallel_gripper_box.toml");
-    let text = std::fs::read_to_string(&path)
-        .unwrap()
-        .replace("urdf = ", "joints = \"impulse\"\nurdf = ");
-    let scene = Scene::parse(&text, "gripper.toml", path.parent().unwrap()).unwrap();
+    let edits = [("urdf = ", "joints = \"impulse\"\nurdf = ")];
+    let scene = common::shipped_robot_scene("parallel_gripper_box", &edits).unwrap();
     let mut run = PlainRun::new(&scene);
     let robot = scene.robots()[0].clone();
     let h = run.handles.robots[0].1.clone();
@@ -282,11 +278,8 @@ fn impulse_finger_efforts_equal_jt_f() {
 #[test]
 fn jointed_free_counts_the_links_the_solve_takes_as_free() {
     let count = |name: &str, steps: u64, own_sweeps_only: bool| {
-        let path = repo().join(format!("scenes/robots/{name}.toml"));
-        let text = std::fs::read_to_string(&path)
-            .unwrap()
-            .replace("urdf = ", "joints = \"impulse\"\nurdf = ");
-        let scene = Scene::parse(&text, "hand.toml", path.parent().unwrap()).unwrap();
+        let edits = [("urdf = ", "joints = \"impulse\"\nurdf = ")];
+        let scene = common::shipped_robot_scene(name, &edits).unwrap();
         let mut run = PlainRun::new(&scene);
         for &l in run.handles.robots[0]
             .1

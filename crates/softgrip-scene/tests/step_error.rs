@@ -10,17 +10,8 @@ use softgrip_rapier::{MAX_ANGULAR_SPEED, Phase, Quantity, StepError, Subject};
 use softgrip_scene::{PlainRun, Scene};
 
 fn parts(e: &StepError) -> (Subject, Option<&str>, Quantity, f64, Phase) {
-    match e {
-        StepError::Diverged {
-            subject,
-            name,
-            quantity,
-            value,
-            phase,
-            ..
-        } => (*subject, name.as_deref(), *quantity, *value, *phase),
-        other => panic!("expected Diverged, got {other}"),
-    }
+    let d = (e.divergence()).unwrap_or_else(|| panic!("expected Diverged, got {e}"));
+    (d.subject, d.name, d.quantity, d.value, d.phase)
 }
 
 #[test]

@@ -14,23 +14,39 @@ use softgrip_record::{Message, Recording, topics};
 
 use crate::common;
 
-/// The shipped URDF gripper's scene (`scenes/robots/parallel_gripper_box.toml`) without its
-/// grasp controller (only commands from outside move it), its URDF path made absolute, with
-/// `duration` [s], written to `dir`.
+/// The shipped scene for closing the gripper from ROS 2 (`scenes/ros2/parallel_gripper_box.toml`:
+/// the URDF gripper's box scene without its grasp controller, only commands from outside move
+/// it), its URDF path made absolute, with `duration` [s], written to `dir`. Checks first that
+/// it is still the box scene (`scenes/robots/parallel_gripper_box.toml`) apart from comments,
+/// `duration` and the controller.
 pub fn gripper_scene(dir: &Path, duration: f64) -> PathBuf {
     let root = common::root();
-    let text = std::fs::read_to_string(root.join("scenes/robots/parallel_gripper_box.toml"))
-        .expect("gripper scene");
-    let (head, _grasp) = text
+    let read = |p: &str| std::fs::read_to_string(root.join(p)).expect("gripper scene");
+    let text = read("scenes/ros2/parallel_gripper_box.toml");
+    let shipped = read("scenes/robots/parallel_gripper_box.toml");
+    let (grasp_head, _grasp) = shipped
         .split_once("[[controller]]")
         .expect("a controller section");
+    let plain = |t: &str| -> Vec<String> {
+        (t.lines())
+            .filter(|l| !l.starts_with('#') && !l.trim().is_empty() && !l.starts_with("duration ="))
+            .map(str::to_owned)
+            .collect()
+    };
+    assert_eq!(
+        plain(&text),
+        plain(grasp_head),
+        "scenes/ros2/parallel_gripper_box.toml is no longer the box scene without its grasp"
+    );
+    assert!(!text.contains("[[controller]]"));
     let urdf = root.join("robots/parallel_gripper/parallel_gripper.urdf");
-    let head = head
+    let head = text
         .replace(
             "\"../../robots/parallel_gripper/parallel_gripper.urdf\"",
             &format!("{:?}", urdf.display().to_string()),
         )
-        .replace("duration = 5.0", &format!("duration = {duration:?}"));
+        .replace("duration = 60.0", &format!("duration = {duration:?}"));
+    assert_ne!(head, text);
     let path = dir.join("gripper.toml");
     std::fs::write(&path, head).expect("write scene");
     path

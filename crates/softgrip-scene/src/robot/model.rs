@@ -404,11 +404,53 @@ fn links_and_joints(
             });
         }
     }
-    // A mimic joint starts where it follows its joint to.
-    for i in 0..joints.len() {
-        if let Some(m) = joints[i].mimic {
-            joints[i].initial = m.multiplier * joints[m.joint].initial + m.offset;
+    mimic_starts(c, field, spec, &mut joints)?;
+    Ok((links, joints))
+}
+
+/// Sets each mimic joint's start to where it follows its joint (through chains of mimics). A
+/// start `spec` gives a mimic joint must be that one (before session 15 it was silently
+/// replaced), and a start outside the mimic's own limits is an error on its joint's start (the
+/// coupling and the limit would fight from the first step).
+fn mimic_starts(
+    c: &Checker,
+    field: &str,
+    spec: &RobotSpec,
+    joints: &mut [RobotJoint],
+) -> Result<(), SceneError> {
+    let f = |s: &str| format!("{field}.initial.{s}");
+    // Chains of mimics in any order: as many passes as joints reach every chain's end.
+    for _ in 0..joints.len() {
+        for i in 0..joints.len() {
+            if let Some(m) = joints[i].mimic {
+                joints[i].initial = m.multiplier * joints[m.joint].initial + m.offset;
+            }
         }
     }
-    Ok((links, joints))
+    for j in joints.iter() {
+        let Some(m) = j.mimic else { continue };
+        let (follows, leader) = (j.initial, &joints[m.joint]);
+        if let Some(&q) = spec.initial.get(&j.name)
+            && (q - follows).abs() > 1e-9 * follows.abs().max(1.0)
+        {
+            let expected = format!(
+                "{follows}: the joint mimics `{}` ({} x its start + {}); set `initial.{}` instead",
+                leader.name, m.multiplier, m.offset, leader.name
+            );
+            return Err(c.invalid(f(&j.name), q, &expected));
+        }
+        let [lo, hi] = j.limits;
+        if !(lo - 1e-9..=hi + 1e-9).contains(&follows) {
+            let expected = format!(
+                "such that joint `{}`, which mimics it ({} x its start + {} = {follows}), starts \
+                 within its limits [{lo}, {hi}]",
+                j.name, m.multiplier, m.offset
+            );
+            return Err(c.invalid(f(&leader.name), leader.initial, &expected));
+        }
+    }
+    for j in joints.iter_mut().filter(|j| j.mimic.is_some()) {
+        j.initial = j.initial.clamp(j.limits[0], j.limits[1]);
+    }
+    Ok(())
 }
