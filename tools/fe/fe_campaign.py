@@ -132,6 +132,12 @@ def curved_cases():
     # nu 0.32 on 2.5 R; under /work/fe-scratch/runs/law-curved-s14/
     held14 = [("flat", 0.42, 0.8), ("flat", 0.32, 2.5)]
     c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held14]
+    # session 15 (law-curved): blind tests of the small-ball end (leave-one-out at R/2 showed the
+    # fit hangs on the two R/2 flat curves): the bonded pad at nu 0.4 on 0.6 R, then the free
+    # sphere there; no constant saw them (started before any refit); under
+    # /work/fe-scratch/runs/law-curved-s15/
+    held15 = [("flat", 0.4, 0.6), ("free", 0.4, 0.6)]
+    c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held15]
     return c + core_ball_cases() + cases_3d()
 
 
