@@ -51,6 +51,23 @@
 //!   `w` fitted on it, 0.286: 2.00 % on nu 0.33; `tools/calibration/CORE_FORM.md`).
 //!   Only on a convex counterpart (`rho_H < 1`); on a plane and a bowl `C = 0`.
 //!
+//! - **The patch's edge: no half-space shrink (session 15).** On a ball the bonded pad's and
+//!   the free sphere's patch is narrowed by the counterpart's quartic as Sneddon's rigid sphere
+//!   narrows a half-space's (`a = a_H (1 - (a/R2)^2/6)`), weighted by `eps/eps(0.3)`
+//!   (`mapping`): the shrink shows where the material under the patch gives way in depth (a
+//!   compressible half-space), not where it bulges round the patch and makes up for the
+//!   sphere's falling surface (near incompressibility). Over a rigid core the squeezed skin
+//!   cannot give way in depth: whatever its Poisson ratio, what the ball displaces goes
+//!   sideways and bulges round the patch, as in the incompressible half-space, so the core's
+//!   patch takes no shrink (no constant). The FE: with the shrink the compressible skins were
+//!   3.00-4.53 % narrow at their ends (nu 0.3, t/R 0.5 on R: 4.53 %, on 2R at t/R 0.4: 3.49 %);
+//!   without it every core radius is within 2.68 % (`cargo test -p softgrip-law --test
+//!   core_counterpart_fe -- --nocapture`). Tried: half the shrink, 3.07 % (nu 0.3, t/R 0.4 on
+//!   2R); the shrink while the patch is short against the skin, `1/(1 + a_H^2/t^2)`, 3.07 % (nu
+//!   0.3, t/R 0.5 on R). As `t -> R` the skin becomes the bonded pad, which keeps the shrink:
+//!   the radius (not the force) steps there by up to Sneddon's term (no FE of a core past t/R
+//!   0.5 on a ball).
+//!
 //! Session 11's split (the hemisphere at `rho x`, the layer excess at `rho_H x`, the thinning at
 //! the true `delta/t`) put the squeeze on the layer excess only: linear in `delta/t` from the
 //! first contact (the FE has none there: 2 % too stiff at x = 0.04 on R at t/R 0.3), and for a
@@ -193,10 +210,12 @@ pub(crate) fn core_on_counterpart(
         map.cap,
     )?;
     // The curve is in the true x now: rho = 1 and s = h; the patch's axes stay the plane's
-    // at rho x (the curve's radius is evaluated there).
+    // at rho x (the curve's radius is evaluated there), without Sneddon's half-space shrink
+    // (module docs, the patch's edge).
     let map = CounterpartMap {
         rho: 1.0,
         force: h,
+        shrink: [0.0; 2],
         ..*map
     };
     Ok(Some((Curve::Backed(backed), map)))

@@ -153,16 +153,15 @@ fn a_skin_on_a_core_on_a_ball_has_the_fe_contact_radius() {
             worst = worst.max((p.radius / (fe.at(x) + lag) - 1.0).abs());
         }
         println!("{:38} radius within {:5.2} %", file.path, 100.0 * worst);
+        // Session 15: the core's patch takes no Sneddon shrink (`core_map`, the patch's edge);
+        // with it these were 3.00 / 3.51 / 3.48 / 4.52 % (the 3 %: missed).
         let tolerance = match file.path {
-            // session 13's held-out compressible skin (nu 0.33, t/R 0.45 on 3R): 3.00 %
-            "ball/core/force_nu0.33_t0.45_k3.csv" => 0.0305,
-            // and nu 0.36 t/R 0.3 on R: 3.51 % (the law's radius wider at x = 0.1-0.16)
-            "ball/core/force_nu0.36_t0.3_k1.csv" => 0.0356,
-            // session 14's nu 0.3, t/R 0.4 on 2R: 3.48 % (the radius is the plane's at rho x,
-            // not changed by the confined skin)
-            "ball/core/force_nu0.3_t0.4_k2.csv" => 0.0353,
-            // and the blind nu 0.3, t/R 0.5 on R: 4.52 % (the 3 %: missed)
-            "ball/core/force_nu0.3_t0.5_k1.csv" => 0.0457,
+            // session 13's held-out compressible skin (nu 0.33, t/R 0.45 on 3R): 2.58 %
+            "ball/core/force_nu0.33_t0.45_k3.csv" => 0.0278,
+            // session 14's nu 0.3, t/R 0.4 on 2R: 2.68 % (narrow at its end, x = 0.31)
+            "ball/core/force_nu0.3_t0.4_k2.csv" => 0.0288,
+            // nu 0.36 t/R 0.3 on R (2.23 %) and the blind nu 0.3, t/R 0.5 on R (1.32 %): the
+            // shared tolerance
             _ => RADIUS_TOLERANCE,
         };
         assert!(worst < tolerance, "{}: {:.2} %", file.path, 100.0 * worst);
@@ -171,6 +170,39 @@ fn a_skin_on_a_core_on_a_ball_has_the_fe_contact_radius() {
     assert!(seen >= 5, "{seen} curves");
 }
 
-/// The radius's largest error seen on these curves (1.32-2.14 %, session 11), rounded up by
-/// 0.3 % (the plane's core radius is within 2.23 % of its FE; the target: 5 %).
+/// The radius's largest error seen on these curves (1.32-2.14 %, session 11; 1.15-2.23 % on the
+/// rest since session 15), rounded up by 0.2-0.3 % (the plane's core radius is within 2.23 % of
+/// its FE; the target for a core: 3 %).
 const RADIUS_TOLERANCE: f64 = 0.0245;
+
+/// The FE of the one core curve the law misses (nu 0.48, t/R 0.5 on R, 4.65 % at x = 0.38) is
+/// converged where it misses (session 15, `fe_campaign.py` role `conv-reach`: R/60 against
+/// the campaign's R/40, to x = 0.36 where the R/60 run diverged): the two meshes' forces agree
+/// within 0.13 % at every x, so the miss is the law's, not the mesh's.
+#[test]
+fn the_missed_core_curve_is_mesh_converged_to_its_end() {
+    let text = include_str!("../../../tests/data/fe/ball/convergence.csv");
+    let header = "geometry,nu,k,check,campaign,other,delta_over_R,force_N_campaign,";
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip_while(|l| !l.starts_with(header))
+        .skip(1)
+        .filter(|l| l.starts_with("core,0.48,1,mesh,40,60,"))
+        .map(|l| {
+            l.split(',')
+                .skip(6)
+                .map(|v| v.parse().expect("a number"))
+                .collect()
+        })
+        .collect();
+    let worst = rows.iter().map(|r| r[3].abs()).fold(0.0, f64::max);
+    let end = rows.iter().map(|r| r[0]).fold(0.0, f64::max);
+    println!("core nu 0.48 t/R 0.5 on R: R/40 vs R/60 within {worst:.3} % to x = {end}");
+    assert!(rows.len() >= 30, "{} rows", rows.len());
+    assert!(end >= 0.36 - 1e-9, "to x = {end}");
+    assert!(worst <= 0.15, "{worst} %");
+    for r in &rows {
+        // reldiff = (F_R/40 - F_R/60) / F_R/60, in %: the columns agree with it.
+        assert!((100.0 * (r[1] - r[2]) / r[2] - r[3]).abs() < 2e-3, "{r:?}");
+    }
+}

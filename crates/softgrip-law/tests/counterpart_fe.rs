@@ -136,6 +136,11 @@ fn stated_force_error(path: &str) -> f64 {
         // fitted; session 12's law: 1.98 and 2.03 %).
         "ball/flat/force_nu0.42_k0.8.csv" => 2.63,
         "ball/flat/force_nu0.32_k2.5.csv" => 1.92,
+        // Session 15, blind (`fe_campaign.py`'s `held15`, the small-ball end between the fitted
+        // R/2 and the held-out 0.7 R; no constant saw them): the flat pad at nu 0.4 on 0.6 R,
+        // -3.10 % at x = 0.41 (the 3 %: missed, KNOWN_MISSES), the free sphere 2.26 %.
+        "ball/flat/force_nu0.4_k0.6.csv" => 3.10,
+        "ball/free/force_nu0.4_k0.6.csv" => 2.26,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
@@ -164,14 +169,17 @@ const RANGE_SHORT: &[&str] = &[
     "ball/flat/force_nu0.499_k10.csv",
 ];
 
-/// The curves the law misses the 3 % on (COUNTERPART.md): none since session 14.
+/// The curves the law misses the 3 % on (COUNTERPART.md): session 15's blind flat pad
+/// at nu 0.4 on 0.6 R, 3.10 % too soft at x = 0.41 (-2.83 % at 0.33, -2.49 % at 0.53: the
+/// middle of the range, as the held-out 0.7 R at nu 0.4, -2.77 % at 0.45; the small-ball end of
+/// the map's `g`, fitted on the R/2 curves at nu 0.3 and 0.48 only).
 ///
 /// Session 13 left five, all the bonded pad at nu 0.3-0.37 going soft past x ≈ 0.55: on R at
 /// nu 0.3 (3.46 %), 0.35 (4.00 %) and 0.37 (3.32 %, blind), on 1.4 R at nu 0.33 (4.14 %,
 /// blind), on 1.5 R at nu 0.35 (3.11 %). Session 14's re-stiffening term (`mapping`, the
 /// collapsed column under a narrower patch, `q2 eps (1 - rho_H) rho_H x^(11/2)`) brought them
 /// to 1.53, 2.32, 2.40, 1.63 and 1.51 %.
-const KNOWN_MISSES: &[&str] = &[];
+const KNOWN_MISSES: &[&str] = &["ball/flat/force_nu0.4_k0.6.csv"];
 
 /// Where the curves past 3 % (or near it) are within the 3 % below the FE's collapse:
 /// `(file, to x, its error there %)`; the test allows 0.2 % more.
