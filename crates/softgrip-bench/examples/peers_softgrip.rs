@@ -28,7 +28,8 @@
 //!   (`softgrip_bench::overhead::OverheadScene`, settled 120 steps), softgrip and rapier's own
 //!   contacts, µs per step (best of 3 rounds). The balls never sleep (`can_sleep(false)`).
 //! - `resting-sleep`: the same with the balls allowed to sleep (rapier's default thresholds),
-//!   asleep once settled (kind `resting_sleep`; `peers.py` does not read it).
+//!   asleep once settled (kind `resting_sleep`; `peers.py` puts it beside MuJoCo with its
+//!   sleeping enabled).
 //! - `grasp-law`: the default scene's fingertip law (Dragon Skin 30, E = 0.59 MPa, nu = 0.49,
 //!   R = 10 mm, `flat` backing, `auto`) at the squeeze depths of `sweeps/throughput.toml`, the
 //!   grip MuJoCo's grasp is matched to.

@@ -13,14 +13,14 @@ use nalgebra::Vector3;
 use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query;
 use rapier3d::prelude::{
-    BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, NarrowPhase,
-    QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
+    BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, IslandManager,
+    NarrowPhase, QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
 };
 
 use crate::boundary::{raw, to_f64};
 use crate::counters::SoftCounters;
 use crate::curvature::{self, Touch};
-use crate::fast_hash::FastMap;
+use crate::fast_hash::{FastMap, FastSet};
 use crate::fingertip::SoftFingertip;
 use crate::tip_record::TipRecord;
 
@@ -66,11 +66,104 @@ pub(crate) struct Scene<'a> {
     pub colliders: &'a ColliderSet,
     pub narrow_phase: &'a NarrowPhase,
     pub broad_phase: &'a BroadPhaseBvh,
+    /// rapier's islands: the awake bodies (`IslandManager::active_bodies`).
+    pub islands: &'a IslandManager,
     /// The fingertips and their collision groups, in handle order.
     pub tip_order: &'a [(ColliderHandle, InteractionGroups)],
     /// The world's gravity magnitude [m/s^2]: what a body at rest gains in speed over the step
     /// bounds its travel too (a ball released just above the ground).
     pub gravity: f32,
+    /// The largest registered fingertip radius \[m\] (`disturbed`).
+    pub max_radius: f32,
+}
+
+/// Which fingertips a detection looked at: every one, or (when some sleep) those in `tips`.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Detected {
+    /// Every fingertip was detected (none held).
+    pub all: bool,
+    /// The fingertips detected, in handle order (meaningful when `all` is false).
+    pub tips: Vec<ColliderHandle>,
+    /// The sleeping fingertips within reach of an awake body (`disturbed`).
+    disturbed: FastSet<ColliderHandle>,
+    /// The fastest linear [m/s] and angular [rad/s] motion of the world (`fastest_motion`).
+    fastest: (f32, f32),
+}
+
+impl Detected {
+    /// Whether the contacts owned by fingertip `tip` were left as they were (`held`).
+    pub(crate) fn held(&self, tip: ColliderHandle) -> bool {
+        !self.all
+            && self
+                .tips
+                .binary_search_by_key(&raw(tip), |h| raw(*h))
+                .is_err()
+    }
+}
+
+/// The fingertip that detects a contact between `a` (a fingertip) and `b`: for a pair of
+/// fingertips the one with the smaller handle (`Tip::contact_with`), else `a`.
+pub(crate) fn owner(
+    tips: &FastMap<ColliderHandle, TipRecord>,
+    a: ColliderHandle,
+    b: ColliderHandle,
+) -> ColliderHandle {
+    if tips.contains_key(&b) && raw(b) < raw(a) {
+        b
+    } else {
+        a
+    }
+}
+
+/// Whether fingertip `h` is on a sleeping dynamic body: its contacts are held (`detect`).
+fn asleep(scene: &Scene<'_>, h: ColliderHandle) -> bool {
+    scene
+        .colliders
+        .get(h)
+        .and_then(|c| c.parent())
+        .and_then(|b| scene.bodies.get(b))
+        .is_some_and(|rb| rb.is_dynamic() && rb.is_sleeping())
+}
+
+/// The sleeping fingertips that an awake body may reach within the step, written to `out`:
+/// each awake body's colliders' AABBs, swept over `dt` \[s\] and grown by the largest
+/// prediction distance a pair with a sleeping fingertip can have (`Tip::prediction` with the
+/// fingertip still: `0.05 R + 1.5 (|v| + |w| R + 2 |g| dt) dt`, `R` the largest fingertip
+/// radius, plus the 1 % of R of rounding room), queried in the broad phase's BVH. A sleeping
+/// fingertip's BVH leaf holds its current AABB (it has not moved since it fell asleep), so
+/// every pair the fingertip's own detection would find with an awake body is found here. The
+/// cost is the awake bodies' neighbourhoods', not the sleeping fingertips'.
+fn disturbed(
+    scene: &Scene<'_>,
+    qp: &QueryPipeline<'_>,
+    tips: &FastMap<ColliderHandle, TipRecord>,
+    dt: f32,
+    out: &mut FastSet<ColliderHandle>,
+) {
+    out.clear();
+    let r = scene.max_radius;
+    let fall = scene.gravity * dt;
+    for handle in scene.islands.active_bodies() {
+        let Some(rb) = scene.bodies.get(handle) else {
+            continue;
+        };
+        let (v, w) = (rb.linvel(), rb.angvel());
+        let grow = 0.06 * r + 1.5 * (v.length() + w.length() * r + 2.0 * fall) * dt;
+        let sweep = v * dt;
+        for &ch in rb.colliders() {
+            let Some(co) = scene.colliders.get(ch) else {
+                continue;
+            };
+            let aabb = co.compute_aabb();
+            let lo = aabb.mins.min(aabb.mins + sweep) - Vector::splat(grow);
+            let hi = aabb.maxs.max(aabb.maxs + sweep) + Vector::splat(grow);
+            for (h, _) in qp.intersect_aabb_conservative(Aabb::new(lo, hi)) {
+                if h != ch && tips.contains_key(&h) && asleep(scene, h) {
+                    out.insert(h);
+                }
+            }
+        }
+    }
 }
 
 /// Finds the soft contacts of every fingertip (`scene.tip_order`; `tips` tells the soft
@@ -90,36 +183,137 @@ pub(crate) struct Scene<'a> {
 /// AABB is then tested against the fingertip's, loosened by the pair's prediction distance (plus
 /// 1 % of R of rounding room), before the exact query: the shapes are at least as far apart as
 /// their AABBs.
+///
+/// A fingertip on a sleeping body that no awake body can reach within the step (`disturbed`)
+/// is not detected: its contacts are *held* (the caller keeps their readout and memory;
+/// `detected` says which fingertips were looked at). Both sides of each of its contacts are
+/// immobile (it sleeps only when every contact is with something fixed or asleep, see
+/// `bodies::wake_touched`), so its geometry and its law's answer are those of the step it fell
+/// asleep in.
 pub(crate) fn detect(
     scene: &Scene<'_>,
     tips: &FastMap<ColliderHandle, TipRecord>,
     dt: f64,
     out: &mut Vec<Geom>,
     candidates: &mut Vec<(ColliderHandle, f32)>,
+    detected: &mut Detected,
     counters: &mut SoftCounters,
 ) {
     out.clear();
+    detected.all = true;
+    detected.tips.clear();
     let qp = scene.broad_phase.as_query_pipeline(
         scene.narrow_phase.query_dispatcher(),
         scene.bodies,
         scene.colliders,
         QueryFilter::default(),
     );
-    let (v_max, w_max) = fastest_motion(scene.bodies);
+    detected.fastest = fastest_motion(scene.bodies);
     // In handle order: the contacts come out sorted by (fingertip, other).
-    for &(tip_h, tip_groups) in scene.tip_order {
-        let Some(tip) = Tip::of(scene, tips, tip_h, tip_groups, dt, counters) else {
-            continue;
-        };
-        tip.candidates(&qp, v_max, w_max, candidates);
-        for &(other_h, gap) in candidates.iter() {
-            if let Some(g) = tip.contact_with(scene, tips, other_h, gap, counters) {
-                out.push(g);
+    for (i, &(tip_h, tip_groups)) in scene.tip_order.iter().enumerate() {
+        if asleep(scene, tip_h) {
+            if detected.all {
+                // The first sleeping fingertip: the ones before it were all detected.
+                detected.all = false;
+                detected
+                    .tips
+                    .extend(scene.tip_order[..i].iter().map(|t| t.0));
+                disturbed(scene, &qp, tips, dt as f32, &mut detected.disturbed);
+            }
+            if !detected.disturbed.contains(&tip_h) {
+                counters.held_tips += 1;
+                continue;
             }
         }
+        if !detected.all {
+            detected.tips.push(tip_h);
+        }
+        detect_tip(
+            scene,
+            &qp,
+            tips,
+            (tip_h, tip_groups),
+            dt,
+            detected.fastest,
+            candidates,
+            out,
+            counters,
+        );
     }
     // Deterministic order (already sorted: fingertips and candidates in handle order).
     out.sort_by_key(|g| (raw(g.tip), raw(g.other)));
+}
+
+/// Detects the held fingertip `tip_h` after all (its body was woken within the step,
+/// `Step::wake_touched`): its contacts are appended to `out` (the caller sorts them) and it
+/// joins `detected`. Returns whether it was held.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn detect_woken(
+    scene: &Scene<'_>,
+    tips: &FastMap<ColliderHandle, TipRecord>,
+    tip_h: ColliderHandle,
+    dt: f64,
+    out: &mut Vec<Geom>,
+    candidates: &mut Vec<(ColliderHandle, f32)>,
+    detected: &mut Detected,
+    counters: &mut SoftCounters,
+) -> bool {
+    let Err(at) = detected.tips.binary_search_by_key(&raw(tip_h), |h| raw(*h)) else {
+        return false;
+    };
+    if detected.all {
+        return false;
+    }
+    let Some(&groups) = tips.get(&tip_h).map(|t| &t.groups) else {
+        return false;
+    };
+    detected.tips.insert(at, tip_h);
+    counters.held_tips = counters.held_tips.saturating_sub(1);
+    let qp = scene.broad_phase.as_query_pipeline(
+        scene.narrow_phase.query_dispatcher(),
+        scene.bodies,
+        scene.colliders,
+        QueryFilter::default(),
+    );
+    let fastest = detected.fastest;
+    detect_tip(
+        scene,
+        &qp,
+        tips,
+        (tip_h, groups),
+        dt,
+        fastest,
+        candidates,
+        out,
+        counters,
+    );
+    true
+}
+
+/// The contacts of one fingertip (`tip`: its handle and collision groups), pushed to `out` in
+/// the handle order of the other colliders; `fastest` is the fastest motion of the world
+/// (`fastest_motion`).
+#[allow(clippy::too_many_arguments)]
+fn detect_tip(
+    scene: &Scene<'_>,
+    qp: &QueryPipeline<'_>,
+    tips: &FastMap<ColliderHandle, TipRecord>,
+    (tip_h, tip_groups): (ColliderHandle, InteractionGroups),
+    dt: f64,
+    (v_max, w_max): (f32, f32),
+    candidates: &mut Vec<(ColliderHandle, f32)>,
+    out: &mut Vec<Geom>,
+    counters: &mut SoftCounters,
+) {
+    let Some(tip) = Tip::of(scene, tips, tip_h, tip_groups, dt, counters) else {
+        return;
+    };
+    tip.candidates(qp, v_max, w_max, candidates);
+    for &(other_h, gap) in candidates.iter() {
+        if let Some(g) = tip.contact_with(scene, tips, other_h, gap, counters) {
+            out.push(g);
+        }
+    }
 }
 
 /// The largest linear [m/s] and angular [rad/s] speed of any moving body of the world: it

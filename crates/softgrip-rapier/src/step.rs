@@ -21,11 +21,11 @@
 use std::time::Instant;
 
 use nalgebra::Vector3;
-use rapier3d::prelude::{ColliderHandle, EventHandler, PhysicsHooks, PhysicsWorld};
+use rapier3d::prelude::{EventHandler, PhysicsHooks, PhysicsWorld, RigidBodyHandle};
 use softgrip_law::Regime;
 
 use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
-use crate::boundary::{to_f32, to_f64};
+use crate::boundary::{raw, to_f32, to_f64};
 use crate::contacts::{PairState, Scratch, SoftContacts};
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
 use crate::guard::{self, At};
@@ -184,7 +184,7 @@ impl Step<'_> {
         self.soft.counters.pipeline_time += t.elapsed();
     }
 
-    fn detect(&mut self, dt: f64, candidates: &mut Vec<(ColliderHandle, f32)>) {
+    fn detect(&mut self, dt: f64, s: &mut Scratch) {
         let t = Instant::now();
         let soft = &mut *self.soft;
         let scene = Scene {
@@ -192,15 +192,18 @@ impl Step<'_> {
             colliders: &self.physics.colliders,
             narrow_phase: &self.physics.narrow_phase,
             broad_phase: &self.physics.broad_phase,
+            islands: &self.physics.islands,
             tip_order: &soft.tip_order,
             gravity: self.physics.gravity.length(),
+            max_radius: soft.max_radius,
         };
         detect::detect(
             &scene,
             &soft.tips,
             dt,
             &mut soft.geoms,
-            candidates,
+            &mut s.candidates,
+            &mut s.detected,
             &mut soft.counters,
         );
         soft.counters.detect_time += t.elapsed();
@@ -230,7 +233,7 @@ impl Step<'_> {
         let mut scratch = std::mem::take(&mut self.soft.scratch);
 
         // 2.-3. Contacts now, and the substep count.
-        self.detect(dt, &mut scratch.candidates);
+        self.detect(dt, &mut scratch);
         let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, &kinematic, 1.0, dt);
         self.prepare(dt, &kin_vel, &mut scratch);
         let n = self.substep_count(dt, &scratch);
@@ -261,7 +264,13 @@ impl Step<'_> {
         }
 
         // 5. Readout.
-        readout::assemble(&mut scratch.accums, dt, &mut self.soft.contacts);
+        readout::assemble(
+            &mut scratch.accums,
+            dt,
+            &scratch.detected,
+            &self.soft.tips,
+            &mut self.soft.contacts,
+        );
         self.soft.scratch = scratch;
         self.soft.update_tactile(&self.physics.colliders);
         Ok(())
@@ -279,7 +288,7 @@ impl Step<'_> {
         scratch.accums.clear();
         for i in 0..n {
             if i > 0 {
-                self.detect(h, &mut scratch.candidates);
+                self.detect(h, scratch);
             }
             // An unsplit step's rows are those of the substep count's pass above: same
             // geometry, same step, same kinematic velocities (they read the current poses).
@@ -311,7 +320,7 @@ impl Step<'_> {
         s.geom.clear();
         s.mobility.clear();
         s.skipped.clear();
-        self.wake_touched();
+        self.wake_touched(s);
         let tb = &mut s.body_table;
         let geoms = std::mem::take(&mut self.soft.geoms);
         // rapier's step of h is N passes of "kick h/N, drift h/N": a constant acceleration a
@@ -384,18 +393,75 @@ impl Step<'_> {
     /// Wakes (or keeps awake) the dynamic bodies of the found contacts whose other side is not
     /// fixed or asleep (`bodies::wake_touched`), before any of them enters the body table (a
     /// sleeping body is immobile there). Repeated until nothing more wakes: a woken body wakes
-    /// what sleeps on it in turn, as rapier wakes a whole island.
-    fn wake_touched(&mut self) {
+    /// what sleeps on it in turn, as rapier wakes a whole island. A woken body's fingertips
+    /// that the detection held (`detect`) are detected now, so that they enter the solve with
+    /// every contact they have (a woken ball without its ground contact fell through it).
+    fn wake_touched(&mut self, s: &mut Scratch) {
+        let dt = self.physics.integration_parameters.dt as f64;
+        let gravity = to_f64(self.physics.gravity);
+        let mut redetected = false;
         loop {
-            let mut woken = 0;
+            let mut woken = std::mem::take(&mut s.woken);
+            woken.clear();
             for g in &self.soft.geoms {
-                woken += bodies::wake_touched(&mut self.physics.bodies, g.body_tip, g.body_other);
+                let Some(tip) = self.soft.tips.get(&g.tip) else {
+                    continue;
+                };
+                let r = tip.fingertip.radius();
+                bodies::wake_touched(&mut self.physics.bodies, g, r, gravity, dt, &mut woken);
             }
-            self.soft.counters.woken += woken;
-            if woken == 0 {
+            self.soft.counters.woken += woken.len() as u64;
+            // The woken bodies' held fingertips: their contacts join the list, and the next
+            // pass wakes through them.
+            redetected |= self.detect_woken(&woken, s);
+            let done = woken.is_empty();
+            s.woken = woken;
+            if done {
                 break;
             }
         }
+        if redetected {
+            self.soft.geoms.sort_by_key(|g| (raw(g.tip), raw(g.other)));
+        }
+    }
+
+    /// Detects the held fingertips of the `woken` bodies (`detect::detect_woken`); returns
+    /// whether there was any.
+    fn detect_woken(&mut self, woken: &[RigidBodyHandle], s: &mut Scratch) -> bool {
+        if s.detected.all {
+            return false;
+        }
+        let dt = self.physics.integration_parameters.dt as f64;
+        let soft = &mut *self.soft;
+        let scene = Scene {
+            bodies: &self.physics.bodies,
+            colliders: &self.physics.colliders,
+            narrow_phase: &self.physics.narrow_phase,
+            broad_phase: &self.physics.broad_phase,
+            islands: &self.physics.islands,
+            tip_order: &soft.tip_order,
+            gravity: self.physics.gravity.length(),
+            max_radius: soft.max_radius,
+        };
+        let mut any = false;
+        for &body in woken {
+            let Some(rb) = scene.bodies.get(body) else {
+                continue;
+            };
+            for &ch in rb.colliders() {
+                any |= detect::detect_woken(
+                    &scene,
+                    &soft.tips,
+                    ch,
+                    dt,
+                    &mut soft.geoms,
+                    &mut s.candidates,
+                    &mut s.detected,
+                    &mut soft.counters,
+                );
+            }
+        }
+        any
     }
 
     /// rapier's touching rigid contacts of every dynamic body a soft contact moves, and of the
@@ -590,8 +656,16 @@ impl Step<'_> {
                 state.stamp = stamp;
             }
         }
-        // Forget pairs that are no longer in contact (not stamped this substep).
-        soft.pairs.retain(|_, v| v.stamp == stamp);
+        // Forget pairs that are no longer in contact (not stamped this substep), but for the
+        // held ones (`detect`: a sleeping fingertip's, not detected): they keep their memory.
+        let detected = &s.detected;
+        if detected.all {
+            soft.pairs.retain(|_, v| v.stamp == stamp);
+        } else if !detected.tips.is_empty() {
+            let tips = &soft.tips;
+            soft.pairs
+                .retain(|k, v| v.stamp == stamp || detected.held(detect::owner(tips, k.0, k.1)));
+        }
     }
 
     fn substep_contacts(
