@@ -352,7 +352,8 @@ def resting(n, solref=(0.02, 1.0), solimp=(0.9, 0.95, 0.001, 0.5, 2.0), dt=0.002
     1/60 s (the spheres bounce; measured before choosing this). With `sleep`, MuJoCo's
     sleeping is enabled (`<flag sleep="enable"/>`, its default `sleep_tolerance`): the
     resting spheres' trees fall asleep. Returns (µs/step, steps timed per round, largest
-    sphere speed at the end [m/s], settle steps, trees awake at the end)."""
+    sphere speed at the end [m/s], settle steps, trees awake at the end, the median of the
+    timed steps [µs])."""
     side = int(np.ceil(np.sqrt(n)))
     bodies = []
     for i in range(n):
@@ -374,13 +375,16 @@ def resting(n, solref=(0.02, 1.0), solimp=(0.9, 0.95, 0.001, 0.5, 2.0), dt=0.002
         mujoco.mj_step(model, data)
     steps = int(np.clip(20000 // n, 60, 2000))
     best = np.inf
+    samples = []
     for _ in range(3):
         timer = StepTimer()
         for _ in range(steps):
             timer.time(mujoco.mj_step, model, data)
         best = min(best, timer.us_per_step())
+        samples += timer.samples
     speed = float(np.max(np.abs(data.qvel))) if model.nv else 0.0
-    return best, steps, speed, settle, int(data.ntree_awake)
+    median = 1e6 * float(np.median(samples))
+    return best, steps, speed, settle, int(data.ntree_awake), median
 
 
 # --------------------------------------------------------------------------------------------

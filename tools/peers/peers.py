@@ -110,8 +110,10 @@ def run_resting(rust, drake=True):
     table = {}
     for kind in ("resting", "resting_sleep"):
         for rec in rust.get(kind, []):
+            median = rec.get("median_us_per_step")
+            note = f"median {fmt_us(median)}" if median is not None else ""
             table.setdefault(names[(kind, rec["peer"])], {})[rec["n"]] = {
-                "us": rec["us_per_step"], "note": ""}
+                "us": rec["us_per_step"], "note": note, "median_us": median}
     mujoco_rows = [("MuJoCo (default contact), dt = 2 ms", 0.002, False),
                    ("MuJoCo (default contact), dt = 16.7 ms", 1 / 60, False),
                    ("MuJoCo (default contact), sleep enabled, dt = 16.7 ms", 1 / 60, True)]
@@ -137,7 +139,8 @@ def resting_cell(out, err):
     us, steps, speed, settled = out[:4]
     note = f"{settled}+3x{steps} steps, max speed {speed:.0e} m/s"
     if len(out) > 4:
-        note += f", {out[4]} awake"
+        note += f", {out[4]} awake, median {fmt_us(out[5])}"
+        return {"us": us, "note": note, "median_us": out[5]}
     return {"us": us, "note": note}
 
 
