@@ -344,12 +344,16 @@ def flex_squeeze(count, dt=0.001, speed=0.02, budget_s=120.0):
 # --------------------------------------------------------------------------------------------
 
 
-def resting(n, solref=(0.02, 1.0), solimp=(0.9, 0.95, 0.001, 0.5, 2.0), dt=0.002, settle=120):
+def resting(n, solref=(0.02, 1.0), solimp=(0.9, 0.95, 0.001, 0.5, 2.0), dt=0.002, settle=120,
+            sleep=False):
     """N rigid spheres (R, fingertip mass, free joints) on a 30 mm grid resting on a plane;
     µs per step after `settle` steps. The defaults are MuJoCo's own (contact solref, solimp
     and the 2 ms step): the Hertz-matched contact of the squeeze is not resolved at 2 ms or
-    1/60 s (the spheres bounce; measured before choosing this). Returns (µs/step, steps
-    timed per round, largest sphere speed at the end [m/s], settle steps)."""
+    1/60 s (the spheres bounce; measured before choosing this). With `sleep`, MuJoCo's
+    sleeping is enabled (`<flag sleep="enable"/>`, its default `sleep_tolerance`): the
+    resting spheres' trees fall asleep. Returns (µs/step, steps timed per round, largest
+    sphere speed at the end [m/s], settle steps, trees awake at the end, the median of the
+    timed steps [µs])."""
     side = int(np.ceil(np.sqrt(n)))
     bodies = []
     for i in range(n):
@@ -360,7 +364,8 @@ def resting(n, solref=(0.02, 1.0), solimp=(0.9, 0.95, 0.001, 0.5, 2.0), dt=0.002
                       f'<geom type="sphere" size="{R}" mass="{MASS}"/></body>')
     ref = " ".join(str(v) for v in solref)
     imp = " ".join(str(v) for v in solimp)
-    xml = f"""<mujoco><option timestep="{dt}"/>
+    flag = '<flag sleep="enable"/>' if sleep else ""
+    xml = f"""<mujoco><option timestep="{dt}">{flag}</option>
   <default><geom solref="{ref}" solimp="{imp}"/></default>
   <worldbody><geom type="plane" size="{side * 0.03 + 0.1} {side * 0.03 + 0.1} 0.01"/>
   {''.join(bodies)}</worldbody></mujoco>"""
@@ -370,13 +375,16 @@ def resting(n, solref=(0.02, 1.0), solimp=(0.9, 0.95, 0.001, 0.5, 2.0), dt=0.002
         mujoco.mj_step(model, data)
     steps = int(np.clip(20000 // n, 60, 2000))
     best = np.inf
+    samples = []
     for _ in range(3):
         timer = StepTimer()
         for _ in range(steps):
             timer.time(mujoco.mj_step, model, data)
         best = min(best, timer.us_per_step())
+        samples += timer.samples
     speed = float(np.max(np.abs(data.qvel))) if model.nv else 0.0
-    return best, steps, speed, settle
+    median = 1e6 * float(np.median(samples))
+    return best, steps, speed, settle, int(data.ntree_awake), median
 
 
 # --------------------------------------------------------------------------------------------

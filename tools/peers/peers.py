@@ -97,32 +97,51 @@ def failed_row(peer, variant, reason):
             "x": [], "force": [], "note": f"FAILED: {reason}"}
 
 
-def run_resting(rust):
+def run_resting(rust, drake=True):
     """N = 1, 10, 100, 1000 spheres resting: softgrip (its law, `auto`) and rapier (its own
-    contacts) from the Rust side at dt = 1/60 s, MuJoCo (its default contact and 2 ms step)
-    and Drake (point contact, Hertz-matched stiffness, dt = 1/60 s) here."""
-    names = {"softgrip": "softgrip (rapier + plugin), dt = 16.7 ms",
-             "rapier": "rapier's own contacts, dt = 16.7 ms"}
+    contacts) from the Rust side at dt = 1/60 s, never asleep and allowed to sleep; MuJoCo
+    (its default contact) at its 2 ms step and at the same 1/60 s, never asleep and with its
+    sleeping enabled; and Drake (point contact, Hertz-matched stiffness, dt = 1/60 s; it has
+    no sleeping) here, unless `drake` is false."""
+    names = {("resting", "softgrip"): "softgrip (rapier + plugin), dt = 16.7 ms",
+             ("resting", "rapier"): "rapier's own contacts, dt = 16.7 ms",
+             ("resting_sleep", "softgrip"): "softgrip, allowed to sleep, dt = 16.7 ms",
+             ("resting_sleep", "rapier"): "rapier's own contacts, allowed to sleep, dt = 16.7 ms"}
     table = {}
-    for rec in rust.get("resting", []):
-        table.setdefault(names[rec["peer"]], {})[rec["n"]] = {"us": rec["us_per_step"], "note": ""}
+    for kind in ("resting", "resting_sleep"):
+        for rec in rust.get(kind, []):
+            median = rec.get("median_us_per_step")
+            note = f"median {fmt_us(median)}" if median is not None else ""
+            table.setdefault(names[(kind, rec["peer"])], {})[rec["n"]] = {
+                "us": rec["us_per_step"], "note": note, "median_us": median}
+    mujoco_rows = [("MuJoCo (default contact), dt = 2 ms", 0.002, False),
+                   ("MuJoCo (default contact), dt = 16.7 ms", 1 / 60, False),
+                   ("MuJoCo (default contact), sleep enabled, dt = 16.7 ms", 1 / 60, True)]
     for n in (1, 10, 100, 1000):
-        log(f"resting N = {n}: MuJoCo")
-        out, err = guarded(f"MuJoCo resting {n}", mujoco_peers.resting, n)
-        table.setdefault("MuJoCo (default contact), dt = 2 ms", {})[n] = resting_cell(out, err)
-        log(f"resting N = {n}: Drake")
-        out, err = guarded(f"Drake resting {n}", drake_peers.resting, n)
-        table.setdefault("Drake (point contact, SAP), dt = 16.7 ms", {})[n] = resting_cell(out, err)
+        for name, dt, sleep in mujoco_rows:
+            log(f"resting N = {n}: {name}")
+            out, err = guarded(f"MuJoCo resting {n}", mujoco_peers.resting, n, dt=dt,
+                               sleep=sleep)
+            table.setdefault(name, {})[n] = resting_cell(out, err)
+        if drake:
+            log(f"resting N = {n}: Drake")
+            out, err = guarded(f"Drake resting {n}", drake_peers.resting, n)
+            table.setdefault("Drake (point contact, SAP), dt = 16.7 ms", {})[n] = \
+                resting_cell(out, err)
     return table
 
 
 def resting_cell(out, err):
     """One cell of the resting table from (µs/step, steps per round, max speed, settle
-    steps), or the failure."""
+    steps[, trees awake]), or the failure."""
     if out is None:
         return {"us": None, "note": err}
-    us, steps, speed, settled = out
-    return {"us": us, "note": f"{settled}+3x{steps} steps, max speed {speed:.0e} m/s"}
+    us, steps, speed, settled = out[:4]
+    note = f"{settled}+3x{steps} steps, max speed {speed:.0e} m/s"
+    if len(out) > 4:
+        note += f", {out[4]} awake, median {fmt_us(out[5])}"
+        return {"us": us, "note": note, "median_us": out[5]}
+    return {"us": us, "note": note}
 
 
 def run_grasp(rust, softgrip_sweep):
@@ -241,14 +260,7 @@ def markdown(rows, resting, grasp, info):
                    + " | ".join(pct(e["at"][x]) for x in ERR_AT)
                    + f" | {e['x_from']:.2f}–{e['x_to']:.2f} |")
     out.append("")
-    out.append("### N spheres resting on a plane (R = 10 mm, 4.48 g, 30 mm grid), time per step: best of 3 rounds after settling (note: settle + rounds x steps)\n")
-    out.append("| engine | N = 1 | N = 10 | N = 100 | N = 1000 | note |")
-    out.append("|---|---:|---:|---:|---:|---|")
-    for eng, per in resting.items():
-        notes = "; ".join(f"{n}: {v['note']}" for n, v in sorted(per.items()) if v["note"])
-        out.append(f"| {eng} | " + " | ".join(fmt_us(per.get(n, {}).get("us")) for n in (1, 10, 100, 1000))
-                   + f" | {notes} |")
-    out.append("")
+    out.extend(resting_markdown(resting))
     out.append("### Whole grasp trials per second on one core: `sweeps/throughput.toml` (the default grasp, 8 squeeze depths × 8 box densities)\n")
     out.append("| engine | trials | held | wall | trials/s | cores used (CPU/wall) "
                "| trials per CPU-second | note |")
@@ -336,10 +348,27 @@ def plot(rows, path):
     fig.savefig(path, dpi=100, bbox_inches="tight")
 
 
+def resting_markdown(resting):
+    """The resting table's lines (heading, table, blank line)."""
+    out = ["### N spheres resting on a plane (R = 10 mm, 4.48 g, 30 mm grid), time per step: best of 3 rounds after settling (note: settle + rounds x steps)\n",
+           "| engine | N = 1 | N = 10 | N = 100 | N = 1000 | note |",
+           "|---|---:|---:|---:|---:|---|"]
+    for eng, per in resting.items():
+        notes = "; ".join(f"{n}: {v['note']}" for n, v in sorted(per.items()) if v["note"])
+        out.append(f"| {eng} | " + " | ".join(fmt_us(per.get(n, {}).get("us")) for n in (1, 10, 100, 1000))
+                   + f" | {notes} |")
+    out.append("")
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--rust", required=True, help="JSON lines of peers_softgrip")
-    ap.add_argument("--sweep", required=True, help="sweep_throughput's output (1 thread)")
+    ap.add_argument("--sweep", help="sweep_throughput's output (1 thread); required unless "
+                    "--resting-only")
+    ap.add_argument("--resting-only", action="store_true",
+                    help="run only the resting scenes (MuJoCo; Drake is skipped) and print "
+                    "their table; nothing is written")
     ap.add_argument("--out", default=str(ROOT / "tools/peers"), help="output directory")
     ap.add_argument("--load-start", default=" ".join(f"{v:.2f}" for v in os.getloadavg()))
     ap.add_argument("--started", type=float, default=time.time(),
@@ -347,6 +376,11 @@ def main():
     args = ap.parse_args()
     out = Path(args.out)
     rust = read_rust(args.rust)
+    if args.resting_only:
+        print("\n".join(resting_markdown(run_resting(rust, drake=False))))
+        return
+    if args.sweep is None:
+        ap.error("--sweep is required unless --resting-only")
     rows = run_squeezes(rust)
     resting = run_resting(rust)
     grasp = run_grasp(rust, read_sweep(args.sweep))

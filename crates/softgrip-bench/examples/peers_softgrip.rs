@@ -26,9 +26,11 @@
 //!   of `plugin_tables` (R = 1, mass x 1e6).
 //! - `resting`: N = 1, 10, 100, 1000 fingertips resting on a fixed ground
 //!   (`softgrip_bench::overhead::OverheadScene`, settled 120 steps), softgrip and rapier's own
-//!   contacts, µs per step (best of 3 rounds). The balls never sleep (`can_sleep(false)`).
+//!   contacts, µs per step (best of 3 rounds, and the median of a fourth round's single
+//!   steps, each timed alone). The balls never sleep (`can_sleep(false)`).
 //! - `resting-sleep`: the same with the balls allowed to sleep (rapier's default thresholds),
-//!   asleep once settled (kind `resting_sleep`; `peers.py` does not read it).
+//!   asleep once settled (kind `resting_sleep`; `peers.py` puts it beside MuJoCo with its
+//!   sleeping enabled).
 //! - `grasp-law`: the default scene's fingertip law (Dragon Skin 30, E = 0.59 MPa, nu = 0.49,
 //!   R = 10 mm, `flat` backing, `auto`) at the squeeze depths of `sweeps/throughput.toml`, the
 //!   grip MuJoCo's grasp is matched to.
@@ -458,7 +460,13 @@ fn resting(sleep: bool) {
                 }
             }
         }
-        for (peer, [us, cpu]) in [("softgrip", best_soft), ("rapier", best_rigid)] {
+        // Then one more round of single steps, timed one by one: their median (a round's mean
+        // on a loaded machine carries every preemption that fell in it).
+        let medians = [&mut soft, &mut rigid].map(|scene| median_step(scene, steps));
+        for ((peer, [us, cpu]), median) in [("softgrip", best_soft), ("rapier", best_rigid)]
+            .into_iter()
+            .zip(medians)
+        {
             let cpu = if cpu < f64::MAX {
                 format!("{:.4}", cpu * 1e6)
             } else {
@@ -466,12 +474,26 @@ fn resting(sleep: bool) {
             };
             println!(
                 "{{\"kind\":\"{kind}\",\"peer\":\"{peer}\",\"n\":{n},\"dt\":{:.6e},\"steps\":{steps},\
-                 \"us_per_step\":{:.4},\"cpu_us_per_step\":{cpu}}}",
+                 \"us_per_step\":{:.4},\"cpu_us_per_step\":{cpu},\"median_us_per_step\":{:.4}}}",
                 1.0 / 60.0,
-                us * 1e6
+                us * 1e6,
+                median * 1e6
             );
         }
     }
+}
+
+/// The median wall time \[s\] of `steps` single steps of `scene`, each timed alone.
+fn median_step(scene: &mut OverheadScene, steps: usize) -> f64 {
+    let mut times: Vec<f64> = (0..steps)
+        .map(|_| {
+            let t = Instant::now();
+            scene.step();
+            t.elapsed().as_secs_f64()
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
 }
 
 /// The CPU time this thread has run \[s\] (`/proc/thread-self/schedstat`, in ns), if the

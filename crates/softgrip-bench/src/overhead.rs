@@ -4,9 +4,8 @@
 
 use std::time::{Duration, Instant};
 
-use rapier3d::prelude::RigidBodyActivation;
 use softgrip_rapier::{SoftCounters, SoftWorld};
-use softgrip_testkit::resting::resting_grid;
+use softgrip_testkit::resting::{resting_grid, resting_grid_with};
 
 pub use softgrip_testkit::resting::PITCH;
 pub use softgrip_testkit::scenes::{DENSITY, RADIUS};
@@ -48,12 +47,7 @@ impl OverheadScene {
     /// still for 0.5 s), settled the same [`SETTLE_STEPS`] (2 s), by which time they sleep:
     /// the resting scene as a user would build it (`RigidBodyBuilder::dynamic()` sleeps).
     pub fn new_sleeping(n: usize, soft: bool) -> Self {
-        let mut world = resting_grid(n, PITCH, soft);
-        for (_, rb) in world.physics.bodies.iter_mut() {
-            if rb.is_dynamic() {
-                *rb.activation_mut() = RigidBodyActivation::active();
-            }
-        }
+        let world = resting_grid_with(n, PITCH, soft, true);
         let mut scene = Self { world, soft };
         for _ in 0..SETTLE_STEPS {
             scene.step();

@@ -7,6 +7,7 @@ use rapier3d::prelude::{Pose, RigidBody, RigidBodyHandle, RigidBodySet, RigidBod
 
 use crate::boundary::{to_f32, to_f64};
 use crate::counters::SoftCounters;
+use crate::detect::Geom;
 use crate::fast_hash::FastMap;
 use crate::jointed;
 use crate::multibody::{self, Hosts, LinkCtx, SavedForce};
@@ -59,23 +60,40 @@ pub(crate) fn interpolate(start: &Pose, target: &Pose, s: f32) -> Pose {
     )
 }
 
-/// Wakes the dynamic sides of a soft contact between `a` and `b` that rapier cannot wake:
-/// rapier links only the pairs its narrow phase sees into islands, and a fingertip's pairs are
-/// the plugin's (collision groups `none()`), so it never wakes a body through a soft contact.
-/// A dynamic side is woken, or kept awake (its sleep timer restarted, a strong wake as rapier
-/// wakes an island), unless the other side is fixed or a sleeping dynamic body: so a body may
-/// sleep only when each of its soft contacts is with something that cannot move it. That
-/// keeps every grasp as before (a box held by kinematic jaws never sleeps: woken from sleep
-/// with rapier's zeroed velocity, a box squeezed at 30 Hz read 22.4 N for its 20 N grip),
-/// and a body on a moving support awake (rapier's drift criterion alone let a ball riding a
-/// platform at 0.05 m/s sleep, miss a step and fall 0.8 mm behind). Returns the number of
-/// sleeping bodies woken.
+/// Wakes the dynamic sides of the soft contact `g` that rapier cannot wake: rapier links only
+/// the pairs its narrow phase sees into islands, and a fingertip's pairs are the plugin's
+/// (collision groups `none()`), so it never wakes a body through a soft contact. A dynamic
+/// side is woken, or kept awake (its sleep timer restarted, a strong wake as rapier wakes an
+/// island), unless the other side is fixed or a sleeping dynamic body: so a body may sleep
+/// only when each of its soft contacts is with something that cannot move it. That keeps
+/// every grasp as before (a box held by kinematic jaws never sleeps: woken from sleep with
+/// rapier's zeroed velocity, a box squeezed at 30 Hz read 22.4 N for its 20 N grip), and a
+/// body on a moving support awake (rapier's drift criterion alone let a ball riding a
+/// platform at 0.05 m/s sleep, miss a step and fall 0.8 mm behind).
+///
+/// A contact between two dynamic bodies that does not touch wakes only if its gap can close
+/// within the step (`can_close`): the detection finds pairs within a generous prediction
+/// distance, and two resting fingertips 10 mm apart (a grid at 30 mm) were found as a pair at
+/// 60 Hz (the distance counts each side's stored speed, rapier's velocity lag of 0.061 m/s,
+/// and `2 |g| dt` of fall) and kept each other awake for ever (session 14: N >= 10 never
+/// slept). `r` is the fingertip's radius \[m\], `gravity` the world's \[m/s^2\], `dt` the
+/// step \[s\]. The sleeping bodies it wakes are pushed to `woken`.
 pub(crate) fn wake_touched(
     bodies: &mut RigidBodySet,
-    a: Option<RigidBodyHandle>,
-    b: Option<RigidBodyHandle>,
-) -> u64 {
-    let mut woken = 0;
+    g: &Geom,
+    r: f64,
+    gravity: Vector3<f64>,
+    dt: f64,
+    woken: &mut Vec<RigidBodyHandle>,
+) {
+    let (a, b) = (g.body_tip, g.body_other);
+    let both_dynamic = [a, b].iter().all(|h| {
+        h.and_then(|h| bodies.get(h))
+            .is_some_and(|rb| rb.is_dynamic())
+    });
+    if both_dynamic && g.dist > 0.0 && !can_close(bodies, g, r, gravity, dt) {
+        return;
+    }
     for (this, other) in [(a, b), (b, a)] {
         let Some(this) = this else { continue };
         let Some(rb) = bodies.get(this) else { continue };
@@ -88,10 +106,30 @@ pub(crate) fn wake_touched(
             .is_none_or(|o| o.is_fixed() || (o.is_dynamic() && o.is_sleeping()));
         if !holds && let Some(rb) = bodies.get_mut(this) {
             rb.wake_up(true);
-            woken += u64::from(asleep);
+            if asleep {
+                woken.push(this);
+            }
         }
     }
-    woken
+}
+
+/// Whether the open gap `g.dist` \[m\] of a contact between two dynamic bodies can close
+/// within a step of `dt` \[s\]: the distance their motion along the normal can cover,
+/// `0.05 R + 1.5 dt (approach + (|w_tip| + |w_other|) R + 2 |g . n| dt)` (the detection's
+/// prediction with the approach speed along the normal instead of each side's whole speed, and
+/// gravity's part along the normal: two bodies side by side under gravity do not approach).
+fn can_close(bodies: &RigidBodySet, g: &Geom, r: f64, gravity: Vector3<f64>, dt: f64) -> bool {
+    let motion = |h: Option<RigidBodyHandle>| {
+        h.and_then(|h| bodies.get(h))
+            .map(|rb| (to_f64(rb.linvel()), to_f64(rb.angvel()).norm()))
+            .unwrap_or((Vector3::zeros(), 0.0))
+    };
+    let ((v_tip, w_tip), (v_other, w_other)) = (motion(g.body_tip), motion(g.body_other));
+    // The normal points from the other body to the fingertip: approaching is `u < 0`.
+    let approach = (-(v_tip - v_other).dot(&g.normal)).max(0.0);
+    let fall = 2.0 * gravity.dot(&g.normal).abs() * dt;
+    let reach = 0.05 * r + 1.5 * dt * (approach + (w_tip + w_other) * r + fall);
+    g.dist <= reach
 }
 
 /// Velocities of the position-based kinematic bodies over the part of their path that ends at

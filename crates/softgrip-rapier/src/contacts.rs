@@ -69,6 +69,10 @@ pub(crate) struct Scratch {
     pub net: Vec<(Vector3<f64>, Vector3<f64>)>,
     /// Detection candidates of one fingertip, each with its AABB gap to it \[m\].
     pub candidates: Vec<(ColliderHandle, f32)>,
+    /// Which fingertips the last detection looked at (the others' contacts are held).
+    pub detected: crate::detect::Detected,
+    /// The sleeping bodies a wake pass woke (`Step::wake_touched`).
+    pub woken: Vec<RigidBodyHandle>,
     /// Per-contact sums over the substeps of a step.
     pub accums: Accums,
     /// What the soft impulses did to each dynamic body in the last step when it was not split
@@ -116,6 +120,12 @@ pub struct SoftContacts {
     pub(crate) fault: Option<crate::step_error::StepError>,
     /// Simulated time of the steps taken \[s\].
     pub(crate) time: f64,
+    /// The largest registered fingertip radius \[m\] (the reach of an awake body towards a
+    /// sleeping fingertip, `detect`).
+    pub(crate) max_radius: f32,
+    /// Whether any fingertip was registered with a tactile pad (`update_tactile` walks the
+    /// fingertips only then).
+    pub(crate) any_tactile: bool,
 }
 
 /// The fingertips' colliders as rapier's hooks see them: each with its facing in its
@@ -220,6 +230,8 @@ impl SoftContacts {
             groups,
             solver_groups,
         };
+        self.max_radius = self.max_radius.max(record.fingertip.radius() as f32);
+        self.any_tactile |= record.tactile.is_some();
         self.tips.insert(collider, record);
         // In handle order, kept sorted by insertion (not rebuilt: N registrations were
         // quadratic).
@@ -307,6 +319,9 @@ impl SoftContacts {
     /// Marks the images stale after a step (from the readout; read-only for the physics):
     /// keeps each fingertip's orientation for the deferred image.
     pub(crate) fn update_tactile(&mut self, colliders: &ColliderSet) {
+        if !self.any_tactile {
+            return;
+        }
         for (handle, tip) in &mut self.tips {
             if let Some(slot) = &mut tip.tactile {
                 slot.refresh(colliders.get(*handle).map(|c| {

@@ -85,6 +85,11 @@ pub struct SoftCounters {
     /// cannot see a soft contact (a fingertip's collision groups are `none()`), so it never
     /// wakes a body through one (crate README, Sleeping).
     pub woken: u64,
+    /// Fingertips whose contacts were held, total over the steps: on a sleeping body that no
+    /// awake body could reach, they were not detected, nor their law evaluated or solved;
+    /// their readout and contact memory stay those of the step they fell asleep in (crate
+    /// README, Sleeping).
+    pub held_tips: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the contact stage of the substeps: the rows of every substep after the

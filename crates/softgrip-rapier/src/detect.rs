@@ -13,8 +13,8 @@ use nalgebra::Vector3;
 use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query;
 use rapier3d::prelude::{
-    BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, NarrowPhase,
-    QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
+    BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, IslandManager,
+    NarrowPhase, QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
 };
 
 use crate::boundary::{raw, to_f64};
@@ -23,6 +23,11 @@ use crate::curvature::{self, Touch};
 use crate::fast_hash::FastMap;
 use crate::fingertip::SoftFingertip;
 use crate::tip_record::TipRecord;
+
+mod held;
+
+pub(crate) use held::{Detected, detect_woken, owner};
+use held::{asleep, disturbed};
 
 /// The compression `delta` \[m\] of the law from parry's signed distance `dist` \[m\] (negative =
 /// penetration): `delta = -dist`. The one place where the engine's sign convention meets the
@@ -66,11 +71,15 @@ pub(crate) struct Scene<'a> {
     pub colliders: &'a ColliderSet,
     pub narrow_phase: &'a NarrowPhase,
     pub broad_phase: &'a BroadPhaseBvh,
+    /// rapier's islands: the awake bodies (`IslandManager::active_bodies`).
+    pub islands: &'a IslandManager,
     /// The fingertips and their collision groups, in handle order.
     pub tip_order: &'a [(ColliderHandle, InteractionGroups)],
     /// The world's gravity magnitude [m/s^2]: what a body at rest gains in speed over the step
     /// bounds its travel too (a ball released just above the ground).
     pub gravity: f32,
+    /// The largest registered fingertip radius \[m\] (`disturbed`).
+    pub max_radius: f32,
 }
 
 /// Finds the soft contacts of every fingertip (`scene.tip_order`; `tips` tells the soft
@@ -90,36 +99,91 @@ pub(crate) struct Scene<'a> {
 /// AABB is then tested against the fingertip's, loosened by the pair's prediction distance (plus
 /// 1 % of R of rounding room), before the exact query: the shapes are at least as far apart as
 /// their AABBs.
+///
+/// A fingertip on a sleeping body that no awake body can reach within the step (`disturbed`)
+/// is not detected: its contacts are *held* (the caller keeps their readout and memory;
+/// `detected` says which fingertips were looked at). Both sides of each of its contacts are
+/// immobile (it sleeps only when every contact is with something fixed or asleep, see
+/// `bodies::wake_touched`), so its geometry and its law's answer are those of the step it fell
+/// asleep in.
 pub(crate) fn detect(
     scene: &Scene<'_>,
     tips: &FastMap<ColliderHandle, TipRecord>,
     dt: f64,
     out: &mut Vec<Geom>,
     candidates: &mut Vec<(ColliderHandle, f32)>,
+    detected: &mut Detected,
     counters: &mut SoftCounters,
 ) {
     out.clear();
+    detected.all = true;
+    detected.tips.clear();
     let qp = scene.broad_phase.as_query_pipeline(
         scene.narrow_phase.query_dispatcher(),
         scene.bodies,
         scene.colliders,
         QueryFilter::default(),
     );
-    let (v_max, w_max) = fastest_motion(scene.bodies);
+    detected.fastest = fastest_motion(scene.bodies);
     // In handle order: the contacts come out sorted by (fingertip, other).
-    for &(tip_h, tip_groups) in scene.tip_order {
-        let Some(tip) = Tip::of(scene, tips, tip_h, tip_groups, dt, counters) else {
-            continue;
-        };
-        tip.candidates(&qp, v_max, w_max, candidates);
-        for &(other_h, gap) in candidates.iter() {
-            if let Some(g) = tip.contact_with(scene, tips, other_h, gap, counters) {
-                out.push(g);
+    for (i, &(tip_h, tip_groups)) in scene.tip_order.iter().enumerate() {
+        if asleep(scene, tip_h) {
+            if detected.all {
+                // The first sleeping fingertip: the ones before it were all detected.
+                detected.all = false;
+                detected
+                    .tips
+                    .extend(scene.tip_order[..i].iter().map(|t| t.0));
+                disturbed(scene, &qp, tips, dt as f32, &mut detected.disturbed);
+            }
+            if !detected.disturbed.contains(&tip_h) {
+                counters.held_tips += 1;
+                continue;
             }
         }
+        if !detected.all {
+            detected.tips.push(tip_h);
+        }
+        detect_tip(
+            scene,
+            &qp,
+            tips,
+            (tip_h, tip_groups),
+            dt,
+            detected.fastest,
+            candidates,
+            out,
+            counters,
+        );
     }
     // Deterministic order (already sorted: fingertips and candidates in handle order).
     out.sort_by_key(|g| (raw(g.tip), raw(g.other)));
+}
+
+/// The contacts of one fingertip (`tip`: its handle and collision groups), pushed to `out` in
+/// the handle order of the other colliders; `fastest` is the fastest motion of the world
+/// (`fastest_motion`).
+#[allow(clippy::too_many_arguments)]
+fn detect_tip(
+    scene: &Scene<'_>,
+    qp: &QueryPipeline<'_>,
+    tips: &FastMap<ColliderHandle, TipRecord>,
+    (tip_h, tip_groups): (ColliderHandle, InteractionGroups),
+    dt: f64,
+    (v_max, w_max): (f32, f32),
+    candidates: &mut Vec<(ColliderHandle, f32)>,
+    out: &mut Vec<Geom>,
+    counters: &mut SoftCounters,
+) {
+    let Some(tip) = Tip::of(scene, tips, tip_h, tip_groups, dt, counters) else {
+        return;
+    };
+    tip.candidates(qp, v_max, w_max, candidates);
+    for &(other_h, gap) in candidates.iter() {
+        if let Some(g) = tip.contact_with(scene, tips, other_h, gap, counters) {
+            out.push(g);
+        }
+    }
 }
 
 /// The largest linear [m/s] and angular [rad/s] speed of any moving body of the world: it

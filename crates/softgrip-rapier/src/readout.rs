@@ -9,9 +9,11 @@ use rapier3d::prelude::ColliderHandle;
 use softgrip_law::{ContactLaw, ContactPatch, ContactReading, Regime};
 
 use crate::boundary::raw;
+use crate::detect::{Detected, owner};
 use crate::fast_hash::FastMap;
 use crate::model::{Model, Series};
 use crate::solve::Row;
+use crate::tip_record::TipRecord;
 
 /// One soft contact after a step: the law crate's plain [`ContactReading`] (`reading`; the
 /// struct dereferences to it, so `c.normal_force`, `c.delta`, `c.wrench_about(..)` read it)
@@ -229,9 +231,25 @@ fn add(e: &mut Accum, row: &Row, delta: f64, delta_end: f64, h: f64) {
 }
 
 /// The readout of a step of `dt` seconds (impulses / dt), in a deterministic order, written to
-/// `out`; `acc` is emptied (its buffer kept).
-pub(crate) fn assemble(acc: &mut Accums, dt: f64, out: &mut Vec<TipContact>) {
-    out.clear();
+/// `out`; `acc` is emptied (its buffer kept). The contacts of the fingertips the detection held
+/// (`detected`: asleep, not looked at) keep their rows of `out` as they were; with every
+/// fingertip held, `out` is left untouched.
+pub(crate) fn assemble(
+    acc: &mut Accums,
+    dt: f64,
+    detected: &Detected,
+    tips: &FastMap<ColliderHandle, TipRecord>,
+    out: &mut Vec<TipContact>,
+) {
+    if !detected.all && detected.tips.is_empty() && acc.list.is_empty() {
+        return;
+    }
+    let held = !detected.all;
+    if held {
+        out.retain(|c| detected.held(owner(tips, c.fingertip, c.other)));
+    } else {
+        out.clear();
+    }
     for ((tip, other), a) in acc.list.drain(..) {
         if a.jn <= 0.0 && a.delta_end <= 0.0 {
             continue;

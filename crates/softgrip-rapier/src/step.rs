@@ -21,7 +21,7 @@
 use std::time::Instant;
 
 use nalgebra::Vector3;
-use rapier3d::prelude::{ColliderHandle, EventHandler, PhysicsHooks, PhysicsWorld};
+use rapier3d::prelude::{EventHandler, PhysicsHooks, PhysicsWorld};
 use softgrip_law::Regime;
 
 use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
@@ -41,6 +41,7 @@ use onset::update_blend;
 
 mod onset;
 mod split;
+mod wake;
 
 impl SoftContacts {
     /// Advances `world` by `world.integration_parameters.dt` with the soft contacts: the law's
@@ -187,7 +188,7 @@ impl Step<'_> {
         self.soft.counters.pipeline_time += t.elapsed();
     }
 
-    fn detect(&mut self, dt: f64, candidates: &mut Vec<(ColliderHandle, f32)>) {
+    fn detect(&mut self, dt: f64, s: &mut Scratch) {
         let t = Instant::now();
         let soft = &mut *self.soft;
         let scene = Scene {
@@ -195,15 +196,18 @@ impl Step<'_> {
             colliders: &self.physics.colliders,
             narrow_phase: &self.physics.narrow_phase,
             broad_phase: &self.physics.broad_phase,
+            islands: &self.physics.islands,
             tip_order: &soft.tip_order,
             gravity: self.physics.gravity.length(),
+            max_radius: soft.max_radius,
         };
         detect::detect(
             &scene,
             &soft.tips,
             dt,
             &mut soft.geoms,
-            candidates,
+            &mut s.candidates,
+            &mut s.detected,
             &mut soft.counters,
         );
         soft.counters.detect_time += t.elapsed();
@@ -233,7 +237,7 @@ impl Step<'_> {
         let mut scratch = std::mem::take(&mut self.soft.scratch);
 
         // 2.-3. Contacts now, and the substep count.
-        self.detect(dt, &mut scratch.candidates);
+        self.detect(dt, &mut scratch);
         let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, &kinematic, 1.0, dt);
         self.prepare(dt, &kin_vel, &mut scratch);
         let n = self.substep_count(dt, &scratch);
@@ -265,7 +269,13 @@ impl Step<'_> {
 
         // 5. Readout.
         let mut lap = Lap::start(self.soft.profiling);
-        readout::assemble(&mut scratch.accums, dt, &mut self.soft.contacts);
+        readout::assemble(
+            &mut scratch.accums,
+            dt,
+            &scratch.detected,
+            &self.soft.tips,
+            &mut self.soft.contacts,
+        );
         lap.lap(&mut self.soft.counters.readout_time);
         self.soft.scratch = scratch;
         self.soft.update_tactile(&self.physics.colliders);
@@ -284,7 +294,7 @@ impl Step<'_> {
         scratch.accums.clear();
         for i in 0..n {
             if i > 0 {
-                self.detect(h, &mut scratch.candidates);
+                self.detect(h, scratch);
             }
             // An unsplit step's rows are those of the substep count's pass above: same
             // geometry, same step, same kinematic velocities (they read the current poses).
@@ -317,7 +327,7 @@ impl Step<'_> {
         s.geom.clear();
         s.mobility.clear();
         s.skipped.clear();
-        self.wake_touched();
+        self.wake_touched(s);
         let tb = &mut s.body_table;
         let geoms = std::mem::take(&mut self.soft.geoms);
         // rapier's step of h is N passes of "kick h/N, drift h/N": a constant acceleration a
@@ -387,23 +397,6 @@ impl Step<'_> {
         self.prepare_rigid(h, h_drift, kin_vel, s);
         lap.lap(&mut self.soft.counters.supports_time);
         self.soft.counters.jointed_free += s.body_table.jointed_free;
-    }
-
-    /// Wakes (or keeps awake) the dynamic bodies of the found contacts whose other side is not
-    /// fixed or asleep (`bodies::wake_touched`), before any of them enters the body table (a
-    /// sleeping body is immobile there). Repeated until nothing more wakes: a woken body wakes
-    /// what sleeps on it in turn, as rapier wakes a whole island.
-    fn wake_touched(&mut self) {
-        loop {
-            let mut woken = 0;
-            for g in &self.soft.geoms {
-                woken += bodies::wake_touched(&mut self.physics.bodies, g.body_tip, g.body_other);
-            }
-            self.soft.counters.woken += woken;
-            if woken == 0 {
-                break;
-            }
-        }
     }
 
     /// rapier's touching rigid contacts of every dynamic body a soft contact moves, and of the
@@ -598,8 +591,16 @@ impl Step<'_> {
                 state.stamp = stamp;
             }
         }
-        // Forget pairs that are no longer in contact (not stamped this substep).
-        soft.pairs.retain(|_, v| v.stamp == stamp);
+        // Forget pairs that are no longer in contact (not stamped this substep), but for the
+        // held ones (`detect`: a sleeping fingertip's, not detected): they keep their memory.
+        let detected = &s.detected;
+        if detected.all {
+            soft.pairs.retain(|_, v| v.stamp == stamp);
+        } else if !detected.tips.is_empty() {
+            let tips = &soft.tips;
+            soft.pairs
+                .retain(|k, v| v.stamp == stamp || detected.held(detect::owner(tips, k.0, k.1)));
+        }
     }
 
     fn substep_contacts(

@@ -19,6 +19,13 @@ pub const PITCH: f32 = 0.03;
 /// Registered as that fingertip if `soft` (else rapier's own contacts hold them). Inserted in
 /// this order: the ground, then each ball's body and collider, row by row.
 pub fn resting_grid(n: usize, pitch: f32, soft: bool) -> SoftWorld {
+    resting_grid_with(n, pitch, soft, false)
+}
+
+/// [`resting_grid`] with the balls' sleep policy: `can_sleep` lets them sleep under rapier's
+/// default thresholds (`RigidBodyBuilder::dynamic()`'s: still for 0.5 s), as a user's scene
+/// would.
+pub fn resting_grid_with(n: usize, pitch: f32, soft: bool, can_sleep: bool) -> SoftWorld {
     let mut world = SoftWorld::new();
     let side = (n as f64).sqrt().ceil() as usize;
     let half = 0.5 * side as f32 * pitch + pitch;
@@ -40,7 +47,7 @@ pub fn resting_grid(n: usize, pitch: f32, soft: bool) -> SoftWorld {
         let body = world.physics.bodies.insert(
             RigidBodyBuilder::dynamic()
                 .translation(Vector::new(x, (RADIUS - rest) as f32, z))
-                .can_sleep(false),
+                .can_sleep(can_sleep),
         );
         let ball = world.physics.colliders.insert_with_parent(
             ColliderBuilder::ball(RADIUS as f32).density(DENSITY),
