@@ -37,10 +37,13 @@ pub struct Group {
     pub limits: Vec<[f64; 2]>,
 }
 
+/// A joint a gripper goal may name: its URDF name and limits `[lower, upper]` \[m or rad\].
+type NamedJoint = (String, [f64; 2]);
+
 /// The gripper groups of a scene's controllers (see the module's documentation).
 pub fn groups(set: &mut ControlSet) -> Vec<Group> {
     let robots = set.robots().to_vec();
-    let mut found: Vec<(usize, String, Vec<(String, [f64; 2])>)> = Vec::new();
+    let mut found: Vec<(usize, String, Vec<NamedJoint>)> = Vec::new();
     for c in set.controllers_mut() {
         if let Some(g) = c.as_any_mut().downcast_mut::<Grasp>() {
             let model = &robots[g.robot];
@@ -54,7 +57,7 @@ pub fn groups(set: &mut ControlSet) -> Vec<Group> {
         if found.iter().any(|(fr, _, _)| *fr == r) {
             continue;
         }
-        let names: Vec<(String, [f64; 2])> = (model.joints().iter())
+        let names: Vec<NamedJoint> = (model.joints().iter())
             .filter(|j| j.kind.moves() && j.mimic.is_none())
             .map(|j| (j.name.clone(), j.limits))
             .collect();

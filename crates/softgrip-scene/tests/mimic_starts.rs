@@ -64,7 +64,9 @@ fn start(s: &Scene, name: &str) -> f64 {
 
 /// The `SceneError::Invalid` of loading, on `field`, whose text holds every one of `want`.
 fn invalid(r: Result<Scene, SceneError>, want_field: &str, want: &[&str]) {
-    let err = r.err().expect("loaded");
+    let Err(err) = r else {
+        panic!("loaded");
+    };
     let SceneError::Invalid { field, .. } = &err else {
         panic!("not an Invalid error: {err}");
     };
