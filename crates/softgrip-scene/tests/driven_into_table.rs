@@ -431,7 +431,7 @@ fn hand_descent(depth: f64, box_away: bool) -> Down {
 /// (its predicted end speed 9.7e3 m/s) and rapier panics as before. Still ignored (README,
 /// Limits: an answer's work against what its rows can supply is the check not yet built).
 #[test]
-#[ignore = "panics inside rapier (f32::clamp on a NaN multibody joint position) at step 65: a coupled answer past the degenerate check (README, Limits)"]
+#[ignore = "diverges: the run faults with StepError::Diverged (a link at 1e11 m/s, step 66) after coupled answers load the links along directions no joint can move (softgrip-rapier README, Limits, session 15)"]
 fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.02, false);
     assert!(d.held > 30, "{d:?}");
@@ -453,7 +453,7 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// motors saturated at their effort it still diverges (rapier's `f32::clamp` panic in the
 /// hold).
 #[test]
-#[ignore = "still diverges (rapier's f32::clamp panic in the hold): coupled answers past the degenerate check and rapier's joint-limit correction at the plugin's substeps (README, Limits)"]
+#[ignore = "diverges: the run faults with StepError::Diverged in the hold (coupled answers past the degenerate check, rapier's joint-limit correction at the plugin's substeps; softgrip-rapier README, Limits, session 15)"]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
     assert!(d.held > 30, "{d:?}");
