@@ -147,6 +147,12 @@ def curved_cases():
     # /work/fe-scratch/runs/law-curved-s15/
     held15 = [("flat", 0.4, 0.6), ("free", 0.4, 0.6)]
     c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held15]
+    # session 16 (law): blind tests of a refit of the small-ball term with session 15's 0.6 R
+    # run in it: the bonded pad on balls below 0.7 R at nu between the fitted R/2 curves' 0.3 and
+    # 0.48 (nu 0.36 on 0.55 R, then nu 0.45 on 0.65 R); no constant saw them (started before
+    # any refit); under /work/fe-scratch/runs/law-s16/
+    held16 = [("flat", 0.36, 0.55), ("flat", 0.45, 0.65)]
+    c += [(g, nu, 0, 40, "heldout", "ball", k) for g, nu, k in held16]
     return c + core_ball_cases() + cases_3d()
 
 
