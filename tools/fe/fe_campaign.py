@@ -181,7 +181,14 @@ def core_ball_cases():
                 # one core curve the law misses (nu 0.48, t/R 0.5 on R, 4.65 % at delta/t 0.76):
                 # R/60 against the campaign's R/40 to its end (compared by hand against
                 # ball/core/force_nu0.48_t0.5_k1.csv; tools/calibration/CORE_FORM.md)
-                ("core", 0.48, 0.5, 60, "conv-reach", "ball", 1)]
+                ("core", 0.48, 0.5, 60, "conv-reach", "ball", 1),
+                # session 16 (law, /work/fe-scratch/runs/law-s16): blind (started before the
+                # core's map was looked at with session 16's bonded refit): the thick skin near
+                # incompressibility on a ball smaller than the fingertip, where the ball misses
+                # (t/R 0.5 on R at nu 0.48) and the refit's sextic term acts most
+                ("core", 0.47, 0.5, 40, "heldout", "ball", 0.7),
+                # ... and between R and 2R nearer incompressibility
+                ("core", 0.49, 0.45, 40, "heldout", "ball", 1.5)]
 
 
 def cases_3d():
