@@ -6,7 +6,8 @@
 /// edge):
 ///
 /// - `t5 x^(5/2)`: the counterpart's own finite size (a sphere, not Hertz's paraboloid);
-/// - `t7 x^(7/2)`: the compressible collapse under a narrower patch (negative: it adds force);
+/// - `t7 x^(7/2)`: the compressible collapse under a narrower patch (negative: it adds force)
+///   and, bonded, the counterpart's next order beyond its paraboloid (positive on a ball);
 /// - `t11 x^(11/2)`: the bonded pad's collapsed column re-stiffening under a narrower patch
 ///   (negative: it adds force; 0 for the free sphere).
 #[derive(Debug, Clone, Copy, PartialEq)]

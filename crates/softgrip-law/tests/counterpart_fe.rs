@@ -51,7 +51,7 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 }
 
 /// The largest force error each curve is allowed: what `fit_counterpart.py` prints for the law
-/// (`r+g+q+q2, eps, cap`, session 14; the free sphere's constants are session 12's), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
+/// (`r+g+q+q2+g3, eps, cap`, session 16; the free sphere's constants are session 12's), rounded up by 0.2 % (the law's own rounding of the constants and the Rust tables
 /// of the backed constructions: 2.7e-8), so a real change of the law breaks it. Held out of
 /// every fit: the campaign's held-out runs (`ball/*/force_nu0.4_k0.7.csv`,
 /// `ball/*/force_nu0.4_k6.csv`, `ball/flat/force_nu0.45_k1.5.csv`,
@@ -61,7 +61,13 @@ fn force_error(file: &FeFile, law: &ContactLaw) -> (f64, f64) {
 /// 11's runs at nu and R2/R no other run has (`ball/free/force_nu0.42_k1.5.csv`,
 /// `ball/flat/force_nu0.35_k0.7.csv`: each stopped at the FE's wall-clock limit, x = 0.56 and
 /// 0.63). Session 14 fitted the bonded pad at nu = 0.499 on 2R and 4R (without the range
-/// penalty) and session 13's `fit13mid`; session 13's and 14's blind runs stay out.
+/// penalty) and session 13's `fit13mid`; session 13's, 14's, 15's and 16's blind runs stay out.
+/// Session 16 refitted the bonded pad's `g`, `q`, `q2` with the sextic `g3` (`r` held): every
+/// flat curve moved; worse than session 14's law on five, all within 1.80 % (flat nu 0.3 on R
+/// 1.53 -> 1.66, 0.7 R 0.66 -> 1.60, nu 0.499 on R 1.27 -> 1.50, nu 0.48 on 10 R 0.88 -> 0.89,
+/// the flat cylinder at nu 0.3 on 3R 1.78 -> 1.80 %). `ball/free/force_nu0.48_k4.csv` was
+/// stated 1.69 (the Python's number); this test printed 1.37 with session 14's law too (the free
+/// sphere's map is unchanged).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
         "ball/free/force_nu0.3_k0.5.csv" => 1.29,
@@ -73,7 +79,7 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/free/force_nu0.48_k0.5.csv" => 1.20,
         "ball/free/force_nu0.48_k1.csv" => 1.53,
         "ball/free/force_nu0.48_k2.csv" => 0.86,
-        "ball/free/force_nu0.48_k4.csv" => 1.69,
+        "ball/free/force_nu0.48_k4.csv" => 1.37,
         "ball/free/force_nu0.48_k10.csv" => 2.42,
         "ball/free/force_nu0.499_k0.5.csv" => 1.61,
         "ball/free/force_nu0.499_k1.csv" => 1.67,
@@ -84,63 +90,69 @@ fn stated_force_error(path: &str) -> f64 {
         "ball/free/force_nu0.4_k6.csv" => 1.41,
         // Session 11's held-out runs (blind: run after the constants were fixed).
         "ball/free/force_nu0.42_k1.5.csv" => 1.69,
-        "ball/flat/force_nu0.35_k0.7.csv" => 2.01,
-        "ball/flat/force_nu0.3_k0.5.csv" => 2.81,
-        "ball/flat/force_nu0.3_k1.csv" => 1.53,
-        "ball/flat/force_nu0.3_k2.csv" => 2.36,
-        "ball/flat/force_nu0.3_k4.csv" => 2.20,
-        "ball/flat/force_nu0.3_k10.csv" => 1.19,
-        "ball/flat/force_nu0.45_k1.5.csv" => 2.44,
-        "ball/flat/force_nu0.48_k0.5.csv" => 2.94,
-        "ball/flat/force_nu0.48_k1.csv" => 1.78,
-        "ball/flat/force_nu0.48_k2.csv" => 2.02,
-        "ball/flat/force_nu0.48_k4.csv" => 1.40,
-        "ball/flat/force_nu0.48_k10.csv" => 0.88,
-        "ball/flat/force_nu0.499_k1.csv" => 1.27,
-        "ball/flat/force_nu0.499_k2.csv" => 1.78,
-        "ball/flat/force_nu0.499_k4.csv" => 1.44,
-        "ball/flat/force_nu0.499_k10.csv" => 1.03,
-        "ball/flat/force_nu0.4_k0.7.csv" => 2.79,
-        "ball/flat/force_nu0.4_k6.csv" => 0.96,
-        "cylinder/flat/force_nu0.48_k1.csv" => 1.37,
-        "cylinder/flat/force_nu0.48_k3.csv" => 1.01,
+        "ball/flat/force_nu0.35_k0.7.csv" => 1.60,
+        "ball/flat/force_nu0.3_k0.5.csv" => 1.81,
+        "ball/flat/force_nu0.3_k1.csv" => 1.66,
+        "ball/flat/force_nu0.3_k2.csv" => 2.09,
+        "ball/flat/force_nu0.3_k4.csv" => 2.11,
+        "ball/flat/force_nu0.3_k10.csv" => 1.14,
+        "ball/flat/force_nu0.45_k1.5.csv" => 2.12,
+        "ball/flat/force_nu0.48_k0.5.csv" => 1.88,
+        "ball/flat/force_nu0.48_k1.csv" => 1.26,
+        "ball/flat/force_nu0.48_k2.csv" => 1.77,
+        "ball/flat/force_nu0.48_k4.csv" => 1.35,
+        "ball/flat/force_nu0.48_k10.csv" => 0.89,
+        "ball/flat/force_nu0.499_k1.csv" => 1.50,
+        "ball/flat/force_nu0.499_k2.csv" => 1.67,
+        "ball/flat/force_nu0.499_k4.csv" => 1.36,
+        "ball/flat/force_nu0.499_k10.csv" => 1.02,
+        "ball/flat/force_nu0.4_k0.7.csv" => 2.17,
+        "ball/flat/force_nu0.4_k6.csv" => 0.91,
+        "cylinder/flat/force_nu0.48_k1.csv" => 1.11,
+        "cylinder/flat/force_nu0.48_k3.csv" => 0.97,
         // Session 12, blind (run after the constants were fixed): the free cylinders of R and
         // 3R and the flat pad on 3R at nu = 0.3, the first away from nu = 0.48 (session 11's
         // law: 1.91, 1.09 and 1.58 %).
         "cylinder/free/force_nu0.3_k1.csv" => 1.91,
         "cylinder/free/force_nu0.3_k3.csv" => 1.13,
-        "cylinder/flat/force_nu0.3_k3.csv" => 1.78,
+        "cylinder/flat/force_nu0.3_k3.csv" => 1.80,
         "cylinder/free/force_nu0.48_k1.csv" => 1.48,
         "cylinder/free/force_nu0.48_k3.csv" => 0.72,
         // Session 13, blind (run after the constants were fixed, session 12, and never
         // fitted, session 14's refit included): the bonded pad at nu 0.3-0.37 on balls no
         // other run has (session 12's law: 1.72, 4.14, 2.28, 1.36, 3.32, 2.67 %).
-        "ball/flat/force_nu0.3_k0.7.csv" => 0.66,
-        "ball/flat/force_nu0.33_k1.4.csv" => 1.63,
-        "ball/flat/force_nu0.3_k3.csv" => 2.27,
+        "ball/flat/force_nu0.3_k0.7.csv" => 1.60,
+        "ball/flat/force_nu0.33_k1.4.csv" => 0.98,
+        "ball/flat/force_nu0.3_k3.csv" => 2.21,
         "ball/free/force_nu0.3_k0.7.csv" => 1.36,
-        "ball/flat/force_nu0.37_k1.csv" => 2.40,
-        "ball/flat/force_nu0.3_k1.4.csv" => 2.22,
+        "ball/flat/force_nu0.37_k1.csv" => 1.82,
+        "ball/flat/force_nu0.3_k1.4.csv" => 1.83,
         // Session 13's fit data (`fe_campaign.py`'s `fit13mid`: the bonded pad on R, 1.5 R and
         // 2 R at nu 0.35-0.45), fitted in session 14 (session 12's law: 4.00, 2.70, 3.11,
         // 2.26, 1.87, 2.09, 1.58, 1.58 %).
-        "ball/flat/force_nu0.35_k1.csv" => 2.32,
-        "ball/flat/force_nu0.4_k1.csv" => 2.58,
-        "ball/flat/force_nu0.35_k1.5.csv" => 1.51,
-        "ball/flat/force_nu0.4_k1.5.csv" => 2.16,
-        "ball/flat/force_nu0.45_k1.csv" => 2.44,
-        "ball/flat/force_nu0.35_k2.csv" => 0.82,
-        "ball/flat/force_nu0.4_k2.csv" => 1.52,
-        "ball/flat/force_nu0.45_k2.csv" => 2.10,
+        "ball/flat/force_nu0.35_k1.csv" => 1.64,
+        "ball/flat/force_nu0.4_k1.csv" => 2.14,
+        "ball/flat/force_nu0.35_k1.5.csv" => 1.08,
+        "ball/flat/force_nu0.4_k1.5.csv" => 1.91,
+        "ball/flat/force_nu0.45_k1.csv" => 1.83,
+        "ball/flat/force_nu0.35_k2.csv" => 0.74,
+        "ball/flat/force_nu0.4_k2.csv" => 1.44,
+        "ball/flat/force_nu0.45_k2.csv" => 1.94,
         // Session 14, blind (`fe_campaign.py`'s `held14`, run before the refit and never
         // fitted; session 12's law: 1.98 and 2.03 %).
-        "ball/flat/force_nu0.42_k0.8.csv" => 2.63,
-        "ball/flat/force_nu0.32_k2.5.csv" => 1.92,
+        "ball/flat/force_nu0.42_k0.8.csv" => 2.02,
+        "ball/flat/force_nu0.32_k2.5.csv" => 1.89,
         // Session 15, blind (`fe_campaign.py`'s `held15`, the small-ball end between the fitted
-        // R/2 and the held-out 0.7 R; no constant saw them): the flat pad at nu 0.4 on 0.6 R,
-        // -3.10 % at x = 0.41 (the 3 %: missed, KNOWN_MISSES), the free sphere 2.26 %.
-        "ball/flat/force_nu0.4_k0.6.csv" => 3.10,
+        // R/2 and the held-out 0.7 R; no constant saw them): the flat pad at nu 0.4 on 0.6 R
+        // (session 14's law: -3.10 % at x = 0.41, the 3 % missed; session 16's sextic
+        // term, fitted without it: 2.33 %), the free sphere 2.26 %.
+        "ball/flat/force_nu0.4_k0.6.csv" => 2.33,
         "ball/free/force_nu0.4_k0.6.csv" => 2.26,
+        // Session 16, blind (`fe_campaign.py`'s `held16`, run before the refit and never
+        // fitted): the flat pad on balls below 0.7 R at nu 0.36 and 0.45 (session 14's law:
+        // 3.25 % at x = 0.41 and 2.07 %).
+        "ball/flat/force_nu0.36_k0.55.csv" => 2.52,
+        "ball/flat/force_nu0.45_k0.65.csv" => 1.14,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
@@ -169,27 +181,29 @@ const RANGE_SHORT: &[&str] = &[
     "ball/flat/force_nu0.499_k10.csv",
 ];
 
-/// The curves the law misses the 3 % on (COUNTERPART.md): session 15's blind flat pad
-/// at nu 0.4 on 0.6 R, 3.10 % too soft at x = 0.41 (-2.83 % at 0.33, -2.49 % at 0.53: the
-/// middle of the range, as the held-out 0.7 R at nu 0.4, -2.77 % at 0.45; the small-ball end of
-/// the map's `g`, fitted on the R/2 curves at nu 0.3 and 0.48 only).
+/// The curves the law misses the 3 % on (COUNTERPART.md): none since session 16.
 ///
-/// Session 13 left five, all the bonded pad at nu 0.3-0.37 going soft past x ≈ 0.55: on R at
-/// nu 0.3 (3.46 %), 0.35 (4.00 %) and 0.37 (3.32 %, blind), on 1.4 R at nu 0.33 (4.14 %,
-/// blind), on 1.5 R at nu 0.35 (3.11 %). Session 14's re-stiffening term (`mapping`, the
-/// collapsed column under a narrower patch, `q2 eps (1 - rho_H) rho_H x^(11/2)`) brought them
-/// to 1.53, 2.32, 2.40, 1.63 and 1.51 %.
-const KNOWN_MISSES: &[&str] = &["ball/flat/force_nu0.4_k0.6.csv"];
+/// Session 15 left one: its blind flat pad at nu 0.4 on 0.6 R, 3.10 % too soft at x = 0.41
+/// (the small-ball end of the map's `g`, fitted on the R/2 curves at nu 0.3 and 0.48 only;
+/// session 16's blind 0.55 R at nu 0.36 was 3.25 % with that law). Session 16's sextic term
+/// (`mapping`, the sphere's next order beyond its paraboloid, `g3 mu2 x^(7/2)`) brought them
+/// to 2.33 and 2.52 %. Session 13 left five, all the bonded pad at nu 0.3-0.37 going soft past
+/// x ≈ 0.55: on R at nu 0.3 (3.46 %), 0.35 (4.00 %) and 0.37 (3.32 %, blind), on 1.4 R at nu
+/// 0.33 (4.14 %, blind), on 1.5 R at nu 0.35 (3.11 %). Session 14's re-stiffening term
+/// (`mapping`, the collapsed column under a narrower patch, `q2 eps (1 - rho_H) rho_H
+/// x^(11/2)`) brought them to 1.53, 2.32, 2.40, 1.63 and 1.51 % (session 16: 1.66, 1.64,
+/// 1.82, 0.98, 1.08 %).
+const KNOWN_MISSES: &[&str] = &[];
 
 /// Where the curves past 3 % (or near it) are within the 3 % below the FE's collapse:
 /// `(file, to x, its error there %)`; the test allows 0.2 % more.
 const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
     ("ball/free/force_nu0.3_k4.csv", 0.65, 1.43),
-    ("ball/flat/force_nu0.3_k1.csv", 0.64, 1.53),
-    ("ball/flat/force_nu0.33_k1.4.csv", 0.63, 1.03),
-    ("ball/flat/force_nu0.37_k1.csv", 0.62, 2.29),
-    ("ball/flat/force_nu0.35_k1.csv", 0.62, 1.79),
-    ("ball/flat/force_nu0.35_k1.5.csv", 0.62, 1.32),
+    ("ball/flat/force_nu0.3_k1.csv", 0.64, 1.66),
+    ("ball/flat/force_nu0.33_k1.4.csv", 0.63, 0.98),
+    ("ball/flat/force_nu0.37_k1.csv", 0.62, 1.80),
+    ("ball/flat/force_nu0.35_k1.csv", 0.62, 1.33),
+    ("ball/flat/force_nu0.35_k1.5.csv", 0.62, 0.95),
 ];
 
 #[test]
