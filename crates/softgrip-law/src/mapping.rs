@@ -96,7 +96,7 @@
 //!   falling; a concave counterpart keeps the plane's factor 1). With it the collapse term's
 //!   `q` falls from +2.20 to -0.31 (the end's stiffening was the x^(7/2) term's job; it now
 //!   has its own), and the flat pad on balls was within 2.94 % of every FE curve
-//!   (session 12's constants: 4.14 %; session 16, with `g3`: q2 14.5, 2.52 %).
+//!   (session 12's constants: 4.14 %; session 16, with `g3`: q2 14.5, 2.85 %).
 //! - **`gamma`, the patch's shrink.** The counterpart's quartic also narrows the patch: for a
 //!   rigid sphere on a half-space Sneddon's exact solution (`delta = (a/2) ln((R2 + a)/(R2 -
 //!   a))`) gives `a = a_H (1 - (a/R2)²/6)`, per semi-axis `1 - m_i x/6`. The FE shows it in full
@@ -126,7 +126,8 @@
 //! 0.48, 0.499; held out of the fit: the balls of 0.7 R and 6 R at nu = 0.4, 1.5 R at 0.45 and
 //! 0.42, 3 R at 0.35, 0.7 R at 0.35, R2/R = 4 and 10 at nu 0.3-0.499 (flat at 0.499: 10 only),
 //! R/2 and 2R free at 0.499, sessions 13's to 16's blind runs, and the cylinders). Every
-//! flat-on-ball curve within 2.52 %, the free sphere within 2.97 % (`tests/counterpart_fe.rs`).
+//! flat-on-ball curve within 2.85 % (a blind R/2 at nu 0.4 run after the constants were
+//! fixed; the rest within 2.52 %), the free sphere within 2.97 % (`tests/counterpart_fe.rs`).
 //! The form was chosen (session 12, among five placements of the plane law's terms; session 14
 //! the re-stiffening among six, `tools/calibration/try_flat_forms.py`; session 16 the sextic
 //! among six, `try_small_ball_s16.py`) looking at every curve; its constants see the fitted

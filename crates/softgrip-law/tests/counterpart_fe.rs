@@ -153,6 +153,9 @@ fn stated_force_error(path: &str) -> f64 {
         // 3.25 % at x = 0.41 and 2.07 %).
         "ball/flat/force_nu0.36_k0.55.csv" => 2.52,
         "ball/flat/force_nu0.45_k0.65.csv" => 1.14,
+        // ... and, run after session 16's constants were fixed, R/2 at nu 0.4, between the two
+        // fitted R/2 curves (session 14's law: 3.69 % at x = 0.38): -2.85 % at x = 0.47.
+        "ball/flat/force_nu0.4_k0.5.csv" => 2.85,
         // A curve not in COUNTERPART.md yet: the target.
         _ => 2.8,
     };
