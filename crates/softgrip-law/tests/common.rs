@@ -113,3 +113,36 @@ impl Smooth {
         s * self.coef.iter().rev().fold(0.0, |acc, c| acc * s + c)
     }
 }
+
+/// One mesh-convergence check of the ball campaign (`tests/data/fe/ball/convergence.csv`, rows
+/// `<geometry>,<nu>,<k>,mesh,40,60,...`): `(x, F at R/40 [N], F at R/60 [N], reldiff %)` per
+/// row, where reldiff = `(F_R/40 - F_R/60) / F_R/60` in %.
+pub fn ball_mesh_convergence(geometry: &str, nu: f64, k: f64) -> Vec<[f64; 4]> {
+    let text = include_str!("../../../tests/data/fe/ball/convergence.csv");
+    let header = "geometry,nu,k,check,campaign,other,delta_over_R,force_N_campaign,";
+    let prefix = format!("{geometry},{nu},{k},mesh,40,60,");
+    text.lines()
+        .skip_while(|l| !l.starts_with(header))
+        .skip(1)
+        .filter(|l| l.starts_with(&prefix))
+        .map(|l| {
+            let v: Vec<f64> = l
+                .split(',')
+                .skip(6)
+                .map(|v| v.parse().expect("a number"))
+                .collect();
+            [v[0], v[1], v[2], v[3]]
+        })
+        .collect()
+}
+
+/// The largest |reldiff| [%] and the last x of [`ball_mesh_convergence`] rows, after checking
+/// that each row's reldiff column agrees with its two forces (2e-3 %).
+pub fn mesh_convergence_summary(rows: &[[f64; 4]]) -> (f64, f64) {
+    for r in rows {
+        assert!((100.0 * (r[1] - r[2]) / r[2] - r[3]).abs() < 2e-3, "{r:?}");
+    }
+    let worst = rows.iter().map(|r| r[3].abs()).fold(0.0, f64::max);
+    let end = rows.iter().map(|r| r[0]).fold(0.0, f64::max);
+    (worst, end)
+}
