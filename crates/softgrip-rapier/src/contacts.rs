@@ -27,7 +27,8 @@ use crate::tip_record::TipRecord;
 /// Memory of one contact between steps.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PairState {
-    /// Friction anchor on the other body, in its collider's frame \[m\].
+    /// Friction anchor on the other body, in its collider's frame \[m\]: the static
+    /// friction spring's stretch is the contact's tangential offset from it (`solve::spring`).
     pub anchor_local: Vector3<f64>,
     /// The last substep in contact (`Scratch::stamp`).
     pub stamp: u64,
