@@ -351,9 +351,16 @@ fn build(
             let (spring, target) = crate::solve::spring(r, h);
             for s in friction_pair(bodies, (r.a, r.b), &r.p, [r.t1, r.t2], nrm, r.mu, 0.0) {
                 // `lin` is the row's tangent.
+                // With a spring, its compliance bounds the impulse (the relative one would make
+                // the LU's answer and the sweeps' differ, and the solve never settle).
+                let compliance = if spring > 0.0 {
+                    0.0
+                } else {
+                    SOFT_FRICTION_COMPLIANCE
+                };
                 out.push(Scalar {
                     target: target.dot(&s.lin),
-                    compliance: SOFT_FRICTION_COMPLIANCE,
+                    compliance,
                     spring,
                     ..s
                 });
@@ -458,13 +465,17 @@ fn solve_scalars(
             Kind::Tangent { other, .. } if other > i => {
                 let (x, y) = (&rows[i], &rows[other]);
                 // A fingertip's friction spring adds its compliance where the row moves.
-                let c = |k: usize, r: &Scalar| if mob[(k, k)] > 0.0 { r.spring } else { 0.0 };
-                let k = Matrix2::new(
-                    mob[(i, i)] * (1.0 + x.compliance) + c(i, x),
+                let mut k = Matrix2::new(
+                    mob[(i, i)] * (1.0 + x.compliance),
                     mob[(i, other)],
                     mob[(other, i)],
-                    mob[(other, other)] * (1.0 + y.compliance) + c(other, y),
+                    mob[(other, other)] * (1.0 + y.compliance),
                 );
+                for (d, r, s) in [(0, i, x), (1, other, y)] {
+                    if s.spring > 0.0 && mob[(r, r)] > 0.0 {
+                        k[(d, d)] += s.spring;
+                    }
+                }
                 pair_inverse(&k)
             }
             _ => None,
@@ -493,6 +504,10 @@ fn solve_scalars(
             // (at the start, before any normal impulse: the pairs rapier carries nothing of)
             !slid[i] && mu > 0.0 && (j[normal] - base > base || (j[normal] == 0.0 && base == 0.0))
         }
+        // A fingertip's friction spring that has not slid: with the rows it competes with (a
+        // wall's friction holding the box the tip presses), which alternating passes
+        // reconcile by `C / (W + C)` a pass.
+        Kind::Tangent { .. } => rows[i].spring > 0.0 && !slid[i],
         _ => false,
     };
     let mut lu: Vec<usize> = (0..m).filter(|&i| in_lu(i, &j, &slid)).collect();
@@ -689,11 +704,13 @@ fn sweep(
                 let Some(k_inv) = pair_inv[i] else { continue };
                 let (x, y) = (&rows[i], &rows[other]);
                 // A fingertip's friction spring: `v(end) + C j = target` (`Scalar::spring`).
-                let c = |k: usize, r: &Scalar| if mob[(k, k)] > 0.0 { r.spring } else { 0.0 };
-                let err = Vector2::new(
-                    x.velocity(bodies) - x.target + c(i, x) * j[i],
-                    y.velocity(bodies) - y.target + c(other, y) * j[other],
-                );
+                let mut err =
+                    Vector2::new(x.velocity(bodies) - x.target, y.velocity(bodies) - y.target);
+                for (d, r, s) in [(0, i, x), (1, other, y)] {
+                    if s.spring > 0.0 && mob[(r, r)] > 0.0 {
+                        err[d] += s.spring * j[r];
+                    }
+                }
                 let old = Vector2::new(j[i], j[other]);
                 let mut new = old - k_inv * err;
                 let limit = mu * (j[normal] - base).max(0.0);
@@ -812,6 +829,9 @@ fn lu_pass(
                         a[(r, c)] = w(r, c);
                     }
                     a[(r, r)] += rows[i].compliance * w(r, r);
+                    if rows[i].spring > 0.0 {
+                        a[(r, r)] += rows[i].spring;
+                    }
                 }
             }
         }

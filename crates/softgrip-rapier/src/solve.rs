@@ -367,10 +367,12 @@ fn friction_mobility(bodies: &[BodyState], r: &Row, h: f64) -> (Option<Matrix2<f
         pair_mobility(bodies, r, &t2, r, &t2),
     );
     let (c, _) = spring(r, h);
-    let k_inv = if k.trace() > 0.0 {
+    let k_inv = if !(k.trace() > 0.0) {
+        None
+    } else if c > 0.0 {
         (k + Matrix2::identity() * c).try_inverse()
     } else {
-        None
+        k.try_inverse()
     };
     let zero = Vector3::zeros();
     let spin = |i: Option<usize>| {
@@ -396,15 +398,20 @@ fn friction_mobility(bodies: &[BodyState], r: &Row, h: f64) -> (Option<Matrix2<f
 /// its impulse `j_t = h [-k_t s(end) - c_t v_t(end)]` with `s(end) = s + h v_t(end)` (the
 /// stretch integrated implicitly) is `v_t(end) + C j_t = target`, `C = 1 / (h (h k_t + c_t))`
 /// \[1/kg\] and `target = -k_t s / (h k_t + c_t)` [m/s] (world, in the tangent plane). A row
-/// without a spring (`k_t = 0`): `C = 0` and target 0 (stick by velocity).
+/// without a spring (`k_t = 0`, the default, `SoftContacts::set_friction_spring`): a hard
+/// stick, `C = 0`, with a positional correction `target = -FRICTION_BETA s / h`.
 pub(crate) fn spring(r: &Row, h: f64) -> (f64, Vector3<f64>) {
     let stiff = h * r.k_t + r.c_t;
     if r.k_t > 0.0 && stiff > 0.0 && h > 0.0 {
         (1.0 / (h * stiff), -r.offset * (r.k_t / stiff))
     } else {
-        (0.0, Vector3::zeros())
+        (0.0, -FRICTION_BETA * r.offset / h)
     }
 }
+
+/// Positional correction factor of the hard static friction (fraction of the anchor offset
+/// removed per step) where it is not a spring ([`spring`]).
+pub(crate) const FRICTION_BETA: f64 = 0.3;
 
 /// One Gauss-Seidel sweep of friction and torsion over all rows.
 fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
@@ -432,7 +439,10 @@ fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
             let v = rel_vel(bodies, r);
             let (c, target) = spring(r, h);
             let old = Vector2::new(r.jt.dot(&t1), r.jt.dot(&t2));
-            let err = Vector2::new((v - target).dot(&t1), (v - target).dot(&t2)) + old * c;
+            let mut err = Vector2::new((v - target).dot(&t1), (v - target).dot(&t2));
+            if c > 0.0 {
+                err += old * c;
+            }
             let dj = -(k_inv * err);
             let mut new = old + dj;
             let limit = r.mu * r.jn;

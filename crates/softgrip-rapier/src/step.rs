@@ -571,7 +571,7 @@ impl Step<'_> {
             row.stiffness = resp.stiffness;
             row.damping = model.alpha * resp.force;
             row.theta = update_blend(resp.stiffness, w, h, capped);
-            if model.friction > 0.0 {
+            if model.friction > 0.0 && (model.torsion || soft.friction_spring) {
                 // The torsion limit (the integral of mu p r dA over the law's pressure
                 // profile, per unit normal force) and the friction spring read the patch.
                 let patch = model.law.patch(delta);
@@ -579,14 +579,16 @@ impl Step<'_> {
                     row.torsion_arm = patch.torsion_limit(model.friction, 1.0);
                 }
                 // Mindlin's tangential stiffness of the patch, damped with the normal's time
-                // constant `c / K`.
+                // constant `c / K` (`SoftContacts::set_friction_spring`).
                 let k_t = 8.0 * model.shear_modulus * patch.equivalent_radius();
-                if k_t.is_finite() && k_t > 0.0 {
+                if soft.friction_spring && k_t.is_finite() && k_t > 0.0 {
                     row.k_t = k_t;
                     if resp.stiffness > 0.0 {
                         row.c_t = row.damping * k_t / resp.stiffness;
                     }
                 }
+            }
+            if model.friction > 0.0 {
                 let anchor = other_pose
                     .map(|p| to_f64(p.transform_point(to_f32(&state.anchor_local))))
                     .unwrap_or(state.anchor_local);
@@ -671,16 +673,16 @@ impl Step<'_> {
             // stretch at the step's end is the one that carries the Coulomb cap (`-j_t / (h
             // k_t)`, along the slip), not more: where the contact point will be (it moves
             // over the other body at the relative velocity), less that stretch.
+            // Without the spring (`k_t = 0`) the anchor goes to the contact point.
             if row.sliding
                 && let Some(state) = self.soft.pairs.get_mut(&key)
                 && let Some(co) = self.physics.colliders.get(g.other)
             {
-                let stretch = if row.k_t > 0.0 {
-                    -row.jt / (h * row.k_t)
+                let anchor = if row.k_t > 0.0 {
+                    g.point_other + row.vt_end * h + row.jt / (h * row.k_t)
                 } else {
-                    Vector3::zeros()
+                    g.point_other
                 };
-                let anchor = g.point_other + row.vt_end * h - stretch;
                 if anchor.iter().all(|x| x.is_finite()) {
                     state.anchor_local =
                         to_f64(co.position().inverse_transform_point(to_f32(&anchor)));
