@@ -301,7 +301,7 @@ impl SoftContacts {
     /// pair's effective shear modulus, `a` the law's contact radius), solved implicitly like
     /// the normal and capped by the Coulomb disk, instead of a hard stick with a positional
     /// correction of 0.3 of the offset per step. It cuts the coupled solve's passes (the
-    /// default grasp: 31.6 to 6.0 a solve) and gives the fingertip's elastic shear (a held box
+    /// default grasp: 31.6 to 8.3 a solve) and gives the fingertip's elastic shear (a held box
     /// sags by its share of the weight over `k_t`), but a box pressed against a wall by a free
     /// tip does not settle with it (rapier's own contact corrections move the box against the
     /// compliant spring), so it is not the default. Off: the physics is bit-identical to

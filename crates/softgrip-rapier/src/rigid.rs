@@ -13,9 +13,10 @@
 //! **The rows.** Every scalar unknown is a row with a Jacobian on (at most) two bodies:
 //! - a soft contact's normal, `j + h D (W j) = h (F - D v0)` (as in `solve`), its two
 //!   tangential impulses and its torsion, which solve what `solve`'s friction sweep solves
-//!   (the friction spring's `v_t(end) + C j_t = target`, `solve::spring`; zero relative
-//!   spin), in the disk `mu j_n` and the torsion limit, with [`SOFT_FRICTION_COMPLIANCE`] of
-//!   their own mobility (see there);
+//!   (`solve::spring`: by default zero relative tangential velocity plus the anchor
+//!   correction, with [`SOFT_FRICTION_COMPLIANCE`] of their own mobility (see there); with
+//!   the friction spring on, `v_t(end) + C j_t = target`, in the LU while they stick; zero
+//!   relative spin), in the disk `mu j_n` and the torsion limit;
 //! - a rigid contact's normal, `v(end) >= 0`, and its two tangential impulses, `v_t(end) = 0`,
 //!   hard ([`RIGID_COMPLIANCE`]: the four corners of a box on a table are twelve rows for six
 //!   degrees of freedom; it picks the least-impulse distribution). They all target `v(end) =

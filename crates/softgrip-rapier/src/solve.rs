@@ -16,16 +16,16 @@
 //! dense LU on the active set, with the set updated until no impulse is negative (a few
 //! passes; soft contacts per world are few).
 //!
-//! **Friction.** Coulomb with static friction as Mindlin's tangential spring: each contact
-//! keeps an anchor on the other body, and its tangential offset `s` from it (measured on the
-//! poses, so it is the displacement the bodies did make, rapier's own contacts included) is
-//! the stretch of a spring of stiffness `k_t = 8 G* a` (`G*` the pair's effective shear
+//! **Friction.** Coulomb with true static friction: each contact keeps a tangential anchor on
+//! the other body; by default the tangential impulse targets zero relative tangential velocity
+//! plus a positional correction `beta * offset / h` back to the anchor, and is clamped to the
+//! disk `mu_f j_n`. If clamped, the contact slides. With `SoftContacts::set_friction_spring`
+//! (opt-in, session 16) the offset `s` (measured on the poses) is instead the stretch of
+//! Mindlin's tangential spring, stiffness `k_t = 8 G* a` (`G*` the pair's effective shear
 //! modulus, `a` the law's contact radius) and damping `c_t`, treated implicitly like the
 //! normal: `j_t = h [-k_t s(end) - c_t v_t(end)]`, `s(end) = s + h v_t(end)` ([`spring`]),
-//! clamped to the disk `mu_f j_n`. If clamped, the contact slides, and the plugin moves the
-//! anchor so that the spring's stretch is the one that carries the cap (`step`). (Until session 16 the impulse
-//! targeted zero relative velocity plus a positional correction `0.3 offset / h`: a hard row
-//! whose correction made the stick/slip set cycle and the coupled groups run every pass.) Torsion about the normal targets zero relative
+//! clamped to the same disk; a sliding contact's anchor is moved so that its stretch carries
+//! the cap (`step`). Torsion about the normal targets zero relative
 //! spin and is clamped to `c(m) mu_f a j_n`, the moment of Coulomb friction under the law's
 //! pressure profile `(1 - r^2/a^2)^m` over its contact radius `a` (`ContactPatch::torsion_limit`;
 //! `c = 3 pi / 16` for Hertz's `m = 1/2`). In a coupled group, friction is solved by Gauss-Seidel sweeps,
@@ -127,8 +127,8 @@ pub(crate) struct Row {
     /// tangential offset from its anchor on the other body (world, in the tangent plane) \[m\].
     pub offset: Vector3<f64>,
     /// Stiffness `k_t = 8 G* a` of the static friction spring (Mindlin; `G*` the pair's
-    /// effective shear modulus, `a` the law's contact radius) \[N/m\], >= 0 (0: no spring, the
-    /// tangential impulse targets zero relative velocity).
+    /// effective shear modulus, `a` the law's contact radius) \[N/m\], >= 0 (0, the default:
+    /// the hard stick with its positional correction, [`spring`]).
     pub k_t: f64,
     /// Damping `c_t` of the static friction spring [N s/m], >= 0: the normal's `c k_t / K`
     /// (the same time constant as the normal's Hunt-Crossley damping).

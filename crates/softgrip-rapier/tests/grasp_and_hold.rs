@@ -188,7 +188,10 @@ fn friction_spring_sags_by_the_weight_over_mindlins_stiffness() {
         "friction spring: sag {sag:.4e} m, Mindlin m g / (2 k_t) {want:.4e} m (k_t {k_t:.1} N/m, a {a:.4e} m), late hold spread {spread:.2e} m, lifted {:.4} m",
         g.object_y() - g.half
     );
-    assert!((sag / want - 1.0).abs() < 0.02, "sag {sag} m, Mindlin {want} m");
+    assert!(
+        (sag / want - 1.0).abs() < 0.02,
+        "sag {sag} m, Mindlin {want} m"
+    );
     assert!(spread < 1e-6, "late hold spread {spread} m");
     assert!((g.object_y() - g.half - 0.1).abs() < 2e-3);
 }
