@@ -15,6 +15,10 @@ pub(crate) struct Model {
     /// Hunt-Crossley dissipation coefficient `alpha` [s/m]: `F (1 + alpha d delta/dt)`.
     pub alpha: f64,
     pub friction: f64,
+    /// Effective shear modulus G* of the pair \[Pa\], > 0: `1/G* = (2 - nu1)/G1 + (2 -
+    /// nu2)/G2` (Mindlin; a rigid body's term is 0). The static friction spring's stiffness is
+    /// `8 G* a` at contact radius `a` (`step`, `solve`).
+    pub shear_modulus: f64,
     /// Torsional friction from the contact patch is on.
     pub torsion: bool,
     /// Effective radius R of the contact \[m\].
@@ -47,6 +51,7 @@ impl Model {
             law: tip.law().clone(),
             alpha: tip.damping_alpha(),
             friction: tip.friction(),
+            shear_modulus: shear_compliance(tip).recip(),
             torsion: tip.torsional_friction(),
             radius: tip.radius(),
             soft_pair: false,
@@ -96,6 +101,7 @@ impl Model {
         Some(Self {
             alpha: a.damping_alpha().max(b.damping_alpha()),
             friction: (a.friction() * b.friction()).sqrt(),
+            shear_modulus: (shear_compliance(a) + shear_compliance(b)).recip(),
             torsion: a.torsional_friction() && b.torsional_friction(),
             radius,
             soft_pair: true,
@@ -105,4 +111,11 @@ impl Model {
             patch_direction: Vector3::zeros(),
         })
     }
+}
+
+/// A fingertip's term `(2 - nu) / G` of Mindlin's effective shear compliance `1 / G*`
+/// \[1/Pa\] (`G = E / (2 (1 + nu))` its shear modulus, `nu` its Poisson ratio).
+fn shear_compliance(tip: &SoftFingertip) -> f64 {
+    let m = tip.material();
+    (2.0 - m.poisson_ratio()) / m.shear_modulus()
 }

@@ -12,10 +12,11 @@
 //!
 //! **The rows.** Every scalar unknown is a row with a Jacobian on (at most) two bodies:
 //! - a soft contact's normal, `j + h D (W j) = h (F - D v0)` (as in `solve`), its two
-//!   tangential impulses and its torsion, which target what `solve`'s friction sweep targets
-//!   (zero relative tangential velocity plus the anchor correction, zero relative spin), in
-//!   the disk `mu j_n` and the torsion limit, with [`SOFT_FRICTION_COMPLIANCE`] of their own
-//!   mobility (see there);
+//!   tangential impulses and its torsion, which solve what `solve`'s friction sweep solves
+//!   (`solve::spring`: by default zero relative tangential velocity plus the anchor
+//!   correction, with [`SOFT_FRICTION_COMPLIANCE`] of their own mobility (see there); with
+//!   the friction spring on, `v_t(end) + C j_t = target`, in the LU while they stick; zero
+//!   relative spin), in the disk `mu j_n` and the torsion limit;
 //! - a rigid contact's normal, `v(end) >= 0`, and its two tangential impulses, `v_t(end) = 0`,
 //!   hard ([`RIGID_COMPLIANCE`]: the four corners of a box on a table are twelve rows for six
 //!   degrees of freedom; it picks the least-impulse distribution). They all target `v(end) =
@@ -152,6 +153,9 @@ struct Scalar {
     compliance: f64,
     /// The impulse the compliance pulls towards (rapier's own part of a hard normal) \[N s\].
     prox: f64,
+    /// A fingertip's tangential row: its friction spring's absolute compliance `C` \[1/kg\]
+    /// (`solve::spring`: the row's equation is `v(end) + C j = target`); 0 for every other row.
+    spring: f64,
     /// The velocity change of body a (linear, angular) per unit impulse, and of body b per
     /// unit impulse on it (`-1` times the row's), set by `build` (`set_response`): the
     /// sweeps apply each row hundreds of times per solve.
@@ -179,6 +183,7 @@ impl Scalar {
             target: 0.0,
             compliance: RIGID_COMPLIANCE,
             prox: 0.0,
+            spring: 0.0,
             response: Default::default(),
         }
     }
@@ -343,12 +348,21 @@ fn build(
             Kind::SoftNormal { force: r.force, d },
         ));
         if r.mu > 0.0 {
-            let target = -crate::solve::FRICTION_BETA * r.offset / h;
+            // The friction spring (`solve::spring`).
+            let (spring, target) = crate::solve::spring(r, h);
             for s in friction_pair(bodies, (r.a, r.b), &r.p, [r.t1, r.t2], nrm, r.mu, 0.0) {
                 // `lin` is the row's tangent.
+                // With a spring, its compliance bounds the impulse (the relative one would make
+                // the LU's answer and the sweeps' differ, and the solve never settle).
+                let compliance = if spring > 0.0 {
+                    0.0
+                } else {
+                    SOFT_FRICTION_COMPLIANCE
+                };
                 out.push(Scalar {
                     target: target.dot(&s.lin),
-                    compliance: SOFT_FRICTION_COMPLIANCE,
+                    compliance,
+                    spring,
                     ..s
                 });
             }
@@ -367,6 +381,7 @@ fn build(
                     target: 0.0,
                     compliance: SOFT_FRICTION_COMPLIANCE,
                     prox: 0.0,
+                    spring: 0.0,
                     response: Default::default(),
                 });
             }
@@ -450,18 +465,34 @@ fn solve_scalars(
         .map(|i| match rows[i].kind {
             Kind::Tangent { other, .. } if other > i => {
                 let (x, y) = (&rows[i], &rows[other]);
-                let k = Matrix2::new(
+                // A fingertip's friction spring adds its compliance where the row moves.
+                let mut k = Matrix2::new(
                     mob[(i, i)] * (1.0 + x.compliance),
                     mob[(i, other)],
                     mob[(other, i)],
                     mob[(other, other)] * (1.0 + y.compliance),
                 );
+                for (d, r, s) in [(0, i, x), (1, other, y)] {
+                    if s.spring > 0.0 && mob[(r, r)] > 0.0 {
+                        k[(d, d)] += s.spring;
+                    }
+                }
                 pair_inverse(&k)
             }
             _ => None,
         })
         .collect();
     let mut j = vec![0.0; m];
+    // A fingertip's friction starts at its spring's force at the current stretch, `-h k_t s`
+    // (`target / C`, `solve::spring`): where a rigid row holds the body (a box pressed
+    // against a wall, whose friction is in the LU), that is the answer, which alternating
+    // passes from zero approach by `C / (W + C)` a pass (all 32 passes, never settled).
+    for (i, r) in rows.iter().enumerate() {
+        if matches!(r.kind, Kind::Tangent { .. }) && r.spring > 0.0 && row_moves(&mob, i) {
+            j[i] = r.target / r.spring;
+            r.apply(bodies, j[i]);
+        }
+    }
     // A rigid friction pair is solved with the normals where the soft contacts carry most of
     // its normal's load (`in_lu`), and stays in the sweeps for good once it slid out of the LU
     // (the set does not cycle).
@@ -474,6 +505,10 @@ fn solve_scalars(
             // (at the start, before any normal impulse: the pairs rapier carries nothing of)
             !slid[i] && mu > 0.0 && (j[normal] - base > base || (j[normal] == 0.0 && base == 0.0))
         }
+        // A fingertip's friction spring that has not slid: with the rows it competes with (a
+        // wall's friction holding the box the tip presses), which alternating passes
+        // reconcile by `C / (W + C)` a pass.
+        Kind::Tangent { .. } => rows[i].spring > 0.0 && !slid[i],
         _ => false,
     };
     let mut lu: Vec<usize> = (0..m).filter(|&i| in_lu(i, &j, &slid)).collect();
@@ -628,6 +663,11 @@ fn immobile(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) -> u6
     zero.iter().filter(|z| **z).count() as u64
 }
 
+/// Whether row `i` moves (a nonzero own mobility; an immobile row's is zeroed, [`immobile`]).
+fn row_moves(mob: &DMatrix<f64>, i: usize) -> bool {
+    mob[(i, i)] > 0.0
+}
+
 /// The inverse of a friction pair's 2 x 2 mobility `k`; where one tangent is immobile (its row
 /// and column zero: [`immobile`]), the other's alone (`1 / k_ii` on its diagonal, 0 on the
 /// immobile one's), so that the sweeps still clamp it to its disk; `None` if neither moves.
@@ -664,8 +704,14 @@ fn sweep(
             } if other > i => {
                 let Some(k_inv) = pair_inv[i] else { continue };
                 let (x, y) = (&rows[i], &rows[other]);
-                let err =
+                // A fingertip's friction spring: `v(end) + C j = target` (`Scalar::spring`).
+                let mut err =
                     Vector2::new(x.velocity(bodies) - x.target, y.velocity(bodies) - y.target);
+                for (d, r, s) in [(0, i, x), (1, other, y)] {
+                    if s.spring > 0.0 && mob[(r, r)] > 0.0 {
+                        err[d] += s.spring * j[r];
+                    }
+                }
                 let old = Vector2::new(j[i], j[other]);
                 let mut new = old - k_inv * err;
                 let limit = mu * (j[normal] - base).max(0.0);
@@ -784,6 +830,9 @@ fn lu_pass(
                         a[(r, c)] = w(r, c);
                     }
                     a[(r, r)] += rows[i].compliance * w(r, r);
+                    if rows[i].spring > 0.0 {
+                        a[(r, r)] += rows[i].spring;
+                    }
                 }
             }
         }

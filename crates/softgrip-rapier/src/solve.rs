@@ -17,9 +17,15 @@
 //! passes; soft contacts per world are few).
 //!
 //! **Friction.** Coulomb with true static friction: each contact keeps a tangential anchor on
-//! the other body; the tangential impulse targets zero relative tangential velocity plus a
-//! positional correction `beta * offset / h` back to the anchor, and is clamped to the disk
-//! `mu_f j_n`. If clamped, the contact slides. Torsion about the normal targets zero relative
+//! the other body; by default the tangential impulse targets zero relative tangential velocity
+//! plus a positional correction `beta * offset / h` back to the anchor, and is clamped to the
+//! disk `mu_f j_n`. If clamped, the contact slides. With `SoftContacts::set_friction_spring`
+//! (opt-in, session 16) the offset `s` (measured on the poses) is instead the stretch of
+//! Mindlin's tangential spring, stiffness `k_t = 8 G* a` (`G*` the pair's effective shear
+//! modulus, `a` the law's contact radius) and damping `c_t`, treated implicitly like the
+//! normal: `j_t = h [-k_t s(end) - c_t v_t(end)]`, `s(end) = s + h v_t(end)` ([`spring`]),
+//! clamped to the same disk; a sliding contact's anchor is moved so that its stretch carries
+//! the cap (`step`). Torsion about the normal targets zero relative
 //! spin and is clamped to `c(m) mu_f a j_n`, the moment of Coulomb friction under the law's
 //! pressure profile `(1 - r^2/a^2)^m` over its contact radius `a` (`ContactPatch::torsion_limit`;
 //! `c = 3 pi / 16` for Hertz's `m = 1/2`). In a coupled group, friction is solved by Gauss-Seidel sweeps,
@@ -117,8 +123,19 @@ pub(crate) struct Row {
     /// Torsion limit per unit normal impulse, `ContactPatch::torsion_limit(mu, 1)` \[m\]
     /// (`(3 pi/16) mu a` for Hertz's pressure shape).
     pub torsion_arm: f64,
-    /// Tangential offset of the contact from its anchor (world, in the tangent plane) \[m\].
+    /// Stretch `s` of the static friction spring at the step's start: the contact's
+    /// tangential offset from its anchor on the other body (world, in the tangent plane) \[m\].
     pub offset: Vector3<f64>,
+    /// Stiffness `k_t = 8 G* a` of the static friction spring (Mindlin; `G*` the pair's
+    /// effective shear modulus, `a` the law's contact radius) \[N/m\], >= 0 (0, the default:
+    /// the hard stick with its positional correction, [`spring`]).
+    pub k_t: f64,
+    /// Damping `c_t` of the static friction spring [N s/m], >= 0: the normal's `c k_t / K`
+    /// (the same time constant as the normal's Hunt-Crossley damping).
+    pub c_t: f64,
+    /// Relative tangential velocity (fingertip - other, in the tangent plane) at the end of
+    /// the step [m/s]: where the spring's anchor goes when the contact slides (`step`).
+    pub vt_end: Vector3<f64>,
     /// Normal impulse \[N s\], >= 0.
     pub jn: f64,
     /// Tangential impulse (world, in the tangent plane) \[N s\].
@@ -139,9 +156,6 @@ pub(crate) struct Row {
     pub lin: f64,
 }
 
-/// Positional correction factor of static friction (fraction of the anchor offset removed
-/// per step).
-pub(crate) const FRICTION_BETA: f64 = 0.3;
 /// Most outer passes (normals, then friction sweeps) of one [`solve_group`] of two or more
 /// contacts on a dynamic body; it stops earlier once converged ([`GROUP_CONVERGED`]).
 const OUTER_ITERATIONS: usize = 256;
@@ -342,7 +356,9 @@ fn solve_normal_single(bodies: &[BodyState], r: &mut Row, h: f64) -> bool {
 
 /// The inverse tangential mobility of a row (`None` if singular or zero) and its torsional
 /// mobility about `n` (they depend only on the bodies' inverse masses, not on their velocities).
-fn friction_mobility(bodies: &[BodyState], r: &Row) -> (Option<Matrix2<f64>>, f64) {
+/// The tangential mobility carries the static friction spring's compliance on its diagonal
+/// ([`spring`]): the inverse is the one of `W_t + C I`.
+fn friction_mobility(bodies: &[BodyState], r: &Row, h: f64) -> (Option<Matrix2<f64>>, f64) {
     let (t1, t2) = (r.t1, r.t2);
     let k = Matrix2::new(
         pair_mobility(bodies, r, &t1, r, &t1),
@@ -350,7 +366,14 @@ fn friction_mobility(bodies: &[BodyState], r: &Row) -> (Option<Matrix2<f64>>, f6
         pair_mobility(bodies, r, &t2, r, &t1),
         pair_mobility(bodies, r, &t2, r, &t2),
     );
-    let k_inv = k.try_inverse().filter(|_| k.trace() > 0.0);
+    let (c, _) = spring(r, h);
+    let k_inv = if !(k.trace() > 0.0) {
+        None
+    } else if c > 0.0 {
+        (k + Matrix2::identity() * c).try_inverse()
+    } else {
+        k.try_inverse()
+    };
     let zero = Vector3::zeros();
     let spin = |i: Option<usize>| {
         i.map(
@@ -371,6 +394,25 @@ fn friction_mobility(bodies: &[BodyState], r: &Row) -> (Option<Matrix2<f64>>, f6
     (k_inv, kt)
 }
 
+/// The static friction spring of a row over a step `h` as a compliant velocity equation:
+/// its impulse `j_t = h [-k_t s(end) - c_t v_t(end)]` with `s(end) = s + h v_t(end)` (the
+/// stretch integrated implicitly) is `v_t(end) + C j_t = target`, `C = 1 / (h (h k_t + c_t))`
+/// \[1/kg\] and `target = -k_t s / (h k_t + c_t)` [m/s] (world, in the tangent plane). A row
+/// without a spring (`k_t = 0`, the default, `SoftContacts::set_friction_spring`): a hard
+/// stick, `C = 0`, with a positional correction `target = -FRICTION_BETA s / h`.
+pub(crate) fn spring(r: &Row, h: f64) -> (f64, Vector3<f64>) {
+    let stiff = h * r.k_t + r.c_t;
+    if r.k_t > 0.0 && stiff > 0.0 && h > 0.0 {
+        (1.0 / (h * stiff), -r.offset * (r.k_t / stiff))
+    } else {
+        (0.0, -FRICTION_BETA * r.offset / h)
+    }
+}
+
+/// Positional correction factor of the hard static friction (fraction of the anchor offset
+/// removed per step) where it is not a spring ([`spring`]).
+pub(crate) const FRICTION_BETA: f64 = 0.3;
+
 /// One Gauss-Seidel sweep of friction and torsion over all rows.
 fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
     for r in rows.iter_mut() {
@@ -388,15 +430,20 @@ fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
         }
         let (t1, t2) = (r.t1, r.t2);
         if r.friction_mobility.is_none() {
-            r.friction_mobility = Some(friction_mobility(bodies, r));
+            r.friction_mobility = Some(friction_mobility(bodies, r, h));
         }
         let (k_inv, kt) = r.friction_mobility.unwrap_or((None, 0.0));
         if let Some(k_inv) = k_inv {
+            // The spring's equation `v_t(end) + C j_t = target` ([`spring`]), exact for this
+            // row given the others (`k_inv` is the inverse of `W_t + C I`).
             let v = rel_vel(bodies, r);
-            let target = -FRICTION_BETA * r.offset / h;
-            let err = Vector2::new((v - target).dot(&t1), (v - target).dot(&t2));
-            let dj = -(k_inv * err);
+            let (c, target) = spring(r, h);
             let old = Vector2::new(r.jt.dot(&t1), r.jt.dot(&t2));
+            let mut err = Vector2::new((v - target).dot(&t1), (v - target).dot(&t2));
+            if c > 0.0 {
+                err += old * c;
+            }
+            let dj = -(k_inv * err);
             let mut new = old + dj;
             let limit = r.mu * r.jn;
             r.sliding = new.norm() > limit;
@@ -706,6 +753,12 @@ pub(crate) fn solve(
         r.jtw = 0.0;
         r.vn_end = normal_velocity(bodies, r);
     }
+    // Where a sliding contact's spring goes (`step`): the relative tangential velocity at the
+    // end (every body is final).
+    for r in rows.iter_mut().filter(|r| r.sliding) {
+        let v = rel_vel(bodies, r);
+        r.vt_end = v - r.n * v.dot(&r.n);
+    }
     failed
 }
 
@@ -881,8 +934,8 @@ fn settled(rows: &[Row], previous: &mut Vec<[f64; 5]>, pass: usize) -> bool {
 
 /// [`solve_group`] for a lone contact (a fingertip on the ground): no outer or friction
 /// iterations. The normal impulse in closed form ([`solve_normal_single`]), then friction and
-/// torsion in closed form once: the tangential impulse cancels the relative tangential velocity
-/// plus the anchor bias (exact inverse of the 2 x 2 tangential mobility), clamped to the Coulomb
+/// torsion in closed form once: the tangential impulse solves the friction spring's equation
+/// (exact inverse of the 2 x 2 tangential mobility plus its compliance), clamped to the Coulomb
 /// disk `mu j_n`; the torsional impulse cancels the relative spin, clamped to `torsion_arm
 /// j_n` (one [`friction_sweep`] of the row). The coupling of the friction impulses back into
 /// the normal velocity (through the rotation of the bodies) is not iterated.

@@ -571,12 +571,24 @@ impl Step<'_> {
             row.stiffness = resp.stiffness;
             row.damping = model.alpha * resp.force;
             row.theta = update_blend(resp.stiffness, w, h, capped);
-            if model.friction > 0.0 {
+            if model.friction > 0.0 && (model.torsion || soft.friction_spring) {
+                // The torsion limit (the integral of mu p r dA over the law's pressure
+                // profile, per unit normal force) and the friction spring read the patch.
+                let patch = model.law.patch(delta);
                 if model.torsion {
-                    // Only the torsion limit needs the patch: the integral of mu p r dA over
-                    // the law's pressure profile, per unit normal force.
-                    row.torsion_arm = model.law.patch(delta).torsion_limit(model.friction, 1.0);
+                    row.torsion_arm = patch.torsion_limit(model.friction, 1.0);
                 }
+                // Mindlin's tangential stiffness of the patch, damped with the normal's time
+                // constant `c / K` (`SoftContacts::set_friction_spring`).
+                let k_t = 8.0 * model.shear_modulus * patch.equivalent_radius();
+                if soft.friction_spring && k_t.is_finite() && k_t > 0.0 {
+                    row.k_t = k_t;
+                    if resp.stiffness > 0.0 {
+                        row.c_t = row.damping * k_t / resp.stiffness;
+                    }
+                }
+            }
+            if model.friction > 0.0 {
                 let anchor = other_pose
                     .map(|p| to_f64(p.transform_point(to_f32(&state.anchor_local))))
                     .unwrap_or(state.anchor_local);
@@ -657,15 +669,24 @@ impl Step<'_> {
         for ((row, model), gi) in s.rows.iter().zip(s.models.drain(..)).zip(&s.geom) {
             let g = &self.soft.geoms[*gi];
             let key = (g.tip, g.other);
-            // Contact memory: a sliding contact drags its anchor along.
+            // Contact memory: a sliding contact drags its anchor along, so that the spring's
+            // stretch at the step's end is the one that carries the Coulomb cap (`-j_t / (h
+            // k_t)`, along the slip), not more: where the contact point will be (it moves
+            // over the other body at the relative velocity), less that stretch.
+            // Without the spring (`k_t = 0`) the anchor goes to the contact point.
             if row.sliding
                 && let Some(state) = self.soft.pairs.get_mut(&key)
                 && let Some(co) = self.physics.colliders.get(g.other)
             {
-                state.anchor_local = to_f64(
-                    co.position()
-                        .inverse_transform_point(to_f32(&g.point_other)),
-                );
+                let anchor = if row.k_t > 0.0 {
+                    g.point_other + row.vt_end * h + row.jt / (h * row.k_t)
+                } else {
+                    g.point_other
+                };
+                if anchor.iter().all(|x| x.is_finite()) {
+                    state.anchor_local =
+                        to_f64(co.position().inverse_transform_point(to_f32(&anchor)));
+                }
             }
             let delta_end = compression_from_signed_distance(g.dist) - h * row.vn_end;
             let delta = compression_from_signed_distance(g.dist);
@@ -696,6 +717,9 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         mu,
         torsion_arm: 0.0,
         offset: Vector3::zeros(),
+        k_t: 0.0,
+        c_t: 0.0,
+        vt_end: Vector3::zeros(),
         jn: 0.0,
         jt: Vector3::zeros(),
         jtw: 0.0,

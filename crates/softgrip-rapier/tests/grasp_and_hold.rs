@@ -149,3 +149,49 @@ fn flat_pads_hold_the_box_and_resist_twist() {
     assert!((o.grip_force / 5.0 - 1.0).abs() < 0.005);
     assert!(twist.turn_deg < 0.19, "turn {} deg", twist.turn_deg);
 }
+
+/// Session 16: static friction as Mindlin's tangential spring
+/// (`SoftContacts::set_friction_spring`, off by default). Each pad's contact shears like a
+/// spring of stiffness `k_t = 8 G* a` (`G* = G / (2 - nu)` against the rigid box, `a` the law's
+/// contact radius at the grip): the held box sags in the grip by its weight shared over the
+/// two pads, `m g / (2 k_t)`, and then holds (the Coulomb disk `mu F` is not reached).
+#[test]
+fn friction_spring_sags_by_the_weight_over_mindlins_stiffness() {
+    let spec = GraspSpec::default();
+    let mut g = common::grasp(&spec);
+    g.world.soft.set_friction_spring(true);
+    let (mut rel0, mut hold) = (None, Vec::new());
+    g.run(0.1, 10.0, |g: &Grasp, phase| {
+        let rel = g.object_y() - g.jaw_y();
+        if phase == "settle" {
+            rel0 = Some(rel);
+        }
+        if phase == "hold" {
+            hold.push(rel);
+        }
+    });
+    let sag = rel0.unwrap() - hold.last().unwrap();
+    // The prediction from the law at the grip's compression.
+    let nu = 0.49;
+    let g_star = spec.youngs_modulus / (2.0 * (1.0 + nu)) / (2.0 - nu);
+    let tip = softgrip_rapier::SoftFingertip::builder(common::GRASP_R)
+        .material(softgrip_law::Material::try_new(spec.youngs_modulus, nu).unwrap())
+        .build()
+        .unwrap();
+    let a = tip.law().patch(g.squeeze).radius;
+    let k_t = 8.0 * g_star * a;
+    let want = f64::from(spec.mass) * 9.81 / (2.0 * k_t);
+    // The second half of the hold: still (the f32 poses near 0.1 m are ~1e-8 m apart).
+    let late = &hold[hold.len() / 2..];
+    let spread = late.iter().fold(0.0f64, |m, r| m.max((r - late[0]).abs()));
+    println!(
+        "friction spring: sag {sag:.4e} m, Mindlin m g / (2 k_t) {want:.4e} m (k_t {k_t:.1} N/m, a {a:.4e} m), late hold spread {spread:.2e} m, lifted {:.4} m",
+        g.object_y() - g.half
+    );
+    assert!(
+        (sag / want - 1.0).abs() < 0.02,
+        "sag {sag} m, Mindlin {want} m"
+    );
+    assert!(spread < 1e-6, "late hold spread {spread} m");
+    assert!((g.object_y() - g.half - 0.1).abs() < 2e-3);
+}

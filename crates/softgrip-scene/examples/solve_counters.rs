@@ -3,18 +3,24 @@
 //! (`SoftCounters::coupled_*`, `group_*`), its substeps per step (`SoftCounters::substeps_total`), and
 //! the golden digest line, to compare solver changes.
 //!
-//! `cargo run --release -p softgrip-scene --example solve_counters [scene.toml]`
+//! `cargo run --release -p softgrip-scene --example solve_counters [scene.toml] [--friction-spring]`
+//!
+//! `--friction-spring`: static friction as Mindlin's tangential spring
+//! (`SoftContacts::set_friction_spring`, off by default).
 
 use std::time::Instant;
 
 use softgrip_scene::{ContactDigest, PlainRun, Scene};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let scene = match std::env::args().nth(1) {
-        Some(path) => Scene::from_file(std::path::Path::new(&path))?,
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let spring = args.iter().any(|a| a == "--friction-spring");
+    let scene = match args.iter().find(|a| !a.starts_with("--")) {
+        Some(path) => Scene::from_file(std::path::Path::new(path))?,
         None => Scene::default_scene(),
     };
     let mut run = PlainRun::new(&scene);
+    run.world.soft.set_friction_spring(spring);
     let mut digest = ContactDigest::new();
     // The largest substep normal force of each fingertip (the summary's peak force) [N].
     let mut peaks: Vec<(String, f64)> = Vec::new();
