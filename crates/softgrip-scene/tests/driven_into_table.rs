@@ -442,8 +442,20 @@ fn hand_descent(depth: f64, box_away: bool) -> Down {
 /// at step 65 a coupled answer that passes the degenerate check still puts 3.28e8 N on a link
 /// (its predicted end speed 9.7e3 m/s) and rapier panics as before. Still ignored (README,
 /// Limits: an answer's work against what its rows can supply is the check not yet built).
+///
+/// Session 15: the accepted answers loaded the links along directions no joint can move
+/// (3.2e6 N on a link, every joint's load about 2.5e-3 N m s), whose `f32` rounding in
+/// rapier took the multibody to 3.7e4 rad/s in one substep. Session 16: rapier gets only each
+/// multibody's joint-space part of the links' wrenches and an answer loading a link along
+/// locked directions past twice the group's impulse scale is degenerate; the run no longer
+/// faults at step 65 (finite at step 86 after 5 minutes, 174 of 240 in 10 minutes with the
+/// motor push bounded in the substep count, not kept), but from step 67 it takes 500-1650
+/// substeps per step: pads touching the box at 0.02-0.1 mm on distal links whose motors,
+/// jammed far from their targets, push their full effort read a free run of 1.5 m/s per step
+/// against 0.1 mm of compression in the held contacts' motor-push criterion (`step/split.rs`,
+/// `drive_substeps`; `softgrip-rapier` README, Limits, "Still open").
 #[test]
-#[ignore = "diverges: the run faults with StepError::Diverged (a link at 1e11 m/s, step 66) after coupled answers load the links along directions no joint can move (softgrip-rapier README, Limits, session 15)"]
+#[ignore = "too slow to run in the suite: finite since session 16 but 500-1650 substeps per step from step 67 (the held contacts' motor-push substep criterion on pads barely touching the box under motors at their effort; softgrip-rapier README, Limits, Still open (a))"]
 fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.02, false);
     assert!(d.held > 30, "{d:?}");
@@ -496,9 +508,17 @@ fn hand_dragged_into_a_wall(distance: f64) -> Down {
     run_down(&scene, "box")
 }
 
-/// The three-finger hand holding its box dragged 40 mm sideways into a fixed wall.
+/// The three-finger hand holding its box dragged 40 mm sideways into a fixed wall (its face
+/// at `x = -0.04`, 20 mm from the box): the box is wedged between the wall and fingers 1 and
+/// 2, whose links the kinematic palm drives on into the wall and the table. Diverges at step
+/// 50 (`StepError::Diverged`, `hand/f1_proximal` at 1.0e6 m/s), bit for bit the same with and
+/// without the session-16 joint-space projection and locked-load check: rapier's own contacts
+/// of the links on the wall and the table carry kN under the palm (6.7 kN in substep 23 of
+/// step 50), then a 1.58e3 N force on a link from a solve those checks do not see takes the
+/// joints from 2.4 to 3.0e3 rad/s in substep 24, and rapier's contact of that link with a
+/// fixed body answers 1.05e6 N s (`softgrip-rapier` README, Limits, "Still open" (b)).
 #[test]
-#[ignore = "measuring"]
+#[ignore = "diverges at step 50 (StepError::Diverged, hand/f1_proximal at 1.0e6 m/s): rapier's own link-wall and link-table contacts under the kinematic palm, then a joint-space link force the session-16 checks do not see; softgrip-rapier README, Limits, Still open (b)"]
 fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
     let d = hand_dragged_into_a_wall(0.04);
     assert!(d.held > 30, "{d:?}");
