@@ -386,6 +386,7 @@ pub(crate) fn apply_impulses(
     }
     // The multibody links: a force over the coming pipeline step (`multibody`).
     if table.iter().any(|b| b.link.is_some()) {
+        multibody::project_net(table, net);
         counters.non_finite += multibody::apply_to_rapier(bodies, table, handles, net, h, saved);
     }
 }

@@ -605,6 +605,134 @@ pub(crate) fn motor_fold(
     (a > 0.0 && (b / a).is_finite() && (c / a).is_finite()).then(|| (b / a, c / a))
 }
 
+/// The stacked wrench (per link of `g`, in its `links` order: force at the centre of mass,
+/// torque) that moves the multibody's free dofs as `f` does, of least norm: `J_f (J_f^T
+/// J_f)^+ J_f^T f`, `J_f` the links' jacobians stacked (`6 m x r`, the free dofs' columns).
+/// `None` for a generalised body without free dofs to project on (a jointed assembly,
+/// `jointed`, whose coordinates are its members' own velocities) or if not finite.
+///
+/// Why: a kinematic palm driving a finger's links into a table or a wedged box asks the
+/// coupled solve for forces along directions no joint can move (the palm carries them): 3.2e6
+/// N on a 20 g link while every joint's load was about 2.5e-3 N m s. They move nothing in the
+/// solve's prediction (`W J^T f`), but handed to rapier as an `f32` force on the link, their
+/// rounding alone took the multibody to 3.7e4 rad/s within one substep (crate README, Limits).
+/// The part removed is what the fixed or kinematic root carries, as it physically does.
+pub(crate) fn joint_space(g: &Generalised, f: &DVector<f64>) -> Option<DVector<f64>> {
+    let Some(fold) = g.fold.as_ref() else {
+        return assembly_space(g, f);
+    };
+    let free = &fold.free;
+    let (m, r) = (g.links.len(), free.len());
+    if r == 0 || f.len() != 6 * m {
+        return None;
+    }
+    let jf = DMatrix::from_fn(6 * m, r, |row, c| g.jacs[row / 6][(row % 6, free[c])]);
+    let load = jf.transpose() * f;
+    let gram = jf.transpose() * &jf;
+    // The gram matrix's eigenvalues are the squared singular values of `J_f`; rapier's `f32`
+    // jacobians leave ~1e-7 of |J| of noise along a locked direction (1e-14 squared).
+    let largest = gram.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let pinv = gram.pseudo_inverse(JOINT_SPACE_TOLERANCE * largest).ok()?;
+    let out = jf * (pinv * load);
+    out.iter().all(|x| x.is_finite()).then_some(out)
+}
+
+/// [`joint_space`] for a jointed assembly (`jointed`): its coordinates are its members' own
+/// velocities (each link's jacobian selects its six), and the directions its joints lock are
+/// the null space of its mobility `W` (the Schur complement of its locked rows, which keep
+/// `HARD_COMPLIANCE` of their own mobility): the wrench kept is `W^+ W f`, eigenvalues of `W`
+/// under [`JOINT_SPACE_TOLERANCE`]`^(1/2)` of the largest taken as locked.
+fn assembly_space(g: &Generalised, f: &DVector<f64>) -> Option<DVector<f64>> {
+    let n = g.mobility.nrows();
+    if f.len() != 6 * g.links.len() || n == 0 {
+        return None;
+    }
+    // The stacked wrench in the assembly's coordinates (`J^T f`) and back (`J p`).
+    let mut q = DVector::<f64>::zeros(n);
+    for (s, jac) in g.jacs.iter().enumerate() {
+        q += jac.transpose() * f.rows(6 * s, 6);
+    }
+    let w = 0.5 * (&g.mobility + g.mobility.transpose());
+    let eig = w.symmetric_eigen();
+    let largest = eig.eigenvalues.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let tol = JOINT_SPACE_TOLERANCE.sqrt() * largest;
+    let mut p = DVector::<f64>::zeros(n);
+    for (k, &l) in eig.eigenvalues.iter().enumerate() {
+        if l > tol {
+            let v = eig.eigenvectors.column(k);
+            p += v * v.dot(&q);
+        }
+    }
+    let mut out = DVector::<f64>::zeros(f.len());
+    for (s, jac) in g.jacs.iter().enumerate() {
+        out.rows_mut(6 * s, 6).copy_from(&(jac * &p));
+    }
+    out.iter().all(|x| x.is_finite()).then_some(out)
+}
+
+/// The squared singular value of a stacked link jacobian, relative to the largest, below
+/// which [`joint_space`] takes a direction as locked (`1e-10`: singular values under 1e-5 of
+/// the largest; `f32` noise on a locked direction is ~1e-7).
+const JOINT_SPACE_TOLERANCE: f64 = 1e-10;
+
+/// The largest linear impulse \[N s\] that [`joint_space`] would take off one link of the
+/// table's multibodies for the link wrenches `wrenches` (per table index; zero for other
+/// bodies): how hard an answer loads links along directions no joint can move.
+pub(crate) fn locked_load(bodies: &[BodyState], wrenches: &[Vector6<f64>]) -> f64 {
+    let mut removed = 0.0f64;
+    for b in bodies {
+        let Some(g) = b.link.as_deref().and_then(|l| l.multi.as_ref()) else {
+            continue;
+        };
+        let f = DVector::from_fn(6 * g.links.len(), |row, _| {
+            wrenches[g.links[row / 6]][row % 6]
+        });
+        if f.iter().all(|x| *x == 0.0) {
+            continue;
+        }
+        let Some(p) = joint_space(g, &f) else {
+            continue;
+        };
+        for s in 0..g.links.len() {
+            let o = 6 * s;
+            let d = Vector3::new(f[o] - p[o], f[o + 1] - p[o + 1], f[o + 2] - p[o + 2]);
+            removed = removed.max(d.norm());
+        }
+    }
+    removed
+}
+
+/// Replaces each multibody's link wrenches in `net` (per table index \[N s, N m s\]) by
+/// their joint-space part ([`joint_space`]), before they go to rapier (`apply_to_rapier`): the
+/// part removed is what the fixed or kinematic root carries.
+pub(crate) fn project_net(table: &[BodyState], net: &mut [(Vector3<f64>, Vector3<f64>)]) {
+    for b in table {
+        let Some(g) = b.link.as_deref().and_then(|l| l.multi.as_ref()) else {
+            continue;
+        };
+        let f = DVector::from_fn(6 * g.links.len(), |row, _| {
+            let (lin, ang) = &net[g.links[row / 6]];
+            if row % 6 < 3 {
+                lin[row % 6]
+            } else {
+                ang[row % 6 - 3]
+            }
+        });
+        if f.iter().all(|x| *x == 0.0) {
+            continue;
+        }
+        let Some(p) = joint_space(g, &f) else {
+            continue;
+        };
+        for (s, &i) in g.links.iter().enumerate() {
+            let o = 6 * s;
+            let lin = Vector3::new(p[o], p[o + 1], p[o + 2]);
+            let ang = Vector3::new(p[o + 3], p[o + 4], p[o + 5]);
+            net[i] = (lin, ang);
+        }
+    }
+}
+
 /// A multibody link's user force and torque before the plugin added its soft contacts' force
 /// for one pipeline step (restored after it: `restore_forces`).
 pub(crate) type SavedForce = (RigidBodyHandle, Vector, AngVector);

@@ -571,6 +571,20 @@ fn solve_scalars(
 /// path and 393 solves fell between 100 and 1e4 times the scale.
 const DEGENERATE_FACTOR: f64 = 1000.0;
 
+/// How far past a group's impulse scale (`impulse_bound`) an answer may load one of a
+/// multibody's (or a jointed assembly's) links along directions no joint can move
+/// (`multibody::locked_load`: the largest linear impulse the fixed or kinematic root would
+/// carry) before the answer is taken as degenerate. Such a load moves nothing in the solve's
+/// prediction, so the rows are met however large it is: a kinematic palm jamming a link
+/// between a table and a wedged box asks it without bound (3.2e6 N on a 20 g link, session
+/// 15), and the answer's joint-space part next to it is a balance of huge rows too. In the
+/// three-finger hand's box descent, with the projection before rapier alone
+/// (`multibody::project_net`), the first accepted answer after 51 degenerate substeps put
+/// 2.0e3 N of joint-space force on a link and rapier's multibody went from 0.45 to 9.4e4
+/// rad/s in that substep (session 16). The shipped robot scenes never reach 2 (none of their
+/// coupled solves is degenerate, `driven_into_table::shipped_robot_scenes_have_no_degenerate_solve`).
+const LOCKED_FACTOR: f64 = 2.0;
+
 /// The impulse scale of a group \[N s\]: each mobile row's impulse that would stop it alone,
 /// `|v0 - target| / w_ii` (`v0` its velocity before the solve, `w_ii` its own mobility), plus
 /// each soft normal's law force over the step `h F` and each hard normal's rapier part
@@ -1044,7 +1058,12 @@ fn solve_saturating(
             }
         }
         *immobile_count += immobile;
-        if degenerate(&j, bound) {
+        let locked = if links {
+            multibody::locked_load(bodies, &wrenches)
+        } else {
+            0.0
+        };
+        if degenerate(&j, bound) || locked > LOCKED_FACTOR * bound {
             *degenerate_count += 1;
             return None;
         }
