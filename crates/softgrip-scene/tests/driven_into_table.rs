@@ -482,6 +482,7 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// hundreds of newtons by a palm no motor can stop are stiff, `softgrip-rapier` README,
 /// Limits).
 #[test]
+#[ignore = "passes, but too slow for the suite's debug run: 78 415 substeps (24 steps at the 2000 cap), about 150 s in release; run it with `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
     assert!(d.held > 30, "{d:?}");
@@ -540,6 +541,7 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// pads and the table under a kinematic palm, which the 2 N m motors do not bound), 2042
 /// degenerate solves, the box 0.16 mm lower at the end of the hold.
 #[test]
+#[ignore = "passes, but too slow for the suite's debug run (minutes in release); run it with `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
