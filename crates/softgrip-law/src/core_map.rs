@@ -96,6 +96,9 @@ pub(crate) struct CoreOnCounterpart {
     /// `rho`: the bonded pad's map (`mapping`), the plane's compression that carries its
     /// large-strain stiffening, over `x` [-].
     pub rho: f64,
+    /// The counterpart's slope over the Hertz patch, `(a_H/R2)^2` per x on a ball
+    /// (`CounterpartMap::wrap`) [-].
+    pub wrap: f64,
 }
 
 impl CoreOnCounterpart {
@@ -122,6 +125,7 @@ impl CoreOnCounterpart {
             inv_tau: 1.0 / tau,
             conf: eps / (tau * tau),
             share: CONFINED_SHARE * eps / (1.0 + 4.0 * eps / 3.0),
+            wrap: CAP_AREA * self.wrap,
         }
     }
 }
@@ -140,6 +144,9 @@ pub(crate) struct SqueezeExcess {
     inv_tau: f64,
     conf: f64,
     share: f64,
+    /// `(1/4) (a_H/R2)^2` per x: the wrapped cap's area over its disc, less 1
+    /// (`SqueezeExcess::wrapped`).
+    wrap: f64,
 }
 
 impl SqueezeExcess {
@@ -161,7 +168,26 @@ impl SqueezeExcess {
         let squeeze = x * self.inv_tau;
         self.share * e / (1.0 + e) * (tangent(squeeze) - tangent(self.patch * squeeze))
     }
+
+    /// The skin pressed over the ball's cap (module docs, the wrapped cap; session 17), a
+    /// factor on the layer's part of the plane form at the patch: `(1/4) (a_H/R2)^2`, the cap's
+    /// area over the disc of the patch, less 1, to leading order (`(1/8) sum (a_i kappa_i)^2`
+    /// on an ellipse), where the skin flows out of the patch: `1/(1 + E)`, the complement of
+    /// the confined skin's `E/(1 + E)` (`SqueezeExcess::confined`). 0 on a plane and on a
+    /// concave counterpart (no FE of a core on a bowl).
+    pub(crate) fn wrapped(&self, x: f64) -> f64 {
+        if self.patch >= 1.0 {
+            return 0.0;
+        }
+        let e = self.conf * self.patch * x;
+        self.wrap * x / (1.0 + e)
+    }
 }
+
+/// The leading order of a spherical cap's area over the disc it covers, less 1, per
+/// `(a/R2)^2`: `pi (a^2 + h^2) / (pi a^2) - 1 = (a/R2)^2 / 4 + O((a/R2)^4)` (geometry, no fit;
+/// on any smooth surface `(1/2) <|grad z|^2>` over the patch).
+const CAP_AREA: f64 = 0.25;
 
 /// `w`: the share of the skin's tangent oedometer stiffening (`tangent`) beyond the patch's
 /// squeeze that the ball's deeper squeeze adds to the layer's part of the force (module docs;
@@ -201,6 +227,7 @@ pub(crate) fn core_on_counterpart(
     let on = CoreOnCounterpart {
         patch: h * h,
         rho: map.rho,
+        wrap: map.wrap,
     };
     let backed = Backed::try_new_capped(
         backing,

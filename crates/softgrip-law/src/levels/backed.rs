@@ -540,8 +540,10 @@ impl ChiForm {
             return plane;
         };
         // The layer's part of the plane form at the patch, its confined skin squeezed to the
-        // true delta/t (crate::core_map, the confined skin).
-        let confined_extra = (plane - flat) * squeeze.confined(s_true * s_true);
+        // true delta/t (crate::core_map, the confined skin), pressed over the ball's cap
+        // (the wrapped cap).
+        let x_true = s_true * s_true;
+        let confined_extra = (plane - flat) * (squeeze.confined(x_true) + squeeze.wrapped(x_true));
         (plane + confined_extra) * squeeze.factor(s_true, |s| self.flat(s))
     }
 
@@ -831,8 +833,14 @@ mod tests {
                 let core = Backed::try_new(Backing::Core { thickness: tau }, Some(tau), nu);
                 cases.push(core.expect("core builds"));
                 // On balls of R/10, R and 3R, and a bowl of 2R (`core_map`).
-                for (patch, rho) in [(0.091, 0.2), (0.5, 0.556), (0.75, 0.789), (2.0, 1.6)] {
-                    let on = CoreOnCounterpart { patch, rho };
+                // wrap = rho_H/K^2 on a ball of K R (0.5 on the bowl: the term is off there).
+                for (patch, rho, wrap) in [
+                    (0.091, 0.2, 9.09),
+                    (0.5, 0.556, 0.5),
+                    (0.75, 0.789, 0.0833),
+                    (2.0, 1.6, 0.5),
+                ] {
+                    let on = CoreOnCounterpart { patch, rho, wrap };
                     let core = Backed::try_new_on(
                         Backing::Core { thickness: tau },
                         Some(tau),
