@@ -543,8 +543,8 @@ impl ChiForm {
         // true delta/t (crate::core_map, the confined skin), pressed over the ball's cap
         // (the wrapped cap).
         let x_true = s_true * s_true;
-        let confined_extra = (plane - flat) * (squeeze.confined(x_true) + squeeze.wrapped(x_true));
-        (plane + confined_extra) * squeeze.factor(s_true, |s| self.flat(s))
+        let layer_extra = (plane - flat) * (squeeze.confined(x_true) + squeeze.wrapped(x_true));
+        (plane + layer_extra) * squeeze.factor(s_true, |s| self.flat(s))
     }
 
     /// `chi_flat` at `s = sqrt(x)`: the bonded hemisphere (the module docs, Flat).
