@@ -8,6 +8,12 @@ fingertip (nu 0.48 t/R 0.5 on R: 4.19 %, nu 0.47 on 0.7 R: 5.00 % too soft at th
     F / (E* R^2) = h (4/3) x^(3/2) chi_on(x) - t5 x^(5/2) - t7 x^(7/2) - t11 x^(11/2)
     chi_on = (chi_core(rho_H x) + C + A) Phi(x/tau)                       (core_map.rs)
     A = (chi_core - chi_flat)(rho_H x) (1/4) (a_H/R2)^2 / (1 + E)         (session 17, kept)
+    Phi's chi_flat continued past flat_x_max by its log-tangent (blended over 0.15 in x),
+    w refitted on nu 0.3 t/R 0.4 on 2R                                    (session 17, kept)
+
+The first table: the wrapped cap's variants on session 16's Phi (as they were chosen, on the
+thirteen curves committed before session 17). The second: Phi's continuation (`cont`), on every
+curve, with `w` refitted minimax on its one curve for each blend width.
 
 Each variant adds a term `extra(x)` to chi_on (before Phi where it says "Phi", after where not);
 one-constant variants are fitted minimax on all thirteen committed curves
@@ -32,9 +38,12 @@ DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tes
 # mapping.rs FLAT (r0, r1, g0, g1), COLLAPSE_FLAT (order 1), RESTIFFEN_FLAT, SEXTIC_FLAT
 FLATMAP = (0.860941, -1.052105, 0.17815, -0.542622)
 QF, Q2, G3 = -1.879518, 14.545042, 0.159561
-W = 0.0276  # core_map.rs CONFINED_SHARE
+W16 = 0.0276  # core_map.rs CONFINED_SHARE before session 17
+W = W16
 CORE = (0.849512, 0.676765, 1.022037, 0.266768, -1.622115, 1.470321, 0.234092)  # backed.rs CORE
-BLIND17 = {(0.46, 0.55, 0.6), (0.49, 0.4, 0.8), (0.43, 0.6, 2.0), (0.48, 0.65, 4.0)}
+BLIND17 = {(0.46, 0.55, 0.6), (0.49, 0.4, 0.8), (0.43, 0.6, 2.0), (0.48, 0.65, 4.0),
+           (0.45, 0.6, 3.0), (0.42, 0.5, 1.5)}
+BLEND = None  # None: session 16's Phi; else the width in x of chi_flat's continuation
 
 
 def chi_flat(x, nu, cap):
@@ -60,6 +69,23 @@ def plane(x, nu, tau, cap):
     return fl, fl + excess * thinning * np.exp(-(k0 + k1 * eps) * (fl - 1))
 
 
+def chi_flat_continued(y, nu, cap):
+    """backed.rs `flat_continued`: chi_flat to flat_x_max, past it its log-tangent there, reached
+    by a quintic smoothstep in ln chi over BLEND."""
+    if BLEND is None:
+        return chi_flat(y, nu, cap)
+    xl = fc.flat_x_max(nu)
+    f = lambda z: np.log(chi_flat(z, nu, cap))  # noqa: E731
+    h = 1e-4
+    d = (8 * (f(xl + h) - f(xl - h)) - (f(xl + 2 * h) - f(xl - 2 * h))) / (12 * h)
+    u = np.clip((y - xl) / BLEND, 0, 1)
+    step = u ** 3 * (10 - 15 * u + 6 * u * u)
+    tangent_ = f(xl) + d * (y - xl)
+    inside = np.minimum(y, xl + BLEND)
+    return np.where(y <= xl, chi_flat(np.minimum(y, xl), nu, cap),
+                    np.exp((1 - step) * f(inside) + step * tangent_))
+
+
 def tangent(s):
     lam = 1 - s
     return 2 / 3 * (lam ** (-2 / 3) / 3 + 5 / 3 * lam ** (-8 / 3)) - 4 / 3
@@ -79,7 +105,8 @@ def parts(x, nu, tau, k):
     s = x / tau
     e = eps / tau ** 2 * rho_h * x
     c = (pl - fl) * W * eps / (1 + 4 * eps / 3) * e / (1 + e) * (tangent(s) - tangent(rho_h * s))
-    phi = chi_flat(rho * s, nu, min(rho_h, 1)) / chi_flat(rho_h * s, nu, min(rho_h, 1))
+    phi = (chi_flat_continued(rho * s, nu, min(rho_h, 1))
+           / chi_flat_continued(rho_h * s, nu, min(rho_h, 1)))
     return dict(h=h, rho_h=rho_h, fl=fl, pl=pl, lay=pl - fl, C=c, phi=phi, tail=tail, eps=eps,
                 s=s, E=e, q=mu * x, geo=4 / 3 * h * (g * mu * x ** 2.5 + G3 * mu * mu * x ** 3.5))
 
@@ -142,7 +169,22 @@ def errors(c, inside, term, w):
     return force(c, outside=lambda p: f(dict(p, x=c["x"]))) / c["f"] - 1
 
 
+def refit_w(blend):
+    """`w` minimax on its one curve (nu 0.3, t/R 0.4 on 2R) with the kept law at `blend`."""
+    global W, BLEND
+    BLEND = blend
+    fit = [c for c in load() if c["name"] == "force_nu0.3_t0.4_k2.csv"]
+
+    def obj(w):
+        global W
+        W = w
+        return max(np.abs(force(c, inside=wrap) / c["f"] - 1).max() for c in fit)
+    W = minimize_scalar(obj, bounds=(0, 0.06), method="bounded", options=dict(xatol=1e-7)).x
+    return W
+
+
 def main():
+    global W, BLEND
     curves = load()
     print("max |F_law/F_FE - 1| (%) to each FE's end, 0.01 <= x; 'in' = inside Phi")
     print("variant | w | max | " + " | ".join(c["name"][6:-4] for c in curves))
@@ -153,10 +195,25 @@ def main():
             w = minimize_scalar(obj, bounds=(-1, 5), method="bounded").x
         e = [100 * np.abs(errors(c, inside, term, w)).max() for c in curves]
         print(f"{name} | {w:.4g} | {max(e):.2f} | " + " | ".join(f"{v:.2f}" for v in e))
+    every = curves + load(blind=True)
+    print("\nPhi's continuation (cont), the wrapped cap with it, w refitted; every curve (the last"
+          " six are session 17's blind runs)")
+    print("variant | w | max | " + " | ".join(c["name"][6:-4] for c in every))
+    rows = [("session 16", None, None), ("wrapped cap alone", None, W16)]
+    rows += [(f"wrapped cap + cont, blend {b}", b, "refit") for b in (0.02, 0.05, 0.15)]
+    for name, blend, w in rows:
+        BLEND = blend
+        W = refit_w(blend) if w == "refit" else W16
+        inside = None if name == "session 16" else wrap
+        e = [100 * np.abs(force(c, inside=inside) / c["f"] - 1).max() for c in every]
+        print(f"{name} | {W:.6f} | {max(e):.2f} | " + " | ".join(f"{v:.2f}" for v in e))
     if len(sys.argv) > 1 and sys.argv[1] == "blind":
         print("\nblind (session 17), signed law/FE - 1 (%), session 16 -> kept, at delta/t:")
         for c in load(blind=True):
+            BLEND, W = None, W16
             e0 = force(c) / c["f"] - 1
+            BLEND = 0.15
+            W = refit_w(0.15)
             e1 = force(c, inside=wrap) / c["f"] - 1
             print(f"{c['name']}: reach x {c['x'][-1]:.2f} (delta/t {c['x'][-1] / c['tau']:.2f}), "
                   f"max {100 * np.abs(e0).max():.2f} -> {100 * np.abs(e1).max():.2f}")
