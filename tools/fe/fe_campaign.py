@@ -192,7 +192,21 @@ def core_ball_cases():
                 # (t/R 0.5 on R at nu 0.48) and the refit's sextic term acts most
                 ("core", 0.47, 0.5, 40, "heldout", "ball", 0.7),
                 # ... and between R and 2R nearer incompressibility
-                ("core", 0.49, 0.45, 40, "heldout", "ball", 1.5)]
+                ("core", 0.49, 0.45, 40, "heldout", "ball", 1.5),
+                # session 17 (law, /work/fe-scratch/runs/law-s17): blind, launched before the
+                # core's depth term on a small ball was fitted (core_map.rs): near
+                # incompressibility on balls smaller than the fingertip, and one thicker skin on
+                # a larger ball (nothing may get worse there)
+                ("core", 0.46, 0.55, 40, "heldout", "ball", 0.6),
+                ("core", 0.49, 0.4, 40, "heldout", "ball", 0.8),
+                ("core", 0.43, 0.6, 40, "heldout", "ball", 2),
+                # ... and, after the last one was 3.44 % too stiff at delta/t 0.8 (the law
+                # fixed): a thick skin on a large ball, for where Phi's chi_flat leaves its range
+                ("core", 0.48, 0.65, 40, "heldout", "ball", 4),
+                # ... and, launched before Phi's continuation past chi_flat's range was fixed
+                # (core_map.rs): blind for it
+                ("core", 0.45, 0.6, 40, "heldout", "ball", 3),
+                ("core", 0.42, 0.5, 40, "heldout", "ball", 1.5)]
 
 
 def cases_3d():

@@ -187,6 +187,11 @@ pub(crate) struct CounterpartMap {
     /// The plane law's compressible cap over the plane's (`min(rho_H, 1)` for the calibrated
     /// free sphere and flat pad on a curved counterpart, `crate::cap_map`; 1 otherwise).
     pub cap: f64,
+    /// The counterpart's slope over its Hertz patch: `(a_i kappa_i)^2` averaged over the two
+    /// directions, per x (`(alpha^2 k1^2 + beta^2 k2^2)/2`; a ball of `R2 = K R`: `rho_H/K^2`,
+    /// `(a_H/R2)^2 = wrap x`); 0 for a plane and an edge. The core's pressed skin
+    /// (`crate::core_map`, the wrapped cap) takes it.
+    pub wrap: f64,
 }
 
 impl CounterpartMap {
@@ -199,6 +204,7 @@ impl CounterpartMap {
         shrink: [0.0; 2],
         reach: f64::INFINITY,
         cap: 1.0,
+        wrap: 0.0,
     };
 
     /// The map of `counterpart` for a fingertip of radius `radius` \[m\], Poisson ratio `nu`
@@ -264,6 +270,8 @@ impl CounterpartMap {
                     // The pressed area over the plane's at the same delta; a concave
                     // counterpart (rho_H > 1) keeps the plane's cap (`cap_map`).
                     cap: if form.cap { rho_h.min(1.0) } else { 1.0 },
+                    wrap: 0.5
+                        * (hertz.alpha * hertz.alpha * k1 * k1 + hertz.beta * hertz.beta * k2 * k2),
                 })
             }
             CounterpartKind::Edge => Ok(edge_map(nu, backing)),
@@ -411,6 +419,7 @@ fn edge_map(_nu: f64, backing: Backing) -> CounterpartMap {
         shrink: [0.0; 2],
         reach: f64::INFINITY,
         cap: 1.0,
+        wrap: 0.0,
     }
 }
 

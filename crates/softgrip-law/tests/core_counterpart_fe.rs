@@ -1,6 +1,7 @@
 //! A skin on a rigid core pressed on a rigid ball, against softgrip's FE of it
 //! (`tests/data/fe/ball/core/`, `tools/fe`, session 11: t/R 0.3 and 0.5 at nu 0.48 on balls of
-//! R and 3R; sessions 12-14: t/R 0.3-0.45 at nu 0.3-0.48 on balls of R to 3R): force per curve against the number this test prints, with the 3 % as the
+//! R and 3R; sessions 12-14: t/R 0.3-0.45 at nu 0.3-0.48 on balls of R to 3R; sessions 16-17:
+//! t/R 0.4-0.6 at nu 0.43-0.49 on balls of 0.6 R to 2R): force per curve against the number this test prints, with the 3 % as the
 //! ceiling, and the law's range against the FE's reach.
 //!
 //! `cargo test -p softgrip-law --test core_counterpart_fe -- --nocapture` prints every number.
@@ -34,67 +35,64 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
 }
 
 /// The largest force error each curve is allowed to the FE's end: what this test printed
-/// when the law was fixed (session 14: the confined skin, `core_map`, on the bonded pad's
-/// session-14 refit, `mapping`'s FLAT, COLLAPSE_FLAT and RESTIFFEN_FLAT, which the core's map
-/// takes; session 16: the bonded map's `g`, `q`, `q2` refitted with the sextic `g3`, `r` held
-/// so that the core's squeeze excess stays as validated), rounded up by 0.2 % (so a real
-/// change of the law breaks it). One constant of the
-/// map was fitted, on one curve (`force_nu0.3_t0.4_k2.csv`, the confined skin's share `w`,
-/// refitted minimax on the refitted bonded map: 0.036952 -> 0.0276); the others saw none
-/// (`core_map`: the plane law at Hertz's patch, the bonded pad's squeeze excess at the skin's
-/// `delta/t`). Session 12's numbers in the comments, then session 14's before the bonded
-/// pad's refit, then session 14's (the last number).
+/// when the law was fixed (session 17: the wrapped cap, `core_map`, a geometric coefficient,
+/// and `chi_flat` continued past its range in the squeeze excess, `ChiForm::flat_continued`;
+/// the confined skin's share `w` refitted on its one curve), rounded up by 0.2 % (so a real
+/// change of the law breaks it). One constant of the map is fitted, on one curve
+/// (`force_nu0.3_t0.4_k2.csv`, the confined skin's share `w`, 0.0276 -> 0.018246 in session 17);
+/// the others saw none (`core_map`: the plane law at Hertz's patch, the bonded pad's squeeze
+/// excess at the skin's `delta/t`, the cap's area). In the comments the numbers of session 12,
+/// of session 14 before the bonded pad's refit, of session 14, and of session 16 (the last
+/// before session 17).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.43, // 2.42, 2.42, 2.35
-        "ball/core/force_nu0.48_t0.3_k3.csv" => 2.62, // 3.74, 3.83, 2.60
-        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.42, // 1.44, 1.44, 1.48
-        // The bonded refit's r0 at nu -> 1/2 rose (0.832 -> 0.861) with the nu = 0.499 pads on
-        // 2R and 4R in its fit: this curve's end moved out of the 3 %.
-        "ball/core/force_nu0.48_t0.5_k1.csv" => 4.19, // 3.26, 3.19, 4.65
-        "ball/core/force_nu0.48_t0.5_k3.csv" => 1.26, // 2.73, 2.82, 1.20
+        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.50, // 2.42, 2.42, 2.35, 2.43
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 2.49, // 3.74, 3.83, 2.60, 2.62
+        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.43, // 1.44, 1.44, 1.48, 1.42
+        // Session 15-16's miss (4.65 / 4.19 % too soft at its end, x = 0.38, delta/t 0.76).
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 2.67, // 3.26, 3.19, 4.65, 4.19
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 1.53, // 2.73, 2.82, 1.20, 1.26
         // Session 13, held out of the constant (the confined skin's form was chosen with them
         // in view): the first cores on a ball away from nu = 0.48, at their FE's ends 3.35 %,
         // 10.38 % and 6.57 % too soft with session 12's map (delta/t 0.77, 0.8, 0.77).
-        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 0.70, // -, 0.98, 0.79
-        "ball/core/force_nu0.33_t0.45_k3.csv" => 2.35,  // -, 1.07, 2.20
-        "ball/core/force_nu0.36_t0.3_k1.csv" => 1.99,   // -, 1.66, 1.85
+        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 1.03, // -, 0.98, 0.79, 0.70
+        "ball/core/force_nu0.33_t0.45_k3.csv" => 1.50,  // -, 1.07, 2.20, 2.35
+        "ball/core/force_nu0.36_t0.3_k1.csv" => 2.04,   // -, 1.66, 1.85, 1.99
         // Session 14, the confined skin's constant fitted on it (14.02 % too soft at its end,
         // x = 0.32, delta/t 0.8, with session 12's map).
-        "ball/core/force_nu0.3_t0.4_k2.csv" => 2.32, // -, 0.95, 2.28
+        "ball/core/force_nu0.3_t0.4_k2.csv" => 2.32, // -, 0.95, 2.28, 2.32
         // Session 14, blind (run after w was first fitted): nu 0.4, t/R 0.5 on 3R (1.29 %
         // without the confined skin), and nu 0.3, t/R 0.5 on R (9.23 % too soft at its end
         // without it).
-        "ball/core/force_nu0.4_t0.5_k3.csv" => 1.87, // -, 2.22, 1.94
-        "ball/core/force_nu0.3_t0.5_k1.csv" => 1.63, // -, 2.39, 1.38
-        // Session 16, blind (`fe_campaign.py`'s `held16`, run before the bonded refit was
-        // tried on the core): nu 0.47, t/R 0.5 on 0.7 R, 5.67 % with session 14's map, 5.00 %
-        // too soft at its end (x = 0.37, delta/t 0.74): the known miss's kind (WITHIN_TARGET_TO).
-        "ball/core/force_nu0.47_t0.5_k0.7.csv" => 5.00,
-        // ... and nu 0.49, t/R 0.45 on 1.5 R (session 14's map: 1.93 %).
-        "ball/core/force_nu0.49_t0.45_k1.5.csv" => 1.71,
+        "ball/core/force_nu0.4_t0.5_k3.csv" => 1.27, // -, 2.22, 1.94, 1.87
+        "ball/core/force_nu0.3_t0.5_k1.csv" => 2.32, // -, 2.39, 1.38, 1.63
+        // Session 16, blind (`fe_campaign.py`'s `held16`): nu 0.47, t/R 0.5 on 0.7 R, 5.67 %
+        // with session 14's map, 5.00 % too soft at its end (x = 0.37, delta/t 0.74) with
+        // session 16's; the wrapped cap was chosen with it (and the miss above) in view.
+        "ball/core/force_nu0.47_t0.5_k0.7.csv" => 2.71,
+        // ... and nu 0.49, t/R 0.45 on 1.5 R (session 14's map: 1.93 %, session 16's 1.71 %).
+        "ball/core/force_nu0.49_t0.45_k1.5.csv" => 1.33,
+        // Session 17, blind to the wrapped cap (`fe_campaign.py`'s session-17 cases, run before
+        // it was chosen, looked at after it was committed): nu 0.46, t/R 0.55 on 0.6 R (session
+        // 16's law 4.06 %, too soft at its end, x = 0.40, delta/t 0.73) ...
+        "ball/core/force_nu0.46_t0.55_k0.6.csv" => 1.77,
+        // ... nu 0.49, t/R 0.4 on 0.8 R (1.76 %; the FE diverged at x = 0.24, delta/t 0.6) ...
+        "ball/core/force_nu0.49_t0.4_k0.8.csv" => 1.97,
+        // ... and two thick skins on larger balls, too stiff at depth with session 16's law
+        // and with the wrapped cap alone (3.04 / 3.44 % at delta/t 0.8; 5.53 / 5.61 % at 0.75):
+        // the continuation of chi_flat was chosen on them (not blind to it).
+        "ball/core/force_nu0.43_t0.6_k2.csv" => 2.37,
+        "ball/core/force_nu0.48_t0.65_k4.csv" => 2.58,
+        // Session 17, blind to the continuation (launched before it was fixed, looked at after
+        // it was committed): nu 0.45, t/R 0.6 on 3R (session 16's law 4.29 %, too stiff at
+        // delta/t 0.8) and nu 0.42, t/R 0.5 on 1.5 R (1.47 %).
+        "ball/core/force_nu0.45_t0.6_k3.csv" => 2.15,
+        "ball/core/force_nu0.42_t0.5_k1.5.csv" => 1.20,
         // A curve that landed after: the target.
         _ => 2.8,
     };
     (pct + 0.2) / 100.0
 }
-
-/// The curves the law misses the 3 % on, each within it below an x (its error there,
-/// the test allows 0.2 % more), at the FE's last points: nu 0.48, t/R 0.5 on R, -4.65 % at
-/// its end with session 14's law (x = 0.38, delta/t 0.76; the plane law at the patch's x = 0.19 is itself 2 % soft,
-/// t/R 0.5 at nu 0.45, and the bonded refit's r0 at nu -> 1/2 rose). The compressible skins
-/// squeezed past delta/t 0.7 (session 13: 3.4-10.4 % too soft) are within 2.20 % since
-/// session 14's confined skin (`core_map`).
-///
-/// Session 16: the bonded map's refit (the sextic term, `g` lower) brought the first to -4.19 %
-/// at its end (-2.49 % at x = 0.33); the blind nu 0.47, t/R 0.5 on 0.7 R misses the same way,
-/// -5.00 % at its end (x = 0.37, delta/t 0.74), within 3 % to x = 0.31 (-2.76 %): the thick
-/// skin squeezed past delta/t ~0.6 on a ball no larger than the fingertip, near
-/// incompressibility, stiffens more than the bonded pad's squeeze excess says (CORE_FORM.md).
-const WITHIN_TARGET_TO: &[(&str, f64, f64)] = &[
-    ("ball/core/force_nu0.48_t0.5_k1.csv", 0.33, 2.49),
-    ("ball/core/force_nu0.47_t0.5_k0.7.csv", 0.31, 2.76),
-];
 
 #[test]
 fn a_skin_on_a_core_on_a_ball_is_within_its_stated_error_of_the_fe() {
@@ -109,27 +107,15 @@ fn a_skin_on_a_core_on_a_ball_is_within_its_stated_error_of_the_fe() {
             100.0 * err,
             law.x_max()
         );
-        let miss = WITHIN_TARGET_TO.iter().find(|(p, _, _)| *p == file.path);
+        // Every curve within the 3 % to its FE's end (session 17: the misses of
+        // sessions 15-16, 4.19 % and 5.00 %, are 2.67 % and 2.71 %; the blind thick skins on
+        // 2R and 4R, 3.44 % and 5.61 % with the wrapped cap alone, 2.37 % and 2.58 %).
         assert!(
-            err <= stated_force_error(file.path) && (err < 0.03 || miss.is_some()),
+            err <= stated_force_error(file.path) && err < 0.03,
             "{}: {:.2} %",
             file.path,
             100.0 * err
         );
-        if let Some(&(_, to, pct)) = miss {
-            let (below, _) = force_error(file, &law, to);
-            println!(
-                "{:38} force within {:5.2} % for x <= {to}",
-                "",
-                100.0 * below
-            );
-            assert!(
-                below <= (pct + 0.2) / 100.0 && below < 0.03,
-                "{}: {:.2} % to x = {to}",
-                file.path,
-                100.0 * below
-            );
-        }
         // The law's range reaches the FE's (within one FE step).
         assert!(
             law.x_max() >= fe_end - 0.011,
@@ -179,6 +165,12 @@ fn a_skin_on_a_core_on_a_ball_has_the_fe_contact_radius() {
             "ball/core/force_nu0.3_t0.4_k2.csv" => 0.0288,
             // session 16's blind nu 0.47, t/R 0.5 on 0.7 R: 2.94 % (within the 3 %)
             "ball/core/force_nu0.47_t0.5_k0.7.csv" => 0.0314,
+            // session 17's blind nu 0.46, t/R 0.55 on 0.6 R: 4.55 %, too wide from x ~0.3 (+4.6 %
+            // at its end, x = 0.40, (a_H/R2)^2 = 0.42): the 3 % missed. The force's
+            // wrapped cap does not touch the radius; the patch without Sneddon's shrink
+            // (session 15) is too wide on the smallest balls near incompressibility
+            // (CORE_FORM.md "Session 17").
+            "ball/core/force_nu0.46_t0.55_k0.6.csv" => 0.0475,
             // nu 0.36 t/R 0.3 on R (2.23 %) and the blind nu 0.3, t/R 0.5 on R (1.32 %): the
             // shared tolerance
             _ => RADIUS_TOLERANCE,
@@ -194,8 +186,8 @@ fn a_skin_on_a_core_on_a_ball_has_the_fe_contact_radius() {
 /// its FE; the target for a core: 3 %).
 const RADIUS_TOLERANCE: f64 = 0.0245;
 
-/// The FE of a core curve the law misses (nu 0.48, t/R 0.5 on R, 4.19 % at x = 0.38) is
-/// converged where it misses (session 15, `fe_campaign.py` role `conv-reach`: R/60 against
+/// The FE of the core curve the law missed until session 17 (nu 0.48, t/R 0.5 on R, 4.19 % at
+/// x = 0.38; 2.67 % since session 17) is converged where it missed (session 15, `fe_campaign.py` role `conv-reach`: R/60 against
 /// the campaign's R/40, to x = 0.36 where the R/60 run diverged): the two meshes' forces agree
 /// within 0.13 % at every x, so the miss is the law's, not the mesh's.
 #[test]
