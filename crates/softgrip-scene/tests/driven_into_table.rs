@@ -477,12 +477,13 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// wrenches of the same generalised force, the rest carried by the palm), and an answer
 /// whose locked-direction load on a link passes twice the group's impulse scale is degenerate
 /// (its pads solved on their bodies alone). Measured: the run ends finite, links at most 0.10
-/// m/s, pads at most 303 N, rapier's table contacts at most 480 N on the links, 3036
-/// degenerate solves, 78415 substeps (24 steps at the cap of 2000: the pads pressed at
+/// m/s, pads at most 326 N, rapier's table contacts at most 480 N on the links, 2804
+/// degenerate solves, 56509 substeps (19 steps at the cap of 2000; session 16, before the
+/// coupled answers' speed check: 303 N, 3036, 78415, 24: the pads pressed at
 /// hundreds of newtons by a palm no motor can stop are stiff, `softgrip-rapier` README,
 /// Limits).
 #[test]
-#[ignore = "passes, but too slow for the suite's debug run: 78 415 substeps (24 steps at the 2000 cap), about 150 s in release; run it with `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "passes, but too slow for the suite's debug run: 56 509 substeps (19 steps at the 2000 cap), minutes in release; run it with `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
     assert!(d.held > 30, "{d:?}");
