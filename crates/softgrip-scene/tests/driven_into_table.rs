@@ -477,12 +477,13 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// wrenches of the same generalised force, the rest carried by the palm), and an answer
 /// whose locked-direction load on a link passes twice the group's impulse scale is degenerate
 /// (its pads solved on their bodies alone). Measured: the run ends finite, links at most 0.10
-/// m/s, pads at most 303 N, rapier's table contacts at most 480 N on the links, 3036
-/// degenerate solves, 78415 substeps (24 steps at the cap of 2000: the pads pressed at
+/// m/s, pads at most 326 N, rapier's table contacts at most 480 N on the links, 2804
+/// degenerate solves, 56509 substeps (19 steps at the cap of 2000; session 16, before the
+/// coupled answers' speed check: 303 N, 3036, 78415, 24: the pads pressed at
 /// hundreds of newtons by a palm no motor can stop are stiff, `softgrip-rapier` README,
 /// Limits).
 #[test]
-#[ignore = "passes, but too slow for the suite's debug run: 78 415 substeps (24 steps at the 2000 cap), about 150 s in release; run it with `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "passes, but too slow for the suite's debug run: 56 509 substeps (19 steps at the 2000 cap), minutes in release; run it with `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
     assert!(d.held > 30, "{d:?}");
@@ -511,15 +512,18 @@ fn hand_dragged_into_a_wall(distance: f64) -> Down {
 
 /// The three-finger hand holding its box dragged 40 mm sideways into a fixed wall (its face
 /// at `x = -0.04`, 20 mm from the box): the box is wedged between the wall and fingers 1 and
-/// 2, whose links the kinematic palm drives on into the wall and the table. Diverges at step
-/// 50 (`StepError::Diverged`, `hand/f1_proximal` at 1.0e6 m/s), bit for bit the same with and
-/// without the session-16 joint-space projection and locked-load check: rapier's own contacts
-/// of the links on the wall and the table carry kN under the palm (6.7 kN in substep 23 of
-/// step 50), then a 1.58e3 N force on a link from a solve those checks do not see takes the
-/// joints from 2.4 to 3.0e3 rad/s in substep 24, and rapier's contact of that link with a
-/// fixed body answers 1.05e6 N s (`softgrip-rapier` README, Limits, "Still open" (b)).
+/// 2, whose links the kinematic palm drives on into the wall and the table. Diverged at step
+/// 50 until session 17: a coupled answer that passed both size checks (its impulse scale
+/// inflated by nearly locked rows between the fingers' links) put 1.58e3 N on a link and
+/// predicted the box at 220 m/s and a link at 585 m/s from contact points at most 1.1 m/s;
+/// such an answer is now degenerate (`softgrip_rapier`'s `rigid.rs`, `SPEED_FACTOR`). It
+/// still diverges at step 51 (`StepError::Diverged`, `hand/f0_distal` at 4.2e24 m/s), inside
+/// rapier's pipeline with at most 9 N of plugin force on any link: `f2_distal`'s joint past
+/// its lower limit while the palm pushes the links into the wall and each other, the joints
+/// 25 -> 48 -> 81 -> 3.6e10 rad/s over four substeps (`softgrip-rapier` README, Limits,
+/// "Still open" (b)).
 #[test]
-#[ignore = "diverges at step 50 (StepError::Diverged, hand/f1_proximal at 1.0e6 m/s): rapier's own link-wall and link-table contacts under the kinematic palm, then a joint-space link force the session-16 checks do not see; softgrip-rapier README, Limits, Still open (b)"]
+#[ignore = "diverges at step 51 (StepError::Diverged, hand/f0_distal at 4.2e24 m/s) inside rapier's pipeline: f2_distal's joint past its limit while the kinematic palm pushes the links into the wall, at most 9 N of plugin force; softgrip-rapier README, Limits, Still open (b)"]
 fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
     let d = hand_dragged_into_a_wall(0.04);
     assert!(d.held > 30, "{d:?}");
