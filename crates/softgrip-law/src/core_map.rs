@@ -81,22 +81,32 @@
 //!   constant. They are then 2.37 % and 2.58 %, every core-on-ball curve within 2.71 %; `w`
 //!   refitted on its one curve (0.0276 -> 0.018246).
 //!
-//! - **The patch's edge: no half-space shrink (session 15).** On a ball the bonded pad's and
-//!   the free sphere's patch is narrowed by the counterpart's quartic as Sneddon's rigid sphere
-//!   narrows a half-space's (`a = a_H (1 - (a/R2)^2/6)`), weighted by `eps/eps(0.3)`
+//! - **The patch's edge: a thin layer's shrink (sessions 15, 17).** On a ball the bonded pad's
+//!   and the free sphere's patch is narrowed by the counterpart's quartic as Sneddon's rigid
+//!   sphere narrows a half-space's (`a = a_H (1 - (a/R2)^2/6)`), weighted by `eps/eps(0.3)`
 //!   (`mapping`): the shrink shows where the material under the patch gives way in depth (a
 //!   compressible half-space), not where it bulges round the patch and makes up for the
 //!   sphere's falling surface (near incompressibility). Over a rigid core the squeezed skin
-//!   cannot give way in depth: whatever its Poisson ratio, what the ball displaces goes
-//!   sideways and bulges round the patch, as in the incompressible half-space, so the core's
-//!   patch takes no shrink (no constant). The FE: with the shrink the compressible skins were
-//!   3.00-4.53 % narrow at their ends (nu 0.3, t/R 0.5 on R: 4.53 %, on 2R at t/R 0.4: 3.49 %);
-//!   without it every core radius is within 2.68 % (`cargo test -p softgrip-law --test
-//!   core_counterpart_fe -- --nocapture`). Tried: half the shrink, 3.07 % (nu 0.3, t/R 0.4 on
-//!   2R); the shrink while the patch is short against the skin, `1/(1 + a_H^2/t^2)`, 3.07 % (nu
-//!   0.3, t/R 0.5 on R). As `t -> R` the skin becomes the bonded pad, which keeps the shrink:
-//!   the radius (not the force) steps there by up to Sneddon's term (no FE of a core past t/R
-//!   0.5 on a ball).
+//!   cannot give way in depth, so the core's patch does not take that shrink (session 15: with
+//!   it the compressible skins were 3.00-4.53 % narrow at their ends). It takes a thin layer's
+//!   (session 17): in a thin incompressible layer bonded to a rigid base the pressure solves
+//!   `lap p = (3 mu/t^3)(gap - delta)` with `p = dp/dr = 0` at the patch's edge, so `delta
+//!   a^2/2 = int_0^a gap(r) r dr` (`a` at Hertz's `a_H` to leading order); the paraboloid gives `delta = a^2/(4 R_eff)`, the ball's
+//!   quartic `r^4/(8 R2^3)` adds `a^4/(24 R2^3)`, and `a = a0 (1 - (a/R2)^2 (R_eff/R2)/12)`:
+//!   half the half-space's coefficient (Hertz's integral for the same gap on a half-space
+//!   gives Sneddon's `1/6` times `R_eff/R2`), times the ball's share of the gap's curvature `R_eff/R2 = 1/(1 + K)`.
+//!   Per semi-axis `m_i |k_i|/(1 + k_i)/12` (`CounterpartMap::layer_shrink`; the ellipse's by
+//!   analogy, no FE of a core on a cylinder). Theory, no constant. It acts on the patch only:
+//!   the force's layer terms take the plane's radius at their own argument (`levels::backed`),
+//!   so no force moves. The FE: without it the blind nu 0.46, t/R 0.55 on 0.6 R was 4.55 % too
+//!   wide at its end (x = 0.40, `(a_H/R2)^2` = 0.42; nu 0.47 on 0.7 R 2.94 %), with it every
+//!   core radius is within 2.81 % (those two 2.28 % and 1.53 %; the worst nu 0.3, t/R 0.4 on
+//!   2R, 2.68 -> 2.81 %, narrow at its end; `cargo test -p softgrip-law --test
+//!   core_counterpart_fe -- --nocapture`). A compressible thin layer (Winkler, `gap = delta` at
+//!   the edge) gives `1/8`, but the compressible skins already read narrow: `1/12` for every
+//!   nu (with `1/8` for all: 2.93 %; `1/6`: 3.16 %; Sneddon's `m/6` without the share:
+//!   4.53 %). As `t -> R` the skin becomes the bonded pad, which keeps Sneddon's shrink: the
+//!   radius (not the force) steps there (no FE of a core past t/R 0.65 on a ball).
 //!
 //! Session 11's split (the hemisphere at `rho x`, the layer excess at `rho_H x`, the thinning at
 //! the true `delta/t`) put the squeeze on the layer excess only: linear in `delta/t` from the
@@ -268,12 +278,12 @@ pub(crate) fn core_on_counterpart(
         map.cap,
     )?;
     // The curve is in the true x now: rho = 1 and s = h; the patch's axes stay the plane's
-    // at rho x (the curve's radius is evaluated there), without Sneddon's half-space shrink
-    // (module docs, the patch's edge).
+    // at rho x (the curve's radius is evaluated there), with a thin incompressible layer's
+    // shrink in place of Sneddon's half-space one (module docs, the patch's edge).
     let map = CounterpartMap {
         rho: 1.0,
         force: h,
-        shrink: [0.0; 2],
+        shrink: map.layer_shrink,
         ..*map
     };
     Ok(Some((Curve::Backed(backed), map)))

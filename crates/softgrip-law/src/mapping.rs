@@ -192,6 +192,11 @@ pub(crate) struct CounterpartMap {
     /// `(a_H/R2)^2 = wrap x`); 0 for a plane and an edge. The core's pressed skin
     /// (`crate::core_map`, the wrapped cap) takes it.
     pub wrap: f64,
+    /// A thin incompressible layer's shrink of each semi-axis per x, `m_i |k_i|/(1 + k_i)/12`
+    /// (`m_i` the quartic of `shrink`, `k_i/(1 + k_i)` the counterpart's share of the gap's
+    /// curvature): the skin on a core takes it in place of `shrink` (`crate::core_map`, the
+    /// patch's edge); 0 for a plane and an edge.
+    pub layer_shrink: [f64; 2],
 }
 
 impl CounterpartMap {
@@ -205,6 +210,7 @@ impl CounterpartMap {
         reach: f64::INFINITY,
         cap: 1.0,
         wrap: 0.0,
+        layer_shrink: [0.0; 2],
     };
 
     /// The map of `counterpart` for a fingertip of radius `radius` \[m\], Poisson ratio `nu`
@@ -272,6 +278,10 @@ impl CounterpartMap {
                     cap: if form.cap { rho_h.min(1.0) } else { 1.0 },
                     wrap: 0.5
                         * (hertz.alpha * hertz.alpha * k1 * k1 + hertz.beta * hertz.beta * k2 * k2),
+                    layer_shrink: [
+                        quartic[0] * k1.abs() / (1.0 + k1) / 12.0,
+                        quartic[1] * k2.abs() / (1.0 + k2) / 12.0,
+                    ],
                 })
             }
             CounterpartKind::Edge => Ok(edge_map(nu, backing)),
@@ -420,6 +430,7 @@ fn edge_map(_nu: f64, backing: Backing) -> CounterpartMap {
         reach: f64::INFINITY,
         cap: 1.0,
         wrap: 0.0,
+        layer_shrink: [0.0; 2],
     }
 }
 

@@ -156,35 +156,47 @@ fn a_skin_on_a_core_on_a_ball_has_the_fe_contact_radius() {
             worst = worst.max((p.radius / (fe.at(x) + lag) - 1.0).abs());
         }
         println!("{:38} radius within {:5.2} %", file.path, 100.0 * worst);
-        // Session 15: the core's patch takes no Sneddon shrink (`core_map`, the patch's edge);
-        // with it these were 3.00 / 3.51 / 3.48 / 4.52 % (the 3 %: missed).
-        let tolerance = match file.path {
-            // session 13's held-out compressible skin (nu 0.33, t/R 0.45 on 3R): 2.58 %
-            "ball/core/force_nu0.33_t0.45_k3.csv" => 0.0278,
-            // session 14's nu 0.3, t/R 0.4 on 2R: 2.68 % (narrow at its end, x = 0.31)
-            "ball/core/force_nu0.3_t0.4_k2.csv" => 0.0288,
-            // session 16's blind nu 0.47, t/R 0.5 on 0.7 R: 2.94 % (within the 3 %)
-            "ball/core/force_nu0.47_t0.5_k0.7.csv" => 0.0314,
-            // session 17's blind nu 0.46, t/R 0.55 on 0.6 R: 4.55 %, too wide from x ~0.3 (+4.6 %
-            // at its end, x = 0.40, (a_H/R2)^2 = 0.42): the 3 % missed. The force's
-            // wrapped cap does not touch the radius; the patch without Sneddon's shrink
-            // (session 15) is too wide on the smallest balls near incompressibility
-            // (CORE_FORM.md "Session 17").
-            "ball/core/force_nu0.46_t0.55_k0.6.csv" => 0.0475,
-            // nu 0.36 t/R 0.3 on R (2.23 %) and the blind nu 0.3, t/R 0.5 on R (1.32 %): the
-            // shared tolerance
-            _ => RADIUS_TOLERANCE,
-        };
+        let tolerance = stated_radius_error(file.path);
         assert!(worst < tolerance, "{}: {:.2} %", file.path, 100.0 * worst);
         seen += 1;
     }
     assert!(seen >= 5, "{seen} curves");
 }
 
-/// The radius's largest error seen on these curves (1.32-2.14 %, session 11; 1.15-2.23 % on the
-/// rest since session 15), rounded up by 0.2-0.3 % (the plane's core radius is within 2.23 % of
-/// its FE; the target for a core: 3 %).
-const RADIUS_TOLERANCE: f64 = 0.0245;
+/// The largest radius error each curve is allowed for `0.1 <= x <= min(0.4, x_max, FE's
+/// end)`: what this test printed when the core's patch took a thin incompressible layer's
+/// shrink (session 17, `core_map`, the patch's edge: `1 - (a_H/R2)^2 (R_eff/R2)/12`, theory, no
+/// constant), rounded up by 0.2 % and capped at the 3 %. In the comments: before it
+/// (sessions 15-17, no shrink; with Sneddon's half-space shrink, session 14, the compressible
+/// skins were 3.00-4.52 %).
+fn stated_radius_error(path: &str) -> f64 {
+    let pct: f64 = match path {
+        "ball/core/force_nu0.33_t0.45_k3.csv" => 2.85, // 2.58
+        "ball/core/force_nu0.36_t0.3_k1.csv" => 2.89,  // 2.23
+        // Narrow at its end (x = 0.31): the worst since the shrink.
+        "ball/core/force_nu0.3_t0.4_k2.csv" => 3.00, // 2.68 (2.81)
+        "ball/core/force_nu0.3_t0.5_k1.csv" => 2.26, // 1.32
+        "ball/core/force_nu0.42_t0.5_k1.5.csv" => 1.38, // 0.93
+        "ball/core/force_nu0.43_t0.6_k2.csv" => 1.42, // 1.18
+        "ball/core/force_nu0.45_t0.6_k3.csv" => 1.35, // 1.13
+        // Session 17's blind run, too wide at its end (x = 0.40, (a_H/R2)^2 = 0.42) without
+        // the shrink: the 3 % missed.
+        "ball/core/force_nu0.46_t0.55_k0.6.csv" => 2.48, // 4.55
+        "ball/core/force_nu0.47_t0.5_k0.7.csv" => 1.73,  // 2.94
+        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.09,    // 1.48
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 2.45,    // 2.22
+        "ball/core/force_nu0.48_t0.4_k2.csv" => 2.48,    // 2.15
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 1.85,    // 1.44
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.32,    // 2.11
+        "ball/core/force_nu0.48_t0.65_k4.csv" => 1.97,   // 1.76
+        "ball/core/force_nu0.49_t0.45_k1.5.csv" => 2.59, // 2.21
+        "ball/core/force_nu0.49_t0.4_k0.8.csv" => 1.11,  // 0.59
+        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 1.82,  // 1.45
+        "ball/core/force_nu0.4_t0.5_k3.csv" => 1.42,     // 1.15
+        other => panic!("{other}: no stated radius error (run with --nocapture and state it)"),
+    };
+    pct / 100.0
+}
 
 /// The FE of the core curve the law missed until session 17 (nu 0.48, t/R 0.5 on R, 4.19 % at
 /// x = 0.38; 2.67 % since session 17) is converged where it missed (session 15, `fe_campaign.py` role `conv-reach`: R/60 against
