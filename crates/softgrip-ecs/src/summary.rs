@@ -8,7 +8,10 @@
 //!   the end of the step, over R); the two are independent maxima: in an impact the force
 //!   peaks before the compression does;
 //! - validity excursions: steps in which a contact's `validity_exceeded` (past the law's range
-//!   in any substep) is set and was not in the step before; slips likewise with `sliding`.
+//!   in any substep) is set and was not in the step before; slips likewise with `sliding`;
+//! - excursion time: the total duration of the steps in which any contact of the fingertip has
+//!   `validity_exceeded` set (the law's extension, its barrier, carried the contact), in
+//!   seconds of simulated time.
 
 use std::collections::BTreeMap;
 use std::fmt;
@@ -38,6 +41,9 @@ pub struct TipSummary {
     pub slips: u32,
     /// Validity excursions (`ValidityExcursion`).
     pub validity_excursions: u32,
+    /// How long the excursions lasted \[s\]: the summed duration of the steps in which a
+    /// contact of the fingertip was past its law's range (`validity_exceeded`), >= 0.
+    pub excursion_time: f64,
     /// Commanded compression of the gripper's squeeze \[m\] (fingertips on a gripper jaw).
     pub commanded_depth: Option<f64>,
     /// Normal force at the end of the squeeze's settle phase \[N\].
@@ -109,6 +115,9 @@ pub fn accumulate_summary(
     for (e, name) in &tips {
         summary.entry(e, name.as_str());
     }
+    let dt = f64::from(physics.world.physics.integration_parameters.dt);
+    // A fingertip with several contacts past the range in one step counts the step once.
+    let mut exceeded: Vec<Entity> = Vec::new();
     for c in physics.world.soft.contacts() {
         let Some(tip) = physics.collider_entity(c.fingertip) else {
             continue;
@@ -117,6 +126,10 @@ pub fn accumulate_summary(
             continue;
         };
         let s = summary.entry(tip, name.as_str());
+        if c.validity_exceeded && !exceeded.contains(&tip) {
+            exceeded.push(tip);
+            s.excursion_time += dt;
+        }
         s.peak_force = s.peak_force.max(c.peak_normal_force);
         if c.max_x > s.peak_x {
             s.peak_x = c.max_x;
@@ -179,6 +192,9 @@ impl fmt::Display for TipSummary {
             self.slips,
             self.validity_excursions
         )?;
+        if self.validity_excursions > 0 || self.excursion_time > 0.0 {
+            write!(f, " lasting {} in all", si(self.excursion_time, "s"))?;
+        }
         if let (Some(d), Some(force)) = (self.commanded_depth, self.squeeze_force) {
             write!(
                 f,

@@ -44,7 +44,9 @@ fn each_transition_writes_one_message() {
     )
     .unwrap();
     let probe = Probe::default();
-    let mut sim = Simulation::new(&scene).with_recorder(probe.clone());
+    let mut sim = Simulation::new(&scene)
+        .with_recorder(probe.clone())
+        .with_summary();
     sim.world.init_resource::<Log>();
     let dt = scene.file().dt as f32 as f64;
     // A custom exclusive system after the readout collects the messages of the step.
@@ -120,4 +122,32 @@ fn each_transition_writes_one_message() {
         times("ended")[2..].iter().all(|k| *k > 600.0 && *k < 660.0),
         "lost during the lift (steps 600-660)"
     );
+    // How long the excursions lasted (the summary): per fingertip, dt times the steps in which
+    // any of its contacts was past the range, found independently in the readout.
+    let summary = sim.world.resource::<softgrip_ecs::Summary>().clone();
+    let mut total = 0.0;
+    for (_, t) in &summary.tips {
+        let steps = probe
+            .frames()
+            .iter()
+            .filter(|f| {
+                f.contacts
+                    .iter()
+                    .any(|c| c.fingertip == t.name && c.contact.validity_exceeded)
+            })
+            .count();
+        println!(
+            "{}: excursion time {} s over {steps} steps",
+            t.name, t.excursion_time
+        );
+        assert!((t.excursion_time - steps as f64 * dt).abs() < 1e-9 * (1.0 + t.excursion_time));
+        assert_eq!(
+            t.excursion_time > 0.0,
+            t.validity_excursions > 0,
+            "{}",
+            t.name
+        );
+        total += t.excursion_time;
+    }
+    assert!(total > 0.0);
 }

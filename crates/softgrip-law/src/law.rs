@@ -7,6 +7,7 @@ use crate::core_map::core_on_counterpart;
 use crate::counterpart::{Counterpart, CounterpartKind};
 use crate::curve::{Curve, finite_non_negative};
 use crate::error::{Error, Result};
+use crate::extension::Extension;
 use crate::level::{Level, LevelKind};
 use crate::levels::NormalisedLaw;
 use crate::levels::tabulated::Tabulated;
@@ -74,24 +75,44 @@ struct Edge {
     radius: f64,
     shape: f64,
     taper: f64,
+    /// The barrier past `x` ([`ContactLaw::response`]).
+    ext: Extension,
 }
 
 impl Edge {
-    /// The curve's values at its own compression ratio `x`.
-    fn at(curve: &Curve, x: f64) -> Self {
+    /// The curve's values at its own compression ratio `x`, with the extension's wall at
+    /// `wall` (the curve's own compression ratio).
+    fn at(curve: &Curve, x: f64, wall: f64) -> Self {
         let c = curve.as_dyn();
         let (f, k, _) = curve.force_stiffness(x);
         let (shape, taper) = c.pressure_profile(x);
+        let w = finite_non_negative(c.energy(x));
         Self {
             x,
             f,
             k,
-            w: finite_non_negative(c.energy(x)),
+            w,
             radius: finite_non_negative(c.radius(x)),
             shape,
             taper,
+            ext: Extension::new(x, f, k, w, wall),
         }
     }
+
+    /// The same edge with the extension's wall at `wall`.
+    fn with_wall(self, wall: f64) -> Self {
+        Self {
+            ext: Extension::new(self.x, self.f, self.k, self.w, wall),
+            ..self
+        }
+    }
+}
+
+/// Where the fingertip's geometry is lost, in `x = delta/R` [-]: its rigid part reaches the
+/// surface it presses. A free sphere's centre (and a flat-backed hemisphere's rigid face, at
+/// its centre) at `delta = R`, `x = 1`; a skin's rigid core at `delta = t`, `x = t/R`.
+fn physical_wall(params: &ContactParams) -> f64 {
+    params.thickness_ratio().unwrap_or(1.0)
 }
 
 /// One level of the contact law bound to a contact's parameters.
@@ -102,12 +123,22 @@ impl Edge {
 ///   validity range `0 <= x <= x_max`.
 /// - **Hot path** ([`response`](Self::response), [`energy`](Self::energy),
 ///   [`patch`](Self::patch)): never fails, never returns NaN. Past `x_max` it continues the law
-///   by its tangent (the *extension*): `F = F(x_max) + K(x_max) (delta - delta_max)`, stiffness
-///   `K(x_max)`, energy the matching quadratic, radius `a(x_max) sqrt(x / x_max)`. That is finite,
-///   continuous with its first derivative, and monotonic (every level has `K(x_max) > 0`), and
-///   the response says [`Regime::Extended`]. Past `x = 4` (twice the deepest compression a
-///   sphere has: no real contact gets there, only a tunnelled or corrupt state) the extension is
-///   frozen at its value at `x = 4` (`K = 0`), so every output stays finite for any finite input.
+///   by a barrier against a wall (the *extension*, [`Regime::Extended`]) that keeps a fixed
+///   plane impenetrable. The wall [`x_wall`](Self::x_wall) is where the fingertip's rigid part
+///   reaches the surface it presses: `x = 1` for a free sphere (its centre) and a flat-backed
+///   hemisphere (its rigid face), `x = t/R` for a skin on a core; on a counterpart it is placed
+///   in the mapped variable (`rho x`); a law whose range reaches within 10 % of it (a table or a
+///   custom law to `x = 4`) gets its wall at `1.1 x_max`. In the curve's normalised units, with
+///   `L = x_wall - x_max`, `u = (x - x_max)/L` and `c = f(x_max) + k(x_max) L`:
+///   `f = f(x_max) + k(x_max)(x - x_max) + c u²/(1 - u)`, the stiffness its exact derivative
+///   (`>= k(x_max) > 0`: monotone), the energy its exact integral (`c L (-ln(1-u) - u - u²/2)`
+///   for the barrier term); continuous with its first derivative at `x_max`, and unbounded as
+///   `u -> 1`. From `1e-6 L` short of the wall on, the barrier's tangent there takes over
+///   (stiffness about `1e12 c/L`), so the wall itself and anything past it stay finite; past
+///   `max(x_wall + L, 4)` (no real contact gets there, only a tunnelled or corrupt state) force
+///   and energy are frozen (`K = 0`), so every output stays finite for any finite input. The
+///   radius past `x_max` is `a(x_max) sqrt(x / x_max)` (frozen with the force); a counterpart's
+///   terms continue by their tangent at the edge.
 ///
 /// ```
 /// use softgrip_law::{ContactLaw, ContactParams, Level, Material, Regime};
@@ -165,7 +196,7 @@ impl ContactLaw {
     /// and integral of that interpolant, the radius is Hertz's radius of the measured force,
     /// `a = (3 F R / (4 E*))^(1/3)` (the force does not depend on `params`, the radius does,
     /// through E* and R). Valid to the table's last compression; past it the hot path extends
-    /// by the tangent ([`Regime::Extended`]) and the checked API returns
+    /// by the barrier ([`Regime::Extended`], see [`response`](Self::response)) and the checked API returns
     /// [`Error::OutOfRange`].
     ///
     /// Fails if the table reaches past `x = delta/R = 4` or its values overflow once normalised
@@ -206,7 +237,7 @@ impl ContactLaw {
     }
 
     fn bind(params: ContactParams, level: Level, curve: Curve) -> Self {
-        let edge = Edge::at(&curve, curve.as_dyn().x_max());
+        let edge = Edge::at(&curve, curve.as_dyn().x_max(), physical_wall(&params));
         let (e, r) = (params.effective_modulus(), params.radius());
         Self {
             params,
@@ -291,10 +322,12 @@ impl ContactLaw {
             let reach = reach(p.backing(), p.thickness_ratio()).min(map.reach);
             x_max.min(map.rho * reach)
         };
+        // The wall where the fingertip's rigid part meets the counterpart, in the curve's x.
+        let wall = map.rho * physical_wall(p);
         let edge = if edge_x == self.edge.x && !replaced {
-            self.edge
+            self.edge.with_wall(wall)
         } else {
-            Edge::at(&curve, edge_x)
+            Edge::at(&curve, edge_x, wall)
         };
         let s = map.force;
         let law = Self {
@@ -351,7 +384,7 @@ impl ContactLaw {
         }
         // 5 % short of where it vanishes: the extension needs a positive stiffness.
         let edge_x = lo * self.x_scale;
-        self.edge = Edge::at(&self.curve, 0.95 * edge_x);
+        self.edge = Edge::at(&self.curve, 0.95 * edge_x, self.edge.ext.wall());
         self
     }
 
@@ -403,6 +436,13 @@ impl ContactLaw {
         } else {
             d
         }
+    }
+
+    /// Compression ratio of the extension's wall, `x_wall` [-] (`x = delta/R`, `> x_max`):
+    /// where the extension's barrier diverges, the fingertip's rigid part reaching the
+    /// surface it presses (see [`response`](Self::response)).
+    pub fn x_wall(&self) -> f64 {
+        self.edge.ext.wall() / self.map.rho
     }
 
     /// Force at the end of the validity range \[N\].
@@ -477,19 +517,19 @@ impl ContactLaw {
             (0.0, 0.0, Regime::NonFinite)
         } else if x <= 0.0 {
             (0.0, 0.0, Regime::Separated)
-        } else if x <= X_FROZEN {
-            (e.f + e.k * (x - e.x), e.k, Regime::Extended)
         } else {
-            (e.f + e.k * (X_FROZEN - e.x), 0.0, Regime::Extended)
+            let (f, k) = e.ext.force_stiffness(x);
+            (f, k, Regime::Extended)
         };
         let (mut force, mut stiffness) = (f * self.force_scale, k * self.stiffness_scale);
         if !self.tail.is_zero() && regime == Regime::Extended {
             // The tail extended by its tangent at the edge, frozen with the rest.
-            let (xe, xc) = (e.x / self.map.rho, x.min(X_FROZEN) / self.map.rho);
+            let x_far = e.ext.x_far();
+            let (xe, xc) = (e.x / self.map.rho, x.min(x_far) / self.map.rho);
             let (tf, tk) = self.tail_at(xe);
             let r = self.params.radius();
             force -= tf + tk * r * (xc - xe);
-            if x <= X_FROZEN {
+            if x <= x_far {
                 stiffness -= tk;
             }
         }
@@ -512,8 +552,7 @@ impl ContactLaw {
         let w = if x <= e.x {
             finite_non_negative(self.curve.as_dyn().energy(x))
         } else {
-            let dx = x.min(X_FROZEN) - e.x;
-            e.w + e.f * dx + 0.5 * e.k * dx * dx
+            e.ext.energy(x)
         };
         let energy = w * self.force_scale * self.energy_length;
         if self.tail.is_zero() {
@@ -521,7 +560,8 @@ impl ContactLaw {
         }
         // The tail's integral, and past the edge its tangent's.
         let r = self.params.radius();
-        let (xp, xe) = (x.min(X_FROZEN) / self.map.rho, e.x / self.map.rho);
+        let x_far = e.ext.x_far();
+        let (xp, xe) = (x.min(x_far) / self.map.rho, e.x / self.map.rho);
         let inside = xp.min(xe);
         let mut w_tail = self.tail.integral(inside, r);
         if xp > xe {
@@ -544,7 +584,7 @@ impl ContactLaw {
         let rho = if x <= e.x {
             finite_non_negative(self.curve.as_dyn().radius(x))
         } else {
-            e.radius * (x.min(X_FROZEN) / e.x).sqrt()
+            e.radius * (x.min(e.ext.x_far()) / e.x).sqrt()
         };
         let (m, b) = if x <= e.x {
             self.curve.as_dyn().pressure_profile(x)

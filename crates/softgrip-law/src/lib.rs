@@ -8,6 +8,7 @@ mod counterpart;
 mod curve;
 mod elliptic;
 mod error;
+mod extension;
 pub mod fitting;
 mod law;
 mod level;

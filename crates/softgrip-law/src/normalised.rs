@@ -2,8 +2,8 @@
 
 use std::fmt::Debug;
 
-/// Compression ratio past which the hot path's extension is frozen (see
-/// [`ContactLaw`](crate::ContactLaw)); a law's validity range must end at or before it.
+/// The largest end of a law's validity range [-]; the hot path's extension is frozen past
+/// `max(x_wall + L, X_FROZEN)` (see [`ContactLaw`](crate::ContactLaw)).
 pub(crate) const X_FROZEN: f64 = 4.0;
 
 /// A contact law in normalised form: the force `f(x) = F / (E* R²)` [-] as a function of the
@@ -12,8 +12,8 @@ pub(crate) const X_FROZEN: f64 = 4.0;
 /// Every built-in level implements it, and so can a user's own law, used through
 /// [`crate::ContactLaw::custom`]. [`crate::ContactLaw`] binds a normalised law to a contact's
 /// E* \[Pa\] and R \[m\], handles separation (`x <= 0`), non-finite input and the extension past
-/// [`x_max`](Self::x_max) (the tangent at `x_max`, [`crate::Regime::Extended`]): the methods are
-/// only called with `0 < x <= x_max`.
+/// [`x_max`](Self::x_max) (a barrier against the fingertip's wall, C1 with the law at `x_max`,
+/// [`crate::Regime::Extended`]): the methods are only called with `0 < x <= x_max`.
 ///
 /// What a law must satisfy on `0 < x <= x_max` (so that an integrator sees one consistent,
 /// passive law; the tests check the built-in levels for all of it):

@@ -136,11 +136,17 @@ fn past_the_table_the_checked_api_errs_and_the_hot_path_extends() {
     }
     assert!(law.try_response(0.6).is_err());
     assert!(law.evaluate(0.5).is_ok());
-    // The extension: the tangent at the last sample, C1 there.
+    // The extension: the tangent at the last sample plus the barrier c u^2/(1-u) against the
+    // wall at x = 1 (a free sphere's centre), C1 there: L = 0.5, c = F + K L, u = 0.1/L = 0.2.
     let (end, past) = (law.response(0.5), law.response(0.6));
     assert_eq!(past.regime, Regime::Extended);
-    assert_eq!(past.stiffness, end.stiffness);
-    assert!((past.force - (end.force + 0.1 * end.stiffness)).abs() < 1e-12);
+    assert_eq!(law.x_wall(), 1.0);
+    let (len, u) = (0.5, 0.2);
+    let c = end.force + end.stiffness * len;
+    let k_want = end.stiffness + c / len * u * (2.0 - u) / ((1.0 - u) * (1.0 - u));
+    assert!((past.stiffness / k_want - 1.0).abs() < 1e-12);
+    let f_want = end.force + 0.1 * end.stiffness + c * u * u / (1.0 - u);
+    assert!((past.force / f_want - 1.0).abs() < 1e-12);
     let just = law.response(0.5 * (1.0 + 1e-12));
     assert!((just.force / end.force - 1.0).abs() < 1e-9);
 }

@@ -15,7 +15,7 @@ use crate::errors::law_error;
 /// Every method taking `delta` [m] (the compression, >= 0 in contact; x = delta / R) accepts
 /// a number (returns a float) or an array-like of numbers (returns a float64 array of the
 /// same shape). By default they are the law's hot path, as inside a rapier step: `delta <= 0`
-/// is no contact (0), past `delta_max` the documented tangent extension is used; as in numpy,
+/// is no contact (0), past `delta_max` the documented extension (a barrier at the wall) is used; as in numpy,
 /// a NaN or infinite `delta` gives NaN (the law is defined for finite compressions). With
 /// `checked=True` a negative, non-finite or past-`delta_max` value raises `ParameterError` /
 /// `OutOfRangeError` naming `delta` instead. None or a string is an `ArgumentTypeError`.

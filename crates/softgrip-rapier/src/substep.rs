@@ -58,20 +58,30 @@ impl Default for SoftAccuracy {
     }
 }
 
-/// The compression at which `W(delta_est) = W(delta) + kinetic` (Newton on W, W' = F).
-pub(crate) fn delta_estimate(law: &ContactLaw, delta: f64, kinetic: f64) -> f64 {
+/// The compression at which `W(delta_est) = W(delta) + kinetic + P (delta_est - delta)`
+/// (Newton on that balance, `W' = F`), where `P` is `push` \[N\] (the external load pressing
+/// the contact) when it is more than the law's range holds (`force_max`), else 0: a load past
+/// the range runs into the extension's barrier, and its work over the run is what the barrier
+/// must absorb. A load within the range leaves the estimate as it was.
+pub(crate) fn delta_estimate(law: &ContactLaw, delta: f64, kinetic: f64, push: f64) -> f64 {
     let d0 = delta.max(0.0);
-    if !(kinetic > 0.0) {
+    let push = if push > law.force_max() { push } else { 0.0 };
+    if !(kinetic > 0.0) && (push == 0.0 || law.response(d0).force >= push) {
+        // At rest, and the law holds the load where it is: no run.
         return d0;
     }
+    let kinetic = kinetic.max(0.0);
     let target = law.energy(d0) + kinetic;
     let p = law.params();
     // Hertz start: W = (8/15) E* sqrt(R) d^(5/2).
     let hertz = (15.0 / 8.0 * target / (p.effective_modulus() * p.radius().sqrt())).powf(0.4);
     let mut d = hertz.max(d0);
-    for _ in 0..30 {
-        let f = law.response(d).force;
-        let g = law.energy(d) - target;
+    // Against a load the root may be nearly double (the load just above the force at
+    // `delta`), where Newton only halves its distance per pass: more passes then.
+    let passes = if push > 0.0 { 120 } else { 30 };
+    for _ in 0..passes {
+        let f = law.response(d).force - push;
+        let g = law.energy(d) - target - push * (d - d0);
         if !(f > 0.0) {
             d *= 2.0;
             continue;
@@ -86,13 +96,16 @@ pub(crate) fn delta_estimate(law: &ContactLaw, delta: f64, kinetic: f64) -> f64 
     if d.is_finite() { d } else { d0 }
 }
 
-/// Substeps needed by one contact (1 = none).
+/// Substeps needed by one contact (1 = none); `push` \[N\] is the external load pressing it
+/// ([`delta_estimate`]).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn substeps_for(
     law: &ContactLaw,
     radius: f64,
     delta: f64,
     vn: f64,
     mobility: f64,
+    push: f64,
     dt: f64,
     theta: f64,
 ) -> u32 {
@@ -110,7 +123,8 @@ pub(crate) fn substeps_for(
         return 1;
     }
     let kinetic = 0.5 * m_eff * vn * vn;
-    if delta > 0.0 {
+    let overloaded = push > law.force_max();
+    if delta > 0.0 && !overloaded {
         // Quick accept of a quasi-static touching contact, without the energy inversion: a
         // kinetic energy below 1e-3 F delta moves the estimate by about 1e-3 delta, where the
         // stiffness (hence omega) cannot fall by the factor 4 that the halved threshold
@@ -125,12 +139,17 @@ pub(crate) fn substeps_for(
             }
         }
     }
-    let d_est = delta_estimate(law, delta, kinetic);
+    let d_est = delta_estimate(law, delta, kinetic, push);
     let omega = (law.response(d_est).stiffness * mobility).sqrt();
     if !(omega > 0.0) {
         return 1;
     }
-    if delta > 0.0 {
+    // A contact pressed by a load past the law's range (`overloaded`) is never taken as
+    // quasi-static: it rests on the extension's barrier, whose force is convex with a pole,
+    // and one update linearised over a whole step from below overshoots it (Newton from below
+    // on a convex function: from 0.985 of the way to the wall, a heavy ball's update landed
+    // 0.3 % of R past the wall). It is resolved at its own frequency at the estimate instead.
+    if delta > 0.0 && !overloaded {
         let amplitude = vn.abs() / omega;
         if amplitude <= AMPLITUDE_FRACTION * delta.max(1e-3 * radius) {
             return 1;

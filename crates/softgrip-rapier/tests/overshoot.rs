@@ -26,7 +26,7 @@ fn pressing_past_chi_l_singularity_to_x095_is_finite_monotonic_and_flagged() {
     let xs: Vec<f64> = (1..=steps)
         .map(|i| 0.5 + 0.45 * i as f64 / steps as f64)
         .collect();
-    let (mut prev, mut worst, mut extended_steps) = (0.0f64, 0.0f64, 0);
+    let (mut prev, mut worst, mut worst_extended, mut extended_steps) = (0.0f64, 0.0f64, 0.0f64, 0);
     for &x in &xs {
         common::move_to(&mut world, finger, Vector::new(0.0, y(x), 0.0));
         world.step();
@@ -37,12 +37,14 @@ fn pressing_past_chi_l_singularity_to_x095_is_finite_monotonic_and_flagged() {
             "not monotonic at x = {x}"
         );
         prev = c.normal_force;
-        worst = worst.max((c.normal_force / law.response(c.delta).force - 1.0).abs());
+        let err = (c.normal_force / law.response(c.delta).force - 1.0).abs();
         if c.x > law.x_max() {
+            worst_extended = worst_extended.max(err);
             assert_eq!(c.regime, Regime::Extended);
             assert!(c.validity_excursion());
             extended_steps += 1;
         } else {
+            worst = worst.max(err);
             assert_eq!(c.regime, Regime::Valid);
         }
     }
@@ -56,13 +58,21 @@ fn pressing_past_chi_l_singularity_to_x095_is_finite_monotonic_and_flagged() {
         assert!(common::all_finite(&world));
     }
     println!(
-        "overshoot to x = 0.95: F = {at_095:.1} N (law's extension {:.1} N, F at x_max = {:.1} N), worst |F/law - 1| = {worst:.2e}, {extended_steps} flagged steps, excursions counted {}",
+        "overshoot to x = 0.95: F = {at_095:.1} N (law's extension {:.1} N, F at x_max = {:.1} N), worst |F/law - 1| = {worst:.2e} in the range, {worst_extended:.2e} past it, {extended_steps} flagged steps, excursions counted {}",
         law.response(0.95 * r).force,
         law.force_max(),
         counters.validity_excursions
     );
-    // The README states 0.32 % and 29 flagged steps (asserted < 1 % and > 20).
-    assert!(worst < 0.005, "{worst}, README: 0.32 %");
+    // The README states 0.30 % in the range, 1.09 % in the extension (the barrier's
+    // curvature: the step's force lags the end-of-step law by about K d_delta / 2F as the finger
+    // moves 0.005 R a step) and 29 flagged steps.
+    assert!(worst < 0.005, "{worst}, README: 0.30 %");
+    assert!(worst_extended < 0.015, "{worst_extended}, README: 1.09 %");
+    // The barrier: past x_max the force grows to about 10 times F(x_max) at x = 0.95.
+    assert!(
+        (at_095 / 7434.1 - 1.0).abs() < 1e-3,
+        "{at_095}, README: 7434 N"
+    );
     assert!((26..=32).contains(&extended_steps), "README: 29");
     // The counter counts evaluations at the start of a step, the readout flags its end: the
     // first flagged step started inside the range.

@@ -69,6 +69,9 @@ impl Step<'_> {
             let delta = compression_from_signed_distance(self.soft.geoms[*gi].dist);
             let mut vn = solve::normal_velocity(table, row);
             let mut k_drive = 1;
+            let w = solve::normal_mobility(table, row);
+            // The external load pressing the contact (acceleration into it over the mobility).
+            let push = (-solve::normal_external_acceleration(table, row)).max(0.0) / w;
             if delta > 0.0 {
                 let passive = solve::passive_normal_velocity(table, row);
                 let drive = vn - passive;
@@ -81,8 +84,7 @@ impl Step<'_> {
                 let known = a * dt + drive.abs() / k_drive as f64;
                 vn = passive.signum() * (passive.abs() - known).max(0.0);
             }
-            let w = solve::normal_mobility(table, row);
-            let k = substep::substeps_for(&model.law, model.radius, delta, vn, w, dt, theta)
+            let k = substep::substeps_for(&model.law, model.radius, delta, vn, w, push, dt, theta)
                 .max(k_drive);
             n = n.max(k);
         }
