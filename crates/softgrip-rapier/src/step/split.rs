@@ -2,6 +2,7 @@
 //! an unsplit one (`carry_unsplit`).
 
 use nalgebra::Vector3;
+use softgrip_law::ContactLaw;
 
 use super::Step;
 use crate::boundary::{to_f32, to_f64};
@@ -55,7 +56,11 @@ impl Step<'_> {
     ///   excess is resolved as an impact (`substep::substeps_for`);
     /// - the motors' push, a force, which a substep's update balances against the law
     ///   linearised at the substep's start: enough substeps that the push's free run over one
-    ///   stays within [`DRIVE_RUN_FRACTION`] of the compression ([`drive_substeps`]).
+    ///   stays within [`DRIVE_RUN_FRACTION`] of the compression ([`drive_substeps`]); or, for
+    ///   a contact whose force is far below the push (not held by its motors, but driven into
+    ///   or pulled off: [`far_below_push`]), enough that its oscillation at the stiffness it
+    ///   reaches in the step is resolved as an impact's, if that is fewer. Either keeps the
+    ///   substep's update in the range where it holds.
     ///
     /// Read as an approach velocity, the push was the motor's free run over a whole step
     /// (0.21 m/s for a gripper pad holding 5 N, against 5 um/s of real motion), and a held
@@ -68,14 +73,20 @@ impl Step<'_> {
         for ((row, model), gi) in scratch.rows.iter().zip(&scratch.models).zip(&scratch.geom) {
             let delta = compression_from_signed_distance(self.soft.geoms[*gi].dist);
             let mut vn = solve::normal_velocity(table, row);
-            let mut k_drive = 1;
             let w = solve::normal_mobility(table, row);
+            let mut k_drive = 1;
             // The external load pressing the contact (acceleration into it over the mobility).
             let push = (-solve::normal_external_acceleration(table, row)).max(0.0) / w;
             if delta > 0.0 {
                 let passive = solve::passive_normal_velocity(table, row);
                 let drive = vn - passive;
                 k_drive = drive_substeps(drive, delta, model.radius, dt);
+                if k_drive > 1 {
+                    let far = far_below_push(&model.law, delta, passive, drive, w, dt, theta);
+                    if let Some(k) = far {
+                        k_drive = k_drive.min(k);
+                    }
+                }
                 // A touching contact's velocity is known only up to the velocity increment of
                 // one step of its external accelerations and of one substep of its motors'
                 // push (rapier's stored velocity lags or leads the true one by up to that):
@@ -121,6 +132,106 @@ fn drive_substeps(drive: f64, delta: f64, radius: f64, dt: f64) -> u32 {
         return 1;
     }
     (run.ceil() as u32).clamp(1, substep::MAX_SUBSTEPS)
+}
+
+/// The fraction of its motors' push below which a touching contact's force is "far below" it
+/// ([`far_below_push`]): the push then drives the contact to at least twice its force (into
+/// it) or off it (away), so the law linearised at the current compression describes neither
+/// the substep nor the step, and the contact is not held by its motors.
+pub(crate) const FAR_BELOW_PUSH: f64 = 0.5;
+
+/// Substeps for a touching contact (compression `delta` \[m\], normal separation velocity
+/// without the motors `passive` \[m/s\], normal mobility `w` \[1/kg\]) whose motors' push
+/// over a step of `dt` \[s\] (`drive` \[m/s\], the normal velocity they would add if the
+/// contact were not there; > 0 pulls the contact apart) is a force `F_push = |drive| / (w dt)`
+/// far above its own, `F(delta) < FAR_BELOW_PUSH F_push`; `None` when it is not (a held
+/// contact: [`drive_substeps`] counts it).
+///
+/// Such a contact is not held by its motors; it is an impact or a release, and needs what an
+/// impact needs (`substep::substeps_for`): `omega h <= theta` at the largest stiffness it can
+/// reach in the step, `omega = sqrt(K w)`. The step takes the fewer of this count and
+/// [`drive_substeps`]'s (each keeps a substep's update where it holds: the latter the push's
+/// run within the law's linearisation, this one the contact's phase).
+/// - Pushed into the contact: an approach under a constant force. Its deepest point `d` is
+///   where the law's energy has taken the push's work and the passive motion's kinetic energy,
+///   `W(d) - W(delta) = F_push (d - delta) + v_in^2 / (2 w)` (`v_in` the passive approach
+///   speed); `K` is the law's stiffness there (past the stall compression, where the law
+///   balances the motors' force). `None` if the law has no stiffness there (frozen past its
+///   validity): [`drive_substeps`] counts it.
+/// - Pulled off the contact: its compression only falls until it lets go (or until the bodies
+///   holding the link stop the pull), so its stiffness stays at most `K(delta)`.
+///
+/// Counted as a held contact instead, the free run of the push over a substep against a
+/// barely touching pad (0.1 mm, 0.04 N, a distal link of the three-finger hand whose motor
+/// pushed 65 N jammed far from its target) asked 1000-2000 substeps a step.
+fn far_below_push(
+    law: &ContactLaw,
+    delta: f64,
+    passive: f64,
+    drive: f64,
+    w: f64,
+    dt: f64,
+    theta: f64,
+) -> Option<u32> {
+    let push = drive.abs() / (w * dt);
+    let here = law.response(delta);
+    if !(push.is_finite() && here.force < FAR_BELOW_PUSH * push) {
+        return None;
+    }
+    let stiffness = if drive > 0.0 {
+        here.stiffness
+    } else {
+        let kinetic = 0.5 * passive.min(0.0).powi(2) / w;
+        let deepest = deepest_under_push(law, delta, push, kinetic)?;
+        law.response(deepest).stiffness
+    };
+    let omega = (stiffness * w).sqrt();
+    if !(omega > 0.0 && omega.is_finite()) {
+        return None;
+    }
+    let n = (omega * dt / theta).ceil();
+    Some(if n >= substep::MAX_SUBSTEPS as f64 {
+        substep::MAX_SUBSTEPS
+    } else {
+        (n as u32).max(1)
+    })
+}
+
+/// The compression `d > delta` \[m\] where `W(d) - W(delta) = push (d - delta) + kinetic`
+/// (`push` \[N\], `kinetic` \[J\]): the deepest point of a contact driven by a constant
+/// force `push` from `delta` with `kinetic` energy of approach. `None` if the law never
+/// takes that energy (its force frozen below `push`, past its validity).
+fn deepest_under_push(law: &ContactLaw, delta: f64, push: f64, kinetic: f64) -> Option<f64> {
+    let w0 = law.energy(delta);
+    let excess = |d: f64| law.energy(d) - w0 - push * (d - delta) - kinetic;
+    // Bracket: `excess` is negative just past `delta` (the law's force is below the push) and
+    // grows once the force passes it; double the step until it is positive.
+    let mut lo = delta;
+    let mut hi = delta + delta.max(1e-9);
+    let mut found = false;
+    for _ in 0..80 {
+        if excess(hi) > 0.0 {
+            found = true;
+            break;
+        }
+        lo = hi;
+        hi = delta + 2.0 * (hi - delta);
+    }
+    if !found {
+        return None;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if excess(mid) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+        if hi - lo <= 1e-9 * hi {
+            break;
+        }
+    }
+    Some(hi)
 }
 
 /// The velocity a body's soft contacts held against its external acceleration `a`
