@@ -277,6 +277,7 @@ fn tip_summary<'py>(py: Python<'py>, t: &TipSummary) -> PyResult<Bound<'py, PyDi
     d.set_item("peak_radius", t.peak_radius)?;
     d.set_item("slips", t.slips)?;
     d.set_item("validity_excursions", t.validity_excursions)?;
+    d.set_item("excursion_time", t.excursion_time)?;
     d.set_item("commanded_depth", t.commanded_depth)?;
     d.set_item("squeeze_force", t.squeeze_force)?;
     d.set_item("squeeze_delta", t.squeeze_delta)?;

@@ -57,6 +57,7 @@ SUMMARY_FIELDS: Dict[str, Tuple[str, str]] = {
     "peak_radius": ("m", "largest contact radius (run only)"),
     "slips": ("count", "slip events (a contact started sliding)"),
     "validity_excursions": ("count", "times a contact went past the level's validity range"),
+    "excursion_time": ("s", "how long its contacts were past the validity range, in all (run only)"),
     "commanded_depth": ("m", "the gripper's commanded squeeze depth, or None off a gripper (run only)"),
     "squeeze_force": ("N", "the force at the end of the squeeze, or None (run only)"),
     "squeeze_delta": ("m", "the compression at the end of the squeeze, or None (run only)"),
