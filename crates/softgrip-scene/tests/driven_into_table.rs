@@ -502,7 +502,7 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// m/s, pads at most 47 N, rapier's table contacts at most 432 N on the links, 1167
 /// degenerate solves.
 #[test]
-#[ignore = "passes, but too slow for the suite's debug run: 10 408 substeps (none at the cap), 77 s in debug alone on the loaded 2-core machine (the file took 279 s with it and the impulse-jointed descent un-ignored); run it with `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its bounds since the extension's barrier past x_max (session 17): pad force 4.9e8 N > 450 N (a pad compressed past its wall by the palm's jam), 98 312 substeps (21 at the cap), links at most 0.08 m/s, 539 s in release; before the barrier it passed with 10 408 substeps (77 s in debug); softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
     assert!(d.held > 30, "{d:?}");
@@ -570,7 +570,7 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// 4 mm for 20 steps of 470-510 substeps while the compression hardly changes, rapier's
 /// unconverged impulse-joint solve), 11861 substeps, none at the cap.
 #[test]
-#[ignore = "passes, but too slow for the suite's debug run: 11 861 substeps (none at the cap), 48 s of CPU in debug (118 s wall beside a build); run it with `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its bounds since the extension's barrier past x_max (session 17): pads 648 N > 320 N, 38 236 substeps > 13 500, links at most 3.97 m/s (the palm's jam compresses a pad past its wall; softgrip-rapier README, Limits (a')); before the barrier it passed with 11 861 substeps; `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
