@@ -302,10 +302,11 @@ impl SoftContacts {
     /// the normal and capped by the Coulomb disk, instead of a hard stick with a positional
     /// correction of 0.3 of the offset per step. It cuts the coupled solve's passes (the
     /// default grasp: 31.6 to 8.3 a solve) and gives the fingertip's elastic shear (a held box
-    /// sags by its share of the weight over `k_t`), but a box pressed against a wall by a free
-    /// tip does not settle with it (rapier's own contact corrections move the box against the
-    /// compliant spring), so it is not the default. Off: the physics is bit-identical to
-    /// before the switch existed.
+    /// sags by its share of the weight over `k_t`). With it, rapier's part of the rigid
+    /// supports' normal impulses is split per pair of bodies instead of per point (the box
+    /// pressed against a wall by a free tip settles with it since session 18). It is not the
+    /// default: several hold bounds of the crate's tests encode the rigid stick (crate README,
+    /// Limits). Off: the physics is bit-identical to before the switch existed.
     pub fn set_friction_spring(&mut self, on: bool) {
         self.friction_spring = on;
     }
