@@ -631,8 +631,8 @@ fn impulse_bound(bodies: &[BodyState], rows: &[Scalar], mob: &DMatrix<f64>, h: f
             sum += (r.velocity(bodies) - r.target).abs() / w;
         }
         sum += r.prox.abs();
-        if let Kind::SoftNormal { force, .. } = r.kind {
-            sum += h * force.abs();
+        if let Kind::SoftNormal { force, d } = r.kind {
+            sum += h * force.abs() / (1.0 + h * d * w.max(0.0));
         }
     }
     sum
@@ -1123,8 +1123,9 @@ fn speed_ratio(bodies: &[BodyState], rows: &[Scalar], parts: &[(f64, f64)], h: f
         }
         start = start.max(u0.abs() + kin.abs() + r.target.abs());
         end = end.max(r.velocity_parts(bodies).0.abs());
-        if let Kind::SoftNormal { force, .. } = r.kind {
-            soft = soft.max(h * force.abs() * mobility(bodies, r, r));
+        if let Kind::SoftNormal { force, d } = r.kind {
+            let w = mobility(bodies, r, r);
+            soft = soft.max(h * force.abs() * w / (1.0 + h * d * w.max(0.0)));
         }
     }
     if end == 0.0 {

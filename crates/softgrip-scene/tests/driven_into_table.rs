@@ -65,6 +65,8 @@ struct Down {
     substeps: u64,
     /// Steps at the substep cap (`SoftCounters::substep_cap_hits`).
     cap_hits: u64,
+    /// Contact evaluations past the law's wall, solved as rigid (`SoftCounters::past_wall`).
+    past_wall: u64,
 }
 
 /// Runs `scene` to its end checking each step that every link's pose and velocity and every
@@ -134,6 +136,7 @@ fn run_down(scene: &Scene, object: &str) -> Down {
     out.degenerate = c.coupled_degenerate;
     out.substeps = c.substeps_total;
     out.cap_hits = c.substep_cap_hits;
+    out.past_wall = c.past_wall;
     eprintln!("{out:?}");
     out
 }
