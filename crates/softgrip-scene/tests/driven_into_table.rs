@@ -470,9 +470,19 @@ fn hand_descent(depth: f64, box_away: bool) -> Down {
 /// extension's barrier past `x_max` (session 17, `softgrip_law`'s `extension.rs`) the run
 /// diverges at step 66 (`StepError::Diverged`, `hand/f0_distal` at 1.5e8 m/s, pads at 13.5 /
 /// 0.08 / 0.03 N), and bit for bit the same with the barrier's substep load left out of every
-/// row on a link: not the substep count, the barrier itself (not investigated further).
+/// row on a link: not the substep count, the barrier itself.
+///
+/// Session 18: the palm's jam drives a pad past its wall (x up to 2.4), where the barrier's
+/// tangent (6.7e16 N/m, 1e14 N) asked the bodies to undo the whole penetration in one
+/// substep, and the coupled solve's checks added that row's raw `h F` to their scales, so
+/// they accepted a wild answer. Past its wall a contact is now a rigid row (the fingertip's
+/// rigid part has met the box: rapier's position correction, `softgrip_rapier`'s
+/// `step::rigid_past_wall`), asks no substeps, and the checks scale a soft row by its implicit
+/// reach `h F / (1 + h D w_ii)`. Measured (release): 5496 substeps (none at the cap), links at
+/// most 0.27 m/s, pads at most 232 N, rapier's table contacts at most 1.3 kN on the links, 1163
+/// degenerate solves, 1113 contact evaluations past a wall; the box ends the hold squeezed 20
+/// mm above its start, one pad at 22.5 N (22.5 / 1.8 / 1.8 N).
 #[test]
-#[ignore = "diverges at step 66 since the extension's barrier past x_max (session 17) joined the substep rule that made it pass (7863 substeps, 32 s in release without the barrier); softgrip-rapier README, Limits, the driven descents"]
 fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.02, false);
     assert!(d.held > 30, "{d:?}");
@@ -481,7 +491,8 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     assert!(d.pad_force < 2000.0, "{d:?}: pad force");
     assert!(d.table_force < 2e5, "{d:?}: table force");
     assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
-    assert!(d.substeps < 9000, "{d:?}: substeps (7863 measured)");
+    assert!(d.substeps < 9000, "{d:?}: substeps (5496 measured)");
+    assert!(d.past_wall > 0, "{d:?}: no pad was driven past its wall");
 }
 
 /// The three-finger hand closed on nothing (its box 0.5 m away: the pads press each other at
@@ -505,7 +516,7 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// m/s, pads at most 47 N, rapier's table contacts at most 432 N on the links, 1167
 /// degenerate solves.
 #[test]
-#[ignore = "fails its bounds since the extension's barrier past x_max (session 17): pad force 4.9e8 N > 450 N (a pad compressed past its wall by the palm's jam), 98 312 substeps (21 at the cap), links at most 0.08 m/s, 539 s in release; before the barrier it passed with 10 408 substeps (77 s in debug); softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its bounds (session 18, contacts past their wall solved as rigid): pad force 608 N > 450 N, 96 787 substeps (22 at the cap), links at most 0.30 m/s, table 430 N; the substeps are approach estimates of pads 7 mm apart whose jammed links' stored velocities read 1.8-2.3 m/s, an impact estimated past the wall (the barrier's tangent stiffness); softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
     assert!(d.held > 30, "{d:?}");
@@ -573,7 +584,7 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// 4 mm for 20 steps of 470-510 substeps while the compression hardly changes, rapier's
 /// unconverged impulse-joint solve), 11861 substeps, none at the cap.
 #[test]
-#[ignore = "fails its bounds since the extension's barrier past x_max (session 17): pads 648 N > 320 N, 38 236 substeps > 13 500, links at most 3.97 m/s (the palm's jam compresses a pad past its wall; softgrip-rapier README, Limits (a')); before the barrier it passed with 11 861 substeps; `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its bounds (session 18, the coupled checks scaled by a soft row's implicit reach): the pads let go of the box (0 / 0 / 0 N at the end of the hold), rapier's table contacts 629 N > 500 N on the links; pads at most 78 N, 1689 substeps, links at most 4.46 m/s, no contact past its wall; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
