@@ -573,7 +573,8 @@ impl Step<'_> {
             row.damping = model.alpha * resp.force;
             row.theta = update_blend(resp.stiffness, w, h, capped);
             let wall = past_wall(&model.law, delta);
-            if wall > 0.0 {
+            row.past_wall = wall > 0.0;
+            if row.past_wall {
                 rigid_past_wall(row, &model.law, delta, wall, h, &rigid_bias);
                 soft.counters.past_wall += 1;
             }
@@ -732,6 +733,7 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         sliding: false,
         vn_end: 0.0,
         extended: false,
+        past_wall: false,
         friction_mobility: None,
         lin: 0.0,
     }
