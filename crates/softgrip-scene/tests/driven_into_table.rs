@@ -477,11 +477,12 @@ fn hand_descent(depth: f64, box_away: bool) -> Down {
 /// substep, and the coupled solve's checks added that row's raw `h F` to their scales, so
 /// they accepted a wild answer. Past its wall a contact is now a rigid row (the fingertip's
 /// rigid part has met the box: rapier's position correction, `softgrip_rapier`'s
-/// `step::rigid_past_wall`), asks no substeps, and the checks scale a soft row by its implicit
-/// reach `h F / (1 + h D w_ii)`. Measured (release): 5496 substeps (none at the cap), links at
-/// most 0.27 m/s, pads at most 232 N, rapier's table contacts at most 1.3 kN on the links, 1163
-/// degenerate solves, 1113 contact evaluations past a wall; the box ends the hold squeezed 20
-/// mm above its start, one pad at 22.5 N (22.5 / 1.8 / 1.8 N).
+/// `step::rigid_past_wall`), asks no substeps, and the checks scale such a row by its implicit
+/// reach `h F / (1 + h D w_ii)`. Measured (release, bit for bit the same in debug): 7911
+/// substeps (none at the cap), links at most 0.25 m/s, pads at most 232 N, rapier's table
+/// contacts at most 1.4 kN on the links, 1104 degenerate solves, 1270 contact evaluations past
+/// a wall; the box ends the hold squeezed 21 mm above its start (pads 2.9 / 1.0 / 11.8 N): a
+/// wedge under a kinematic palm is not bounded by the 2 N m motors.
 #[test]
 fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.02, false);
@@ -491,7 +492,7 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     assert!(d.pad_force < 2000.0, "{d:?}: pad force");
     assert!(d.table_force < 2e5, "{d:?}: table force");
     assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
-    assert!(d.substeps < 9000, "{d:?}: substeps (5496 measured)");
+    assert!(d.substeps < 9000, "{d:?}: substeps (7911 measured)");
     assert!(d.past_wall > 0, "{d:?}: no pad was driven past its wall");
 }
 
@@ -516,7 +517,7 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// m/s, pads at most 47 N, rapier's table contacts at most 432 N on the links, 1167
 /// degenerate solves.
 #[test]
-#[ignore = "fails its bounds (session 18, contacts past their wall solved as rigid): pad force 608 N > 450 N, 96 787 substeps (22 at the cap), links at most 0.30 m/s, table 430 N; the substeps are approach estimates of pads 7 mm apart whose jammed links' stored velocities read 1.8-2.3 m/s, an impact estimated past the wall (the barrier's tangent stiffness); softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its bounds since the barrier past x_max: session 18 (contacts past their wall rigid, the checks scaling every soft row by its reach): pad force 608 N > 450 N, 96 787 substeps (22 at the cap), links at most 0.30 m/s; the substeps are approach estimates of pads 7 mm apart whose jammed links' stored velocities read 1.8-2.3 m/s, an impact estimated past the wall; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
     assert!(d.held > 30, "{d:?}");
@@ -584,7 +585,7 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// 4 mm for 20 steps of 470-510 substeps while the compression hardly changes, rapier's
 /// unconverged impulse-joint solve), 11861 substeps, none at the cap.
 #[test]
-#[ignore = "fails its bounds (session 18, the coupled checks scaled by a soft row's implicit reach): the pads let go of the box (0 / 0 / 0 N at the end of the hold), rapier's table contacts 629 N > 500 N on the links; pads at most 78 N, 1689 substeps, links at most 4.46 m/s, no contact past its wall; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its bounds with the barrier past x_max: pads 648 N > 320 N, 38 236 substeps > 13 500 (session 17 and 18 alike, bit for bit), links at most 3.97 m/s; no pad passes its wall (session 18's rigid rows never engage): the barrier below the wall itself; before the barrier it passed with 11 861 substeps; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
