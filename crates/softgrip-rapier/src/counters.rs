@@ -18,6 +18,12 @@ pub struct SoftCounters {
     pub substep_cap_hits: u64,
     /// Contact evaluations past the law's validity range (`Regime::Extended`).
     pub validity_excursions: u64,
+    /// Contact evaluations past the law's wall (`ContactLaw::x_wall`: the fingertip's rigid
+    /// part at the surface it presses), one per contact per substep, total; also counted in
+    /// `validity_excursions`. Such a contact is solved as a rigid one, as rapier solves its
+    /// own (crate README, Past a law's validity). A free body never gets there (the barrier
+    /// stops it); a kinematic jam does (a palm driving a pad into a box the table holds).
+    pub past_wall: u64,
     /// Contacts skipped because a pose, velocity, distance or impulse was not finite.
     pub non_finite: u64,
     /// Candidate pairs that parry could not compute (unsupported shape pair).

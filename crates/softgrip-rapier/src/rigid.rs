@@ -119,8 +119,9 @@ const CONVERGED: f64 = 1e-6;
 /// What a scalar row is.
 #[derive(Debug, Clone, Copy)]
 enum Kind {
-    /// A soft normal: `force`, `d = theta K h + c`.
-    SoftNormal { force: f64, d: f64 },
+    /// A soft normal: `force`, `d = theta K h + c`; `rigid`: past its law's wall, a rigid row
+    /// (`step::rigid_past_wall`).
+    SoftNormal { force: f64, d: f64, rigid: bool },
     /// A hard unilateral normal.
     HardNormal,
     /// A tangential impulse of the contact whose normal is row `normal`, paired with row
@@ -363,7 +364,11 @@ fn build(
             r.b,
             &r.p,
             &r.n,
-            Kind::SoftNormal { force: r.force, d },
+            Kind::SoftNormal {
+                force: r.force,
+                d,
+                rigid: r.past_wall,
+            },
         ));
         if r.mu > 0.0 {
             // The friction spring (`solve::spring`).
@@ -617,6 +622,18 @@ const LOCKED_FACTOR: f64 = 2.0;
 /// 3.0e3 rad/s in that substep (session 17).
 const SPEED_FACTOR: f64 = 10.0;
 
+/// What a soft normal's law impulse `h F` is divided by in the checks' scales
+/// ([`impulse_bound`], [`speed_ratio`]): 1, or for a `rigid` row (past its law's wall,
+/// `step::rigid_past_wall`) `1 + h D w_ii` (`hdw`), the implicit row's own reach. Such a row's
+/// `F` is the barrier's at the wall (1e8 N and more on the three-finger hand's pad), and its
+/// raw `h F` made every answer of its group pass the checks (a wild one diverged, session 17).
+/// Below the wall the raw `h F` stays: with the reach there, an impulse-jointed finger's
+/// answers (its pad's own `w_ii` far above what its joints leave) were all found degenerate
+/// and its pad read 0 N (`tests/jointed.rs`).
+fn reach_factor(rigid: bool, hdw: f64) -> f64 {
+    if rigid { 1.0 + hdw } else { 1.0 }
+}
+
 /// The impulse scale of a group \[N s\]: each mobile row's impulse that would stop it alone,
 /// `|v0 - target| / w_ii` (`v0` its velocity before the solve, `w_ii` its own mobility), plus
 /// each soft normal's law force over the step `h F` and each hard normal's rapier part
@@ -631,8 +648,8 @@ fn impulse_bound(bodies: &[BodyState], rows: &[Scalar], mob: &DMatrix<f64>, h: f
             sum += (r.velocity(bodies) - r.target).abs() / w;
         }
         sum += r.prox.abs();
-        if let Kind::SoftNormal { force, .. } = r.kind {
-            sum += h * force.abs();
+        if let Kind::SoftNormal { force, d, rigid } = r.kind {
+            sum += h * force.abs() / reach_factor(rigid, h * d * w.max(0.0));
         }
     }
     sum
@@ -889,7 +906,7 @@ fn lu_pass(
     b.resize(n, 0.0);
     for (r, &i) in lu.iter().enumerate() {
         match rows[i].kind {
-            Kind::SoftNormal { force, d } => b[r] = h * (force - d * v0[r]),
+            Kind::SoftNormal { force, d, .. } => b[r] = h * (force - d * v0[r]),
             _ if w(r, r) == 0.0 => {}
             // The compliance acts on the change from rapier's own part (`prox`): among
             // redundant rows it picks the answer closest to what rapier makes anyway.
@@ -1174,8 +1191,9 @@ fn speed_ratio(bodies: &[BodyState], rows: &[Scalar], parts: &[(f64, f64)], h: f
         }
         start = start.max(u0.abs() + kin.abs() + r.target.abs());
         end = end.max(r.velocity_parts(bodies).0.abs());
-        if let Kind::SoftNormal { force, .. } = r.kind {
-            soft = soft.max(h * force.abs() * mobility(bodies, r, r));
+        if let Kind::SoftNormal { force, d, rigid } = r.kind {
+            let w = mobility(bodies, r, r);
+            soft = soft.max(h * force.abs() * w / reach_factor(rigid, h * d * w.max(0.0)));
         }
     }
     if end == 0.0 {

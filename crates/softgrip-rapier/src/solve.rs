@@ -148,6 +148,8 @@ pub(crate) struct Row {
     pub vn_end: f64,
     /// The compression is past the law's validity range (`Regime::Extended`).
     pub extended: bool,
+    /// The compression is past the law's wall: a rigid row (`step::rigid_past_wall`).
+    pub past_wall: bool,
     /// Inverse tangential mobility (`None`: no tangential mobility) and torsional mobility
     /// [1/(kg m^2)]: constant over a solve, computed once at its start.
     pub friction_mobility: Option<(Option<Matrix2<f64>>, f64)>,

@@ -528,6 +528,7 @@ impl Step<'_> {
         let capped = substeps >= substep::MAX_SUBSTEPS || substeps == 1;
         s.stamp = s.stamp.wrapping_add(1);
         let stamp = s.stamp;
+        let rigid_bias = RigidBias::of(&self.physics.integration_parameters, h);
         let soft = &mut self.soft;
         for (((row, model), &gi), &w) in s
             .rows
@@ -571,6 +572,12 @@ impl Step<'_> {
             row.stiffness = resp.stiffness;
             row.damping = model.alpha * resp.force;
             row.theta = update_blend(resp.stiffness, w, h, capped);
+            let wall = past_wall(&model.law, delta);
+            row.past_wall = wall > 0.0;
+            if row.past_wall {
+                rigid_past_wall(row, &model.law, delta, wall, h, &rigid_bias);
+                soft.counters.past_wall += 1;
+            }
             if model.friction > 0.0 && (model.torsion || soft.friction_spring) {
                 // The torsion limit (the integral of mu p r dA over the law's pressure
                 // profile, per unit normal force) and the friction spring read the patch.
@@ -726,6 +733,7 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         sliding: false,
         vn_end: 0.0,
         extended: false,
+        past_wall: false,
         friction_mobility: None,
         lin: 0.0,
     }
@@ -737,6 +745,64 @@ const MAX_RIGID_ROWS: usize = 32;
 
 /// The component of `d` along the unit normal `n`.
 #[inline]
+/// How far past its wall a contact of compression `delta` \[m\] is \[m\] (`> 0` past it; the
+/// wall `ContactLaw::x_wall` times the law's radius: where the fingertip's rigid part meets the
+/// surface it presses).
+pub(crate) fn past_wall(law: &softgrip_law::ContactLaw, delta: f64) -> f64 {
+    delta - law.x_wall() * law.params().radius()
+}
+
+/// rapier's position correction of its own contacts over a (sub)step of `h` \[s\]
+/// (`IntegrationParameters`: `contact_softness.erp_inv_dt(h)` \[1/s\], the separation
+/// velocity asked per metre of penetration, and `max_corrective_velocity()` \[m/s\], its cap).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RigidBias {
+    erp_inv_dt: f64,
+    max_velocity: f64,
+}
+
+impl RigidBias {
+    pub(crate) fn of(p: &rapier3d::prelude::IntegrationParameters, h: f64) -> Self {
+        Self {
+            erp_inv_dt: p.contact_softness.erp_inv_dt(h as f32) as f64,
+            max_velocity: p.max_corrective_velocity() as f64,
+        }
+    }
+
+    /// The separation velocity rapier asks of a contact `depth` \[m\] deep \[m/s\].
+    fn velocity(&self, depth: f64) -> f64 {
+        let v = (self.erp_inv_dt * depth).min(self.max_velocity);
+        if v.is_finite() { v.max(0.0) } else { 0.0 }
+    }
+}
+
+/// `row`, of a contact compressed `depth` \[m\] past its law's wall (`delta` \[m\] in all),
+/// made a rigid contact as rapier makes its own: the fingertip's rigid part has met the surface.
+///
+/// The row's equation is `v(end) + j / (h D) = F / D` (`D = theta K h + c`). Past the wall the
+/// law is the barrier's tangent just short of it (about `1e12` times its scale over its range:
+/// 6.7e16 N/m, 1e14 N for the three-finger hand's pad), which read as a row asks the bodies
+/// to undo the whole penetration in one substep, `v(end) = depth / h`: a palm driving a pad past
+/// its wall into a box the table holds (a kinematic jam, which no force undoes) took 4.9e8 N.
+/// Here `K` and `F` are the law's at the wall, `theta = 1`, no damping, and the force is
+/// raised by `D v_c`: a hard row whose end separation velocity is `v_c`, rapier's bias for
+/// that depth ([`RigidBias`]: at its default, 9.4 /s times the depth, at most 3 m/s), plus
+/// `F / (K h)` (under a micrometre per substep). Below the wall the law is unchanged.
+fn rigid_past_wall(
+    row: &mut Row,
+    law: &softgrip_law::ContactLaw,
+    delta: f64,
+    depth: f64,
+    h: f64,
+    bias: &RigidBias,
+) {
+    let at = law.response(delta - depth);
+    row.stiffness = at.stiffness;
+    row.theta = 1.0;
+    row.damping = 0.0;
+    row.force = at.force + at.stiffness * h * bias.velocity(depth);
+}
+
 fn n_proj(n: &Vector3<f64>, d: &Vector3<f64>) -> Vector3<f64> {
     n * n.dot(d)
 }

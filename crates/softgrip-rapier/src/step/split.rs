@@ -72,6 +72,12 @@ impl Step<'_> {
         let table = &scratch.body_table.table;
         for ((row, model), gi) in scratch.rows.iter().zip(&scratch.models).zip(&scratch.geom) {
             let delta = compression_from_signed_distance(self.soft.geoms[*gi].dist);
+            if super::past_wall(&model.law, delta) > 0.0 {
+                // A rigid contact (`rigid_past_wall`), as rapier's own: no oscillation to
+                // resolve. The barrier's tangent there (6.7e16 N/m on the three-finger hand's
+                // pad) asked the cap.
+                continue;
+            }
             let mut vn = solve::normal_velocity(table, row);
             let w = solve::normal_mobility(table, row);
             let mut k_drive = 1;
