@@ -386,9 +386,12 @@ def mesh_words(meta):
     """The mesh in a provenance line."""
     c, n = meta["case"], meta["mesh"]["elements"]
     if c.get("dim", 2) == 3:
+        hmax = c["hmax"]
+        if c["geometry"] == "core":  # fe_model3d: at least core_across elements through the skin
+            hmax = min(hmax, c["t"] / c["core_across"])
         s = (f"3D quarter model (symmetry planes x = 0 and z = 0, force = 4 x the quarter's), "
              f"C3D10, element edge R/{c['n']:g} at the pole growing as (1 + {c['beta']:g} d/R) "
-             f"with the distance d from it, at most {c['hmax']:g} mm")
+             f"with the distance d from it, at most {hmax:g} mm")
         if c["counterpart"] == "edge":
             s += (f", R/{c['ridge'] * c['n']:g} along the ridge line growing by "
                   f"{c['g_ridge']:g} per mm away from it")

@@ -211,3 +211,79 @@ fn the_missed_core_curve_is_mesh_converged_to_its_end() {
     assert!(end >= 0.36 - 1e-9, "to x = {end}");
     assert!(worst <= 0.15, "{worst} %");
 }
+
+/// The calibrated core law (E* = 1 Pa, R = 1 m) of a 3D file's t/R and Poisson ratio on its
+/// cylinder or edge.
+fn law_3d_of(file: &FeFile) -> ContactLaw {
+    let nu = file.nu.expect("a Poisson ratio");
+    let thickness = file.thickness_ratio.expect("a core file has t/R");
+    let cp = match file.counterpart {
+        FeCounterpart::Cylinder { k } => Counterpart::try_cylinder(k).expect("a cylinder"),
+        FeCounterpart::Edge => Counterpart::EDGE,
+        other => panic!("{}: a 3D core file on {other:?}", file.path),
+    };
+    let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+        .and_then(|p| p.with_backing(Backing::Core { thickness }))
+        .expect("valid params");
+    ContactLaw::try_new(p, Level::Calibrated)
+        .and_then(|l| l.with_counterpart(cp))
+        .expect("the law binds")
+}
+
+/// The largest force error each 3D curve (session 18: the skin on a core on a cylinder or
+/// the edge, 3D quarter model, held out of every fit: no constant of the law saw a core on
+/// anything but a plane or a ball) is allowed to the FE's end: what this test printed when
+/// the curves landed, rounded up by 0.2 %, so a real change of the law breaks it.
+fn stated_force_error_3d(path: &str) -> f64 {
+    let pct: f64 = match path {
+        // Within 0.7 % to x = 0.15, then too stiff, growing to its FE's end (x = 0.26,
+        // delta/t 0.65): the 3 % just met.
+        "cylinder/core/force_nu0.48_t0.4_k1.csv" => 2.99,
+        other => panic!("{other}: no stated error (run with --nocapture and state it)"),
+    };
+    (pct + 0.2) / 100.0
+}
+
+#[test]
+fn a_skin_on_a_core_on_a_cylinder_or_an_edge_is_within_its_stated_error_of_the_fe() {
+    let mut seen = 0;
+    for file in CORE_COUNTERPART_FILES
+        .iter()
+        .filter(|f| f.schema == Schema::Force3d)
+    {
+        let law = law_3d_of(file);
+        let (err, top) = force_error(file, &law, f64::INFINITY);
+        let plane = ContactLaw::try_new(*law.params(), Level::Calibrated).expect("binds");
+        let (plane_err, _) = force_error(file, &plane, f64::INFINITY);
+        let points = file.points().expect("parses");
+        let fe_end = points.last().expect("points").x;
+        // Where the worst error is and its sign (+: the law too stiff).
+        let (x_worst, signed) = points
+            .iter()
+            .filter(|p| p.x >= 0.01 - 1e-12 && p.x <= law.x_max())
+            .map(|p| (p.x, law.response(p.x).force / p.force_norm - 1.0))
+            .fold((0.0, 0.0), |w, e| if e.1.abs() > f64::abs(w.1) { e } else { w });
+        println!(
+            "{:40} force within {:5.2} % for 0.01 <= x <= {top:.2} ({:+.2} % at x = {x_worst}; as a plane: {:.0} %; law's x_max {:.3}, FE's end {fe_end})",
+            file.path,
+            100.0 * err,
+            100.0 * signed,
+            100.0 * plane_err,
+            law.x_max()
+        );
+        if std::env::var_os("SOFTGRIP_PRINT_CURVES").is_some() {
+            for p in &points {
+                let f = law.response(p.x).force;
+                println!("  x {:.2} fe {:.6} law {:.6} {:+.2} %", p.x, p.force_norm, f, 100.0 * (f / p.force_norm - 1.0));
+            }
+        }
+        assert!(
+            err <= stated_force_error_3d(file.path),
+            "{}: {:.2} %",
+            file.path,
+            100.0 * err
+        );
+        seen += 1;
+    }
+    assert!(seen >= 1, "{seen} curves");
+}
