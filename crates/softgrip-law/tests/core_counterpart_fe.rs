@@ -2,7 +2,10 @@
 //! (`tests/data/fe/ball/core/`, `tools/fe`, session 11: t/R 0.3 and 0.5 at nu 0.48 on balls of
 //! R and 3R; sessions 12-14: t/R 0.3-0.45 at nu 0.3-0.48 on balls of R to 3R; sessions 16-17:
 //! t/R 0.4-0.6 at nu 0.43-0.49 on balls of 0.6 R to 2R): force per curve against the number this test prints, with the 3 % as the
-//! ceiling, and the law's range against the FE's reach.
+//! ceiling, and the law's range against the FE's reach. Session 18: the same skin on cylinders
+//! and the right-angle edge (`tests/data/fe/{cylinder,edge}/core/`, the 3D quarter model, held
+//! out of every fit), force per curve against the number this test printed when they landed
+//! (`SOFTGRIP_PRINT_CURVES=1` prints each point).
 //!
 //! `cargo test -p softgrip-law --test core_counterpart_fe -- --nocapture` prints every number.
 
@@ -239,6 +242,9 @@ fn stated_force_error_3d(path: &str) -> f64 {
         // Within 0.7 % to x = 0.15, then too stiff, growing to its FE's end (x = 0.26,
         // delta/t 0.65): the 3 % just met.
         "cylinder/core/force_nu0.48_t0.4_k1.csv" => 2.99,
+        // Too soft by up to 1.88 % at x = 0.1, then within 0.7 % to x = 0.29, then too soft
+        // again at the law's x_max (0.32, short of the FE's end 0.34): the 3 % met.
+        "cylinder/core/force_nu0.48_t0.4_k3.csv" => 2.92,
         other => panic!("{other}: no stated error (run with --nocapture and state it)"),
     };
     (pct + 0.2) / 100.0
@@ -262,7 +268,10 @@ fn a_skin_on_a_core_on_a_cylinder_or_an_edge_is_within_its_stated_error_of_the_f
             .iter()
             .filter(|p| p.x >= 0.01 - 1e-12 && p.x <= law.x_max())
             .map(|p| (p.x, law.response(p.x).force / p.force_norm - 1.0))
-            .fold((0.0, 0.0), |w, e| if e.1.abs() > f64::abs(w.1) { e } else { w });
+            .fold(
+                (0.0, 0.0),
+                |w, e| if e.1.abs() > f64::abs(w.1) { e } else { w },
+            );
         println!(
             "{:40} force within {:5.2} % for 0.01 <= x <= {top:.2} ({:+.2} % at x = {x_worst}; as a plane: {:.0} %; law's x_max {:.3}, FE's end {fe_end})",
             file.path,
@@ -272,9 +281,15 @@ fn a_skin_on_a_core_on_a_cylinder_or_an_edge_is_within_its_stated_error_of_the_f
             law.x_max()
         );
         if std::env::var_os("SOFTGRIP_PRINT_CURVES").is_some() {
-            for p in &points {
+            for p in points.iter().filter(|p| p.x <= law.x_max()) {
                 let f = law.response(p.x).force;
-                println!("  x {:.2} fe {:.6} law {:.6} {:+.2} %", p.x, p.force_norm, f, 100.0 * (f / p.force_norm - 1.0));
+                println!(
+                    "  x {:.2} fe {:.6} law {:.6} {:+.2} %",
+                    p.x,
+                    p.force_norm,
+                    f,
+                    100.0 * (f / p.force_norm - 1.0)
+                );
             }
         }
         assert!(
