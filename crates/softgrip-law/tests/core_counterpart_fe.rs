@@ -245,6 +245,13 @@ fn stated_force_error_3d(path: &str) -> f64 {
         // Too soft by up to 1.88 % at x = 0.1, then within 0.7 % to x = 0.29, then too soft
         // again at the law's x_max (0.32, short of the FE's end 0.34): the 3 % met.
         "cylinder/core/force_nu0.48_t0.4_k3.csv" => 2.92,
+        // The 10 % on an edge MISSED: too stiff from x = 0.02 (+7.9 %), +25.49 % at
+        // x = 0.13, +21.6 % at the FE's end (0.21). The law takes the bonded pad's edge map
+        // (`mapping::edge_map`, "for the core until their FE lands") over the core's plane
+        // curve, so it carries the plane's stiffening of the skin by its core (FE core / flat
+        // 1.84 at x = 0.1 on the plane); across the ridge's narrow patch the core stiffens far
+        // less (FE core / flat on the edge 1.30 at x = 0.1). Not fitted here (session 18).
+        "edge/core/force_nu0.48_t0.4.csv" => 25.49,
         other => panic!("{other}: no stated error (run with --nocapture and state it)"),
     };
     (pct + 0.2) / 100.0
