@@ -247,6 +247,8 @@ fn stated_force_error_3d(path: &str) -> f64 {
         "cylinder/core/force_nu0.48_t0.4_k3.csv" => 2.92,
         // t/R 0.5 on R (to x = 0.36, delta/t 0.72): within 0.6 % to x = 0.23, +1.98 % at 0.32.
         "cylinder/core/force_nu0.48_t0.5_k1.csv" => 1.98,
+        // ... and on 3R (to x = 0.37): too soft by up to 1.51 % at x = 0.15.
+        "cylinder/core/force_nu0.48_t0.5_k3.csv" => 1.51,
         // The 10 % on an edge MISSED: too stiff from x = 0.02 (+7.9 %), +25.49 % at
         // x = 0.13, +21.6 % at the FE's end (0.21). The law takes the bonded pad's edge map
         // (`mapping::edge_map`, "for the core until their FE lands") over the core's plane
