@@ -114,7 +114,8 @@
 //!   fit; nu 0.48, t/R 0.4): this map is within 2.99 % on the cylinder of R (to x = 0.26, too
 //!   stiff at the end) and 2.92 % on 3R (to the law's x_max 0.32, too soft there), the
 //!   issue's 3 % met. The edge is not this map (`mapping::edge_map`: the bonded pad's over the
-//!   core's plane curve) and misses its FE by 25.5 % (`tests/core_counterpart_fe.rs`).
+//!   core's plane curve) and misses its FE by 25.5 % (t/R 0.4) and 13.5 % (t/R 0.5;
+//!   `tests/core_counterpart_fe.rs`).
 //!
 //! Session 11's split (the hemisphere at `rho x`, the layer excess at `rho_H x`, the thinning at
 //! the true `delta/t`) put the squeeze on the layer excess only: linear in `delta/t` from the
