@@ -224,6 +224,18 @@ def cases_3d():
     # must hold at every nu); run under /work/fe-scratch/runs/law-curved-s12/
     c += [("free", 0.3, 0, 20, "heldout", "cylinder", k) for k in (1, 3)]
     c += [("flat", 0.3, 0, 20, "heldout", "cylinder", 3)]
+    # session 18 (issue 24 items 1/2/5, run under /work/fe-scratch/runs/fe3d-s18/): the skin on a
+    # rigid core in 3D; first the plane in 3D against the axisymmetric core/force_nu0.48_t0.4.csv
+    # (role "check3d"), then the core on cylinders of R and 3R and on the right-angle edge, held
+    # out of every fit (the law's core map was fitted on balls and the plane only), then the
+    # thicker skin t/R 0.5 on both cylinders
+    c += [("core", 0.48, 0.4, 20, "check3d", "plane", 0)]
+    c += [("core", 0.48, 0.4, 20, "heldout", "cylinder", k) for k in (1, 3)]
+    c += [("core", 0.48, 0.4, 20, "heldout", "edge", 0)]
+    c += [("core", 0.48, 0.5, 20, "heldout", "cylinder", k) for k in (1, 3)]
+    # ... the 3D core's mesh convergence on the cylinder of R (R/14 at the pole against the
+    # campaign's R/20, as the bonded pad's), and the thicker skin on the edge
+    c += [("core", 0.48, 0.4, 14, "conv", "cylinder", 1), ("core", 0.48, 0.5, 20, "heldout", "edge", 0)]
     return c
 
 
@@ -255,7 +267,12 @@ def make_curved(geometry, nu, t, h, role, cp, k):
     (facets 4x shorter).
     3D (cylinder, edge; role "check3d": the plane in 3D, checked against the axisymmetric
     model): h is n, the element edge at the pole R/n; increments <= 0.005 to x = 0.1, 0.01 to
-    0.2, 0.02 beyond (output at each), to x = 0.6 (checks to 0.3)."""
+    0.2, 0.02 beyond (output at each), to x = 0.6 (checks to 0.3); a skin on a core: 0.01
+    beyond 0.2 (output every 0.01, as the axisymmetric core's; its runs diverge near
+    delta/t = 0.7, and a 0.02 increment there loses reach), to x = 0.5 (the check too)."""
+    if geometry == "core" and (cp in ("cylinder", "edge") or role == "check3d"):
+        return fe_run.make_case(geometry, nu, t, h, 0.5, dt_small=0.005, late_dt=0.01,
+                                counterpart=cp, k=k, dim=3)
     if cp in ("cylinder", "edge") or role == "check3d":
         tend = 0.6 if role in ("main", "heldout") else 0.3
         return fe_run.make_case(geometry, nu, t, h, tend, dt_small=0.005, late_dt=0.02,
@@ -369,9 +386,12 @@ def mesh_words(meta):
     """The mesh in a provenance line."""
     c, n = meta["case"], meta["mesh"]["elements"]
     if c.get("dim", 2) == 3:
+        hmax = c["hmax"]
+        if c["geometry"] == "core":  # fe_model3d: at least core_across elements through the skin
+            hmax = min(hmax, c["t"] / c["core_across"])
         s = (f"3D quarter model (symmetry planes x = 0 and z = 0, force = 4 x the quarter's), "
              f"C3D10, element edge R/{c['n']:g} at the pole growing as (1 + {c['beta']:g} d/R) "
-             f"with the distance d from it, at most {c['hmax']:g} mm")
+             f"with the distance d from it, at most {hmax:g} mm")
         if c["counterpart"] == "edge":
             s += (f", R/{c['ridge'] * c['n']:g} along the ridge line growing by "
                   f"{c['g_ridge']:g} per mm away from it")
@@ -527,7 +547,7 @@ def cmd_export(a):
         if role == "check3d":
             res = load(a.runs, g, nu, t, h, role, cp, k)
             if res is not None and res["rows"]:
-                key, prov, rows, worst = check_3d(g, nu, h, res)
+                key, prov, rows, worst = check_3d(g, nu, t, h, res)
                 curved.setdefault("cylinder", {})[key] = (prov, rows)
                 print(f"3D vs axisymmetric {g} nu={nu:g}: max |dF| / F = {worst:.3f} %")
             continue
@@ -603,18 +623,20 @@ def force_reldiff(base, other, row):
     return rows, worst
 
 
-def check_3d(g, nu, n, res):
+def check_3d(g, nu, t, n, res):
     """The 3D model on a plane (R/n at the pole) against the committed axisymmetric run of the
-    same case (tests/data/fe/<g>/force_nu<nu>.csv, R/40): how good the 3D mesh the cylinder and
-    the edge use is. A row of cylinder/convergence.csv with check "3d", k = 0 (the plane)."""
-    path = os.path.join(OUT, g, f"force_nu{nu:g}.csv")
+    same case (tests/data/fe/<g>/force_nu<nu>[_t<t>].csv, R/40): how good the 3D mesh the
+    cylinder and the edge use is. A row of cylinder/convergence.csv with check "3d", k = 0 (the
+    plane); a core's t/R is in its provenance line (one core check so far: t/R 0.4)."""
+    path = fname(g, nu, t)
     ref = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
     hb = float(open(path).readline().split("element edge R/")[1].split()[0])
     Fr = {round(float(x), 6): (float(F), float(a)) for x, F, a in
           zip(ref["delta_over_R"], ref["force_N"], ref["contact_radius_mm"])}
-    prov = provenance(res, f"; 3D check of {g} nu = {nu:g} k = 0: the 3D quarter model on a "
+    skin = f" (skin t/R = {t:g})" if g == "core" else ""
+    prov = provenance(res, f"; 3D check of {g} nu = {nu:g} k = 0: the 3D quarter model{skin} on a "
                            f"plane (R/{n:g} at the pole) against the axisymmetric run "
-                           f"tests/data/fe/{g}/force_nu{nu:g}.csv (R/{hb:g}); reldiff = "
+                           f"tests/data/fe/{os.path.relpath(path, OUT)} (R/{hb:g}); reldiff = "
                            f"(F_3D - F_axisymmetric) / F_axisymmetric")
     rows, worst = [], 0.0
     for r in res["rows"]:

@@ -10,12 +10,20 @@ x >= 0, z >= 0, u_x = 0 on x = 0, u_z = 0 on z = 0; force = 4 x RF_y of the push
          u_y = -delta, u_x and u_z free (a symmetry plane: the sphere between two identical
          counterparts, each contact compressed by delta).
   flat : the same quarter bonded at y = R to a rigid backing: u = (0, -delta, 0) there.
+  core : the quarter of a hemispherical shell R - t <= rho <= R (rho the distance from the
+         centre), bonded on its inner surface rho = R - t to a rigid core and on its flat
+         annulus y = R, R - t <= r <= R, to the finger: both get u = (0, -delta, 0), exactly as
+         the axisymmetric `core` (fe_model); force = 4 x RF_y of both. Only the outer surface
+         rho = R is the contact's slave surface.
 
 Elements: C3D10 (10-node quadratic tetrahedra, full integration) from gmsh (OpenCASCADE sphere
 cut by a box, Delaunay, second order with the midside nodes on the sphere). Element edge at the
 pole R/n, growing linearly with the distance d from the pole, h(d) = (R/n) (1 + beta d / R),
 up to hmax: the contact patch of every x is covered by about the same number of elements
-(a self-similar mesh). The edge adds a band along the ridge (the line x = 0 of the sphere's
+(a self-similar mesh). For `core`, the skin of thickness t is meshed by the same field: at the
+pole the element edge grows from R/n to (R/n)(1 + beta t/R) across the skin (R/20, beta 2,
+t/R 0.4: 0.05 to 0.09 mm, about 6 quadratic elements through the skin there), and away from the
+pole at most min(hmax, t / core_across) (at least core_across = 3.5 elements through it). The edge adds a band along the ridge (the line x = 0 of the sphere's
 surface), h = (R / (ridge n)) (1 + beta d / R) + g_ridge x: the patch across a sharp edge is
 narrow (about delta wide at small x), and a coarse face bridges the ridge without wrapping it.
 
@@ -34,7 +42,7 @@ from fe_deck import (neo_hooke, write_contact, write_master_elements, write_mate
                      write_nset, write_steps, write_surface)
 
 R = 1.0
-GEOMETRIES = ("free", "flat")
+GEOMETRIES = ("free", "flat", "core")
 # C3D10 faces (CalculiX = Abaqus numbering), 0-based corner indices
 TET_FACES = {1: (0, 1, 2), 2: (0, 3, 1), 3: (1, 3, 2), 4: (2, 3, 0)}
 # gmsh's 10-node tetrahedron -> CalculiX's: gmsh midsides 4:(0,1) 5:(1,2) 6:(2,0) 7:(3,0)
@@ -45,13 +53,15 @@ ELSETS = {"C3D8": "EPLATE8"}  # the counterpart's element set (fe_counterpart.ma
 
 @dataclass
 class Case3D:
-    geometry: str  # free | flat
+    geometry: str  # free | flat | core
     nu: float
+    t: float = 0.0  # core only: the skin's thickness / R
     counterpart: str = "cylinder"
     k: float = 0.0
     n: float = 40  # element edge at the pole R/n
     beta: float = 2.0  # growth of the element edge with the distance from the pole
     hmax: float = 0.12
+    core_across: float = 3.5  # core only: elements through the skin at least (hmax <= t / this)
     g_ridge: float = 0.15  # edge only: growth away from the ridge line
     ridge: float = 3.0  # edge only: the element edge along the ridge is 1/ridge of the pole's
     mu: float = 1.0
@@ -68,7 +78,10 @@ class Case3D:
 
     @property
     def name(self) -> str:
-        return f"3d_{self.cp.tag}{self.geometry}_nu{self.nu:g}_n{self.n:g}"
+        s = f"3d_{self.cp.tag}{self.geometry}_nu{self.nu:g}"
+        if self.geometry == "core":
+            s += f"_t{self.t:g}"
+        return s + f"_n{self.n:g}"
 
     @property
     def h(self) -> float:  # the campaign's convention: element edge at the contact's start
@@ -79,9 +92,9 @@ class Case3D:
 
 
 def mesh(case: Case3D):
-    """gmsh quarter hemisphere, C3D10. Returns nodes X (n, 3), tets T (m, 10) 0-based in
-    CalculiX's order, the sphere surface's triangles (corner triples, 0-based) and gmsh's
-    version."""
+    """gmsh quarter hemisphere (core: the quarter of the shell R - t <= rho <= R), C3D10.
+    Returns nodes X (n, 3), tets T (m, 10) 0-based in CalculiX's order, the outer sphere
+    surface's triangles (corner triples, 0-based) and gmsh's version."""
     import gmsh
 
     gmsh.initialize(interruptible=False)
@@ -90,11 +103,16 @@ def mesh(case: Case3D):
         gmsh.model.add("tip3d")
         occ = gmsh.model.occ
         s = occ.addSphere(0, R, 0, R)
+        if case.geometry == "core":
+            inner = occ.addSphere(0, R, 0, R - case.t * R)
+            shell, _ = occ.cut([(3, s)], [(3, inner)])
+            s = shell[0][1]
         b = occ.addBox(0, 0, 0, R, R, R)
         vol, _ = occ.intersect([(3, s)], [(3, b)])
         occ.synchronize()
         curved = [tag for dim, tag in gmsh.model.getBoundary(vol, oriented=False)
-                  if not _on_plane(gmsh.model.occ.getCenterOfMass(dim, tag))]
+                  if not _on_plane(gmsh.model.occ.getCenterOfMass(dim, tag))
+                  and _on_outer_sphere(gmsh, tag)]
         if len(curved) != 1:
             raise RuntimeError(f"expected one curved surface, got {curved}")
         pole = [t for d, t in gmsh.model.getEntities(0)
@@ -106,7 +124,10 @@ def mesh(case: Case3D):
         else:
             raise RuntimeError("no geometry point at the pole")
         fs = f.add("MathEval")
-        f.setString(fs, "F", f"Min({R / case.n}*(1+{case.beta}*F{fd}/{R}), {case.hmax})")
+        hmax = case.hmax
+        if case.geometry == "core":
+            hmax = min(hmax, case.t * R / case.core_across)
+        f.setString(fs, "F", f"Min({R / case.n}*(1+{case.beta}*F{fd}/{R}), {hmax})")
         fields = [fs]
         if case.counterpart == "edge":
             ridge = [t for d, t in gmsh.model.getEntities(1) if _is_ridge(gmsh, t)]
@@ -153,6 +174,13 @@ def mesh(case: Case3D):
 
 def _on_plane(c):
     return abs(c[0]) < 1e-9 or abs(c[2]) < 1e-9 or abs(c[1] - R) < 1e-9
+
+
+def _on_outer_sphere(gmsh, tag):
+    """Whether surface `tag` lies on the outer sphere rho = R (not the core's rho = R - t)."""
+    lo, hi = gmsh.model.getParametrizationBounds(2, tag)
+    p = gmsh.model.getValue(2, tag, [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2])
+    return abs(math.dist(p, (0, R, 0)) - R) < 1e-6
 
 
 def _is_ridge(gmsh, tag):
@@ -211,7 +239,7 @@ def deck(case: Case3D, path: str) -> dict:
     w = o.append
     w("*HEADING")
     w(f"softgrip FE 3D {case.name}: geometry={case.geometry} nu={case.nu} mu={case.mu} "
-      f"C10={c10:.8g} D1={d1:.8g} n={case.n:g} beta={case.beta:g} kpen={case.kpen:g} C3D10 "
+      f"C10={c10:.8g} D1={d1:.8g} t/R={case.t:g} n={case.n:g} beta={case.beta:g} kpen={case.kpen:g} C3D10 "
       f"gmsh {gmsh_version} counterpart={case.counterpart} k={case.k:g}")
     # CalculiX reads at most 20 characters of a number: "-3.97144573136554e-05" (21) was
     # read as -3.97 and turned a master element inside out; 12 digits fit every value
@@ -227,7 +255,10 @@ def deck(case: Case3D, path: str) -> dict:
     write_master_elements(w, master, base, ELSETS)
     write_nset(w, "NSYMX", np.where(X[:, 0] == 0.0)[0] + 1)
     write_nset(w, "NSYMZ", np.where(X[:, 2] == 0.0)[0] + 1)
-    write_nset(w, "NPUSH", np.where(X[:, 1] == R)[0] + 1)
+    push = X[:, 1] == R
+    if case.geometry == "core":  # the inner surface, bonded to the rigid core
+        push |= np.abs(np.linalg.norm(X - (0, R, 0), axis=1) - (R - case.t * R)) < 1e-7
+    write_nset(w, "NPUSH", np.where(push)[0] + 1)
     write_nset(w, "NSURF", np.where(on_sphere)[0] + 1)
     write_surface(w, "SSLAVE", [(e + 1, j) for e, j in slave])
     write_surface(w, "SMASTER", [(base + e + 1, j) for e, j in master.faces])
@@ -237,7 +268,7 @@ def deck(case: Case3D, path: str) -> dict:
     w("NPLATE, 1, 3, 0.")
     w("NSYMX, 1, 1, 0.")
     w("NSYMZ, 3, 3, 0.")
-    if case.geometry == "flat":
+    if case.geometry in ("flat", "core"):
         w("NPUSH, 1, 1, 0.")
         w("NPUSH, 3, 3, 0.")
     write_steps(w, case, tp_per_increment=True)  # an output point per increment at most

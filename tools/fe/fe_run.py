@@ -50,8 +50,8 @@ def make_case(geometry, nu, t=0.0, h=60, tend=0.75, dt_small=0.0025, late_dt=0.0
     if dim == 3 or counterpart in ("cylinder", "edge"):
         if geometry not in fe_model3d.GEOMETRIES:
             raise ValueError(f"3D models are {fe_model3d.GEOMETRIES}, not {geometry}")
-        return fe_model3d.Case3D(geometry=geometry, nu=nu, counterpart=counterpart, k=k, n=h,
-                                 steps=steps)
+        return fe_model3d.Case3D(geometry=geometry, nu=nu, t=t, counterpart=counterpart, k=k,
+                                 n=h, steps=steps)
     return fe_model.Case(geometry=geometry, nu=nu, t=t, h=1.0 / h, steps=steps,
                          counterpart=counterpart, k=k)
 

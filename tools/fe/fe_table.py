@@ -2,7 +2,8 @@
 counterpart other than the plane (tests/data/fe/{ball,cylinder,edge}/<geometry>/*.csv), so that
 they load through softgrip_fe's API keyed by counterpart, construction, nu (and x); and
 crates/softgrip-fe/src/core_counterpart_files.rs, the same for the skin on a core
-(tests/data/fe/ball/core/, keyed by t/R too; a table of its own since session 11). Run by
+(tests/data/fe/{ball,cylinder,edge}/core/, keyed by t/R too; a table of its own since session
+11, the cylinder and the edge since session 18). Run by
 `fe_campaign.py export`; the crate's tests fail if a file has no row.
 """
 from __future__ import annotations
@@ -15,7 +16,7 @@ REPO = os.path.dirname(os.path.dirname(HERE))
 OUT = os.path.join(REPO, "tests", "data", "fe")
 TABLE = os.path.join(REPO, "crates", "softgrip-fe", "src", "counterpart_files.rs")
 CORE_TABLE = os.path.join(REPO, "crates", "softgrip-fe", "src", "core_counterpart_files.rs")
-CORE_NAME = re.compile(r"(force|pressure)_nu([\d.]+)_t([\d.]+)_k([\d.]+)(?:_d([\d.]+))?\.csv$")
+CORE_NAME = re.compile(r"(force|pressure)_nu([\d.]+)_t([\d.]+)(?:_k([\d.]+))?(?:_d([\d.]+))?\.csv$")
 KINDS = ("ball", "cylinder", "edge")
 NAME = re.compile(r"(force|pressure)_nu([\d.]+)(?:_k([\d.]+))?(?:_d([\d.]+))?\.csv$")
 
@@ -62,18 +63,27 @@ def rows():
 
 
 def core_rows():
-    """(path, schema, nu, t/R, counterpart literal, about) of every skin-on-core file on a ball."""
+    """(path, schema, nu, t/R, counterpart literal, about) of every skin-on-core file on a ball
+    (axisymmetric), a cylinder or an edge (3D quarter models, session 18)."""
     out = []
-    d = os.path.join(OUT, "ball", "core")
-    for f in sorted(os.listdir(d)) if os.path.isdir(d) else []:
-        m = CORE_NAME.match(f)
-        if not m:
-            raise SystemExit(f"ball/core/{f}: not a force or pressure file name")
-        what, nu, t, k, x = m.groups()
-        prov = open(os.path.join(d, f)).readline()
-        head = f"ball k = {float(k):g}, core t/R = {float(t):g}, nu = {nu}"
-        out.append((f"ball/core/{f}", what.capitalize(), f"{float(nu)!r}", f"{float(t)!r}",
-                    f"Counterpart::Ball {{ k: {float(k)!r} }}", about_of(what, prov, head, x)))
+    for kind in KINDS:
+        d = os.path.join(OUT, kind, "core")
+        for f in sorted(os.listdir(d)) if os.path.isdir(d) else []:
+            m = CORE_NAME.match(f)
+            if not m or (kind == "edge") != (m.group(4) is None):
+                raise SystemExit(f"{kind}/core/{f}: not a force or pressure file name")
+            what, nu, t, k, x = m.groups()
+            three_d = kind in ("cylinder", "edge")
+            schema = {("force", False): "Force", ("force", True): "Force3d",
+                      ("pressure", False): "Pressure", ("pressure", True): "PressureMap"}[
+                (what, three_d)]
+            cp = ("Counterpart::Edge" if kind == "edge" else
+                  f"Counterpart::{kind.capitalize()} {{ k: {float(k)!r} }}")
+            prov = open(os.path.join(d, f)).readline()
+            head = (f"{kind}" + (f" k = {float(k):g}" if k else "") +
+                    f", core t/R = {float(t):g}, nu = {nu}")
+            out.append((f"{kind}/core/{f}", schema, f"{float(nu)!r}", f"{float(t)!r}", cp,
+                        about_of(what, prov, head, x)))
     return out
 
 
@@ -95,15 +105,16 @@ TABLES = [
      "COUNTERPART_FILES", rows),
     (CORE_TABLE,
      ["//! [`CORE_COUNTERPART_FILES`]: every embedded FE file of a skin on a core pressed on a",
-      "//! ball.",
+      "//! ball, a cylinder or an edge.",
       "//!",
       "//! Written by `tools/fe/fe_campaign.py export` (tools/fe/fe_table.py) from the files of",
-      "//! `tests/data/fe/ball/core/`; do not edit by hand."],
+      "//! `tests/data/fe/{ball,cylinder,edge}/core/`; do not edit by hand."],
      "core_counterpart_file", "$t:expr",
      ["            geometry: \"core\",", "            thickness_ratio: Some($t),"],
      ["/// One row: path (relative to `tests/data/fe/`), schema, nu, t/R, counterpart, description."],
-     ["/// Every embedded file of a skin on a rigid core pressed on a rigid ball (tools/fe:",
-      "/// CalculiX 2.20, gmsh 4.15.2; each file's provenance line says how it was made)."],
+     ["/// Every embedded file of a skin on a rigid core pressed on a rigid ball, cylinder or edge",
+      "/// (tools/fe: CalculiX 2.20, gmsh 4.15.2; each file's provenance line says how it was",
+      "/// made)."],
      "CORE_COUNTERPART_FILES", core_rows),
 ]
 

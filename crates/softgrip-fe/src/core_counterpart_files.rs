@@ -1,8 +1,8 @@
 //! [`CORE_COUNTERPART_FILES`]: every embedded FE file of a skin on a core pressed on a
-//! ball.
+//! ball, a cylinder or an edge.
 //!
 //! Written by `tools/fe/fe_campaign.py export` (tools/fe/fe_table.py) from the files of
-//! `tests/data/fe/ball/core/`; do not edit by hand.
+//! `tests/data/fe/{ball,cylinder,edge}/core/`; do not edit by hand.
 
 use crate::counterpart::Counterpart;
 use crate::fe_file::{FeFile, Schema};
@@ -23,8 +23,9 @@ macro_rules! core_counterpart_file {
     };
 }
 
-/// Every embedded file of a skin on a rigid core pressed on a rigid ball (tools/fe:
-/// CalculiX 2.20, gmsh 4.15.2; each file's provenance line says how it was made).
+/// Every embedded file of a skin on a rigid core pressed on a rigid ball, cylinder or edge
+/// (tools/fe: CalculiX 2.20, gmsh 4.15.2; each file's provenance line says how it was
+/// made).
 #[rustfmt::skip]
 pub const CORE_COUNTERPART_FILES: &[FeFile] = &[
     core_counterpart_file!("ball/core/force_nu0.33_t0.45_k3.csv", Force, 0.33, 0.45, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.45, nu = 0.33, x = 0.01..0.36"),
@@ -78,4 +79,20 @@ pub const CORE_COUNTERPART_FILES: &[FeFile] = &[
     core_counterpart_file!("ball/core/pressure_nu0.4_t0.35_k1.5_d0.1.csv", Pressure, 0.4, 0.35, Counterpart::Ball { k: 1.5 }, "held out of every fit: ball k = 1.5, core t/R = 0.35, nu = 0.4, pressure at x = 0.1"),
     core_counterpart_file!("ball/core/pressure_nu0.4_t0.5_k3_d0.1.csv", Pressure, 0.4, 0.5, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.5, nu = 0.4, pressure at x = 0.1"),
     core_counterpart_file!("ball/core/pressure_nu0.4_t0.5_k3_d0.3.csv", Pressure, 0.4, 0.5, Counterpart::Ball { k: 3.0 }, "held out of every fit: ball k = 3, core t/R = 0.5, nu = 0.4, pressure at x = 0.3"),
+    core_counterpart_file!("cylinder/core/force_nu0.48_t0.4_k1.csv", Force3d, 0.48, 0.4, Counterpart::Cylinder { k: 1.0 }, "held out of every fit: cylinder k = 1, core t/R = 0.4, nu = 0.48, x = 0.01..0.26"),
+    core_counterpart_file!("cylinder/core/force_nu0.48_t0.4_k3.csv", Force3d, 0.48, 0.4, Counterpart::Cylinder { k: 3.0 }, "held out of every fit: cylinder k = 3, core t/R = 0.4, nu = 0.48, x = 0.01..0.34"),
+    core_counterpart_file!("cylinder/core/force_nu0.48_t0.5_k1.csv", Force3d, 0.48, 0.5, Counterpart::Cylinder { k: 1.0 }, "held out of every fit: cylinder k = 1, core t/R = 0.5, nu = 0.48, x = 0.01..0.36"),
+    core_counterpart_file!("cylinder/core/force_nu0.48_t0.5_k3.csv", Force3d, 0.48, 0.5, Counterpart::Cylinder { k: 3.0 }, "held out of every fit: cylinder k = 3, core t/R = 0.5, nu = 0.48, x = 0.01..0.37"),
+    core_counterpart_file!("cylinder/core/pressure_nu0.48_t0.4_k1_d0.1.csv", PressureMap, 0.48, 0.4, Counterpart::Cylinder { k: 1.0 }, "held out of every fit: cylinder k = 1, core t/R = 0.4, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("cylinder/core/pressure_nu0.48_t0.4_k3_d0.1.csv", PressureMap, 0.48, 0.4, Counterpart::Cylinder { k: 3.0 }, "held out of every fit: cylinder k = 3, core t/R = 0.4, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("cylinder/core/pressure_nu0.48_t0.4_k3_d0.3.csv", PressureMap, 0.48, 0.4, Counterpart::Cylinder { k: 3.0 }, "held out of every fit: cylinder k = 3, core t/R = 0.4, nu = 0.48, pressure at x = 0.3"),
+    core_counterpart_file!("cylinder/core/pressure_nu0.48_t0.5_k1_d0.1.csv", PressureMap, 0.48, 0.5, Counterpart::Cylinder { k: 1.0 }, "held out of every fit: cylinder k = 1, core t/R = 0.5, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("cylinder/core/pressure_nu0.48_t0.5_k1_d0.3.csv", PressureMap, 0.48, 0.5, Counterpart::Cylinder { k: 1.0 }, "held out of every fit: cylinder k = 1, core t/R = 0.5, nu = 0.48, pressure at x = 0.3"),
+    core_counterpart_file!("cylinder/core/pressure_nu0.48_t0.5_k3_d0.1.csv", PressureMap, 0.48, 0.5, Counterpart::Cylinder { k: 3.0 }, "held out of every fit: cylinder k = 3, core t/R = 0.5, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("cylinder/core/pressure_nu0.48_t0.5_k3_d0.3.csv", PressureMap, 0.48, 0.5, Counterpart::Cylinder { k: 3.0 }, "held out of every fit: cylinder k = 3, core t/R = 0.5, nu = 0.48, pressure at x = 0.3"),
+    core_counterpart_file!("edge/core/force_nu0.48_t0.4.csv", Force3d, 0.48, 0.4, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.4, nu = 0.48, x = 0.01..0.21"),
+    core_counterpart_file!("edge/core/force_nu0.48_t0.5.csv", Force3d, 0.48, 0.5, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.5, nu = 0.48, x = 0.01..0.35"),
+    core_counterpart_file!("edge/core/pressure_nu0.48_t0.4_d0.1.csv", PressureMap, 0.48, 0.4, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.4, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("edge/core/pressure_nu0.48_t0.5_d0.1.csv", PressureMap, 0.48, 0.5, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.5, nu = 0.48, pressure at x = 0.1"),
+    core_counterpart_file!("edge/core/pressure_nu0.48_t0.5_d0.3.csv", PressureMap, 0.48, 0.5, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.5, nu = 0.48, pressure at x = 0.3"),
 ];

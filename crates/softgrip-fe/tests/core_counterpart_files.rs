@@ -1,23 +1,38 @@
-//! The skin-on-core files on a ball (`tests/data/fe/ball/core/`, `CORE_COUNTERPART_FILES`):
-//! keyed by counterpart, construction, nu and t/R, and at small x the layer's Hertz.
+//! The skin-on-core files on a counterpart (`tests/data/fe/{ball,cylinder,edge}/core/`,
+//! `CORE_COUNTERPART_FILES`): keyed by counterpart, construction, nu and t/R, and at small x
+//! the layer's Hertz on a ball.
 
 use softgrip_fe::{CORE_COUNTERPART_FILES, Counterpart, Schema};
 
 #[test]
-fn core_files_on_a_ball_are_keyed_by_thickness() {
-    //! Every file carries its folder's counterpart and construction, its name's t/R and k, and
-    //! `force_file` finds each force curve by that key (and not without the t/R).
+fn core_files_on_a_counterpart_are_keyed_by_thickness() {
+    //! Every file carries its folder's counterpart and construction, its name's t/R and k (an
+    //! edge has no k), and `force_file` finds each force curve by that key (and not without
+    //! the t/R). The ball's files are axisymmetric (`Force`), the cylinder's and the edge's
+    //! from the 3D quarter model (`Force3d`, session 18).
     assert!(!CORE_COUNTERPART_FILES.is_empty());
     for f in CORE_COUNTERPART_FILES {
-        assert!(f.path.starts_with("ball/core/"), "{}", f.path);
         assert_eq!(f.geometry, "core", "{}", f.path);
         let t = f.thickness_ratio.expect("a core file has t/R");
-        let Counterpart::Ball { k } = f.counterpart else {
-            panic!("{}: not a ball", f.path);
+        let (folder, key, force) = match f.counterpart {
+            Counterpart::Ball { k } => ("ball/core/", format!("_t{t}_k{k}"), Schema::Force),
+            Counterpart::Cylinder { k } => {
+                ("cylinder/core/", format!("_t{t}_k{k}"), Schema::Force3d)
+            }
+            Counterpart::Edge => ("edge/core/", format!("_t{t}."), Schema::Force3d),
+            Counterpart::Plane => panic!("{}: a plane core file is not a counterpart's", f.path),
         };
-        assert!(f.path.contains(&format!("_t{t}_k{k}")), "{}", f.path);
+        assert!(f.path.starts_with(folder), "{}", f.path);
+        let named = f.path.contains(&key) || f.path.contains(&format!("_t{t}_d"));
+        assert!(named, "{}", f.path);
         assert!(softgrip_fe::file(f.path).is_some(), "{}", f.path);
-        if f.schema == Schema::Force {
+        assert!(
+            f.schema == force || f.path.contains("/pressure_"),
+            "{}: {:?}",
+            f.path,
+            f.schema
+        );
+        if f.schema == force {
             let nu = f.nu.expect("one nu per file");
             let found = softgrip_fe::force_file(f.counterpart, "core", nu, Some(t));
             assert_eq!(found.map(|g| g.path), Some(f.path));

@@ -2,7 +2,10 @@
 //! (`tests/data/fe/ball/core/`, `tools/fe`, session 11: t/R 0.3 and 0.5 at nu 0.48 on balls of
 //! R and 3R; sessions 12-14: t/R 0.3-0.45 at nu 0.3-0.48 on balls of R to 3R; sessions 16-17:
 //! t/R 0.4-0.6 at nu 0.43-0.49 on balls of 0.6 R to 2R): force per curve against the number this test prints, with the 3 % as the
-//! ceiling, and the law's range against the FE's reach.
+//! ceiling, and the law's range against the FE's reach. Session 18: the same skin on cylinders
+//! and the right-angle edge (`tests/data/fe/{cylinder,edge}/core/`, the 3D quarter model, held
+//! out of every fit), force per curve against the number this test printed when they landed
+//! (`SOFTGRIP_PRINT_CURVES=1` prints each point).
 //!
 //! `cargo test -p softgrip-law --test core_counterpart_fe -- --nocapture` prints every number.
 
@@ -210,4 +213,105 @@ fn the_missed_core_curve_is_mesh_converged_to_its_end() {
     assert!(rows.len() >= 30, "{} rows", rows.len());
     assert!(end >= 0.36 - 1e-9, "to x = {end}");
     assert!(worst <= 0.15, "{worst} %");
+}
+
+/// The calibrated core law (E* = 1 Pa, R = 1 m) of a 3D file's t/R and Poisson ratio on its
+/// cylinder or edge.
+fn law_3d_of(file: &FeFile) -> ContactLaw {
+    let nu = file.nu.expect("a Poisson ratio");
+    let thickness = file.thickness_ratio.expect("a core file has t/R");
+    let cp = match file.counterpart {
+        FeCounterpart::Cylinder { k } => Counterpart::try_cylinder(k).expect("a cylinder"),
+        FeCounterpart::Edge => Counterpart::EDGE,
+        other => panic!("{}: a 3D core file on {other:?}", file.path),
+    };
+    let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+        .and_then(|p| p.with_backing(Backing::Core { thickness }))
+        .expect("valid params");
+    ContactLaw::try_new(p, Level::Calibrated)
+        .and_then(|l| l.with_counterpart(cp))
+        .expect("the law binds")
+}
+
+/// The largest force error each 3D curve (session 18: the skin on a core on a cylinder or
+/// the edge, 3D quarter model, held out of every fit: no constant of the law saw a core on
+/// anything but a plane or a ball) is allowed to the FE's end: what this test printed when
+/// the curves landed, rounded up by 0.2 %, so a real change of the law breaks it.
+fn stated_force_error_3d(path: &str) -> f64 {
+    let pct: f64 = match path {
+        // Within 0.7 % to x = 0.15, then too stiff, growing to its FE's end (x = 0.26,
+        // delta/t 0.65): the 3 % just met.
+        "cylinder/core/force_nu0.48_t0.4_k1.csv" => 2.99,
+        // Too soft by up to 1.88 % at x = 0.1, then within 0.7 % to x = 0.29, then too soft
+        // again at the law's x_max (0.32, short of the FE's end 0.34): the 3 % met.
+        "cylinder/core/force_nu0.48_t0.4_k3.csv" => 2.92,
+        // t/R 0.5 on R (to x = 0.36, delta/t 0.72): within 0.6 % to x = 0.23, +1.98 % at 0.32.
+        "cylinder/core/force_nu0.48_t0.5_k1.csv" => 1.98,
+        // ... and on 3R (to x = 0.37): too soft by up to 1.51 % at x = 0.15.
+        "cylinder/core/force_nu0.48_t0.5_k3.csv" => 1.51,
+        // The 10 % on an edge MISSED: too stiff from x = 0.02 (+7.9 %), +25.49 % at
+        // x = 0.13, +21.6 % at the FE's end (0.21). The law takes the bonded pad's edge map
+        // (`mapping::edge_map`, "for the core until their FE lands") over the core's plane
+        // curve, so it carries the plane's stiffening of the skin by its core (FE core / flat
+        // 1.84 at x = 0.1 on the plane); across the ridge's narrow patch the core stiffens far
+        // less (FE core / flat on the edge 1.30 at x = 0.1). Not fitted here (session 18).
+        "edge/core/force_nu0.48_t0.4.csv" => 25.49,
+        // ... and t/R 0.5 (to x = 0.35): +13.45 % at x = 0.09, falling to -0.4 % at the end.
+        "edge/core/force_nu0.48_t0.5.csv" => 13.45,
+        other => panic!("{other}: no stated error (run with --nocapture and state it)"),
+    };
+    (pct + 0.2) / 100.0
+}
+
+#[test]
+fn a_skin_on_a_core_on_a_cylinder_or_an_edge_is_within_its_stated_error_of_the_fe() {
+    let mut seen = 0;
+    for file in CORE_COUNTERPART_FILES
+        .iter()
+        .filter(|f| f.schema == Schema::Force3d)
+    {
+        let law = law_3d_of(file);
+        let (err, top) = force_error(file, &law, f64::INFINITY);
+        let plane = ContactLaw::try_new(*law.params(), Level::Calibrated).expect("binds");
+        let (plane_err, _) = force_error(file, &plane, f64::INFINITY);
+        let points = file.points().expect("parses");
+        let fe_end = points.last().expect("points").x;
+        // Where the worst error is and its sign (+: the law too stiff).
+        let (x_worst, signed) = points
+            .iter()
+            .filter(|p| p.x >= 0.01 - 1e-12 && p.x <= law.x_max())
+            .map(|p| (p.x, law.response(p.x).force / p.force_norm - 1.0))
+            .fold(
+                (0.0, 0.0),
+                |w, e| if e.1.abs() > f64::abs(w.1) { e } else { w },
+            );
+        println!(
+            "{:40} force within {:5.2} % for 0.01 <= x <= {top:.2} ({:+.2} % at x = {x_worst}; as a plane: {:.0} %; law's x_max {:.3}, FE's end {fe_end})",
+            file.path,
+            100.0 * err,
+            100.0 * signed,
+            100.0 * plane_err,
+            law.x_max()
+        );
+        if std::env::var_os("SOFTGRIP_PRINT_CURVES").is_some() {
+            for p in points.iter().filter(|p| p.x <= law.x_max()) {
+                let f = law.response(p.x).force;
+                println!(
+                    "  x {:.2} fe {:.6} law {:.6} {:+.2} %",
+                    p.x,
+                    p.force_norm,
+                    f,
+                    100.0 * (f / p.force_norm - 1.0)
+                );
+            }
+        }
+        assert!(
+            err <= stated_force_error_3d(file.path),
+            "{}: {:.2} %",
+            file.path,
+            100.0 * err
+        );
+        seen += 1;
+    }
+    assert!(seen >= 1, "{seen} curves");
 }
