@@ -11,8 +11,8 @@ use crate::detect::Geom;
 use crate::fast_hash::FastMap;
 use crate::jointed;
 use crate::multibody::{self, Hosts, LinkCtx, SavedForce};
+use crate::problem::{BodyState, Row};
 use crate::rigid::RigidRow;
-use crate::solve::{BodyState, Row};
 
 /// Velocity of a kinematic body over the coming (sub)step: (linear [m/s], angular [rad/s]).
 pub(crate) type KinematicVelocity = FastMap<RigidBodyHandle, (Vector3<f64>, Vector3<f64>)>;

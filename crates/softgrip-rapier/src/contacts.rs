@@ -17,9 +17,10 @@ use crate::error::{Error, Result};
 use crate::fast_hash::{FastMap, FastSet};
 use crate::fingertip::SoftFingertip;
 use crate::model::Model;
+use crate::problem::Row;
 use crate::readout::{Accums, TipContact};
 use crate::rigid::RigidRow;
-use crate::solve::{Row, SolveScratch};
+use crate::solve::SolveScratch;
 use crate::substep::SoftAccuracy;
 use crate::taxels::{TactileImage, TactileSlot};
 use crate::tip_record::TipRecord;
@@ -28,7 +29,7 @@ use crate::tip_record::TipRecord;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PairState {
     /// Friction anchor on the other body, in its collider's frame \[m\]: the static
-    /// friction spring's stretch is the contact's tangential offset from it (`solve::spring`).
+    /// friction spring's stretch is the contact's tangential offset from it (`problem::spring`).
     pub anchor_local: Vector3<f64>,
     /// The last substep in contact (`Scratch::stamp`).
     pub stamp: u64,
@@ -42,7 +43,7 @@ pub(crate) struct Scratch {
     pub body_table: BodyTable,
     /// The body table before the solve, restored for each further onset solve
     /// (`step::onset`).
-    pub onset_base: Vec<crate::solve::BodyState>,
+    pub onset_base: Vec<crate::problem::BodyState>,
     /// The contacts prepared for the solve.
     pub rows: Vec<Row>,
     /// rapier's touching rigid contacts of the bodies the soft contacts move (`rigid`).

@@ -10,7 +10,7 @@ use std::sync::Once;
 
 use rapier3d::prelude::{PhysicsWorld, RigidBody, RigidBodyHandle, RigidBodySet};
 
-use crate::solve::Row;
+use crate::problem::Row;
 use crate::step_error::{
     MAX_ANGULAR_SPEED, MAX_JOINT_COORDINATE, MAX_LINEAR_SPEED, MAX_POSITION, Phase, Quantity,
     StepError, Subject,

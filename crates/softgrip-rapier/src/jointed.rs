@@ -64,7 +64,7 @@ use crate::bodies::{KinematicVelocity, free_mobility};
 use crate::boundary::to_f64;
 use crate::joint_sweeps::{self, HARD_COMPLIANCE, SweepRow};
 use crate::multibody::{Generalised, Link, LinkCtx, motor_fold};
-use crate::solve::BodyState;
+use crate::problem::BodyState;
 
 /// The most bodies one jointed assembly may hold (its rows and mobility are dense, `6k x 6k`);
 /// a larger one is seen as free bodies.

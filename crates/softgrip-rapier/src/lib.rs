@@ -20,6 +20,7 @@ mod link_contacts;
 mod model;
 mod multibody;
 mod presets;
+mod problem;
 mod readout;
 mod rigid;
 mod rounded;

@@ -43,8 +43,8 @@ use rapier3d::prelude::{
 use crate::bodies::{KinematicPath, interpolate};
 use crate::boundary::{to_f32, to_f64};
 use crate::fast_hash::FastMap;
+use crate::problem::BodyState;
 use crate::saturation::{Fold, Motor, couple};
-use crate::solve::BodyState;
 
 /// A link of a multibody in the solver's body table.
 #[derive(Debug, Clone)]

@@ -12,7 +12,7 @@ use crate::boundary::raw;
 use crate::detect::{Detected, owner};
 use crate::fast_hash::FastMap;
 use crate::model::{Model, Series};
-use crate::solve::Row;
+use crate::problem::Row;
 use crate::tip_record::TipRecord;
 
 /// One soft contact after a step: the law crate's plain [`ContactReading`] (`reading`; the

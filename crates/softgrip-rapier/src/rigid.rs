@@ -13,7 +13,7 @@
 //! **The rows.** Every scalar unknown is a row with a Jacobian on (at most) two bodies:
 //! - a soft contact's normal, `j + h D (W j) = h (F - D v0)` (as in `solve`), its two
 //!   tangential impulses and its torsion, which solve what `solve`'s friction sweep solves
-//!   (`solve::spring`: by default zero relative tangential velocity plus the anchor
+//!   (`problem::spring`: by default zero relative tangential velocity plus the anchor
 //!   correction, with [`SOFT_FRICTION_COMPLIANCE`] of their own mobility (see there); with
 //!   the friction spring on, `v_t(end) + C j_t = target`, in the LU while they stick; zero
 //!   relative spin), in the disk `mu j_n` and the torsion limit;
@@ -48,8 +48,8 @@
 use nalgebra::{DMatrix, DVector, Dyn, LU, Matrix2, Vector2, Vector3, Vector6};
 
 use crate::multibody;
+use crate::problem::{BodyState, Row};
 use crate::saturation;
-use crate::solve::{BodyState, Row};
 
 /// One of rapier's touching contact points between a dynamic body `a` that the soft contacts
 /// move (directly or through other rigid contacts) and another body `b` (`None`: fixed).
@@ -155,7 +155,7 @@ struct Scalar {
     /// The impulse the compliance pulls towards (rapier's own part of a hard normal) \[N s\].
     prox: f64,
     /// A fingertip's tangential row: its friction spring's absolute compliance `C` \[1/kg\]
-    /// (`solve::spring`: the row's equation is `v(end) + C j = target`); 0 for every other row.
+    /// (`problem::spring`: the row's equation is `v(end) + C j = target`); 0 for every other row.
     spring: f64,
     /// The velocity change of body a (linear, angular) per unit impulse, and of body b per
     /// unit impulse on it (`-1` times the row's), set by `build` (`set_response`): the
@@ -371,8 +371,8 @@ fn build(
             },
         ));
         if r.mu > 0.0 {
-            // The friction spring (`solve::spring`).
-            let (spring, target) = crate::solve::spring(r, h);
+            // The friction spring (`problem::spring`).
+            let (spring, target) = crate::problem::spring(r, h);
             for s in friction_pair(bodies, (r.a, r.b), &r.p, [r.t1, r.t2], nrm, r.mu, 0.0) {
                 // `lin` is the row's tangent.
                 // With a spring, its compliance bounds the impulse (the relative one would make
@@ -507,7 +507,7 @@ fn solve_scalars(
         .collect();
     let mut j = vec![0.0; m];
     // A fingertip's friction starts at its spring's force at the current stretch, `-h k_t s`
-    // (`target / C`, `solve::spring`): where a rigid row holds the body (a box pressed
+    // (`target / C`, `problem::spring`): where a rigid row holds the body (a box pressed
     // against a wall, whose friction is in the LU), that is the answer, which alternating
     // passes from zero approach by `C / (W + C)` a pass (all 32 passes, never settled).
     for (i, r) in rows.iter().enumerate() {
@@ -1040,7 +1040,7 @@ pub(crate) fn solve_coupled(
                 r.jtw = j[i + 3];
             }
         }
-        r.vn_end = crate::solve::normal_velocity(bodies, r);
+        r.vn_end = crate::problem::normal_velocity(bodies, r);
     }
     // rapier's part of each rigid row: its impulse without the soft contacts, scaled down to
     // the row's impulse with them (a box lifted off the table gets none from rapier). With a

@@ -23,7 +23,7 @@
 
 use nalgebra::{DMatrix, DVector, Vector6};
 
-use crate::solve::{BodyState, Row};
+use crate::problem::{BodyState, Row};
 
 /// One motor of a free dof, in the multibody's reduced order.
 #[derive(Debug, Clone)]

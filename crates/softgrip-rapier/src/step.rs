@@ -32,9 +32,9 @@ use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
 use crate::guard::{self, At};
 use crate::hooks::{SoftEvents, SoftHooks};
 use crate::multibody::{self, LinkCtx};
+use crate::problem::{self, Row};
 use crate::readout;
 use crate::rigid::RigidRow;
-use crate::solve::{self, Row};
 use crate::step_error::{Phase, StepError, Subject};
 use crate::substep;
 use onset::update_blend;
@@ -378,8 +378,8 @@ impl Step<'_> {
                 )
             });
             let row = new_row(a, b, g, model.friction);
-            let vn = solve::normal_velocity(&tb.table, &row);
-            let w = solve::normal_mobility(&tb.table, &row);
+            let vn = problem::normal_velocity(&tb.table, &row);
+            let w = problem::normal_mobility(&tb.table, &row);
             if !(vn.is_finite() && w.is_finite()) {
                 self.soft.counters.non_finite += 1;
                 if compression_from_signed_distance(g.dist) > 0.0 {

@@ -4,7 +4,8 @@ use super::Step;
 use crate::contacts::Scratch;
 use crate::detect::compression_from_signed_distance;
 use crate::model::Model;
-use crate::solve::{self, Row};
+use crate::problem::Row;
+use crate::solve;
 use crate::substep::{self, theta_blend};
 
 impl Step<'_> {

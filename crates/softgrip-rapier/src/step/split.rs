@@ -8,7 +8,7 @@ use super::Step;
 use crate::boundary::{to_f32, to_f64};
 use crate::contacts::Scratch;
 use crate::detect::compression_from_signed_distance;
-use crate::solve;
+use crate::problem;
 use crate::substep;
 
 impl Step<'_> {
@@ -78,13 +78,13 @@ impl Step<'_> {
                 // pad) asked the cap.
                 continue;
             }
-            let mut vn = solve::normal_velocity(table, row);
-            let w = solve::normal_mobility(table, row);
+            let mut vn = problem::normal_velocity(table, row);
+            let w = problem::normal_mobility(table, row);
             let mut k_drive = 1;
             // The external load pressing the contact (acceleration into it over the mobility).
-            let push = (-solve::normal_external_acceleration(table, row)).max(0.0) / w;
+            let push = (-problem::normal_external_acceleration(table, row)).max(0.0) / w;
             if delta > 0.0 {
-                let passive = solve::passive_normal_velocity(table, row);
+                let passive = problem::passive_normal_velocity(table, row);
                 let drive = vn - passive;
                 k_drive = drive_substeps(drive, delta, model.radius, dt);
                 if k_drive > 1 {
@@ -97,7 +97,7 @@ impl Step<'_> {
                 // one step of its external accelerations and of one substep of its motors'
                 // push (rapier's stored velocity lags or leads the true one by up to that):
                 // only the excess counts as dynamic.
-                let a = solve::normal_external_acceleration(table, row).abs();
+                let a = problem::normal_external_acceleration(table, row).abs();
                 let known = a * dt + drive.abs() / k_drive as f64;
                 vn = passive.signum() * (passive.abs() - known).max(0.0);
             }
