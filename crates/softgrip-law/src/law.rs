@@ -2,6 +2,7 @@
 
 use std::sync::Arc;
 
+use crate::backing::Backing;
 use crate::cap_map::capped_on_counterpart;
 use crate::core_map::core_on_counterpart;
 use crate::counterpart::{Counterpart, CounterpartKind};
@@ -300,18 +301,24 @@ impl ContactLaw {
         )?;
         // A skin on a core: its own curve on a curved counterpart (`core_map`); the free
         // sphere and the flat pad: the plane's with its compressible cap scaled (`cap_map`).
-        let curved = counterpart.kind() == CounterpartKind::Curved;
-        let was_rebuilt = self.counterpart.kind() == CounterpartKind::Curved
-            && matches!(self.level, Level::Calibrated);
-        let (curve, map, replaced) = match core_on_counterpart(self.level, p, &map, curved)? {
-            Some((curve, map)) => (curve, map, true),
-            None => match capped_on_counterpart(self.level, p, &map)? {
-                Some(curve) => (curve, map, true),
-                // Away from a curved counterpart: the plane's own curve again.
-                None if was_rebuilt => (Curve::try_new(self.level, p)?, map, true),
-                None => (self.curve.clone(), map, false),
-            },
-        };
+        // On an edge a core's curve is rebuilt too (session 18: its narrow patch feels the core
+        // less, `core_map`).
+        let was_rebuilt = matches!(self.level, Level::Calibrated)
+            && match self.counterpart.kind() {
+                CounterpartKind::Curved => true,
+                CounterpartKind::Edge => matches!(p.backing(), Backing::Core { .. }),
+                CounterpartKind::Plane => false,
+            };
+        let (curve, map, replaced) =
+            match core_on_counterpart(self.level, p, &map, counterpart.kind())? {
+                Some((curve, map)) => (curve, map, true),
+                None => match capped_on_counterpart(self.level, p, &map)? {
+                    Some(curve) => (curve, map, true),
+                    // Away from a curved counterpart: the plane's own curve again.
+                    None if was_rebuilt => (Curve::try_new(self.level, p)?, map, true),
+                    None => (self.curve.clone(), map, false),
+                },
+            };
         let (e, r) = (p.effective_modulus(), p.radius());
         let x_max = curve.as_dyn().x_max();
         // The curve's own range, in rho x, or the counterpart's reach in x, whichever ends

@@ -412,12 +412,12 @@ const BONDED_11: [f64; 4] = [0.840368, -0.991587, 0.328077, 0.225198];
 /// with the bonded pad's constants the free sphere was 11.9 % too soft at x = 0.42). Each pair
 /// is fitted on the one edge FE curve of its construction (nu = 0.48: flat to x = 0.4, 4.25 %;
 /// free to 0.42, 3.31 %; the plane law there was 2.2-3.2x the FE), taken for every Poisson
-/// ratio and, bonded, for the core (its FE landed in session 18, `tests/data/fe/edge/core/`:
-/// nu 0.48, t/R 0.4 and 0.5, this map over the core's plane curve is up to 25.5 % and 13.5 %
-/// too stiff there, the 10 % missed: across the ridge's narrow patch the core
-/// stiffens the contact far less than on a plane, FE core / flat 1.30 against 1.84 at
-/// x = 0.1; not refitted yet, `tests/core_counterpart_fe.rs`). The patch is the plane's at
-/// `rho x`
+/// ratio. The core takes the bonded pair through its own form (`crate::core_map`, the
+/// right-angle edge; session 18): this map over the core's plane curve was up to 25.5 % and
+/// 13.5 % too stiff against its FE (`tests/data/fe/edge/core/`, nu 0.48, t/R 0.4 and 0.5):
+/// across the ridge's narrow patch the core stiffens the contact far less than on a plane
+/// (FE core / flat 1.30 against 1.84 at x = 0.1); the core's form is within 4.03 %. The
+/// patch is the plane's at `rho x`
 /// (axes 1): not validated (the FE's patch across the ridge is 0.13-0.28 of that, along it not
 /// resolved).
 fn edge_map(_nu: f64, backing: Backing) -> CounterpartMap {

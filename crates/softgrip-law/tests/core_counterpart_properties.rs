@@ -8,7 +8,8 @@ use proptest::prelude::*;
 use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level, Material};
 
 /// A calibrated core law (E*, R, nu, t/R random) and a counterpart in `kappa R`: balls and
-/// cylinders of R2/R 0.05-100, or two curvatures, concave to -0.99/R.
+/// cylinders of R2/R 0.05-100, or two curvatures, concave to -0.99/R, or the right-angle edge
+/// (session 18: a core's own curve there too, `core_map`).
 fn core_law() -> impl Strategy<Value = (ContactLaw, Counterpart)> {
     (
         1e3f64..1e9,
@@ -19,6 +20,8 @@ fn core_law() -> impl Strategy<Value = (ContactLaw, Counterpart)> {
             (-3.0f64..2.0).prop_map(|l| (10f64.powf(-l), 10f64.powf(-l))),
             (-3.0f64..2.0).prop_map(|l| (0.0, 10f64.powf(-l))),
             (-0.99f64..20.0, -0.99f64..20.0),
+            // The edge (no curvatures).
+            Just((f64::NAN, f64::NAN)),
         ],
     )
         .prop_filter_map("law binds", |(e, nu, r, tau, (k1, k2))| {
@@ -27,7 +30,11 @@ fn core_law() -> impl Strategy<Value = (ContactLaw, Counterpart)> {
                 .with_backing(Backing::Core { thickness: tau * r })
                 .ok()?;
             let law = ContactLaw::try_new(p, Level::Calibrated).ok()?;
-            let cp = Counterpart::try_curved(k1 / r, k2 / r).ok()?;
+            let cp = if k1.is_nan() {
+                Counterpart::EDGE
+            } else {
+                Counterpart::try_curved(k1 / r, k2 / r).ok()?
+            };
             Some((law.with_counterpart(cp).ok()?, cp))
         })
 }
@@ -155,11 +162,40 @@ fn a_core_in_a_bowl_stiffens_to_the_end_of_its_range() {
     assert_eq!(checked, 7 * 7 * 6);
 }
 
+/// A skin on a core on the right-angle edge (session 18, `core_map`: the plane core law at the
+/// edge's patch argument times the bonded pad's edge squeeze excess at the squeeze its narrow
+/// patch feels): over nu 0.3-0.5 and t/R 0.05-0.95 the force rises and the stiffness is
+/// positive up to `x_max` (2000 points each).
+#[test]
+fn a_core_on_an_edge_stiffens_to_the_end_of_its_range() {
+    let mut checked = 0;
+    for nu in [0.3, 0.4, 0.45, 0.475, 0.49, 0.4999, 0.5] {
+        for tau in [0.05, 0.1, 0.3, 0.5, 0.7, 0.95] {
+            let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+                .and_then(|p| p.with_backing(Backing::Core { thickness: tau }))
+                .expect("valid params");
+            let law = ContactLaw::try_new(p, Level::Calibrated)
+                .and_then(|l| l.with_counterpart(Counterpart::EDGE))
+                .expect("binds");
+            let mut last = 0.0;
+            for i in 1..=2000 {
+                let x = law.x_max() * f64::from(i) / 2000.0;
+                let r = law.response(x);
+                let at = format!("nu {nu}, t/R {tau}, x {x}: {r:?}");
+                assert!(r.force > last && r.stiffness > 0.0, "{at}");
+                last = r.force;
+            }
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 7 * 6);
+}
+
 /// A skin as thick as the fingertip (t/R 0.999) on a counterpart is the bonded pad on it: the
 /// core's map (`core_map`: the plane core law at Hertz's patch times the bonded pad's squeeze
 /// excess at delta/t) goes over into the bonded pad's (`mapping`) as t -> R, as the plane core
 /// law goes over into the flat one. Force within 1e-3 over the common range, on balls of R/2,
-/// R and 3R and a cylinder of R, at nu 0.3, 0.48 and 0.499.
+/// R and 3R, a cylinder of R and the right-angle edge, at nu 0.3, 0.48 and 0.499.
 #[test]
 fn a_skin_as_thick_as_the_fingertip_is_the_bonded_pad_on_a_counterpart() {
     let mut worst: f64 = 0.0;
@@ -169,6 +205,9 @@ fn a_skin_as_thick_as_the_fingertip_is_the_bonded_pad_on_a_counterpart() {
             Counterpart::try_ball(1.0),
             Counterpart::try_ball(3.0),
             Counterpart::try_cylinder(1.0),
+            // Session 18: the edge's core form (`core_map`) at t -> R is the bonded pad's edge
+            // map (`felt` -> 1, `chi_core` -> `chi_flat`).
+            Ok(Counterpart::EDGE),
         ] {
             let cp = cp.expect("a counterpart");
             let law = |backing| {

@@ -895,7 +895,12 @@ mod tests {
                     (0.75, 0.789, 0.0833),
                     (2.0, 1.6, 0.5),
                 ] {
-                    let on = CoreOnCounterpart { patch, rho, wrap };
+                    let on = CoreOnCounterpart {
+                        patch,
+                        rho,
+                        wrap,
+                        ridge: false,
+                    };
                     let core = Backed::try_new_on(
                         Backing::Core { thickness: tau },
                         Some(tau),
