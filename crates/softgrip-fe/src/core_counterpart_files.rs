@@ -92,7 +92,9 @@ pub const CORE_COUNTERPART_FILES: &[FeFile] = &[
     core_counterpart_file!("cylinder/core/pressure_nu0.48_t0.5_k3_d0.3.csv", PressureMap, 0.48, 0.5, Counterpart::Cylinder { k: 3.0 }, "held out of every fit: cylinder k = 3, core t/R = 0.5, nu = 0.48, pressure at x = 0.3"),
     core_counterpart_file!("edge/core/force_nu0.48_t0.4.csv", Force3d, 0.48, 0.4, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.4, nu = 0.48, x = 0.01..0.21"),
     core_counterpart_file!("edge/core/force_nu0.48_t0.5.csv", Force3d, 0.48, 0.5, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.5, nu = 0.48, x = 0.01..0.35"),
+    core_counterpart_file!("edge/core/force_nu0.4_t0.45.csv", Force3d, 0.4, 0.45, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.45, nu = 0.4, x = 0.01..0.19"),
     core_counterpart_file!("edge/core/pressure_nu0.48_t0.4_d0.1.csv", PressureMap, 0.48, 0.4, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.4, nu = 0.48, pressure at x = 0.1"),
     core_counterpart_file!("edge/core/pressure_nu0.48_t0.5_d0.1.csv", PressureMap, 0.48, 0.5, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.5, nu = 0.48, pressure at x = 0.1"),
     core_counterpart_file!("edge/core/pressure_nu0.48_t0.5_d0.3.csv", PressureMap, 0.48, 0.5, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.5, nu = 0.48, pressure at x = 0.3"),
+    core_counterpart_file!("edge/core/pressure_nu0.4_t0.45_d0.1.csv", PressureMap, 0.4, 0.45, Counterpart::Edge, "held out of every fit: edge, core t/R = 0.45, nu = 0.4, pressure at x = 0.1"),
 ];

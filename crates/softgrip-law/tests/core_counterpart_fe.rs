@@ -261,6 +261,9 @@ fn stated_force_error_3d(path: &str) -> f64 {
         // t/R 0.5 (to x = 0.35): -3.89 % at x = 0.01 (the 3D mesh's first point, +2 % stiff
         // against the axisymmetric FE on the plane), +3.62 % at 0.06, -2.20 % at 0.30.
         "edge/core/force_nu0.48_t0.5.csv" => 3.89,
+        // Blind for that form (run after it was merged, end of session 18, nu 0.4 t/R 0.45, to
+        // x = 0.19 where the 3D FE diverged): too soft by 8.03 % at its last point.
+        "edge/core/force_nu0.4_t0.45.csv" => 8.03,
         other => panic!("{other}: no stated error (run with --nocapture and state it)"),
     };
     (pct + 0.2) / 100.0
