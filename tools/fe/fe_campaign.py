@@ -236,6 +236,11 @@ def cases_3d():
     # ... the 3D core's mesh convergence on the cylinder of R (R/14 at the pole against the
     # campaign's R/20, as the bonded pad's), and the thicker skin on the edge
     c += [("core", 0.48, 0.4, 14, "conv", "cylinder", 1), ("core", 0.48, 0.5, 20, "heldout", "edge", 0)]
+    # blind for session 18's core-on-edge form (chosen with both nu 0.48 edge curves in view) and
+    # its cylinder path, launched at the end of session 18 under /work/fe-scratch/runs/fe3d-s19/:
+    # other nu and other skins on the edge, and a core on a cylinder of 2R away from nu 0.48
+    c += [("core", 0.4, 0.45, 20, "heldout", "edge", 0), ("core", 0.45, 0.6, 20, "heldout", "edge", 0),
+          ("core", 0.42, 0.45, 20, "heldout", "cylinder", 2), ("core", 0.3, 0.5, 20, "heldout", "edge", 0)]
     return c
 
 
