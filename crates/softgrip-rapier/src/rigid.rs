@@ -23,7 +23,9 @@
 //!   0`, not the point's sub-tolerance gap: redundant rows are consistent only if they ask for
 //!   one rigid motion.
 //!
-//! **The solve** (`solve_scalars`): block Gauss-Seidel, [`OUTER`] times: a dense LU of the
+//! **The solve** (`solve_scalars`), started from the previous (sub)step's answer (each row at
+//! its contact's impulse then, scaled by the step ratio: [`warm_start`]; a new contact at 0),
+//! block Gauss-Seidel, [`OUTER`] times: a dense LU of the
 //! normals (on their active set) and of the rigid friction pairs that stick and whose normal
 //! load comes mostly from the soft contacts, then [`SWEEPS`] sweeps of the friction pairs and
 //! torsions, each in closed form on its own mobility and clamped. Rows that compete for one
