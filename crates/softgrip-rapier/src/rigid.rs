@@ -23,9 +23,10 @@
 //!   0`, not the point's sub-tolerance gap: redundant rows are consistent only if they ask for
 //!   one rigid motion.
 //!
-//! **The solve** (`solve_scalars`), started from the previous (sub)step's answer (each row at
-//! its contact's impulse then, scaled by the step ratio: [`warm_start`]; a new contact at 0),
-//! block Gauss-Seidel, [`OUTER`] times: a dense LU of the
+//! **The solve** (`solve_scalars`), started where the fingertips' friction is a spring and no
+//! body is a link from the previous (sub)step's answer (each row at its contact's impulse
+//! then, scaled by the step ratio: [`warm_start`]; a new contact at 0), else from zero: block
+//! Gauss-Seidel, [`OUTER`] times: a dense LU of the
 //! normals (on their active set) and of the rigid friction pairs that stick and whose normal
 //! load comes mostly from the soft contacts, then [`SWEEPS`] sweeps of the friction pairs and
 //! torsions, each in closed form on its own mobility and clamped. Rows that compete for one
@@ -1029,8 +1030,16 @@ pub(crate) fn solve_coupled(
     let mut warm = Vec::new();
     // rapier's part: the rigid rows alone.
     let base: Vec<BodyState> = bodies.to_vec();
+    // Warm-started only where the fingertips' friction is a spring (`problem::spring`): the
+    // hard stick's solves stop at the pass cap on a drift (crate README, session 14), which a
+    // warm start carries on from step to step; measured (session 19), the 1 kg box of
+    // `tests/large_step.rs` then slipped 0.21 mm in the grip (bound 10 um).
+    let warmed = soft.iter().any(|r| r.k_t > 0.0);
     build(bodies, &[], rigid, &[], h, scalars, &mut first);
     warm_start(&[], rigid, 0, h, &mut warm);
+    if !warmed {
+        warm.iter_mut().for_each(|w| *w = None);
+    }
     let [.., immobile, degenerate] = stats;
     let Some(rest) = solve_saturating(
         bodies,
@@ -1056,6 +1065,9 @@ pub(crate) fn solve_coupled(
     // Everything.
     build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
     warm_start(soft, rigid, 1, h, &mut warm);
+    if !warmed {
+        warm.iter_mut().for_each(|w| *w = None);
+    }
     let [.., immobile, degenerate] = stats;
     let Some(j) = solve_saturating(
         bodies,
@@ -1195,6 +1207,16 @@ fn solve_saturating(
         .flat_map(|r| [r.a, r.b])
         .flatten()
         .any(|i| bodies[i].link.is_some());
+    // A group with a multibody or impulse-jointed link starts cold: warm-started, the jointed
+    // fingers of `tests/jointed.rs` held their box 43-75 % off the law (session 19; why is not
+    // known yet).
+    let cold: Vec<Option<f64>>;
+    let warm = if links {
+        cold = vec![None; rows.len()];
+        &cold[..]
+    } else {
+        warm
+    };
     let mut start = if links { bodies.to_vec() } else { Vec::new() };
     let mut wrenches = vec![Vector6::zeros(); if links { bodies.len() } else { 0 }];
     let mut u0 = Vec::with_capacity(rows.len());
