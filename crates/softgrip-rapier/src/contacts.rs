@@ -33,6 +33,8 @@ pub(crate) struct PairState {
     pub anchor_local: Vector3<f64>,
     /// The last substep in contact (`Scratch::stamp`).
     pub stamp: u64,
+    /// The contact's impulses of its last (sub)step: the coupled solve's warm start.
+    pub warm: Option<crate::problem::Warm>,
 }
 
 /// Buffers of one step, kept between steps so that a warm step allocates nothing (apart from
@@ -48,6 +50,9 @@ pub(crate) struct Scratch {
     pub rows: Vec<Row>,
     /// rapier's touching rigid contacts of the bodies the soft contacts move (`rigid`).
     pub rigid: Vec<RigidRow>,
+    /// The warm start of each rigid row the last coupled solve answered (`RigidRow::solved`),
+    /// by [`RigidKey`](crate::rigid::RigidKey): looked up, never iterated.
+    pub rigid_warm: FastMap<crate::rigid::RigidKey, [crate::problem::Warm; 2]>,
     /// The bodies to visit while gathering `rigid` (in order), the set of them, and the
     /// collider pairs already taken.
     pub rigid_visit: (

@@ -79,6 +79,41 @@ impl BodyState {
     }
 }
 
+/// A contact's impulses over the previous (sub)step, which warm-start the coupled solve
+/// (`rigid::solve_coupled`): kept in the contact's state between (sub)steps (a soft contact's
+/// in its `PairState`, a rigid support's in `Scratch::rigid_warm`, keyed by rapier's contact
+/// pair and the point's feature ids).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Warm {
+    /// Normal impulse \[N s\].
+    pub jn: f64,
+    /// Tangential impulse (world) \[N s\].
+    pub jt: Vector3<f64>,
+    /// Torsional impulse about the normal [N m s].
+    pub jtw: f64,
+    /// The (sub)step they are over \[s\], > 0.
+    pub h: f64,
+}
+
+impl Warm {
+    /// The impulses scaled to a (sub)step of `h` \[s\] (the same forces): normal, along
+    /// `t1`, along `t2`, torsion \[N s, N m s\]; zeros if not finite.
+    pub(crate) fn over(&self, h: f64, t1: &Vector3<f64>, t2: &Vector3<f64>) -> [f64; 4] {
+        let s = h / self.h;
+        let out = [
+            self.jn * s,
+            self.jt.dot(t1) * s,
+            self.jt.dot(t2) * s,
+            self.jtw * s,
+        ];
+        if out.iter().all(|x| x.is_finite()) {
+            out
+        } else {
+            [0.0; 4]
+        }
+    }
+}
+
 /// One contact prepared for the solve, and its impulses after it.
 #[derive(Debug, Clone)]
 pub(crate) struct Row {
@@ -140,6 +175,9 @@ pub(crate) struct Row {
     /// A contact beginning within the step: the compression its law is linearised at \[m\]
     /// (0: at the start; `step::onset`).
     pub lin: f64,
+    /// Its impulses of the previous (sub)step (`None`: a new contact), the coupled solve's
+    /// start.
+    pub warm: Option<Warm>,
 }
 
 /// The body at index `i` of the body table (`None`: fixed, no body).

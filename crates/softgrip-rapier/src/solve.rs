@@ -427,6 +427,7 @@ pub(crate) fn solve(
     for r in rigid.iter_mut() {
         r.jn = 0.0;
         r.jt = Vector3::zeros();
+        r.solved = None;
         let g = dynamic(Some(r.a))
             .or(dynamic(r.b))
             .map(|b| root_group[find(parent, b)])

@@ -32,7 +32,7 @@ use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
 use crate::guard::{self, At};
 use crate::hooks::{SoftEvents, SoftHooks};
 use crate::multibody::{self, LinkCtx};
-use crate::problem::{self, Row};
+use crate::problem::{self, Row, Warm};
 use crate::readout;
 use crate::rigid::RigidRow;
 use crate::step_error::{Phase, StepError, Subject};
@@ -506,7 +506,11 @@ impl Step<'_> {
                             }
                             let p = 0.5 * (p1 + p2);
                             if p.iter().chain(n.iter()).all(|v| v.is_finite()) && mu >= 0.0 {
-                                s.rigid.push(RigidRow::new(a, b, p, n, mu));
+                                let mut row = RigidRow::new(a, b, p, n, mu);
+                                let key = (c1, c2, pt.fid1.0, pt.fid2.0);
+                                row.key = Some(key);
+                                row.warm = s.rigid_warm.get(&key).copied();
+                                s.rigid.push(row);
                             }
                         }
                     }
@@ -565,8 +569,10 @@ impl Step<'_> {
                     .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
                     .unwrap_or(g.point_other),
                 stamp,
+                warm: None,
             });
             state.stamp = stamp;
+            row.warm = state.warm;
             // Hunt-Crossley: F_total = F (1 + alpha d delta/dt), alpha a material constant.
             row.force = resp.force;
             row.stiffness = resp.stiffness;
@@ -653,6 +659,13 @@ impl Step<'_> {
             &mut self.soft.counters,
             &mut s.net,
         );
+        // The rigid rows' warm start of the next (sub)step: those the coupled solve answered.
+        s.rigid_warm.clear();
+        for r in &s.rigid {
+            if let (Some(key), Some(w)) = (r.key, r.solved) {
+                s.rigid_warm.insert(key, w);
+            }
+        }
         if !s.rows.is_empty() {
             let geoms = &self.soft.geoms;
             let contact = |i: usize| {
@@ -681,18 +694,26 @@ impl Step<'_> {
             // k_t)`, along the slip), not more: where the contact point will be (it moves
             // over the other body at the relative velocity), less that stretch.
             // Without the spring (`k_t = 0`) the anchor goes to the contact point.
-            if row.sliding
-                && let Some(state) = self.soft.pairs.get_mut(&key)
-                && let Some(co) = self.physics.colliders.get(g.other)
-            {
-                let anchor = if row.k_t > 0.0 {
-                    g.point_other + row.vt_end * h + row.jt / (h * row.k_t)
-                } else {
-                    g.point_other
-                };
-                if anchor.iter().all(|x| x.is_finite()) {
-                    state.anchor_local =
-                        to_f64(co.position().inverse_transform_point(to_f32(&anchor)));
+            if let Some(state) = self.soft.pairs.get_mut(&key) {
+                // The next (sub)step's warm start (`problem::Warm`).
+                state.warm = Some(Warm {
+                    jn: row.jn,
+                    jt: row.jt,
+                    jtw: row.jtw,
+                    h,
+                });
+                if row.sliding
+                    && let Some(co) = self.physics.colliders.get(g.other)
+                {
+                    let anchor = if row.k_t > 0.0 {
+                        g.point_other + row.vt_end * h + row.jt / (h * row.k_t)
+                    } else {
+                        g.point_other
+                    };
+                    if anchor.iter().all(|x| x.is_finite()) {
+                        state.anchor_local =
+                            to_f64(co.position().inverse_transform_point(to_f32(&anchor)));
+                    }
                 }
             }
             let delta_end = compression_from_signed_distance(g.dist) - h * row.vn_end;
@@ -736,6 +757,7 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         past_wall: false,
         friction_mobility: None,
         lin: 0.0,
+        warm: None,
     }
 }
 
