@@ -17,12 +17,12 @@ use crate::error::{Error, Result};
 use crate::fast_hash::{FastMap, FastSet};
 use crate::fingertip::SoftFingertip;
 use crate::model::Model;
-use crate::problem::Row;
-use crate::readout::{Accums, TipContact};
-use crate::rigid::RigidRow;
+use crate::problem::{RigidRow, Row};
+use crate::readout::Accums;
 use crate::solve::SolveScratch;
 use crate::substep::SoftAccuracy;
 use crate::taxels::{TactileImage, TactileSlot};
+use crate::tip_contact::TipContact;
 use crate::tip_record::TipRecord;
 
 /// Memory of one contact between steps.
@@ -43,7 +43,7 @@ pub(crate) struct Scratch {
     pub body_table: BodyTable,
     /// The body table before the solve, restored for each further onset solve
     /// (`step::onset`).
-    pub onset_base: Vec<crate::problem::BodyState>,
+    pub onset_base: Vec<crate::mobility::BodyState>,
     /// The contacts prepared for the solve.
     pub rows: Vec<Row>,
     /// rapier's touching rigid contacts of the bodies the soft contacts move (`rigid`).

@@ -60,11 +60,11 @@ use rapier3d::prelude::{
     ImpulseJoint, JointMotor, Pose, RigidBody, RigidBodyHandle, RigidBodySet, Vector,
 };
 
-use crate::bodies::{KinematicVelocity, free_mobility};
 use crate::boundary::to_f64;
 use crate::joint_sweeps::{self, HARD_COMPLIANCE, SweepRow};
-use crate::multibody::{Generalised, Link, LinkCtx, motor_fold};
-use crate::problem::BodyState;
+use crate::kinematic::KinematicVelocity;
+use crate::mobility::{BodyState, Generalised, Link, free_mobility};
+use crate::multibody::{LinkCtx, motor_fold};
 
 /// The most bodies one jointed assembly may hold (its rows and mobility are dense, `6k x 6k`);
 /// a larger one is seen as free bodies.

@@ -47,58 +47,10 @@
 
 use nalgebra::{DMatrix, DVector, Dyn, LU, Matrix2, Vector2, Vector3, Vector6};
 
+use crate::mobility::{self, BodyState};
 use crate::multibody;
-use crate::problem::{BodyState, Row};
+use crate::problem::{RigidRow, Row};
 use crate::saturation;
-
-/// One of rapier's touching contact points between a dynamic body `a` that the soft contacts
-/// move (directly or through other rigid contacts) and another body `b` (`None`: fixed).
-#[derive(Debug, Clone)]
-pub(crate) struct RigidRow {
-    pub a: usize,
-    pub b: Option<usize>,
-    /// Contact point (world) \[m\].
-    pub p: Vector3<f64>,
-    /// Unit normal, b -> a.
-    pub n: Vector3<f64>,
-    /// Tangent basis.
-    pub t1: Vector3<f64>,
-    /// Tangent basis.
-    pub t2: Vector3<f64>,
-    /// rapier's friction coefficient of the manifold.
-    pub mu: f64,
-    /// The normal impulse the plugin applies (the soft contacts' part) \[N s\].
-    pub jn: f64,
-    /// The tangential impulse the plugin applies \[N s\].
-    pub jt: Vector3<f64>,
-}
-
-impl RigidRow {
-    pub(crate) fn new(
-        a: usize,
-        b: Option<usize>,
-        p: Vector3<f64>,
-        n: Vector3<f64>,
-        mu: f64,
-    ) -> Self {
-        let t1 = if n.x.abs() < 0.9 {
-            n.cross(&Vector3::x()).normalize()
-        } else {
-            n.cross(&Vector3::y()).normalize()
-        };
-        Self {
-            a,
-            b,
-            p,
-            n,
-            t1,
-            t2: n.cross(&t1),
-            mu,
-            jn: 0.0,
-            jt: Vector3::zeros(),
-        }
-    }
-}
 
 /// Relative diagonal compliance of a hard row (see the module's docs).
 const RIGID_COMPLIANCE: f64 = 1e-9;
@@ -255,7 +207,7 @@ impl Scalar {
         ] {
             if let Some(i) = i {
                 if bodies[i].link.is_some() {
-                    multibody::apply(bodies, i, &(self.lin * (s * j)), &(ang * (s * j)));
+                    mobility::apply(bodies, i, &(self.lin * (s * j)), &(ang * (s * j)));
                     continue;
                 }
                 let b = &mut bodies[i];
@@ -314,7 +266,7 @@ fn link_mobility(bodies: &[BodyState], i: usize, x: &Scalar, y: &Scalar, m: &mut
     let (sx, lx, ax) = x.on(i).unwrap_or((0.0, Vector3::zeros(), Vector3::zeros()));
     for k in [y.a, y.b].into_iter().flatten() {
         if let Some((sy, ly, ay)) = y.on(k)
-            && let Some(w) = multibody::pair(bodies, i, (&lx, &ax), k, (&ly, &ay))
+            && let Some(w) = mobility::pair(bodies, i, (&lx, &ax), k, (&ly, &ay))
         {
             *m += sx * sy * w;
         }

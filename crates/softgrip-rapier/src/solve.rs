@@ -34,9 +34,9 @@
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2, Vector3};
 
-use crate::multibody;
-use crate::problem::{BodyState, Row, body, normal_velocity, pair_mobility, rel_vel, spring};
-use crate::rigid::{self, CoupledScratch, RigidRow};
+use crate::mobility::{self, BodyState};
+use crate::problem::{RigidRow, Row, body, normal_velocity, pair_mobility, rel_vel, spring};
+use crate::rigid::{self, CoupledScratch};
 use crate::saturation;
 
 /// Most outer passes (normals, then friction sweeps) of one [`solve_group`] of two or more
@@ -59,7 +59,7 @@ fn apply_linear(bodies: &mut [BodyState], r: &Row, imp: &Vector3<f64>) {
         let Some(i) = i else { continue };
         if bodies[i].link.is_some() {
             let arm = (r.p - bodies[i].com).cross(&imp);
-            multibody::apply(bodies, i, &imp, &arm);
+            mobility::apply(bodies, i, &imp, &arm);
         } else {
             bodies[i].apply(&r.p, &imp);
         }
@@ -71,7 +71,7 @@ fn apply_torque(bodies: &mut [BodyState], r: &Row, t: f64) {
     for (i, sign) in [(r.a, 1.0), (r.b, -1.0)] {
         let Some(i) = i else { continue };
         if bodies[i].link.is_some() {
-            multibody::apply(bodies, i, &Vector3::zeros(), &(tv * sign));
+            mobility::apply(bodies, i, &Vector3::zeros(), &(tv * sign));
         } else if sign > 0.0 {
             bodies[i].w += bodies[i].inv_i * tv;
         } else {
@@ -188,7 +188,7 @@ fn friction_mobility(bodies: &[BodyState], r: &Row, h: f64) -> (Option<Matrix2<f
     let zero = Vector3::zeros();
     let spin = |i: Option<usize>| {
         i.map(
-            |i| match multibody::pair(bodies, i, (&zero, &r.n), i, (&zero, &r.n)) {
+            |i| match mobility::pair(bodies, i, (&zero, &r.n), i, (&zero, &r.n)) {
                 Some(w) => w,
                 None => r.n.dot(&(bodies[i].inv_i * r.n)),
             },
@@ -197,10 +197,10 @@ fn friction_mobility(bodies: &[BodyState], r: &Row, h: f64) -> (Option<Matrix2<f
     };
     let mut kt = spin(r.a) + spin(r.b);
     if let (Some(a), Some(b)) = (r.a, r.b)
-        && multibody::same_multibody(bodies, a, b)
+        && mobility::same_multibody(bodies, a, b)
     {
         // One multibody on both sides: the cross term (rows on a and b have opposite signs).
-        kt -= 2.0 * multibody::pair(bodies, a, (&zero, &r.n), b, (&zero, &r.n)).unwrap_or(0.0);
+        kt -= 2.0 * mobility::pair(bodies, a, (&zero, &r.n), b, (&zero, &r.n)).unwrap_or(0.0);
     }
     (k_inv, kt)
 }
