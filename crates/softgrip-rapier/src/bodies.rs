@@ -4,7 +4,7 @@
 //! application of the solve's impulses to rapier.
 
 use nalgebra::{Matrix3, Vector3};
-use rapier3d::prelude::{RigidBodyHandle, RigidBodySet, Vector};
+use rapier3d::prelude::{RigidBody, RigidBodyHandle, RigidBodySet, Vector};
 
 use crate::boundary::{to_f32, to_f64};
 use crate::counters::SoftCounters;
@@ -168,49 +168,11 @@ pub(crate) fn body_index(
     let rb = bodies.get(handle)?;
     let com = to_f64(rb.mass_properties().world_com);
     let state = if rb.is_dynamic() && !rb.is_sleeping() {
-        let (inv_m, inv_i) = free_mobility(rb);
-        // rapier adds gravity, the user force and torque during its step: predict them.
-        let gravity = to_f64(gravity) * rb.gravity_scale() as f64;
-        let v = to_f64(rb.linvel())
-            + (inv_m.component_mul(&to_f64(rb.user_force())) + gravity) * h_drift;
-        let w = to_f64(rb.angvel()) + inv_i * to_f64(rb.user_torque()) * h_drift;
-        let a_ext = inv_m.component_mul(&to_f64(rb.user_force())) + gravity;
-        BodyState {
-            v,
-            w,
-            inv_m,
-            inv_i,
-            com,
-            a_ext,
-            passive: (v, w),
-            link: None,
-        }
+        free_state(rb, com, to_f64(gravity), h_drift)
     } else if rb.is_kinematic() {
-        let (v, w) = kin_vel
-            .get(&handle)
-            .copied()
-            .unwrap_or((to_f64(rb.linvel()), to_f64(rb.angvel())));
-        BodyState {
-            v,
-            w,
-            inv_m: Vector3::zeros(),
-            inv_i: Matrix3::zeros(),
-            com,
-            a_ext: Vector3::zeros(),
-            passive: (v, w),
-            link: None,
-        }
+        kinematic_state(rb, handle, com, kin_vel)
     } else {
-        BodyState {
-            v: Vector3::zeros(),
-            w: Vector3::zeros(),
-            inv_m: Vector3::zeros(),
-            inv_i: Matrix3::zeros(),
-            com,
-            a_ext: Vector3::zeros(),
-            passive: (Vector3::zeros(), Vector3::zeros()),
-            link: None,
-        }
+        fixed_state(com)
     };
     if !(state.v.iter().chain(state.w.iter()).all(|x| x.is_finite())) {
         return None;
@@ -219,6 +181,67 @@ pub(crate) fn body_index(
     tb.handles.push(handle);
     tb.index.insert(handle, tb.table.len() - 1);
     Some(tb.table.len() - 1)
+}
+
+/// A free dynamic body's row: its velocity with gravity (`gravity` \[m/s^2\], times its
+/// gravity scale), the user force and torque integrated over `h_drift` \[s\], its mobility
+/// ([`free_mobility`]) and centre of mass `com` \[m\].
+fn free_state(rb: &RigidBody, com: Vector3<f64>, gravity: Vector3<f64>, h_drift: f64) -> BodyState {
+    let (inv_m, inv_i) = free_mobility(rb);
+    // rapier adds gravity, the user force and torque during its step: predict them.
+    let gravity = gravity * rb.gravity_scale() as f64;
+    let v =
+        to_f64(rb.linvel()) + (inv_m.component_mul(&to_f64(rb.user_force())) + gravity) * h_drift;
+    let w = to_f64(rb.angvel()) + inv_i * to_f64(rb.user_torque()) * h_drift;
+    let a_ext = inv_m.component_mul(&to_f64(rb.user_force())) + gravity;
+    BodyState {
+        v,
+        w,
+        inv_m,
+        inv_i,
+        com,
+        a_ext,
+        passive: (v, w),
+        link: None,
+    }
+}
+
+/// A kinematic body's row: its velocity over the (sub)step (`kin_vel` for a position-based
+/// one on its path, else rapier's), no mobility.
+fn kinematic_state(
+    rb: &RigidBody,
+    handle: RigidBodyHandle,
+    com: Vector3<f64>,
+    kin_vel: &KinematicVelocity,
+) -> BodyState {
+    let (v, w) = kin_vel
+        .get(&handle)
+        .copied()
+        .unwrap_or((to_f64(rb.linvel()), to_f64(rb.angvel())));
+    BodyState {
+        v,
+        w,
+        inv_m: Vector3::zeros(),
+        inv_i: Matrix3::zeros(),
+        com,
+        a_ext: Vector3::zeros(),
+        passive: (v, w),
+        link: None,
+    }
+}
+
+/// A fixed (or sleeping) body's row: at rest, no mobility.
+fn fixed_state(com: Vector3<f64>) -> BodyState {
+    BodyState {
+        v: Vector3::zeros(),
+        w: Vector3::zeros(),
+        inv_m: Vector3::zeros(),
+        inv_i: Matrix3::zeros(),
+        com,
+        a_ext: Vector3::zeros(),
+        passive: (Vector3::zeros(), Vector3::zeros()),
+        link: None,
+    }
 }
 
 /// A dynamic link of a multibody with no free dof (a fixed or kinematic root and only fixed

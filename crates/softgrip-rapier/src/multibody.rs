@@ -173,24 +173,7 @@ pub(crate) fn link_state(
     let com = to_f64(rb.mass_properties().world_com);
     let (mut v, mut w) = link_velocity(&jac, &qdot);
     let (mut vp, mut wp) = link_velocity(&jac, &passive);
-    // A kinematic root (a lifted hand) carries its links along: rapier moves a multibody's
-    // links to its root body's pose at the start of its step (`forward_kinematics`), with no
-    // velocity, and the plugin moves the root there before each pipeline step
-    // ([`carry_kinematic_roots`]). Over the coming (sub)step the links move by the root's
-    // target pose minus where the multibody has it now.
-    let root = mb.root();
-    if let Some(rr) = bodies
-        .get(root.rigid_body_handle())
-        .filter(|r| r.is_kinematic())
-    {
-        let (now, frame) = (rr.next_position(), root.local_to_world());
-        let (axis, mut angle) = (now.rotation * frame.rotation.inverse()).to_axis_angle();
-        if angle > std::f32::consts::PI {
-            angle -= 2.0 * std::f32::consts::PI;
-        }
-        let wr = to_f64(axis * angle) / ctx.h;
-        let vr = to_f64(now.translation - frame.translation) / ctx.h;
-        let carried = vr + wr.cross(&(com - to_f64(frame.translation)));
+    if let Some((carried, wr)) = root_carry(bodies, mb, &com, ctx.h) {
         v += carried;
         w += wr;
         vp += carried;
@@ -229,6 +212,33 @@ pub(crate) fn link_state(
         passive: (vp, wp),
         link: Some(Box::new(Link { host, slot, multi })),
     })
+}
+
+/// What a kinematic root (a lifted hand) carries a link at `com` \[m\] along with over the
+/// coming (sub)step `h` \[s\]: (linear [m/s], angular [rad/s]); `None` if the multibody's root
+/// is not kinematic. rapier moves a multibody's links to its root body's pose at the start of
+/// its step (`forward_kinematics`), with no velocity, and the plugin moves the root there
+/// before each pipeline step ([`carry_kinematic_roots`]). Over the coming (sub)step the links
+/// move by the root's target pose minus where the multibody has it now.
+fn root_carry(
+    bodies: &RigidBodySet,
+    mb: &Multibody,
+    com: &Vector3<f64>,
+    h: f64,
+) -> Option<(Vector3<f64>, Vector3<f64>)> {
+    let root = mb.root();
+    let rr = bodies
+        .get(root.rigid_body_handle())
+        .filter(|r| r.is_kinematic())?;
+    let (now, frame) = (rr.next_position(), root.local_to_world());
+    let (axis, mut angle) = (now.rotation * frame.rotation.inverse()).to_axis_angle();
+    if angle > std::f32::consts::PI {
+        angle -= 2.0 * std::f32::consts::PI;
+    }
+    let wr = to_f64(axis * angle) / h;
+    let vr = to_f64(now.translation - frame.translation) / h;
+    let carried = vr + wr.cross(&(com - to_f64(frame.translation)));
+    Some((carried, wr))
 }
 
 /// A multibody's generalised mobility (see the module's docs), expanded from rapier's reduced
