@@ -3,7 +3,7 @@
 //! kinematic bodies `kinematic`'s), waking, the gravity bookkeeping of a split step and the
 //! application of the solve's impulses to rapier.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 use rapier3d::prelude::{RigidBody, RigidBodyHandle, RigidBodySet, Vector};
 
 use crate::boundary::{to_f32, to_f64};
@@ -218,30 +218,12 @@ fn kinematic_state(
         .get(&handle)
         .copied()
         .unwrap_or((to_f64(rb.linvel()), to_f64(rb.angvel())));
-    BodyState {
-        v,
-        w,
-        inv_m: Vector3::zeros(),
-        inv_i: Matrix3::zeros(),
-        com,
-        a_ext: Vector3::zeros(),
-        passive: (v, w),
-        link: None,
-    }
+    BodyState::immobile(v, w, com)
 }
 
 /// A fixed (or sleeping) body's row: at rest, no mobility.
 fn fixed_state(com: Vector3<f64>) -> BodyState {
-    BodyState {
-        v: Vector3::zeros(),
-        w: Vector3::zeros(),
-        inv_m: Vector3::zeros(),
-        inv_i: Matrix3::zeros(),
-        com,
-        a_ext: Vector3::zeros(),
-        passive: (Vector3::zeros(), Vector3::zeros()),
-        link: None,
-    }
+    BodyState::immobile(Vector3::zeros(), Vector3::zeros(), com)
 }
 
 /// A dynamic link of a multibody with no free dof (a fixed or kinematic root and only fixed
@@ -269,16 +251,7 @@ fn welded_link_state(
         .unwrap_or((to_f64(root.linvel()), to_f64(root.angvel())));
     let com = to_f64(rb.mass_properties().world_com);
     let v = v_root + w.cross(&(com - to_f64(root.mass_properties().world_com)));
-    (v.iter().chain(w.iter()).all(|x| x.is_finite())).then_some(BodyState {
-        v,
-        w,
-        inv_m: Vector3::zeros(),
-        inv_i: Matrix3::zeros(),
-        com,
-        a_ext: Vector3::zeros(),
-        passive: (v, w),
-        link: None,
-    })
+    (v.iter().chain(w.iter()).all(|x| x.is_finite())).then_some(BodyState::immobile(v, w, com))
 }
 
 /// Applies the rows' impulses to rapier's bodies. They are summed per body in `f64` and

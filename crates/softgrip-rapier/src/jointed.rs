@@ -272,15 +272,19 @@ fn rapier_converges(
         .max()
         .unwrap_or(0);
     let sweeps = ctx.sweeps.saturating_add(extra);
-    let sweep_rows: Vec<SweepRow<'_>> = rows
-        .iter()
+    let sweep_rows = sweep_rows(rows);
+    joint_sweeps::converges(minv, &sweep_rows, sweeps)
+}
+
+/// The joint rows as `joint_sweeps` reads them.
+fn sweep_rows(rows: &[JointRow]) -> Vec<SweepRow<'_>> {
+    rows.iter()
         .map(|r| SweepRow {
             g: &r.g,
             compliance: r.compliance,
             joint: r.joint,
         })
-        .collect();
-    joint_sweeps::converges(minv, &sweep_rows, sweeps)
+        .collect()
 }
 
 /// The Gauss-Seidel sweeps per solver pass at which rapier's sweeps over the joint rows of the
@@ -324,14 +328,7 @@ pub(crate) fn sweeps_needed(
             }
         }
     }
-    let sweep_rows: Vec<SweepRow<'_>> = rows
-        .iter()
-        .map(|r| SweepRow {
-            g: &r.g,
-            compliance: r.compliance,
-            joint: r.joint,
-        })
-        .collect();
+    let sweep_rows = sweep_rows(&rows);
     joint_sweeps::sweeps_for(joint_sweeps::sweep_rate(&minv, &sweep_rows)?)
 }
 

@@ -75,6 +75,21 @@ impl BodyState {
         dir_i.dot(&(self.inv_m.component_mul(dir_k) + dw.cross(&ri)))
     }
 
+    /// A body that impulses do not move (fixed, kinematic, or welded to a kinematic root) at
+    /// centre of mass `com` \[m\], moving at `v` [m/s] and `w` [rad/s] over the (sub)step.
+    pub(crate) fn immobile(v: Vector3<f64>, w: Vector3<f64>, com: Vector3<f64>) -> Self {
+        Self {
+            v,
+            w,
+            inv_m: Vector3::zeros(),
+            inv_i: Matrix3::zeros(),
+            com,
+            a_ext: Vector3::zeros(),
+            passive: (v, w),
+            link: None,
+        }
+    }
+
     /// Whether impulses move the body (a free dynamic body or a multibody link).
     pub(crate) fn is_dynamic(&self) -> bool {
         self.inv_m.iter().any(|m| *m > 0.0) || self.link.is_some()
