@@ -523,7 +523,9 @@ fn start_springs(bodies: &mut [BodyState], rows: &[Scalar], mob: &DMatrix<f64>, 
 }
 
 /// Whether row `i` is solved in the LU (with the normals) in the coming pass, after the
-/// impulses `j`; `slid` marks the friction rows that slid out of it for good.
+/// impulses `j`; `slid` marks the friction rows that slid out of it for good. A rigid friction
+/// pair is solved with the normals where the soft contacts carry most of its normal's load,
+/// and stays in the sweeps for good once it slid out of the LU (the set does not cycle).
 fn in_lu(rows: &[Scalar], i: usize, j: &[f64], slid: &[bool]) -> bool {
     match rows[i].kind {
         Kind::SoftNormal { .. } | Kind::HardNormal => true,
