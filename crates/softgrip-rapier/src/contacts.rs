@@ -17,12 +17,12 @@ use crate::error::{Error, Result};
 use crate::fast_hash::{FastMap, FastSet};
 use crate::fingertip::SoftFingertip;
 use crate::model::Model;
-use crate::problem::Row;
-use crate::readout::{Accums, TipContact};
-use crate::rigid::RigidRow;
+use crate::problem::{RigidRow, Row};
+use crate::readout::Accums;
 use crate::solve::SolveScratch;
 use crate::substep::SoftAccuracy;
 use crate::taxels::{TactileImage, TactileSlot};
+use crate::tip_contact::TipContact;
 use crate::tip_record::TipRecord;
 
 /// Memory of one contact between steps.
@@ -45,14 +45,14 @@ pub(crate) struct Scratch {
     pub body_table: BodyTable,
     /// The body table before the solve, restored for each further onset solve
     /// (`step::onset`).
-    pub onset_base: Vec<crate::problem::BodyState>,
+    pub onset_base: Vec<crate::mobility::BodyState>,
     /// The contacts prepared for the solve.
     pub rows: Vec<Row>,
     /// rapier's touching rigid contacts of the bodies the soft contacts move (`rigid`).
     pub rigid: Vec<RigidRow>,
     /// The warm start of each rigid row the last coupled solve answered (`RigidRow::solved`),
-    /// by [`RigidKey`](crate::rigid::RigidKey): looked up, never iterated.
-    pub rigid_warm: FastMap<crate::rigid::RigidKey, [crate::problem::Warm; 2]>,
+    /// by [`RigidKey`](crate::problem::RigidKey): looked up, never iterated.
+    pub rigid_warm: FastMap<crate::problem::RigidKey, [crate::problem::Warm; 2]>,
     /// The bodies to visit while gathering `rigid` (in order), the set of them, and the
     /// collider pairs already taken.
     pub rigid_visit: (

@@ -24,17 +24,17 @@ use nalgebra::Vector3;
 use rapier3d::prelude::{EventHandler, PhysicsHooks, PhysicsWorld};
 use softgrip_law::Regime;
 
-use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
+use crate::bodies::{self, body_index};
 use crate::boundary::{to_f32, to_f64};
 use crate::contacts::{PairState, Scratch, SoftContacts};
 use crate::counters::Lap;
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
 use crate::guard::{self, At};
 use crate::hooks::{SoftEvents, SoftHooks};
+use crate::kinematic::{self, KinematicPath, KinematicVelocity, interpolate};
 use crate::multibody::{self, LinkCtx};
-use crate::problem::{self, Row, Warm};
+use crate::problem::{self, RigidRow, Row, Warm};
 use crate::readout;
-use crate::rigid::RigidRow;
 use crate::step_error::{Phase, StepError, Subject};
 use crate::substep;
 use onset::update_blend;
@@ -231,14 +231,14 @@ impl Step<'_> {
         self.soft.counters.steps += 1;
 
         // Kinematic paths.
-        let kinematic = bodies::kinematic_paths(&self.physics.bodies);
+        let kinematic = kinematic::kinematic_paths(&self.physics.bodies);
 
         // The plugin's buffers, reused from step to step (no allocation once warm).
         let mut scratch = std::mem::take(&mut self.soft.scratch);
 
         // 2.-3. Contacts now, and the substep count.
         self.detect(dt, &mut scratch);
-        let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, &kinematic, 1.0, dt);
+        let kin_vel = kinematic::kinematic_velocities(&self.physics.bodies, &kinematic, 1.0, dt);
         self.prepare(dt, &kin_vel, &mut scratch);
         let n = self.substep_count(dt, &scratch);
         let h = dt / n as f64;
@@ -305,7 +305,7 @@ impl Step<'_> {
                     rb.set_next_kinematic_position(interpolate(start, target, s as f32));
                 }
             }
-            let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
+            let kin_vel = kinematic::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
             multibody::carry_kinematic_roots(self.physics, kinematic, s as f32);
             self.substep_contacts(h, &kin_vel, fresh, scratch)?;
             self.pipeline_step(h);
