@@ -7,6 +7,16 @@
 use proptest::prelude::*;
 use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level, Material};
 
+/// The calibrated law of a unit fingertip (E* = 1 Pa, R = 1 m, so curvatures in 1/m are
+/// `kappa R`) with `backing`, bound to `cp`.
+fn unit_law(nu: f64, backing: Backing, cp: Counterpart) -> ContactLaw {
+    ContactParams::try_from_parts(1.0, 1.0, nu)
+        .and_then(|p| p.with_backing(backing))
+        .and_then(|p| ContactLaw::try_new(p, Level::Calibrated))
+        .and_then(|l| l.with_counterpart(cp))
+        .expect("a valid law that binds")
+}
+
 /// A calibrated core law (E*, R, nu, t/R random) and a counterpart in `kappa R`: balls and
 /// cylinders of R2/R 0.05-100, or two curvatures, concave to -0.99/R, or the right-angle edge
 /// (session 18: a core's own curve there too, `core_map`).
@@ -140,13 +150,8 @@ fn a_core_in_a_bowl_stiffens_to_the_end_of_its_range() {
     for kappa in [-0.999, -0.99, -0.9, -0.7, -0.5, -0.3, -0.1] {
         for nu in [0.3, 0.4, 0.45, 0.475, 0.49, 0.4999, 0.5] {
             for tau in [0.05, 0.1, 0.3, 0.5, 0.7, 0.95] {
-                let p = ContactParams::try_from_parts(1.0, 1.0, nu)
-                    .and_then(|p| p.with_backing(Backing::Core { thickness: tau }))
-                    .expect("valid params");
-                // R = 1 m: the curvature in 1/m is kappa R.
-                let law = ContactLaw::try_new(p, Level::Calibrated)
-                    .and_then(|l| l.with_counterpart(Counterpart::try_curved(kappa, kappa)?))
-                    .expect("binds");
+                let bowl = Counterpart::try_curved(kappa, kappa).expect("a bowl");
+                let law = unit_law(nu, Backing::Core { thickness: tau }, bowl);
                 let mut last = 0.0;
                 for i in 1..=2000 {
                     let x = law.x_max() * f64::from(i) / 2000.0;
@@ -171,12 +176,7 @@ fn a_core_on_an_edge_stiffens_to_the_end_of_its_range() {
     let mut checked = 0;
     for nu in [0.3, 0.4, 0.45, 0.475, 0.49, 0.4999, 0.5] {
         for tau in [0.05, 0.1, 0.3, 0.5, 0.7, 0.95] {
-            let p = ContactParams::try_from_parts(1.0, 1.0, nu)
-                .and_then(|p| p.with_backing(Backing::Core { thickness: tau }))
-                .expect("valid params");
-            let law = ContactLaw::try_new(p, Level::Calibrated)
-                .and_then(|l| l.with_counterpart(Counterpart::EDGE))
-                .expect("binds");
+            let law = unit_law(nu, Backing::Core { thickness: tau }, Counterpart::EDGE);
             let mut last = 0.0;
             for i in 1..=2000 {
                 let x = law.x_max() * f64::from(i) / 2000.0;
@@ -197,23 +197,15 @@ fn a_core_on_an_edge_stiffens_to_the_end_of_its_range() {
 /// the same at nu 0.3-0.5 as at 0.48, and on a plane they still differ with nu.
 #[test]
 fn a_core_and_the_bonded_pad_on_an_edge_are_one_curve_over_e_star_for_every_nu() {
-    let law = |nu: f64, backing: Backing, cp: Counterpart| {
-        let p = ContactParams::try_from_parts(1.0, 1.0, nu)
-            .and_then(|p| p.with_backing(backing))
-            .expect("valid params");
-        ContactLaw::try_new(p, Level::Calibrated)
-            .and_then(|l| l.with_counterpart(cp))
-            .expect("binds")
-    };
     let mut checked = 0;
     for backing in [
         Backing::Flat,
         Backing::Core { thickness: 0.3 },
         Backing::Core { thickness: 0.5 },
     ] {
-        let reference = law(0.48, backing, Counterpart::EDGE);
+        let reference = unit_law(0.48, backing, Counterpart::EDGE);
         for nu in [0.3, 0.4, 0.45, 0.49, 0.5] {
-            let on_edge = law(nu, backing, Counterpart::EDGE);
+            let on_edge = unit_law(nu, backing, Counterpart::EDGE);
             assert_eq!(on_edge.x_max().to_bits(), reference.x_max().to_bits());
             for i in 1..=100 {
                 let x = reference.x_max() * f64::from(i) / 100.0;
@@ -223,8 +215,12 @@ fn a_core_and_the_bonded_pad_on_an_edge_are_one_curve_over_e_star_for_every_nu()
                     "{backing:?} nu {nu} x {x}"
                 );
             }
-            let plane = law(nu, backing, Counterpart::PLANE).response(0.1).force;
-            let plane_ref = law(0.48, backing, Counterpart::PLANE).response(0.1).force;
+            let plane = unit_law(nu, backing, Counterpart::PLANE)
+                .response(0.1)
+                .force;
+            let plane_ref = unit_law(0.48, backing, Counterpart::PLANE)
+                .response(0.1)
+                .force;
             assert!(
                 (plane / plane_ref - 1.0).abs() > 1e-3,
                 "{backing:?} nu {nu}: {plane}"
@@ -254,14 +250,7 @@ fn a_skin_as_thick_as_the_fingertip_is_the_bonded_pad_on_a_counterpart() {
             Ok(Counterpart::EDGE),
         ] {
             let cp = cp.expect("a counterpart");
-            let law = |backing| {
-                let p = ContactParams::try_from_parts(1.0, 1.0, nu)
-                    .and_then(|p| p.with_backing(backing))
-                    .expect("valid params");
-                ContactLaw::try_new(p, Level::Calibrated)
-                    .and_then(|l| l.with_counterpart(cp))
-                    .expect("binds")
-            };
+            let law = |backing| unit_law(nu, backing, cp);
             let core = law(Backing::Core { thickness: 0.999 });
             let flat = law(Backing::Flat);
             let top = core.x_max().min(flat.x_max());
