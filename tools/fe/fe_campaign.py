@@ -247,6 +247,11 @@ def cases_3d():
     # 3D at R/40 at the pole, to x = 0.3, a background campaign across sessions
     # (/work/fe-scratch/runs/fe3d-axes/)
     c += [("flat", 0.48, 0, 40, "conv", "cylinder", 1), ("flat", 0.48, 0, 40, "check3d", "plane", 0)]
+    # session 20 (issue 24): the bonded pad on the right-angle edge away from nu = 0.48, held out.
+    # Session 19 took a core's and the bonded pad's edge form at the edge FE's nu 0.48 (a strip's
+    # force over E* does not depend on nu), which moved the flat pad on an edge at nu 0.3 by
+    # +6.7 % at x = 0.2 with no FE there; run under /work/fe-scratch/runs/fe3d-s20/
+    c += [("flat", 0.3, 0, 20, "heldout", "edge", 0)]
     return c
 
 
