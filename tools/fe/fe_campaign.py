@@ -247,6 +247,14 @@ def cases_3d():
     # 3D at R/40 at the pole, to x = 0.3, a background campaign across sessions
     # (/work/fe-scratch/runs/fe3d-axes/)
     c += [("flat", 0.48, 0, 40, "conv", "cylinder", 1), ("flat", 0.48, 0, 40, "check3d", "plane", 0)]
+    # session 20 (issue 24 item 2): role "axes" exports a 3D run on its own (its R/20 pair need
+    # not be on disk) to cylinder/<geometry>/axes_nu{NU}_{k{K}|plane}_n{N}.csv, the semi-axes
+    # columns with their upper envelopes (`axes_envelope`): the R/40 cylinder of R and the R/40
+    # plane above (the same runs), and a cylinder the semi-axes claim (the law within 5 % of the
+    # R/40 envelope, tools/calibration/AXES_R40.md) was not made on, R2 = 3R, to x = 0.3
+    # (/work/fe-scratch/runs/fe3d-axes2/)
+    c += [("flat", 0.48, 0, 40, "axes", "cylinder", 1), ("flat", 0.48, 0, 40, "axes", "plane", 0),
+          ("flat", 0.48, 0, 40, "axes", "cylinder", 3)]
     # session 20 (issue 24): the bonded pad on the right-angle edge away from nu = 0.48, held out.
     # Session 19 took a core's and the bonded pad's edge form at the edge FE's nu 0.48 (a strip's
     # force over E* does not depend on nu), which moved the flat pad on an edge at nu 0.3 by
@@ -256,7 +264,7 @@ def cases_3d():
 
 
 def make(geometry, nu, t, h, role="main", cp="plane", k=0.0):
-    if cp != "plane" or role == "check3d":
+    if cp != "plane" or role in ("check3d", "axes"):
         return make_curved(geometry, nu, t, h, role, cp, k)
     if role == "smoke":  # exactly what smoke.sh runs
         return fe_run.make_case(geometry, nu, t, h, 0.3, dt_small=0.005)
@@ -289,7 +297,7 @@ def make_curved(geometry, nu, t, h, role, cp, k):
     if geometry == "core" and (cp in ("cylinder", "edge") or role == "check3d"):
         return fe_run.make_case(geometry, nu, t, h, 0.5, dt_small=0.005, late_dt=0.01,
                                 counterpart=cp, k=k, dim=3)
-    if cp in ("cylinder", "edge") or role == "check3d":
+    if cp in ("cylinder", "edge") or role in ("check3d", "axes"):
         tend = 0.6 if role in ("main", "heldout") else 0.3
         return fe_run.make_case(geometry, nu, t, h, tend, dt_small=0.005, late_dt=0.02,
                                 counterpart=cp, k=k, dim=3)
@@ -310,10 +318,10 @@ def make_curved(geometry, nu, t, h, role, cp, k):
 
 
 def selected(a):
-    """The campaign's cases, filtered by --counterpart (the 3D plane check goes with the
-    cylinder)."""
+    """The campaign's cases, filtered by --counterpart (the 3D plane, check3d and axes, goes
+    with the cylinder)."""
     def kind(c):
-        return "cylinder" if c[4] == "check3d" else c[5]
+        return "cylinder" if c[4] in ("check3d", "axes") else c[5]
     return [c for c in cases() if not a.counterpart or kind(c) in a.counterpart]
 
 
@@ -471,6 +479,80 @@ def write_force3d(path, res):
                     f"{r['b32']:.6g},{r['minJ']:.4f},{r['VV0']:.5f},{r['copen']:.3g}\n")
 
 
+AXES_COLUMNS = (("a", "across"), ("b", "along"), ("a32", "across_32"), ("b32", "along_32"))
+# the upper envelope of a semi-axis column: fitted on x >= AXES_ENV_FROM, a/sqrt(x) a polynomial
+# of degree AXES_ENV_DEG in sqrt(x) (tools/calibration/AXES_R40.md section 4, its first variant)
+AXES_ENV_FROM = 0.05
+AXES_ENV_DEG = 2
+
+
+def axes_fname(geometry, nu, t, n, cp, k):
+    """tests/data/fe/cylinder/<geometry>/axes_nu{NU}[_t{T}]_{k{K}|plane}_n{N}.csv: a 3D run's
+    semi-axes on its mesh R/N (next to the campaign's R/20 force files, which it does not
+    replace)."""
+    s = f"axes_nu{nu:g}" + (f"_t{t:g}" if geometry == "core" else "")
+    s += (f"_k{k:g}" if cp == "cylinder" else "_plane") + f"_n{n:g}"
+    return os.path.join(OUT, "cylinder", geometry, s + ".csv")
+
+
+def fit_sqrt(x, y, deg):
+    """Least squares y/sqrt(x) = c0 + c1 s + ... + c_deg s^deg, s = sqrt(x): the coefficients."""
+    s = np.sqrt(x)
+    return np.linalg.lstsq(np.vander(s, deg + 1, increasing=True), y / s, rcond=None)[0]
+
+
+def axes_envelope(x, y, lo=AXES_ENV_FROM, deg=AXES_ENV_DEG):
+    """The upper envelope of a semi-axis column read from the last node in contact (or the
+    gap's edge fit), which only ever lags the true edge by up to one node spacing: fit
+    y/sqrt(x) as a polynomial in sqrt(x) on lo <= x, keep the points on or above the fit (those
+    just after a node entered contact) and refit them once. Returns (coefficients c0..c_deg,
+    the points kept, the points fitted)."""
+    x, y = np.asarray(x, float), np.asarray(y, float)
+    ok = np.isfinite(y) & (x >= lo - 1e-9)
+    x, y = x[ok], y[ok]
+    c = fit_sqrt(x, y, deg)
+    keep = y >= np.sqrt(x) * (np.vander(np.sqrt(x), deg + 1, increasing=True) @ c) * (1 - 1e-9)
+    return fit_sqrt(x[keep], y[keep], deg), int(keep.sum()), len(x)
+
+
+def write_axes(path, res, n):
+    """A 3D run's semi-axes (as write_force3d's columns) and, per column, its upper envelope
+    (`axes_envelope`) at each x >= AXES_ENV_FROM (nan below), the fits' coefficients in the
+    provenance line."""
+    rows = res["rows"]
+    x = np.array([r["x"] for r in rows])
+    env, words = {}, []
+    for key, name in AXES_COLUMNS:
+        c, kept, of = axes_envelope(x, [r[key] for r in rows])
+        s = np.sqrt(x)
+        env[key] = np.where(x >= AXES_ENV_FROM - 1e-9,
+                            s * (np.vander(s, len(c), increasing=True) @ c), np.nan)
+        words.append(f"{name} " + ", ".join(f"{v:.6g}" for v in c) + f" ({kept} of {of} points)")
+    cp = res["meta"]["case"]["counterpart"]
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(provenance(res, f"; semi-axes on the mesh R/{n:g} at the pole, the run on its own "
+                                f"(no other mesh paired with it): the patch's extent along x "
+                                f"(across the {'cylinder' if cp == 'cylinder' else 'plane'}) and "
+                                f"z (along it) from the surface nodes on the two symmetry planes: "
+                                f"*_mm from the last node in contact (resolved to one node "
+                                f"spacing), *_32_mm from the gap's Hertzian edge shape through "
+                                f"the first two nodes outside; envelope_*: the upper envelope of "
+                                f"each column (fe_campaign.py axes_envelope: y/sqrt(x) = c0 + c1 "
+                                f"s + c2 s^2, s = sqrt(x), least squares on x >= "
+                                f"{AXES_ENV_FROM:g}, the points on or above it refitted once; nan "
+                                f"below {AXES_ENV_FROM:g}), c0, c1, c2 [mm]: " + "; ".join(words) +
+                                "; read by softgrip-law's tests, by no fit") + "\n")
+        f.write("delta_over_R,force_N,semi_axis_across_mm,semi_axis_along_mm,"
+                "semi_axis_across_32_mm,semi_axis_along_32_mm,min_element_J,V_over_V0,"
+                "max_copen_over_delta,envelope_across_mm,envelope_along_mm,"
+                "envelope_across_32_mm,envelope_along_32_mm\n")
+        for i, r in enumerate(rows):
+            f.write(f"{r['x']:g},{r['F']:.6g},{r['a']:.6g},{r['b']:.6g},{r['a32']:.6g},"
+                    f"{r['b32']:.6g},{r['minJ']:.4f},{r['VV0']:.5f},{r['copen']:.3g},"
+                    + ",".join(f"{env[k][i]:.6g}" for k, _ in AXES_COLUMNS) + "\n")
+
+
 def write_pressure3d(path, res, x):
     """A 3D run's pressure map at x: every surface node with CPRESS > 0, deformed x and z."""
     pr = res["run"].pressure(round(x, 6))
@@ -542,6 +624,14 @@ MIN_ROWS = 4
 def cmd_export(a):
     done = {}
     for g, nu, t, h, role, cp, k in selected(a):
+        if role == "axes":
+            res = load(a.runs, g, nu, t, h, role, cp, k)
+            if res is not None and len(res["rows"]) >= MIN_ROWS:
+                path = axes_fname(g, nu, t, h, cp, k)
+                write_axes(path, res, h)
+                print(f"axes {cp} k={k:g} {g} nu={nu:g} R/{h:g}: {os.path.relpath(path, REPO)}, "
+                      f"reached x = {res['reached']:g}: {res['why']}")
+            continue
         if role not in ("main", "reach", "heldout"):
             continue
         res = load(a.runs, g, nu, t, h, role, cp, k)
