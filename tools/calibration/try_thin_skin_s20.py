@@ -253,7 +253,7 @@ def main(args):
             loo(mode, curves)
     else:
         print("| variant | constants | fitted | fitted t/R 0.2 | held out t/R >= 0.2 | "
-              "held out t/R < 0.2 | t/R 0.1 / 0.12 (0.38) / 0.12 (0.49) / 0.14 / 0.15 |")
+              "held out 0.1 <= t/R < 0.2 | t/R 0.1 / 0.12 (0.38) / 0.12 (0.49) / 0.14 / 0.15 |")
         print("|---|---|---|---|---|---|---|")
         for mode in args or TABLE:
             p = run(mode, curves)
