@@ -93,6 +93,16 @@ def cases():
     c += [("core", 0.48, 0.3, 40, "main"), ("core", 0.35, 0.3, 40, "main"),
           ("core", 0.47, 0.25, 40, "heldout"), ("core", 0.48, 0.3, 30, "conv"),
           ("core", 0.45, 0.35, 40, "main"), ("core", 0.49, 0.25, 40, "main")]
+    # session 20 (thin skins, run under /work/fe-scratch/runs/thin-s20/): a skin thinner than
+    # any run before (t/R 0.08, 6 elements through it at R/75, as session 13's t/R 0.1 on R/60),
+    # held out: there Matthewson's thin-layer limit and the law's layer series part as a/t grows
+    # to 3 (CORE_FORM.md "Thin skins: session 20", try_thin_skin_s20.py)
+    # After its result, its mesh check (R/100, 8 elements through the skin), a second blind
+    # skin at the compressible end of the range (nu 0.3) and a third near incompressibility
+    # (nu 0.48: diverged past x = 0.03, three rows, so `export` leaves it out; CORE_FORM.md
+    # gives its numbers)
+    c += [("core", 0.4, 0.08, 75, "heldout"), ("core", 0.4, 0.08, 100, "conv"),
+          ("core", 0.3, 0.08, 75, "heldout"), ("core", 0.48, 0.08, 75, "heldout")]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
 

@@ -428,6 +428,22 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.25)
     ),
+    fe_file!(
+        "core/force_nu0.4_t0.08.csv",
+        Force,
+        Some(0.4),
+        "held out of every fit (the sixth set, session 20, blind): skin t/R = 0.08 over a rigid core, nu = 0.4, R/75 (R/100 within 0.16 %), x = 0.01..0.04",
+        "core",
+        Some(0.08)
+    ),
+    fe_file!(
+        "core/force_nu0.3_t0.08.csv",
+        Force,
+        Some(0.3),
+        "held out of every fit (the sixth set, session 20, blind): skin t/R = 0.08 over a rigid core, nu = 0.3, R/75, x = 0.01..0.05",
+        "core",
+        Some(0.08)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
