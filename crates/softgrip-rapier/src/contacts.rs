@@ -233,7 +233,7 @@ impl SoftContacts {
             .retain(|(a, b), _| *a != collider && *b != collider);
         self.hook_view.insert(collider, facing);
         let record = TipRecord {
-            model: Arc::new(Model::of_tip(&fingertip)),
+            model: fingertip.model().clone(),
             tactile: fingertip.tactile().map(|grid| TactileSlot::new(*grid)),
             fingertip,
             groups,

@@ -362,6 +362,19 @@ impl<'a> Tip<'a> {
         }
         let c = self.query_contact(other_co, prediction, counters)?;
         let s = surfaces(&c, counters)?;
+        // Behind the flat face of a backed fingertip is its rigid finger (`behind_face`).
+        let tip_behind = behind_face(self.facing, &(-s.normal));
+        if !soft_pair && tip_behind {
+            // rapier's own rigid contact (the hooks keep its solver contacts there).
+            return None;
+        }
+        // On a rigid body: what the fingertip touches there; a pair of fingertips: a plane
+        // (only the one that is used is computed).
+        let touch = if soft_pair {
+            Touch::plane(&s.normal)
+        } else {
+            curvature::counterpart_at(other_co, &s.point_other, &s.normal, f64::from(self.r))
+        };
         let g = Geom {
             tip: self.handle,
             other: other_h,
@@ -372,15 +385,10 @@ impl<'a> Tip<'a> {
             normal: s.normal,
             dist: s.dist,
             soft_pair,
-            touch: Touch::plane(&s.normal),
+            touch,
         };
-        // Behind the flat face of a backed fingertip is its rigid finger (`behind_face`).
-        let tip_behind = behind_face(self.facing, &(-s.normal));
         if !soft_pair {
-            // rapier's own rigid contact (the hooks keep its solver contacts there).
-            let touch =
-                curvature::counterpart_at(other_co, &s.point_other, &s.normal, f64::from(self.r));
-            return (!tip_behind).then_some(Geom { touch, ..g });
+            return Some(g);
         }
         let other_facing = tips
             .get(&other_h)
