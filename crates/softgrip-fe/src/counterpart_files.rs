@@ -279,7 +279,9 @@ pub const COUNTERPART_FILES: &[FeFile] = &[
     counterpart_file!("edge/free/force_nu0.48.csv", Force3d, 0.48, "free", Counterpart::Edge, "edge, free, nu = 0.48, x = 0.01..0.42"),
     counterpart_file!("edge/free/pressure_nu0.48_d0.1.csv", PressureMap, 0.48, "free", Counterpart::Edge, "edge, free, nu = 0.48, pressure at x = 0.1"),
     counterpart_file!("edge/free/pressure_nu0.48_d0.3.csv", PressureMap, 0.48, "free", Counterpart::Edge, "edge, free, nu = 0.48, pressure at x = 0.3"),
+    counterpart_file!("edge/flat/force_nu0.3.csv", Force3d, 0.3, "flat", Counterpart::Edge, "held out of every fit: edge, flat, nu = 0.3, x = 0.01..0.15"),
     counterpart_file!("edge/flat/force_nu0.48.csv", Force3d, 0.48, "flat", Counterpart::Edge, "edge, flat, nu = 0.48, x = 0.01..0.4"),
+    counterpart_file!("edge/flat/pressure_nu0.3_d0.1.csv", PressureMap, 0.3, "flat", Counterpart::Edge, "held out of every fit: edge, flat, nu = 0.3, pressure at x = 0.1"),
     counterpart_file!("edge/flat/pressure_nu0.48_d0.1.csv", PressureMap, 0.48, "flat", Counterpart::Edge, "edge, flat, nu = 0.48, pressure at x = 0.1"),
     counterpart_file!("edge/flat/pressure_nu0.48_d0.3.csv", PressureMap, 0.48, "flat", Counterpart::Edge, "edge, flat, nu = 0.48, pressure at x = 0.3"),
 ];

@@ -329,6 +329,10 @@ fn force_on_an_edge_is_within_its_stated_error_of_the_fe() {
         let stated = match file.path {
             "edge/flat/force_nu0.48.csv" => 4.25,
             "edge/free/force_nu0.48.csv" => 3.31,
+            // Session 20, blind (run after session 19 took the edge form at nu 0.48, never in a
+            // fit): F/E* there is 0.99-1.026x the nu 0.48 run's at every x to 0.15, as the
+            // strip argument says.
+            "edge/flat/force_nu0.3.csv" => 4.03,
             _ => 9.8, // an edge not in COUNTERPART.md yet: the target
         };
         assert!(
