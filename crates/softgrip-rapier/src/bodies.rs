@@ -111,6 +111,11 @@ fn can_close(bodies: &RigidBodySet, g: &Geom, r: f64, gravity: Vector3<f64>, dt:
     g.dist <= reach
 }
 
+/// How close to 0 or 1 a body's share of gravity ([`SplitLag`]) is taken as exactly 0 or 1:
+/// rapier's f32 velocities resolve `dv` over a split step's `span` (about `g (dt - h)`, 0.13
+/// m/s at 1/60 s) to about 1e-6 of it at 1 m/s, so a body in free flight reads `f` 1e-6 off 1.
+const SHARE_SNAP: f64 = 1e-4;
+
 /// The gravity lag of a split step (`step`, note 1), per dynamic body: the share of gravity
 /// each body felt in rapier's passes at the end of the last split step, and the bodies the
 /// current split step's lead-in kicked.
@@ -121,9 +126,12 @@ fn can_close(bodies: &RigidBodySet, g: &Geom, r: f64, gravity: Vector3<f64>, dt:
 /// own contact (a table) has `a = 0` in the passes: its stored velocity is its true velocity,
 /// 0, and there is no lag to convert. The lead-in and the give-back are therefore gravity's
 /// times the share `f` in \[0, 1\] of gravity the body still feels in rapier's passes: `f =
-/// (dv / h) . g / |g|^2` over the last substep (`dv` rapier's change of the body's velocity in
-/// it, the plugin's impulses excluded), clamped to \[0, 1\] so an impact on rapier's contact
-/// in the last substep gives back nothing and a pull past gravity no more than free flight.
+/// (dv / span) . g / |g|^2` over the substeps after the first (`dv` rapier's change of the
+/// body's velocity in them, the plugin's impulses excluded, `span` their duration; the first
+/// is where a support absorbs the lead-in), clamped to \[0, 1\] so an impact on rapier's
+/// contact gives back nothing and a pull past gravity no more than free flight, and snapped
+/// to 0 or 1 within [`SHARE_SNAP`] of them (the f32 velocities' resolution), so a body in free
+/// flight gets exactly main's kick and give-back.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct SplitLag {
     /// `f` of each body awake at the end of the last split step (absent: 1, free flight).
@@ -199,10 +207,12 @@ pub(crate) fn lag_give_back(
         let gg = g.norm_squared();
         let a = dv / span;
         let f = if gg > 0.0 { a.dot(&g) / gg } else { 1.0 };
-        let f = if f.is_finite() {
-            f.clamp(0.0, 1.0)
-        } else {
+        let f = if !f.is_finite() || f > 1.0 - SHARE_SNAP {
             1.0
+        } else if f < SHARE_SNAP {
+            0.0
+        } else {
+            f
         };
         let imp = gravity * (rb.gravity_scale() * rb.mass() * (-f * tau) as f32);
         rb.apply_impulse(imp, false);
