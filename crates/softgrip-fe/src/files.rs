@@ -444,6 +444,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.08)
     ),
+    fe_file!(
+        "core/force_nu0.3_t0.05.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE (session 20, fit data for the thin-layer floor): skin t/R = 0.05 over a rigid core, nu = 0.3, R/120, x = 0.005..0.03",
+        "core",
+        Some(0.05)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
