@@ -253,6 +253,12 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             Backing::Core { thickness: 0.05 },
             0.1627,
         ),
+        (
+            "core/force_nu0.3_t0.1.csv",
+            0.3,
+            Backing::Core { thickness: 0.1 },
+            0.0882,
+        ),
     ];
     for (path, nu, backing, tol) in cases {
         let cal = law(Level::Calibrated, nu, backing);
