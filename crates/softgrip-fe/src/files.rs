@@ -468,6 +468,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.1)
     ),
+    fe_file!(
+        "core/force_nu0.4_t0.1.csv",
+        Force,
+        Some(0.4),
+        "softgrip's own FE (session 20, fit data for the thin-layer floor): skin t/R = 0.1 over a rigid core, nu = 0.4, R/60, x = 0.01..0.06",
+        "core",
+        Some(0.1)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then

@@ -265,6 +265,12 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             Backing::Core { thickness: 0.1 },
             0.0360,
         ),
+        (
+            "core/force_nu0.4_t0.1.csv",
+            0.4,
+            Backing::Core { thickness: 0.1 },
+            0.0412,
+        ),
     ];
     for (path, nu, backing, tol) in cases {
         let cal = law(Level::Calibrated, nu, backing);
