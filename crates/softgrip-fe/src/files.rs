@@ -453,6 +453,14 @@ pub const FILES: &[FeFile] = &[
         Some(0.05)
     ),
     fe_file!(
+        "core/force_nu0.4_t0.05.csv",
+        Force,
+        Some(0.4),
+        "softgrip's own FE (session 20, fit data for the thin-layer floor): skin t/R = 0.05 over a rigid core, nu = 0.4, R/120, x = 0.005..0.025",
+        "core",
+        Some(0.05)
+    ),
+    fe_file!(
         "core/force_nu0.3_t0.1.csv",
         Force,
         Some(0.3),

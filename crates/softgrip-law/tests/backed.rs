@@ -254,6 +254,12 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             0.1627,
         ),
         (
+            "core/force_nu0.4_t0.05.csv",
+            0.4,
+            Backing::Core { thickness: 0.05 },
+            0.1096,
+        ),
+        (
             "core/force_nu0.3_t0.1.csv",
             0.3,
             Backing::Core { thickness: 0.1 },
