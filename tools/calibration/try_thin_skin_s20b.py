@@ -14,6 +14,12 @@ as: the worst fitted curve, the worst of the new thin fitted curves (each), the 
 t/R >= 0.12 files (fit_core.HELD and LATER), the held-out (0.46, 0.1), and the blind t/R 0.08
 skins (signed error along each, worst per nu). `x` is today's law (not refitted).
 
+Result (session 20, CORE_FORM.md "Thin skins: session 20, fit data at t/R 0.05-0.1"): today's
+law is 16.17 % too soft on the nu 0.3 t/R 0.05 skin (x = 0.03), 10.86 % at nu 0.4, 8.90 % at
+0.48, 8.72 % at t/R 0.1 nu 0.3. Refitted with them, no variant is within 2 % on every fitted
+curve (closest bUM / bFM 3.23 %, bF 3.39 %, bU 3.46 %) nor within 3 % on the blind nu 0.4 and
+0.48 skins (3.1-3.3 %; nu 0.3 ~2 %, today 10.16 %): not adopted.
+
 usage: PY tools/calibration/try_thin_skin_s20b.py [VARIANT ...]   (default: x bVM bV bU U)
        (PY: a python with numpy + scipy, e.g. /work/fe-scratch/fe-venv/bin/python)
 """

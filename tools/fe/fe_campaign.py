@@ -108,7 +108,9 @@ def cases():
     # through the skin as the 0.08 runs (R/120 at t/R 0.05, R/60 at 0.1); most informative
     # first (the thinnest at both ends of nu), then the mesh pair of the t/R 0.1 compressible
     # skin (R/80, 8 elements). The t/R 0.05 skins reach delta/t 0.5 at x = 0.025: output every
-    # 0.005 in x and increments <= 0.0025 (`make`)
+    # 0.005 in x and increments <= 0.0025 (`make`). Each diverged past delta/t 0.3-0.7; nu 0.48
+    # t/R 0.05 at x = 0.015 (three rows, `export` leaves it out; try_thin_skin_s20b.py reads it
+    # from its run directory). CORE_FORM.md "Thin skins: session 20, fit data at t/R 0.05-0.1"
     c += [("core", 0.3, 0.05, 120, "main"), ("core", 0.48, 0.05, 120, "main"),
           ("core", 0.3, 0.1, 60, "main"), ("core", 0.48, 0.1, 60, "main"),
           ("core", 0.3, 0.1, 80, "conv"), ("core", 0.4, 0.1, 60, "main"),
