@@ -103,6 +103,11 @@ HELD = {(0.35, 0.7), (0.45, 0.5), (0.4, 0.3), (0.49, 0.3),
 # (CORE_FORM.md, "Thin skins: session 15"), so this script keeps them out of its fit and
 # reports them as held out; a refit of the form moves them into the fit by deleting this set.
 LATER = {(0.48, 0.3), (0.35, 0.3), (0.45, 0.35), (0.49, 0.25)}
+# Fit data for the thin-layer floor (session 20, second part, role "main": t/R 0.05 and 0.1 at
+# nu 0.3, 0.4, 0.48, try_thin_skin_s20b.py fits on them). The law was not refitted with them, so
+# this script keeps them out of its fit (it reproduces the law's constants) and reports them as
+# held out.
+S20B = {(0.3, 0.05), (0.48, 0.05), (0.4, 0.05), (0.3, 0.1), (0.48, 0.1), (0.4, 0.1)}
 # The flat construction's constants (backed.rs FLAT: c0, c1, e0, e1, b, d), not refitted here.
 FLAT = (0.681614, -0.341872, 1.754842, -2.984330, 0.791282, 0.329388)
 # The law's radius (backed.rs G, RADIUS, RADIUS_CORE), not refitted here.
@@ -199,7 +204,7 @@ def load():
         hi = min(flat_x_max(nu), SQUEEZE * tau)
         keep = (x >= 0.01 - 1e-9) & (x <= hi + 1e-9)
         curves.append(dict(nu=nu, tau=tau, x=x[keep], chi=chi[keep], reach=x[-1],
-                           held=(nu, tau) in HELD or (nu, tau) in LATER,
+                           held=(nu, tau) in HELD or (nu, tau) in LATER or (nu, tau) in S20B,
                            name=os.path.basename(path)))
     return curves
 

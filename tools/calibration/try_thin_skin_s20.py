@@ -34,6 +34,7 @@ Letters of a variant (seven constants refitted on fit_core's 14 fitted curves un
      chi_thin Matthewson's F/F_H (the `thin` mode), p = 2, 4, 8 (fixed, not fitted): a
      patch wider than the skin is carried as a thin layer (Winkler's oedometer for a >> l, the
      incompressible (3 pi/8) u^3 for t << a << l), whatever the series in a/t gives
+  F  the floor with its power fitted (an eighth constant; try_thin_skin_s20b.py)
   M  a sharper minimax (powers 8 and 16 after fit_core.fit's 2 and 4)
   L  fit on session 15's four LATER curves too (t/R 0.25-0.35, fit_core.LATER)
 `blind [VARIANT ...]`: the signed error on session 20's blind skins (t/R 0.08 at nu 0.4 and
@@ -98,6 +99,10 @@ def form(mode):
             if k in mode:  # the excess reaches at least the thin-layer limit (Matthewson)
                 limit = np.clip(thin_limit(x, nu, tau) - 1, 0, None)
                 excess = (excess ** power + limit ** power) ** (1 / power)
+        if "F" in mode:  # the same with its power fitted, an eighth constant p[7] (session 20b)
+            limit = np.clip(thin_limit(x, nu, tau) - 1, 0, None)
+            power = abs(p[7])
+            excess = (np.abs(excess) ** power + limit ** power) ** (1 / power)
         s = x / tau
         share = 1.0
         if "c" in mode:  # the oedometer only where the patch is wider than l (Matthewson's)

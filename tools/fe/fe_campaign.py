@@ -103,6 +103,18 @@ def cases():
     # gives its numbers)
     c += [("core", 0.4, 0.08, 75, "heldout"), ("core", 0.4, 0.08, 100, "conv"),
           ("core", 0.3, 0.08, 75, "heldout"), ("core", 0.48, 0.08, 75, "heldout")]
+    # session 20, second part (run under /work/fe-scratch/runs/skins-s20b/): FIT data for the
+    # thin-layer floor, t/R 0.05 and 0.1 (the t/R 0.08 skins above stay blind), 6 elements
+    # through the skin as the 0.08 runs (R/120 at t/R 0.05, R/60 at 0.1); most informative
+    # first (the thinnest at both ends of nu), then the mesh pair of the t/R 0.1 compressible
+    # skin (R/80, 8 elements). The t/R 0.05 skins reach delta/t 0.5 at x = 0.025: output every
+    # 0.005 in x and increments <= 0.0025 (`make`). Each diverged past delta/t 0.3-0.7; nu 0.48
+    # t/R 0.05 at x = 0.015 (three rows, `export` leaves it out; try_thin_skin_s20b.py reads it
+    # from its run directory). CORE_FORM.md "Thin skins: session 20, fit data at t/R 0.05-0.1"
+    c += [("core", 0.3, 0.05, 120, "main"), ("core", 0.48, 0.05, 120, "main"),
+          ("core", 0.3, 0.1, 60, "main"), ("core", 0.48, 0.1, 60, "main"),
+          ("core", 0.3, 0.1, 80, "conv"), ("core", 0.4, 0.1, 60, "main"),
+          ("core", 0.4, 0.05, 120, "main")]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
 
@@ -291,6 +303,13 @@ def make(geometry, nu, t, h, role="main", cp="plane", k=0.0):
         # the nearly incompressible layer bonded on both sides: at 0.005 the first Newton
         # iterate past x = 0.04 (t/R = 0.4) throws the contact open and ccx aborts; 0.001 passes
         dt_small, late_dt = 0.001, 0.002
+    if geometry == "core" and t < 0.075:
+        # a skin thinner than t/R 0.075 (session 20) is squeezed to delta/t 0.5 by x = 0.4 t/R:
+        # output every 0.005 in x (every 0.01 would leave 2-3 rows), increments <= 0.0025
+        dt_small = min(dt_small, 0.0025)
+        case = fe_run.make_case(geometry, nu, t, h, tend, dt_small=dt_small, late_dt=late_dt)
+        case.tp = 0.005
+        return case
     return fe_run.make_case(geometry, nu, t, h, tend, dt_small=dt_small, late_dt=late_dt)
 
 

@@ -444,6 +444,46 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.08)
     ),
+    fe_file!(
+        "core/force_nu0.3_t0.05.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE (session 20, fit data for the thin-layer floor): skin t/R = 0.05 over a rigid core, nu = 0.3, R/120, x = 0.005..0.03",
+        "core",
+        Some(0.05)
+    ),
+    fe_file!(
+        "core/force_nu0.4_t0.05.csv",
+        Force,
+        Some(0.4),
+        "softgrip's own FE (session 20, fit data for the thin-layer floor): skin t/R = 0.05 over a rigid core, nu = 0.4, R/120, x = 0.005..0.025",
+        "core",
+        Some(0.05)
+    ),
+    fe_file!(
+        "core/force_nu0.3_t0.1.csv",
+        Force,
+        Some(0.3),
+        "softgrip's own FE (session 20, fit data for the thin-layer floor): skin t/R = 0.1 over a rigid core, nu = 0.3, R/60, x = 0.01..0.07",
+        "core",
+        Some(0.1)
+    ),
+    fe_file!(
+        "core/force_nu0.48_t0.1.csv",
+        Force,
+        Some(0.48),
+        "softgrip's own FE (session 20, fit data for the thin-layer floor): skin t/R = 0.1 over a rigid core, nu = 0.48, R/60, x = 0.01..0.04",
+        "core",
+        Some(0.1)
+    ),
+    fe_file!(
+        "core/force_nu0.4_t0.1.csv",
+        Force,
+        Some(0.4),
+        "softgrip's own FE (session 20, fit data for the thin-layer floor): skin t/R = 0.1 over a rigid core, nu = 0.4, R/60, x = 0.01..0.06",
+        "core",
+        Some(0.1)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
