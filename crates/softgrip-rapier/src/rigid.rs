@@ -1028,13 +1028,8 @@ pub(crate) fn solve_coupled(
     scratch: &mut CoupledScratch,
 ) -> Coupled {
     let mut first = Vec::with_capacity(soft.len());
-    let CoupledScratch {
-        scalars,
-        state,
-        stats,
-    } = scratch;
+    let scratch_degenerate_before = scratch.stats[4];
     let mut passes = 0;
-    let scratch_degenerate_before = stats[4];
     let mut warm = Vec::new();
     // rapier's part: the rigid rows alone.
     let base: Vec<BodyState> = bodies.to_vec();
@@ -1043,53 +1038,83 @@ pub(crate) fn solve_coupled(
     // warm start carries on from step to step; measured (session 19), the 1 kg box of
     // `tests/large_step.rs` then slipped 0.21 mm in the grip (bound 10 um).
     let warmed = soft.iter().any(|r| r.k_t > 0.0);
-    build(bodies, &[], rigid, &[], h, scalars, &mut first);
-    warm_start(&[], rigid, 0, h, &mut warm);
-    if !warmed {
-        warm.iter_mut().for_each(|w| *w = None);
-    }
-    let [.., immobile, degenerate] = stats;
-    let Some(rest) = solve_saturating(
-        bodies,
-        scalars,
-        &warm,
+    let mut stage = Stage {
         h,
-        state,
-        &mut passes,
-        immobile,
-        degenerate,
-    ) else {
+        warmed,
+        first: &mut first,
+        warm: &mut warm,
+        passes: &mut passes,
+    };
+    let Some(rest) = stage.solve(bodies, &[], rigid, &[], 0, scratch) else {
         bodies.clone_from_slice(&base);
-        return failure(scratch_degenerate_before, stats[4]);
+        return failure(scratch_degenerate_before, scratch.stats[4]);
     };
     bodies.clone_from_slice(&base);
     let rest_n = rest_normals(rigid, &rest);
     // Everything.
-    build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
-    warm_start(soft, rigid, 1, h, &mut warm);
-    if !warmed {
-        warm.iter_mut().for_each(|w| *w = None);
-    }
-    let [.., immobile, degenerate] = stats;
-    let Some(j) = solve_saturating(
-        bodies,
-        scalars,
-        &warm,
-        h,
-        state,
-        &mut passes,
-        immobile,
-        degenerate,
-    ) else {
+    let Some(j) = stage.solve(bodies, soft, rigid, &rest_n, 1, scratch) else {
         bodies.clone_from_slice(&base);
-        return failure(scratch_degenerate_before, stats[4]);
+        return failure(scratch_degenerate_before, scratch.stats[4]);
     };
+    let CoupledScratch { scalars, stats, .. } = scratch;
     stats[0] += 1;
     stats[1] += passes.min(OUTER) as u64;
     stats[2] += u64::from(passes > OUTER);
     write_soft(bodies, soft, &first, &j);
     write_rigid(soft, rigid, &scalars[..], &j, &rest, h);
     Coupled::Solved
+}
+
+/// What the two solves of [`solve_coupled`] (the rigid rows alone, then everything) share.
+struct Stage<'a> {
+    /// The (sub)step \[s\].
+    h: f64,
+    /// Whether the solves start from the previous (sub)step's answer ([`warm_start`]).
+    warmed: bool,
+    /// Each soft row's first scalar row ([`build`]).
+    first: &'a mut Vec<usize>,
+    /// The warm start's buffer (left empty when not `warmed`: every row starts cold).
+    warm: &'a mut Vec<Option<f64>>,
+    /// Outer passes of the last solve.
+    passes: &'a mut usize,
+}
+
+impl Stage<'_> {
+    /// Builds the scalar rows of `soft` and `rigid` (rapier's part `rest_n`, per rigid row),
+    /// warm-started from their answer `which` (0: rigid rows alone, 1: with the soft rows) if
+    /// `warmed`, and solves them ([`solve_saturating`]); `None` as it does.
+    fn solve(
+        &mut self,
+        bodies: &mut [BodyState],
+        soft: &[Row],
+        rigid: &[RigidRow],
+        rest_n: &[f64],
+        which: usize,
+        scratch: &mut CoupledScratch,
+    ) -> Option<Vec<f64>> {
+        let CoupledScratch {
+            scalars,
+            state,
+            stats,
+        } = scratch;
+        build(bodies, soft, rigid, rest_n, self.h, scalars, self.first);
+        // Not built at all when unused (a row past the buffer's end starts cold: `start_rows`).
+        self.warm.clear();
+        if self.warmed {
+            warm_start(soft, rigid, which, self.h, self.warm);
+        }
+        let [.., immobile, degenerate] = stats;
+        solve_saturating(
+            bodies,
+            scalars,
+            self.warm,
+            self.h,
+            state,
+            self.passes,
+            immobile,
+            degenerate,
+        )
+    }
 }
 
 /// rapier's normal impulse of each rigid row (its friction goes with it: see `Kind::Tangent`)
