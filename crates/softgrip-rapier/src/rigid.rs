@@ -116,6 +116,14 @@ struct Scalar {
     /// unit impulse on it (`-1` times the row's), set by `build` (`set_response`): the
     /// sweeps apply each row hundreds of times per solve.
     response: [(Vector3<f64>, Vector3<f64>); 2],
+    /// Of body a and body b (set by `set_response`): `None` where an impulse can move it (a
+    /// body with mass, a multibody link), else the row's velocity term of that body, fixed
+    /// over the solve (a fixed, kinematic or sleeping body: no impulse of the solve changes
+    /// its velocity), as [`Scalar::velocity`] sums it \[m/s or rad/s\]. Every soft and rigid
+    /// row of the default grasp has one such side (a kinematic fingertip, the table):
+    /// `velocity` and `apply` skip it (session 20, `sweep sweeps/throughput.toml`: see the
+    /// crate README's profile).
+    fixed: [Option<f64>; 2],
 }
 
 impl Scalar {
@@ -141,10 +149,12 @@ impl Scalar {
             prox: 0.0,
             spring: 0.0,
             response: Default::default(),
+            fixed: [None; 2],
         }
     }
 
-    /// Sets `response` from the bodies' inverse mass and inertia (fixed over a solve).
+    /// Sets `response` from the bodies' inverse mass and inertia (fixed over a solve), and
+    /// `fixed` from the velocities of the bodies no impulse moves.
     fn set_response(&mut self, bodies: &[BodyState]) {
         for (k, (i, ang)) in [(self.a, self.ang_a), (self.b, self.ang_b)]
             .into_iter()
@@ -156,6 +166,10 @@ impl Scalar {
                     (b.inv_m.component_mul(&self.lin), b.inv_i * ang)
                 })
                 .unwrap_or_default();
+            self.fixed[k] = i.filter(|&i| immovable(&bodies[i])).map(|i| {
+                let (s, b) = ([1.0, -1.0][k], &bodies[i]);
+                s * (self.lin.dot(&b.v) + ang.dot(&b.w))
+            });
         }
     }
 
@@ -188,10 +202,15 @@ impl Scalar {
         (dynamic, other)
     }
 
+    /// The row's velocity \[m/s or rad/s\]: the sum over its bodies (a, then b) of `s (lin . v +
+    /// ang . w)`, `s` 1 on a and -1 on b; a body's term read from `fixed` where no impulse
+    /// moves it (the same operands, so the same bits).
     fn velocity(&self, bodies: &[BodyState]) -> f64 {
         let mut v = 0.0;
-        for (i, s) in [(self.a, 1.0), (self.b, -1.0)] {
-            if let Some(i) = i {
+        for (k, (i, s)) in [(self.a, 1.0), (self.b, -1.0)].into_iter().enumerate() {
+            if let Some(u) = self.fixed[k] {
+                v += u;
+            } else if let Some(i) = i {
                 let (lin, ang) = if s > 0.0 {
                     (self.lin, self.ang_a)
                 } else {
@@ -203,12 +222,14 @@ impl Scalar {
         v
     }
 
+    /// Applies the impulse `j` \[N s or N m s\] to the row's bodies (none to a body that no
+    /// impulse moves: `fixed`).
     fn apply(&self, bodies: &mut [BodyState], j: f64) {
-        for (i, s, ang, (dv, dw)) in [
-            (self.a, 1.0, self.ang_a, self.response[0]),
-            (self.b, -1.0, self.ang_b, self.response[1]),
+        for (i, s, ang, (dv, dw), fixed) in [
+            (self.a, 1.0, self.ang_a, self.response[0], self.fixed[0]),
+            (self.b, -1.0, self.ang_b, self.response[1], self.fixed[1]),
         ] {
-            if let Some(i) = i {
+            if let Some(i) = i.filter(|_| fixed.is_none()) {
                 if bodies[i].link.is_some() {
                     mobility::apply(bodies, i, &(self.lin * (s * j)), &(ang * (s * j)));
                     continue;
@@ -219,6 +240,12 @@ impl Scalar {
             }
         }
     }
+}
+
+/// Whether no impulse moves body `b` (no inverse mass or inertia and not a multibody link: a
+/// fixed, kinematic or sleeping body), over a whole solve.
+fn immovable(b: &BodyState) -> bool {
+    b.link.is_none() && b.inv_m == Vector3::zeros() && b.inv_i == nalgebra::Matrix3::zeros()
 }
 
 /// Mobility between two scalar rows (sum over the bodies they share; the links of one
@@ -241,9 +268,16 @@ fn mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
 /// [`mobility`] of two rows whose `response` is set ([`build`]): the same products, read from
 /// `y`'s response instead of recomputed (`inv_m . lin` and `inv_i ang` of the same operands,
 /// so the same bits), for the solve's whole matrix of them.
+///
+/// A body no impulse moves (`Scalar::fixed`) is skipped: its part is a zero of either sign
+/// (zero inverse mass and inertia), and `m` starts at +0, which such a part leaves as it is.
 fn built_mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
     let mut m = 0.0;
-    for i in [x.a, x.b].into_iter().flatten() {
+    let moved = |k: usize| x.fixed[k].is_none();
+    for i in [x.a.filter(|_| moved(0)), x.b.filter(|_| moved(1))]
+        .into_iter()
+        .flatten()
+    {
         if bodies[i].link.is_some() {
             link_mobility(bodies, i, x, y, &mut m);
             continue;
@@ -374,6 +408,7 @@ fn push_soft(bodies: &[BodyState], r: &Row, h: f64, out: &mut Vec<Scalar>) {
                 prox: 0.0,
                 spring: 0.0,
                 response: Default::default(),
+                fixed: [None; 2],
             });
         }
     }
@@ -785,9 +820,11 @@ fn sweep(
                 let old = Vector2::new(j[i], j[other]);
                 let mut new = old - k_inv * err;
                 let limit = mu * (j[normal] - base).max(0.0);
-                let norm = new.norm();
-                if norm > limit {
-                    new *= limit / norm;
+                if !inside_disk(&new, limit) {
+                    let norm = new.norm();
+                    if norm > limit {
+                        new *= limit / norm;
+                    }
                 }
                 if !(new.x.is_finite() && new.y.is_finite()) {
                     return None;
@@ -815,6 +852,17 @@ fn sweep(
         }
     }
     Some(())
+}
+
+/// Whether `v` is surely within the disk of radius `limit`, `|v| <= limit`, decided without
+/// the square root: `|v|^2` below `limit^2` by a margin of 4 ulps, which the rounding of the
+/// two squares and of `norm`'s root cannot cross (so where it says yes, `v.norm() > limit` is
+/// false, bit for bit the same decision); `false` (undecided: take the root) near the rim,
+/// outside, and where `limit^2` is subnormal, overflows or is not a number. The sweep's disk
+/// test was its hottest line (`norm`'s root, 11 % of a sweep trial's CPU samples, session 20).
+fn inside_disk(v: &Vector2<f64>, limit: f64) -> bool {
+    let l2 = limit * limit;
+    l2 >= f64::MIN_POSITIVE && v.norm_squared() < l2 * (1.0 - 4.0 * f64::EPSILON)
 }
 
 /// What the LU passes of one solve share: the rows' mutual mobility, the last factorisation
@@ -1028,13 +1076,8 @@ pub(crate) fn solve_coupled(
     scratch: &mut CoupledScratch,
 ) -> Coupled {
     let mut first = Vec::with_capacity(soft.len());
-    let CoupledScratch {
-        scalars,
-        state,
-        stats,
-    } = scratch;
+    let scratch_degenerate_before = scratch.stats[4];
     let mut passes = 0;
-    let scratch_degenerate_before = stats[4];
     let mut warm = Vec::new();
     // rapier's part: the rigid rows alone.
     let base: Vec<BodyState> = bodies.to_vec();
@@ -1043,53 +1086,83 @@ pub(crate) fn solve_coupled(
     // warm start carries on from step to step; measured (session 19), the 1 kg box of
     // `tests/large_step.rs` then slipped 0.21 mm in the grip (bound 10 um).
     let warmed = soft.iter().any(|r| r.k_t > 0.0);
-    build(bodies, &[], rigid, &[], h, scalars, &mut first);
-    warm_start(&[], rigid, 0, h, &mut warm);
-    if !warmed {
-        warm.iter_mut().for_each(|w| *w = None);
-    }
-    let [.., immobile, degenerate] = stats;
-    let Some(rest) = solve_saturating(
-        bodies,
-        scalars,
-        &warm,
+    let mut stage = Stage {
         h,
-        state,
-        &mut passes,
-        immobile,
-        degenerate,
-    ) else {
+        warmed,
+        first: &mut first,
+        warm: &mut warm,
+        passes: &mut passes,
+    };
+    let Some(rest) = stage.solve(bodies, &[], rigid, &[], 0, scratch) else {
         bodies.clone_from_slice(&base);
-        return failure(scratch_degenerate_before, stats[4]);
+        return failure(scratch_degenerate_before, scratch.stats[4]);
     };
     bodies.clone_from_slice(&base);
     let rest_n = rest_normals(rigid, &rest);
     // Everything.
-    build(bodies, soft, rigid, &rest_n, h, scalars, &mut first);
-    warm_start(soft, rigid, 1, h, &mut warm);
-    if !warmed {
-        warm.iter_mut().for_each(|w| *w = None);
-    }
-    let [.., immobile, degenerate] = stats;
-    let Some(j) = solve_saturating(
-        bodies,
-        scalars,
-        &warm,
-        h,
-        state,
-        &mut passes,
-        immobile,
-        degenerate,
-    ) else {
+    let Some(j) = stage.solve(bodies, soft, rigid, &rest_n, 1, scratch) else {
         bodies.clone_from_slice(&base);
-        return failure(scratch_degenerate_before, stats[4]);
+        return failure(scratch_degenerate_before, scratch.stats[4]);
     };
+    let CoupledScratch { scalars, stats, .. } = scratch;
     stats[0] += 1;
     stats[1] += passes.min(OUTER) as u64;
     stats[2] += u64::from(passes > OUTER);
     write_soft(bodies, soft, &first, &j);
     write_rigid(soft, rigid, &scalars[..], &j, &rest, h);
     Coupled::Solved
+}
+
+/// What the two solves of [`solve_coupled`] (the rigid rows alone, then everything) share.
+struct Stage<'a> {
+    /// The (sub)step \[s\].
+    h: f64,
+    /// Whether the solves start from the previous (sub)step's answer ([`warm_start`]).
+    warmed: bool,
+    /// Each soft row's first scalar row ([`build`]).
+    first: &'a mut Vec<usize>,
+    /// The warm start's buffer (left empty when not `warmed`: every row starts cold).
+    warm: &'a mut Vec<Option<f64>>,
+    /// Outer passes of the last solve.
+    passes: &'a mut usize,
+}
+
+impl Stage<'_> {
+    /// Builds the scalar rows of `soft` and `rigid` (rapier's part `rest_n`, per rigid row),
+    /// warm-started from their answer `which` (0: rigid rows alone, 1: with the soft rows) if
+    /// `warmed`, and solves them ([`solve_saturating`]); `None` as it does.
+    fn solve(
+        &mut self,
+        bodies: &mut [BodyState],
+        soft: &[Row],
+        rigid: &[RigidRow],
+        rest_n: &[f64],
+        which: usize,
+        scratch: &mut CoupledScratch,
+    ) -> Option<Vec<f64>> {
+        let CoupledScratch {
+            scalars,
+            state,
+            stats,
+        } = scratch;
+        build(bodies, soft, rigid, rest_n, self.h, scalars, self.first);
+        // Not built at all when unused (a row past the buffer's end starts cold: `start_rows`).
+        self.warm.clear();
+        if self.warmed {
+            warm_start(soft, rigid, which, self.h, self.warm);
+        }
+        let [.., immobile, degenerate] = stats;
+        solve_saturating(
+            bodies,
+            scalars,
+            self.warm,
+            self.h,
+            state,
+            self.passes,
+            immobile,
+            degenerate,
+        )
+    }
 }
 
 /// rapier's normal impulse of each rigid row (its friction goes with it: see `Kind::Tangent`)
