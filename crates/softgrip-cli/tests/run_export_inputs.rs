@@ -42,17 +42,20 @@ fn slow_export(dir: &Path) -> std::process::Child {
         .unwrap()
 }
 
-/// Waits until a temporary output appears in `dir` (the export is writing).
+/// Waits until the temporary outputs of all four tables are in `dir` (the export is writing;
+/// each table checks its target when it creates its temporary file, so waiting for the first
+/// one only raced the test's own write of `poses.csv` against that check).
 fn wait_for_partial(dir: &Path) {
     let start = Instant::now();
     loop {
-        let writing = std::fs::read_dir(dir)
+        let partials = std::fs::read_dir(dir)
             .map(|d| {
                 d.flatten()
-                    .any(|e| e.file_name().to_string_lossy().contains(".partial"))
+                    .filter(|e| e.file_name().to_string_lossy().contains(".partial"))
+                    .count()
             })
-            .unwrap_or(false);
-        if writing {
+            .unwrap_or(0);
+        if partials >= FILES.len() {
             return;
         }
         assert!(
