@@ -86,7 +86,7 @@ pub(crate) struct Scratch {
 }
 
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub struct SoftContacts {
     // A fingertip's state is one `TipRecord` (`tips`); `tip_order` and `hook_view` are indexes
     // derived from the records at registration, for the two readers that cannot use the map:
@@ -135,6 +135,34 @@ pub struct SoftContacts {
 /// The fingertips' colliders as rapier's hooks see them: each with its facing in its
 /// collider's frame if it is backed, `None` if it is soft all round.
 pub(crate) type HookView = FastMap<ColliderHandle, Option<Vector3<f64>>>;
+
+impl Default for SoftContacts {
+    /// An empty plugin state with the default accuracy and the friction spring on
+    /// (`set_friction_spring`, the default since session 19, issue 23).
+    fn default() -> Self {
+        Self {
+            tips: Default::default(),
+            tip_order: Default::default(),
+            hook_view: Default::default(),
+            link_contacts: Default::default(),
+            started: false,
+            profiling: false,
+            friction_spring: true,
+            pairs: Default::default(),
+            soft_pairs: Default::default(),
+            curved_models: Default::default(),
+            contacts: Default::default(),
+            counters: Default::default(),
+            accuracy: Default::default(),
+            geoms: Default::default(),
+            scratch: Default::default(),
+            fault: None,
+            time: 0.0,
+            max_radius: 0.0,
+            any_tactile: false,
+        }
+    }
+}
 
 impl SoftContacts {
     /// An empty plugin state with the default accuracy.
@@ -296,7 +324,7 @@ impl SoftContacts {
         self.profiling = on;
     }
 
-    /// Static friction as Mindlin's tangential spring (default off; experimental, crate
+    /// Static friction as Mindlin's tangential spring (default on since session 19; crate
     /// README, "Session 16, friction as a tangential spring"): each contact's tangential
     /// offset from its anchor is the stretch of a spring of stiffness `k_t = 8 G* a` (`G*` the
     /// pair's effective shear modulus, `a` the law's contact radius), solved implicitly like
@@ -305,9 +333,9 @@ impl SoftContacts {
     /// default grasp: 31.6 to 8.3 a solve) and gives the fingertip's elastic shear (a held box
     /// sags by its share of the weight over `k_t`). With it, rapier's part of the rigid
     /// supports' normal impulses is split per pair of bodies instead of per point (the box
-    /// pressed against a wall by a free tip settles with it since session 18). It is not the
-    /// default: several hold bounds of the crate's tests encode the rigid stick (crate README,
-    /// Limits). Off: the physics is bit-identical to before the switch existed.
+    /// pressed against a wall by a free tip settles with it since session 18). It is the
+    /// default since session 19 (issue 23; `SPRING_DEFAULT_STATUS.md`). Off: the physics is
+    /// bit-identical to before the switch existed (the rigid stick).
     pub fn set_friction_spring(&mut self, on: bool) {
         self.friction_spring = on;
     }
