@@ -243,13 +243,29 @@ fn assert_held(m: &Held) {
 fn two_hands_lift_and_hold_one_box() {
     let mut h = hands(0.2, &[Vector::X, -Vector::X, Vector::Z, -Vector::Z]);
     let m = h.run(0.05, 2.0);
-    println!("two hands, 200 g box lifted 5 cm, held 2 s: {m:?}");
+    // Session 19, the friction spring the default: as the lift ends, smoothstep's
+    // deceleration `6 L / T^2` (0.3 m/s^2 for 5 cm over 1 s) gives way to the static load,
+    // and the four pads' springs (`k_t = 8 G* a` each, all shearing vertically) stretch by
+    // `m a / (4 k_t)` (3.945 um; measured 3.889 um): the hold's drift within 2 % of it, none
+    // over the second half. (The rigid stick: 1.16 um over the hold, bound 2 um.)
+    let nu = 0.49;
+    let g_star = 0.59e6 / (2.0 * (1.0 + nu)) / (2.0 - nu);
+    let squeeze = h.law.compression_for_force(GRIP).unwrap();
+    let k_t = 8.0 * g_star * h.law.patch(squeeze).radius;
+    let a_end = 6.0 * 0.05 / (1.0 * 1.0);
+    let mindlin = 0.2 * a_end / (4.0 * k_t);
+    println!(
+        "two hands: hold drift {:.4e} m, Mindlin m a / (4 k_t) {mindlin:.4e} m (k_t {k_t:.1} N/m)",
+        m.drift_hold
+    );
     assert!((m.height - (HALF + 0.05)).abs() < 2e-3, "{m:?}");
-    assert!(m.worst_law < 1e-5, "{m:?}");
     assert!(m.worst_sum < 5e-3, "{m:?}");
     assert!(m.speed_window < 1e-6, "{m:?}");
     assert!(m.drift_late < 1e-6, "{m:?}");
-    assert!(m.drift_hold < 2e-6, "{m:?}");
+    assert!((m.drift_hold / mindlin - 1.0).abs() < 0.02, "{m:?}");
+    // Not re-derived with the spring (1.23e-5 against 1e-5; session 14's 1.48e-5 was the
+    // `solve_group` outer loop's stop, crate README): fails, `SPRING_DEFAULT_STATUS.md`.
+    assert!(m.worst_law < 1e-5, "{m:?}");
 }
 
 /// Two hands, four pads at 5 N each, squeeze a 200 g box standing on the ground. Measured:
