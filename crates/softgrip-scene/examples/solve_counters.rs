@@ -6,7 +6,8 @@
 //! `cargo run --release -p softgrip-scene --example solve_counters [scene.toml] [--friction-spring]`
 //!
 //! `--friction-spring`: static friction as Mindlin's tangential spring
-//! (`SoftContacts::set_friction_spring`, off by default).
+//! (`SoftContacts::set_friction_spring`); without it the example sets the rigid stick
+//! (`set_friction_spring(false)`), the plugin's default before session 19.
 
 use std::time::Instant;
 
