@@ -743,8 +743,6 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
 /// a stack, four corners each.
 const MAX_RIGID_ROWS: usize = 32;
 
-/// The component of `d` along the unit normal `n`.
-#[inline]
 /// How far past its wall a contact of compression `delta` \[m\] is \[m\] (`> 0` past it; the
 /// wall `ContactLaw::x_wall` times the law's radius: where the fingertip's rigid part meets the
 /// surface it presses).
@@ -803,6 +801,8 @@ fn rigid_past_wall(
     row.force = at.force + at.stiffness * h * bias.velocity(depth);
 }
 
+/// The component of `d` along the unit normal `n`.
+#[inline]
 fn n_proj(n: &Vector3<f64>, d: &Vector3<f64>) -> Vector3<f64> {
     n * n.dot(d)
 }
