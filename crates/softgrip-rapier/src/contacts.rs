@@ -31,6 +31,19 @@ pub(crate) struct PairState {
     /// Friction anchor on the other body, in its collider's frame \[m\]: the static
     /// friction spring's stretch is the contact's tangential offset from it (`problem::spring`).
     pub anchor_local: Vector3<f64>,
+    /// The friction spring's stretch (`SoftContacts::set_friction_spring`) at the last
+    /// (sub)step's start, in the other collider's frame \[m\]: the relative tangential slip of
+    /// the two bodies' material at the contact, summed over the steps in contact (zero when the
+    /// contact starts). Each step adds the slip between the material points that touched at the
+    /// last step's start (`anchor_local` on the other body, `tip_local` on the fingertip),
+    /// measured on the poses; both are then re-set to the contact. Not the offset from a fixed
+    /// anchor: a fingertip rolling over the other body moves the contact point over it without
+    /// any slip, and that offset, taken as the stretch, tethered a rolling ball to where it
+    /// first touched.
+    pub stretch_local: Vector3<f64>,
+    /// With the friction spring: the material point of the fingertip at the contact at the
+    /// last (sub)step's start, in the fingertip collider's frame \[m\].
+    pub tip_local: Vector3<f64>,
     /// The last substep in contact (`Scratch::stamp`).
     pub stamp: u64,
 }

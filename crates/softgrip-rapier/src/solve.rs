@@ -545,9 +545,9 @@ pub(crate) fn solve(
         r.jtw = 0.0;
         r.vn_end = normal_velocity(bodies, r);
     }
-    // Where a sliding contact's spring goes (`step`): the relative tangential velocity at the
-    // end (every body is final).
-    for r in rows.iter_mut().filter(|r| r.sliding) {
+    // The slip that stretches a contact's spring (`step`): the relative tangential velocity
+    // at the end (every body is final).
+    for r in rows.iter_mut().filter(|r| r.sliding || r.k_t > 0.0) {
         let v = rel_vel(bodies, r);
         r.vt_end = v - r.n * v.dot(&r.n);
     }

@@ -21,7 +21,7 @@
 use std::time::Instant;
 
 use nalgebra::Vector3;
-use rapier3d::prelude::{EventHandler, PhysicsHooks, PhysicsWorld};
+use rapier3d::prelude::{EventHandler, PhysicsHooks, PhysicsWorld, Pose};
 use softgrip_law::Regime;
 
 use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
@@ -545,6 +545,7 @@ impl Step<'_> {
                 continue;
             }
             let other_pose = self.physics.colliders.get(g.other).map(|c| *c.position());
+            let tip_pose = self.physics.colliders.get(g.tip).map(|c| *c.position());
             let resp = model.law.response(delta);
             match resp.regime {
                 Regime::Extended => {
@@ -562,6 +563,10 @@ impl Step<'_> {
             soft.counters.contacts_evaluated += 1;
             let state = soft.pairs.entry(key).or_insert_with(|| PairState {
                 anchor_local: other_pose
+                    .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
+                    .unwrap_or(g.point_other),
+                stretch_local: Vector3::zeros(),
+                tip_local: tip_pose
                     .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
                     .unwrap_or(g.point_other),
                 stamp,
@@ -595,7 +600,19 @@ impl Step<'_> {
                     }
                 }
             }
-            if model.friction > 0.0 {
+            if model.friction > 0.0 && row.k_t > 0.0 {
+                // The spring's stretch: the last step's, carried in the other body's frame, plus
+                // the slip since between the material points that touched then (`PairState`).
+                let at = |pose: Option<Pose>, v: &Vector3<f64>, point: bool| match pose {
+                    Some(p) if point => to_f64(p.transform_point(to_f32(v))),
+                    Some(p) => to_f64(p.transform_vector(to_f32(v))),
+                    None => *v,
+                };
+                let slip = at(tip_pose, &state.tip_local, true)
+                    - at(other_pose, &state.anchor_local, true);
+                let d = at(other_pose, &state.stretch_local, false) + slip;
+                row.offset = d - n_proj(&row.n, &d);
+            } else if model.friction > 0.0 {
                 let anchor = other_pose
                     .map(|p| to_f64(p.transform_point(to_f32(&state.anchor_local))))
                     .unwrap_or(state.anchor_local);
@@ -676,23 +693,40 @@ impl Step<'_> {
         for ((row, model), gi) in s.rows.iter().zip(s.models.drain(..)).zip(&s.geom) {
             let g = &self.soft.geoms[*gi];
             let key = (g.tip, g.other);
-            // Contact memory: a sliding contact drags its anchor along, so that the spring's
-            // stretch at the step's end is the one that carries the Coulomb cap (`-j_t / (h
-            // k_t)`, along the slip), not more: where the contact point will be (it moves
-            // over the other body at the relative velocity), less that stretch.
-            // Without the spring (`k_t = 0`) the anchor goes to the contact point.
-            if row.sliding
-                && let Some(state) = self.soft.pairs.get_mut(&key)
+            // Contact memory. The spring's stretch at the step's end: the start's plus the
+            // slip over the step, `s + h v_t(end)` (the material's relative tangential
+            // velocity, [`problem::spring`]), or, sliding, the stretch that carries the
+            // Coulomb cap, `-j_t / (h k_t)` (along the slip), not more. Without the spring
+            // (`k_t = 0`) a sliding contact's anchor goes to the contact point.
+            if let Some(state) = self.soft.pairs.get_mut(&key)
                 && let Some(co) = self.physics.colliders.get(g.other)
             {
-                let anchor = if row.k_t > 0.0 {
-                    g.point_other + row.vt_end * h + row.jt / (h * row.k_t)
-                } else {
-                    g.point_other
-                };
-                if anchor.iter().all(|x| x.is_finite()) {
-                    state.anchor_local =
-                        to_f64(co.position().inverse_transform_point(to_f32(&anchor)));
+                if row.k_t > 0.0 {
+                    // Sticking, the stretch stays and the coming step's slip is measured on
+                    // the poses; sliding, it is the one that will carry the cap once the slip
+                    // over this step (`h v_t(end)`) is added.
+                    let s = if row.sliding {
+                        -row.jt / (h * row.k_t) - row.vt_end * h
+                    } else {
+                        row.offset
+                    };
+                    let tip = self.physics.colliders.get(g.tip).map(|c| *c.position());
+                    if s.iter().chain(g.point_other.iter()).all(|x| x.is_finite())
+                        && let Some(tip) = tip
+                    {
+                        let other = co.position();
+                        state.stretch_local = to_f64(other.inverse_transform_vector(to_f32(&s)));
+                        state.anchor_local =
+                            to_f64(other.inverse_transform_point(to_f32(&g.point_other)));
+                        state.tip_local =
+                            to_f64(tip.inverse_transform_point(to_f32(&g.point_other)));
+                    }
+                } else if row.sliding {
+                    let anchor = g.point_other;
+                    if anchor.iter().all(|x| x.is_finite()) {
+                        state.anchor_local =
+                            to_f64(co.position().inverse_transform_point(to_f32(&anchor)));
+                    }
                 }
             }
             let delta_end = compression_from_signed_distance(g.dist) - h * row.vn_end;
