@@ -236,6 +236,17 @@ def cases_3d():
     # ... the 3D core's mesh convergence on the cylinder of R (R/14 at the pole against the
     # campaign's R/20, as the bonded pad's), and the thicker skin on the edge
     c += [("core", 0.48, 0.4, 14, "conv", "cylinder", 1), ("core", 0.48, 0.5, 20, "heldout", "edge", 0)]
+    # blind for session 18's core-on-edge form (chosen with both nu 0.48 edge curves in view) and
+    # its cylinder path, launched at the end of session 18 under /work/fe-scratch/runs/fe3d-s19/:
+    # other nu and other skins on the edge, and a core on a cylinder of 2R away from nu 0.48
+    c += [("core", 0.4, 0.45, 20, "heldout", "edge", 0), ("core", 0.45, 0.6, 20, "heldout", "edge", 0),
+          ("core", 0.42, 0.45, 20, "heldout", "cylinder", 2), ("core", 0.3, 0.5, 20, "heldout", "edge", 0)]
+    # session 19 (issue 24: the cylinder's semi-axes per point within 5 %; R/20 resolves the
+    # patch to a node step and a sub-node reading of it did not validate,
+    # tools/calibration/check_cylinder_axes_subnode.py): the flat cylinder of R and the plane in
+    # 3D at R/40 at the pole, to x = 0.3, a background campaign across sessions
+    # (/work/fe-scratch/runs/fe3d-axes/)
+    c += [("flat", 0.48, 0, 40, "conv", "cylinder", 1), ("flat", 0.48, 0, 40, "check3d", "plane", 0)]
     return c
 
 

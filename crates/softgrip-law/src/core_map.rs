@@ -141,6 +141,37 @@
 //!   (it was the plane curve's range over `rho`, past the skin's thickness at t/R 0.4); its patch is the
 //!   plane's at `rho_H x` (axes 1; not validated: the FE resolves its across semi-axis only).
 //!   As `t -> R` it is the bonded pad's edge map (`lambda -> 0`, `chi_core -> chi_flat`).
+//! - **The edge's Poisson ratio (session 19).** Four blind 3D FE runs of session 18's edge
+//!   form away from nu 0.48 (`tests/data/fe/edge/core/`, nu 0.4 t/R 0.45, nu 0.45 t/R 0.6,
+//!   nu 0.3 t/R 0.5; and a cylinder) found the law on the edge too soft, growing with x as the
+//!   skin gets compressible: at x = 0.17 -0.94 % (nu 0.45), -6.81 % (nu 0.4), -11.56 % (nu
+//!   0.3, the 10 % missed). The FE's force over `E*` is nearly the same at every nu:
+//!   at t/R 0.5 the nu 0.3 skin's is 0.997, 0.999, 1.014, 1.02 and 1.033 times the nu 0.48
+//!   skin's at x = 0.01, 0.03, 0.06, 0.1 and 0.17 (at x = 0.1 the five curves fall near one line
+//!   in t/R, whatever their nu), where the law at nu 0.3 was 0.983, 0.967 (x =
+//!   0.035), 0.961 (0.05), 0.942 and 0.915 times its own at nu 0.48. The law's nu dependence is
+//!   the disc's: the plane core form's layer stiffening (Dimitriadis' first order `d1(nu)`,
+//!   0.88 at nu 0.3 against 1.09 at 0.48: a compressible layer feels its base less through a
+//!   disc's Boussinesq field, whose vertical displacement at the depth t is `(3 - 2 nu)/(1 -
+//!   nu)` per `E*`) at the patch argument `rho_H x` (0.950 of nu 0.48's at x = 0.17), and the
+//!   bonded hemisphere's `chi_flat` in `Phi` (0.963). Under the ridge the patch is a strip,
+//!   and a line contact's field (Flamant's: no lateral stress on its axis) strains the depth
+//!   by `sigma_z / E*` at every nu: the strip feels the core, and the fingertip, through `E*`
+//!   alone. So a core on the edge takes its whole form at the nu of the FE its map and felt
+//!   squeeze were chosen on (`RIDGE_POISSON`, 0.48), for every skin: the edge-core curves are
+//!   within 3.55 % (nu 0.3), 3.98 % (nu 0.4) and 3.82 % (nu 0.45), the nu 0.48 ones unchanged
+//!   (4.03 %, 3.89 %). Not fitted (the data's own nu; at 0.5 the worst is 4.88 %, nu 0.48 t/R
+//!   0.4), but chosen with all five curves in view: none is blind any more. Tried: the plane
+//!   form at the skin's own nu with the layer excess scaled by the strip's `d1(1/2)/d1(nu)`
+//!   (8.18 % at nu 0.3; the truncated Boussinesq `4 (1 - nu)/(3 - 2 nu)`: 9.59 %). What is
+//!   left: at nu 0.3 the FE is stiffer than the law by up to 3.3 % at its end (x = 0.17, the
+//!   compressible skin crushed under the ridge; the FE diverges there). The calibrated
+//!   bonded pad on the edge takes its plane curve at the same nu (`core_on_counterpart`), so
+//!   that a skin as thick as the fingertip stays the bonded pad on the edge (at t/R 0.999 the
+//!   core at nu 0.3 was 41 % off the flat pad otherwise; `tests/core_counterpart_properties.rs`);
+//!   no FE of the flat pad on the edge off nu 0.48 exists to check it. The free sphere on the
+//!   edge keeps its plane curve at its own nu (no FE off nu 0.48 either; its map, a sphere
+//!   squeezed between two ridges, is not the bonded one's).
 //!
 //! Session 11's split (the hemisphere at `rho x`, the layer excess at `rho_H x`, the thinning at
 //! the true `delta/t`) put the squeeze on the layer excess only: linear in `delta/t` from the
@@ -305,6 +336,16 @@ impl RidgeSqueeze {
 /// 0.41-0.59 delta on the two core curves, `tests/data/fe/edge/core/`).
 const RIDGE_HALF_WIDTH: f64 = std::f64::consts::FRAC_2_PI;
 
+/// The Poisson ratio at which a core (and the bonded pad) on the right-angle edge takes its
+/// whole form, whatever its own (module docs, the edge's Poisson ratio; session 19): the nu of
+/// every FE the edge's map and felt squeeze were chosen on (the bonded pad's edge curve and the
+/// two core curves of session 18, `tests/data/fe/edge/`). Its range is that nu's too. Under the ridge's narrow strip the force per `E*` does
+/// not depend on nu (a line contact's field, whose lateral stress on its axis is 0, feels the
+/// core through `E*` alone), where a disc's layer stiffening and the bonded hemisphere's do
+/// (Dimitriadis' `d1(nu)`, `levels::backed`). Not fitted: the data's own nu (at 0.5 instead,
+/// the worst edge-core curve is 4.88 % against 4.03 %, `tests/core_counterpart_fe.rs`).
+const RIDGE_POISSON: f64 = 0.48;
+
 /// The leading order of a spherical cap's area over the disc it covers, less 1, per
 /// `(a/R2)^2`: `pi (a^2 + h^2) / (pi a^2) - 1 = (a/R2)^2 / 4 + O((a/R2)^4)` (geometry, no fit;
 /// on any smooth surface `(1/2) <|grad z|^2>` over the patch).
@@ -332,8 +373,9 @@ fn tangent(s: f64) -> f64 {
 }
 
 /// The curve and map of the calibrated core law of `params` on a curved counterpart or the
-/// edge (session 18) whose plane map is `map`; `None` for every other level, construction or
-/// counterpart (they keep the plane's curve, rescaled by `map`).
+/// edge (session 18) whose plane map is `map`, and of the calibrated bonded pad on the edge
+/// (its plane curve at `RIDGE_POISSON`, session 19); `None` for every other level,
+/// construction or counterpart (they keep the plane's curve, rescaled by `map`).
 pub(crate) fn core_on_counterpart(
     level: Level,
     params: &ContactParams,
@@ -341,6 +383,15 @@ pub(crate) fn core_on_counterpart(
     kind: CounterpartKind,
 ) -> Result<Option<(Curve, CounterpartMap)>> {
     let backing = params.backing();
+    if kind == CounterpartKind::Edge
+        && matches!(level, Level::Calibrated)
+        && backing == Backing::Flat
+    {
+        // The bonded pad on the edge: its plane curve at the edge's nu (module docs, the edge's
+        // Poisson ratio), so that a core as thick as the fingertip stays the bonded pad.
+        let flat = Backed::try_new_capped(backing, None, RIDGE_POISSON, None, map.cap)?;
+        return Ok(Some((Curve::Backed(flat), *map)));
+    }
     if kind == CounterpartKind::Plane
         || !matches!(level, Level::Calibrated)
         || !matches!(backing, Backing::Core { .. })
@@ -355,13 +406,14 @@ pub(crate) fn core_on_counterpart(
         wrap: map.wrap,
         ridge: kind == CounterpartKind::Edge,
     };
-    let backed = Backed::try_new_capped(
-        backing,
-        params.thickness_ratio(),
-        params.poisson_ratio(),
-        Some(&on),
-        map.cap,
-    )?;
+    // On the edge the strip's force per E* does not depend on nu: the form is taken at the
+    // edge FE's own nu for every skin (module docs, the edge's Poisson ratio; session 19).
+    let nu = if on.ridge {
+        RIDGE_POISSON
+    } else {
+        params.poisson_ratio()
+    };
+    let backed = Backed::try_new_capped(backing, params.thickness_ratio(), nu, Some(&on), map.cap)?;
     // The curve is in the true x now: rho = 1 and s = h; the patch's axes stay the plane's
     // at rho x (the curve's radius is evaluated there), with a thin incompressible layer's
     // shrink in place of Sneddon's half-space one (module docs, the patch's edge).

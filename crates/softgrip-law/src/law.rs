@@ -302,11 +302,13 @@ impl ContactLaw {
         // A skin on a core: its own curve on a curved counterpart (`core_map`); the free
         // sphere and the flat pad: the plane's with its compressible cap scaled (`cap_map`).
         // On an edge a core's curve is rebuilt too (session 18: its narrow patch feels the core
-        // less, `core_map`).
+        // less, `core_map`), and the bonded pad's, at the edge's Poisson ratio (session 19).
         let was_rebuilt = matches!(self.level, Level::Calibrated)
             && match self.counterpart.kind() {
                 CounterpartKind::Curved => true,
-                CounterpartKind::Edge => matches!(p.backing(), Backing::Core { .. }),
+                CounterpartKind::Edge => {
+                    matches!(p.backing(), Backing::Core { .. } | Backing::Flat)
+                }
                 CounterpartKind::Plane => false,
             };
         let (curve, map, replaced) =

@@ -412,7 +412,9 @@ const BONDED_11: [f64; 4] = [0.840368, -0.991587, 0.328077, 0.225198];
 /// with the bonded pad's constants the free sphere was 11.9 % too soft at x = 0.42). Each pair
 /// is fitted on the one edge FE curve of its construction (nu = 0.48: flat to x = 0.4, 4.25 %;
 /// free to 0.42, 3.31 %; the plane law there was 2.2-3.2x the FE), taken for every Poisson
-/// ratio. The core takes the bonded pair through its own form (`crate::core_map`, the
+/// ratio. The calibrated bonded pad and core take their curve at that nu, 0.48, for every
+/// skin (session 19: a strip's force per E* does not depend on nu, `crate::core_map`, the
+/// edge's Poisson ratio); the free sphere its plane curve at its own nu. The core takes the bonded pair through its own form (`crate::core_map`, the
 /// right-angle edge; session 18): this map over the core's plane curve was up to 25.5 % and
 /// 13.5 % too stiff against its FE (`tests/data/fe/edge/core/`, nu 0.48, t/R 0.4 and 0.5):
 /// across the ridge's narrow patch the core stiffens the contact far less than on a plane

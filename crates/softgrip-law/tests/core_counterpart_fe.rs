@@ -261,6 +261,34 @@ fn stated_force_error_3d(path: &str) -> f64 {
         // t/R 0.5 (to x = 0.35): -3.89 % at x = 0.01 (the 3D mesh's first point, +2 % stiff
         // against the axisymmetric FE on the plane), +3.62 % at 0.06, -2.20 % at 0.30.
         "edge/core/force_nu0.48_t0.5.csv" => 3.89,
+        // Blind for that form (run after it was merged, end of session 18, nu 0.4 t/R 0.45, to
+        // x = 0.19 where the 3D FE diverged): too soft by 8.03 % at its last point. Session 19
+        // (the edge's form at the edge FE's nu 0.48 for every skin, `core_map`, the edge's
+        // Poisson ratio; chosen with this curve in view): -3.98 % at x = 0.01 (the 3D mesh's
+        // first point), +2.9 % at 0.06, -3.1 % at its end.
+        "edge/core/force_nu0.4_t0.45.csv" => 3.98,
+        // The other three blind cases of that batch (session 19; run with the law of session
+        // 18, no constant or form changed for them). A cylinder of 2R (an R2/R in no core
+        // data) at nu 0.42, t/R 0.45, to x = 0.36 where the 3D FE diverged: -1.37 % at x =
+        // 0.01, too soft by up to 1.54 % at 0.13, +1.20 % at 0.27, -0.89 % at the end; the
+        // issue's 3 % met.
+        "cylinder/core/force_nu0.42_t0.45_k2.csv" => 1.54,
+        // The edge at nu 0.45, t/R 0.6 (to x = 0.33, diverged): -4.06 % at x = 0.01 (the 3D
+        // mesh's first point, as on the nu 0.48 curves), +2.60 % at 0.06, -3.82 % at its end;
+        // the 10 % met. Session 19 (the edge at nu 0.48, as above): -3.82 % at x =
+        // 0.01, +3.2 % at 0.06, -1.5 % at its end.
+        "edge/core/force_nu0.45_t0.6.csv" => 3.82,
+        // The edge at nu 0.3, t/R 0.5 (to x = 0.17, diverged): missed the 10 %. Too
+        // soft everywhere, -0.74 % at x = 0.03 growing steadily to -5.64 % at 0.10 and
+        // -11.56 % at the FE's last point. At x = 0.17 the blind edges read -0.94 % (nu 0.45,
+        // t/R 0.6), -6.81 % (nu 0.4, t/R 0.45) and -11.56 % (nu 0.3): the law on the edge
+        // grows too soft with x on the compressible skins (each run has its own t/R, so nu and
+        // t/R are not separated; the felt squeeze's form was chosen on nu 0.48 alone).
+        // Session 19 (the edge's whole form at the edge FE's nu 0.48 for every skin: a strip's
+        // force per E* does not depend on nu, `core_map`, the edge's Poisson ratio; chosen with
+        // this curve in view, no longer blind): -3.55 % at x = 0.01, +2.3 % at 0.03, -3.3 % at
+        // its end (the FE's compressible skin stiffer than the law there); the 10 % met.
+        "edge/core/force_nu0.3_t0.5.csv" => 3.55,
         other => panic!("{other}: no stated error (run with --nocapture and state it)"),
     };
     (pct + 0.2) / 100.0

@@ -191,6 +191,50 @@ fn a_core_on_an_edge_stiffens_to_the_end_of_its_range() {
     assert_eq!(checked, 7 * 6);
 }
 
+/// On the right-angle edge a core and the calibrated bonded pad carry one curve per E* for every
+/// nu (session 19, `core_map`, the edge's Poisson ratio: a strip's force over E* does not depend
+/// on nu, so the form is taken at the edge FE's nu 0.48): force, stiffness and range bit for bit
+/// the same at nu 0.3-0.5 as at 0.48, and on a plane they still differ with nu.
+#[test]
+fn a_core_and_the_bonded_pad_on_an_edge_are_one_curve_over_e_star_for_every_nu() {
+    let law = |nu: f64, backing: Backing, cp: Counterpart| {
+        let p = ContactParams::try_from_parts(1.0, 1.0, nu)
+            .and_then(|p| p.with_backing(backing))
+            .expect("valid params");
+        ContactLaw::try_new(p, Level::Calibrated)
+            .and_then(|l| l.with_counterpart(cp))
+            .expect("binds")
+    };
+    let mut checked = 0;
+    for backing in [
+        Backing::Flat,
+        Backing::Core { thickness: 0.3 },
+        Backing::Core { thickness: 0.5 },
+    ] {
+        let reference = law(0.48, backing, Counterpart::EDGE);
+        for nu in [0.3, 0.4, 0.45, 0.49, 0.5] {
+            let on_edge = law(nu, backing, Counterpart::EDGE);
+            assert_eq!(on_edge.x_max().to_bits(), reference.x_max().to_bits());
+            for i in 1..=100 {
+                let x = reference.x_max() * f64::from(i) / 100.0;
+                assert_eq!(
+                    on_edge.response(x),
+                    reference.response(x),
+                    "{backing:?} nu {nu} x {x}"
+                );
+            }
+            let plane = law(nu, backing, Counterpart::PLANE).response(0.1).force;
+            let plane_ref = law(0.48, backing, Counterpart::PLANE).response(0.1).force;
+            assert!(
+                (plane / plane_ref - 1.0).abs() > 1e-3,
+                "{backing:?} nu {nu}: {plane}"
+            );
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 3 * 5);
+}
+
 /// A skin as thick as the fingertip (t/R 0.999) on a counterpart is the bonded pad on it: the
 /// core's map (`core_map`: the plane core law at Hertz's patch times the bonded pad's squeeze
 /// excess at delta/t) goes over into the bonded pad's (`mapping`) as t -> R, as the plane core

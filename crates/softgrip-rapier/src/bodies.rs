@@ -1,24 +1,20 @@
 //! The solver's view of rapier's bodies: the body table (velocity, inverse mass and inertia in
-//! `f64`), the paths of position-based kinematic bodies over a split step, and the gravity
-//! bookkeeping of a split step.
+//! `f64`; the mobility of each kind of body is `mobility`'s, the paths of position-based
+//! kinematic bodies `kinematic`'s), waking, the gravity bookkeeping of a split step and the
+//! application of the solve's impulses to rapier.
 
-use nalgebra::{Matrix3, Vector3};
-use rapier3d::prelude::{Pose, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector};
+use nalgebra::Vector3;
+use rapier3d::prelude::{RigidBody, RigidBodyHandle, RigidBodySet, Vector};
 
 use crate::boundary::{to_f32, to_f64};
 use crate::counters::SoftCounters;
 use crate::detect::Geom;
 use crate::fast_hash::FastMap;
 use crate::jointed;
+use crate::kinematic::KinematicVelocity;
+use crate::mobility::{BodyState, free_mobility};
 use crate::multibody::{self, Hosts, LinkCtx, SavedForce};
-use crate::problem::{BodyState, Row};
-use crate::rigid::RigidRow;
-
-/// Velocity of a kinematic body over the coming (sub)step: (linear [m/s], angular [rad/s]).
-pub(crate) type KinematicVelocity = FastMap<RigidBodyHandle, (Vector3<f64>, Vector3<f64>)>;
-
-/// A position-based kinematic body's path over one step: (handle, start pose, target pose).
-pub(crate) type KinematicPath = (RigidBodyHandle, Pose, Pose);
+use crate::problem::{RigidRow, Row};
 
 /// The solver's body table under construction.
 #[derive(Debug, Clone, Default)]
@@ -41,23 +37,6 @@ impl BodyTable {
         self.hosts.clear();
         self.jointed_free = 0;
     }
-}
-
-/// The paths of every position-based kinematic body over the coming step.
-pub(crate) fn kinematic_paths(bodies: &RigidBodySet) -> Vec<KinematicPath> {
-    bodies
-        .iter()
-        .filter(|(_, rb)| rb.body_type() == RigidBodyType::KinematicPositionBased)
-        .map(|(h, rb)| (h, *rb.position(), *rb.next_position()))
-        .collect()
-}
-
-/// The pose at fraction `s` of a path (linear in translation, slerp in rotation).
-pub(crate) fn interpolate(start: &Pose, target: &Pose, s: f32) -> Pose {
-    Pose::from_parts(
-        start.translation.lerp(target.translation, s),
-        start.rotation.slerp(target.rotation, s),
-    )
 }
 
 /// Wakes the dynamic sides of the soft contact `g` that rapier cannot wake: rapier links only
@@ -132,32 +111,6 @@ fn can_close(bodies: &RigidBodySet, g: &Geom, r: f64, gravity: Vector3<f64>, dt:
     g.dist <= reach
 }
 
-/// Velocities of the position-based kinematic bodies over the part of their path that ends at
-/// fraction `s` of the step, taking `h` seconds.
-pub(crate) fn kinematic_velocities(
-    bodies: &RigidBodySet,
-    kinematic: &[KinematicPath],
-    s: f64,
-    h: f64,
-) -> KinematicVelocity {
-    let mut out = KinematicVelocity::default();
-    for (handle, start, target) in kinematic {
-        let Some(rb) = bodies.get(*handle) else {
-            continue;
-        };
-        let goal = interpolate(start, target, s as f32);
-        let now = rb.position();
-        let v = to_f64(goal.translation - now.translation) / h;
-        let (axis, mut angle) = (goal.rotation * now.rotation.inverse()).to_axis_angle();
-        if angle > std::f32::consts::PI {
-            angle -= 2.0 * std::f32::consts::PI;
-        }
-        let w = to_f64(axis * angle) / h;
-        out.insert(*handle, (v, w));
-    }
-    out
-}
-
 /// Applies the gravity impulse `m g tau` to every awake dynamic body.
 pub(crate) fn gravity_kick(bodies: &mut RigidBodySet, gravity: Vector, tau: f64) {
     for (_, rb) in bodies.iter_mut() {
@@ -166,25 +119,6 @@ pub(crate) fn gravity_kick(bodies: &mut RigidBodySet, gravity: Vector, tau: f64)
             rb.apply_impulse(imp, false);
         }
     }
-}
-
-/// A dynamic body's mobility as a free body: rapier's effective inverse mass (zero along locked
-/// translations) \[1/kg\] and world inverse inertia tensor \[1/(kg m^2)\].
-pub(crate) fn free_mobility(rb: &RigidBody) -> (Vector3<f64>, Matrix3<f64>) {
-    let mp = rb.mass_properties();
-    let ii = &mp.effective_world_inv_inertia;
-    let inv_i = Matrix3::new(
-        ii.m11 as f64,
-        ii.m12 as f64,
-        ii.m13 as f64,
-        ii.m12 as f64,
-        ii.m22 as f64,
-        ii.m23 as f64,
-        ii.m13 as f64,
-        ii.m23 as f64,
-        ii.m33 as f64,
-    );
-    (to_f64(mp.effective_inv_mass), inv_i)
 }
 
 /// The body's row in the solver's table: for a dynamic body, its velocity with the external
@@ -234,49 +168,11 @@ pub(crate) fn body_index(
     let rb = bodies.get(handle)?;
     let com = to_f64(rb.mass_properties().world_com);
     let state = if rb.is_dynamic() && !rb.is_sleeping() {
-        let (inv_m, inv_i) = free_mobility(rb);
-        // rapier adds gravity, the user force and torque during its step: predict them.
-        let gravity = to_f64(gravity) * rb.gravity_scale() as f64;
-        let v = to_f64(rb.linvel())
-            + (inv_m.component_mul(&to_f64(rb.user_force())) + gravity) * h_drift;
-        let w = to_f64(rb.angvel()) + inv_i * to_f64(rb.user_torque()) * h_drift;
-        let a_ext = inv_m.component_mul(&to_f64(rb.user_force())) + gravity;
-        BodyState {
-            v,
-            w,
-            inv_m,
-            inv_i,
-            com,
-            a_ext,
-            passive: (v, w),
-            link: None,
-        }
+        free_state(rb, com, to_f64(gravity), h_drift)
     } else if rb.is_kinematic() {
-        let (v, w) = kin_vel
-            .get(&handle)
-            .copied()
-            .unwrap_or((to_f64(rb.linvel()), to_f64(rb.angvel())));
-        BodyState {
-            v,
-            w,
-            inv_m: Vector3::zeros(),
-            inv_i: Matrix3::zeros(),
-            com,
-            a_ext: Vector3::zeros(),
-            passive: (v, w),
-            link: None,
-        }
+        kinematic_state(rb, handle, com, kin_vel)
     } else {
-        BodyState {
-            v: Vector3::zeros(),
-            w: Vector3::zeros(),
-            inv_m: Vector3::zeros(),
-            inv_i: Matrix3::zeros(),
-            com,
-            a_ext: Vector3::zeros(),
-            passive: (Vector3::zeros(), Vector3::zeros()),
-            link: None,
-        }
+        fixed_state(com)
     };
     if !(state.v.iter().chain(state.w.iter()).all(|x| x.is_finite())) {
         return None;
@@ -285,6 +181,49 @@ pub(crate) fn body_index(
     tb.handles.push(handle);
     tb.index.insert(handle, tb.table.len() - 1);
     Some(tb.table.len() - 1)
+}
+
+/// A free dynamic body's row: its velocity with gravity (`gravity` \[m/s^2\], times its
+/// gravity scale), the user force and torque integrated over `h_drift` \[s\], its mobility
+/// ([`free_mobility`]) and centre of mass `com` \[m\].
+fn free_state(rb: &RigidBody, com: Vector3<f64>, gravity: Vector3<f64>, h_drift: f64) -> BodyState {
+    let (inv_m, inv_i) = free_mobility(rb);
+    // rapier adds gravity, the user force and torque during its step: predict them.
+    let gravity = gravity * rb.gravity_scale() as f64;
+    let v =
+        to_f64(rb.linvel()) + (inv_m.component_mul(&to_f64(rb.user_force())) + gravity) * h_drift;
+    let w = to_f64(rb.angvel()) + inv_i * to_f64(rb.user_torque()) * h_drift;
+    let a_ext = inv_m.component_mul(&to_f64(rb.user_force())) + gravity;
+    BodyState {
+        v,
+        w,
+        inv_m,
+        inv_i,
+        com,
+        a_ext,
+        passive: (v, w),
+        link: None,
+    }
+}
+
+/// A kinematic body's row: its velocity over the (sub)step (`kin_vel` for a position-based
+/// one on its path, else rapier's), no mobility.
+fn kinematic_state(
+    rb: &RigidBody,
+    handle: RigidBodyHandle,
+    com: Vector3<f64>,
+    kin_vel: &KinematicVelocity,
+) -> BodyState {
+    let (v, w) = kin_vel
+        .get(&handle)
+        .copied()
+        .unwrap_or((to_f64(rb.linvel()), to_f64(rb.angvel())));
+    BodyState::immobile(v, w, com)
+}
+
+/// A fixed (or sleeping) body's row: at rest, no mobility.
+fn fixed_state(com: Vector3<f64>) -> BodyState {
+    BodyState::immobile(Vector3::zeros(), Vector3::zeros(), com)
 }
 
 /// A dynamic link of a multibody with no free dof (a fixed or kinematic root and only fixed
@@ -312,16 +251,7 @@ fn welded_link_state(
         .unwrap_or((to_f64(root.linvel()), to_f64(root.angvel())));
     let com = to_f64(rb.mass_properties().world_com);
     let v = v_root + w.cross(&(com - to_f64(root.mass_properties().world_com)));
-    (v.iter().chain(w.iter()).all(|x| x.is_finite())).then_some(BodyState {
-        v,
-        w,
-        inv_m: Vector3::zeros(),
-        inv_i: Matrix3::zeros(),
-        com,
-        a_ext: Vector3::zeros(),
-        passive: (v, w),
-        link: None,
-    })
+    (v.iter().chain(w.iter()).all(|x| x.is_finite())).then_some(BodyState::immobile(v, w, com))
 }
 
 /// Applies the rows' impulses to rapier's bodies. They are summed per body in `f64` and

@@ -17,12 +17,12 @@ use crate::error::{Error, Result};
 use crate::fast_hash::{FastMap, FastSet};
 use crate::fingertip::SoftFingertip;
 use crate::model::Model;
-use crate::problem::Row;
-use crate::readout::{Accums, TipContact};
-use crate::rigid::RigidRow;
+use crate::problem::{RigidRow, Row};
+use crate::readout::Accums;
 use crate::solve::SolveScratch;
 use crate::substep::SoftAccuracy;
 use crate::taxels::{TactileImage, TactileSlot};
+use crate::tip_contact::TipContact;
 use crate::tip_record::TipRecord;
 
 /// Memory of one contact between steps.
@@ -46,6 +46,8 @@ pub(crate) struct PairState {
     pub tip_local: Vector3<f64>,
     /// The last substep in contact (`Scratch::stamp`).
     pub stamp: u64,
+    /// The contact's impulses of its last (sub)step: the coupled solve's warm start.
+    pub warm: Option<crate::problem::Warm>,
 }
 
 /// Buffers of one step, kept between steps so that a warm step allocates nothing (apart from
@@ -56,11 +58,14 @@ pub(crate) struct Scratch {
     pub body_table: BodyTable,
     /// The body table before the solve, restored for each further onset solve
     /// (`step::onset`).
-    pub onset_base: Vec<crate::problem::BodyState>,
+    pub onset_base: Vec<crate::mobility::BodyState>,
     /// The contacts prepared for the solve.
     pub rows: Vec<Row>,
     /// rapier's touching rigid contacts of the bodies the soft contacts move (`rigid`).
     pub rigid: Vec<RigidRow>,
+    /// The warm start of each rigid row the last coupled solve answered (`RigidRow::solved`),
+    /// by [`RigidKey`](crate::problem::RigidKey): looked up, never iterated.
+    pub rigid_warm: FastMap<crate::problem::RigidKey, [crate::problem::Warm; 2]>,
     /// The bodies to visit while gathering `rigid` (in order), the set of them, and the
     /// collider pairs already taken.
     pub rigid_visit: (

@@ -37,7 +37,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 use rapier3d::parry::query::PointQuery;
-use rapier3d::parry::shape::{Shape, Triangle, TypedShape};
+use rapier3d::parry::shape::{Compound, ConvexPolyhedron, Shape, Triangle, TypedShape};
 use rapier3d::prelude::{Aabb, Collider, Pose, Vector};
 use softgrip_law::{Counterpart, MAX_RELATIVE_CURVATURE};
 
@@ -208,41 +208,8 @@ fn read_at(
             h.map_elements_in_local_aabb(&fit.query_box(), &mut |_, t| fit.add(t));
             fit.finish()
         }
-        TypedShape::ConvexPolyhedron(c) => {
-            let mut fit = Fit::new(p, n, radius);
-            let (points, ids) = (c.points(), c.vertices_adj_to_face());
-            for face in c.faces() {
-                let first = face.first_vertex_or_edge as usize;
-                let count = face.num_vertices_or_edges as usize;
-                let corner = |i: usize| points[ids[first + i] as usize];
-                // A fan of triangles over the polygon.
-                for i in 1..count.saturating_sub(1) {
-                    fit.add(&Triangle::new(corner(0), corner(i), corner(i + 1)));
-                }
-            }
-            fit.finish()
-        }
-        TypedShape::Compound(c) => {
-            let part = c.shapes().iter().min_by(|a, b| {
-                let d = |(pose, s): &(Pose, _)| {
-                    let s: &rapier3d::parry::shape::SharedShape = s;
-                    s.distance_to_local_point(pose.inverse_transform_point(to_f32(p)), true)
-                };
-                d(a).total_cmp(&d(b))
-            });
-            match part {
-                Some((pose, s)) => {
-                    let lp = to_f64(pose.inverse_transform_point(to_f32(p)));
-                    let ln = to_f64(pose.inverse_transform_vector(to_f32(n)));
-                    let t = read(s.as_ref(), &lp, &(ln / ln.norm()), radius);
-                    Touch {
-                        direction: to_f64(pose.transform_vector(to_f32(&t.direction))),
-                        ..t
-                    }
-                }
-                None => Touch::plane(n),
-            }
-        }
+        TypedShape::ConvexPolyhedron(c) => polyhedron(c, p, n, radius),
+        TypedShape::Compound(c) => compound(c, p, n, radius),
         TypedShape::RoundCuboid(s) => rounded(&s.inner_shape, s.border_radius, p, n, radius),
         TypedShape::RoundTriangle(s) => rounded(&s.inner_shape, s.border_radius, p, n, radius),
         TypedShape::RoundCylinder(s) => rounded(&s.inner_shape, s.border_radius, p, n, radius),
@@ -252,6 +219,45 @@ fn read_at(
         }
         // A user shape parry knows nothing of: a plane, as before counterparts were read.
         _ => Touch::plane(n),
+    }
+}
+
+/// A convex polyhedron read as its faces' triangles (a fan over each polygon) near `p`.
+fn polyhedron(c: &ConvexPolyhedron, p: &Vector3<f64>, n: &Vector3<f64>, radius: f64) -> Touch {
+    let mut fit = Fit::new(p, n, radius);
+    let (points, ids) = (c.points(), c.vertices_adj_to_face());
+    for face in c.faces() {
+        let first = face.first_vertex_or_edge as usize;
+        let count = face.num_vertices_or_edges as usize;
+        let corner = |i: usize| points[ids[first + i] as usize];
+        // A fan of triangles over the polygon.
+        for i in 1..count.saturating_sub(1) {
+            fit.add(&Triangle::new(corner(0), corner(i), corner(i + 1)));
+        }
+    }
+    fit.finish()
+}
+
+/// A compound read as its part nearest `p`, in the part's frame.
+fn compound(c: &Compound, p: &Vector3<f64>, n: &Vector3<f64>, radius: f64) -> Touch {
+    let part = c.shapes().iter().min_by(|a, b| {
+        let d = |(pose, s): &(Pose, _)| {
+            let s: &rapier3d::parry::shape::SharedShape = s;
+            s.distance_to_local_point(pose.inverse_transform_point(to_f32(p)), true)
+        };
+        d(a).total_cmp(&d(b))
+    });
+    match part {
+        Some((pose, s)) => {
+            let lp = to_f64(pose.inverse_transform_point(to_f32(p)));
+            let ln = to_f64(pose.inverse_transform_vector(to_f32(n)));
+            let t = read(s.as_ref(), &lp, &(ln / ln.norm()), radius);
+            Touch {
+                direction: to_f64(pose.transform_vector(to_f32(&t.direction))),
+                ..t
+            }
+        }
+        None => Touch::plane(n),
     }
 }
 

@@ -360,27 +360,7 @@ impl<'a> Tip<'a> {
         if gap > prediction + 0.01 * self.r {
             return None;
         }
-        let c = match query::contact(
-            other_co.position(),
-            other_co.shape(),
-            self.collider.position(),
-            self.collider.shape(),
-            prediction,
-        ) {
-            Ok(Some(c)) => crate::rounded::exact_ball_contact(
-                other_co.shape(),
-                other_co.position(),
-                self.collider.position().translation,
-                self.r,
-                prediction,
-                c,
-            )?,
-            Ok(None) => return None,
-            Err(_) => {
-                counters.unsupported_pairs += 1;
-                return None;
-            }
-        };
+        let c = self.query_contact(other_co, prediction, counters)?;
         let s = surfaces(&c, counters)?;
         let g = Geom {
             tip: self.handle,
@@ -417,6 +397,38 @@ impl<'a> Tip<'a> {
             }),
             // Rigid on rigid: rapier's contact.
             (true, true) => None,
+        }
+    }
+
+    /// parry's contact of the fingertip with `other_co` within `prediction` \[m\], exact for a
+    /// rounded shape's border (`rounded`); `None` if there is none or parry does not support
+    /// the pair (counted in `counters.unsupported_pairs`).
+    fn query_contact(
+        &self,
+        other_co: &Collider,
+        prediction: f32,
+        counters: &mut SoftCounters,
+    ) -> Option<query::Contact> {
+        match query::contact(
+            other_co.position(),
+            other_co.shape(),
+            self.collider.position(),
+            self.collider.shape(),
+            prediction,
+        ) {
+            Ok(Some(c)) => crate::rounded::exact_ball_contact(
+                other_co.shape(),
+                other_co.position(),
+                self.collider.position().translation,
+                self.r,
+                prediction,
+                c,
+            ),
+            Ok(None) => None,
+            Err(_) => {
+                counters.unsupported_pairs += 1;
+                None
+            }
         }
     }
 }

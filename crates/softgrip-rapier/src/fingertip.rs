@@ -373,8 +373,9 @@ impl SoftFingertipBuilder {
         self
     }
 
-    /// Validates everything and binds the law.
-    pub fn build(self) -> Result<SoftFingertip> {
+    /// Checks the radius, restitution, restitution speed, friction and Young's modulus
+    /// against their ranges (the first out of range: `Error::InvalidParameter`).
+    fn check_numbers(&self) -> Result<()> {
         let invalid = |field, value, range| {
             Err(Error::InvalidParameter {
                 field,
@@ -408,6 +409,12 @@ impl SoftFingertipBuilder {
                 "finite, > 0 and <= 1e13 Pa",
             );
         }
+        Ok(())
+    }
+
+    /// Validates everything and binds the law.
+    pub fn build(self) -> Result<SoftFingertip> {
+        self.check_numbers()?;
         let tactile = self
             .tactile
             .map(|pad| pad.validate(self.radius))

@@ -60,11 +60,11 @@ use rapier3d::prelude::{
     ImpulseJoint, JointMotor, Pose, RigidBody, RigidBodyHandle, RigidBodySet, Vector,
 };
 
-use crate::bodies::{KinematicVelocity, free_mobility};
 use crate::boundary::to_f64;
 use crate::joint_sweeps::{self, HARD_COMPLIANCE, SweepRow};
-use crate::multibody::{Generalised, Link, LinkCtx, motor_fold};
-use crate::problem::BodyState;
+use crate::kinematic::KinematicVelocity;
+use crate::mobility::{BodyState, Generalised, Link, free_mobility};
+use crate::multibody::{LinkCtx, motor_fold};
 
 /// The most bodies one jointed assembly may hold (its rows and mobility are dense, `6k x 6k`);
 /// a larger one is seen as free bodies.
@@ -183,39 +183,8 @@ pub(crate) fn assembly_states(
         .collect::<Option<_>>()?;
     let n = 6 * ms.len();
     let (minv, v_star, force) = free_motion(bodies, ctx, &ms)?;
-    let mut rows = Vec::new();
-    let mut seen = Vec::new();
-    for m in &ms {
-        for (b1, b2, jh, joint) in ctx.impulse_joints.attached_enabled_joints(m.handle) {
-            if seen.contains(&jh) {
-                continue;
-            }
-            seen.push(jh);
-            let first = rows.len();
-            joint_rows(bodies, ctx, kin_vel, &ms, &minv, (b1, b2), joint, &mut rows);
-            for r in &mut rows[first..] {
-                r.joint = seen.len() - 1;
-            }
-        }
-    }
-    // rapier runs its sweeps plus the largest `additional_pgs_iterations` of a body in the
-    // island component, which holds every member (a lower bound: a body outside the assembly
-    // may ask for more).
-    let extra = handles
-        .iter()
-        .filter_map(|h| bodies.get(*h).map(RigidBody::additional_pgs_iterations))
-        .max()
-        .unwrap_or(0);
-    let sweeps = ctx.sweeps.saturating_add(extra);
-    let sweep_rows: Vec<SweepRow<'_>> = rows
-        .iter()
-        .map(|r| SweepRow {
-            g: &r.g,
-            compliance: r.compliance,
-            joint: r.joint,
-        })
-        .collect();
-    if !joint_sweeps::converges(&minv, &sweep_rows, sweeps)? {
+    let rows = assembly_rows(bodies, ctx, kin_vel, &ms, &minv);
+    if !rapier_converges(bodies, ctx, &handles, &rows, &minv)? {
         return None;
     }
     let (mobility, qdot) = constrained(&minv, &rows, &v_star, |_| true)?;
@@ -256,6 +225,66 @@ pub(crate) fn assembly_states(
     }
     out[0].1.link.as_deref_mut()?.multi = Some(g);
     Some(out)
+}
+
+/// The rows of every enabled impulse joint attached to the members `ms` (each joint once,
+/// numbered in the order met), on the members' free inverse mass `minv`.
+fn assembly_rows(
+    bodies: &RigidBodySet,
+    ctx: &LinkCtx<'_>,
+    kin_vel: &KinematicVelocity,
+    ms: &[Member],
+    minv: &DMatrix<f64>,
+) -> Vec<JointRow> {
+    let mut rows = Vec::new();
+    let mut seen = Vec::new();
+    for m in ms {
+        for (b1, b2, jh, joint) in ctx.impulse_joints.attached_enabled_joints(m.handle) {
+            if seen.contains(&jh) {
+                continue;
+            }
+            seen.push(jh);
+            let first = rows.len();
+            joint_rows(bodies, ctx, kin_vel, ms, minv, (b1, b2), joint, &mut rows);
+            for r in &mut rows[first..] {
+                r.joint = seen.len() - 1;
+            }
+        }
+    }
+    rows
+}
+
+/// Whether rapier's Gauss-Seidel sweeps over the assembly's joint rows `rows` converge within
+/// a solver pass (`joint_sweeps`); `None` if their rate cannot be read.
+fn rapier_converges(
+    bodies: &RigidBodySet,
+    ctx: &LinkCtx<'_>,
+    handles: &[RigidBodyHandle],
+    rows: &[JointRow],
+    minv: &DMatrix<f64>,
+) -> Option<bool> {
+    // rapier runs its sweeps plus the largest `additional_pgs_iterations` of a body in the
+    // island component, which holds every member (a lower bound: a body outside the assembly
+    // may ask for more).
+    let extra = handles
+        .iter()
+        .filter_map(|h| bodies.get(*h).map(RigidBody::additional_pgs_iterations))
+        .max()
+        .unwrap_or(0);
+    let sweeps = ctx.sweeps.saturating_add(extra);
+    let sweep_rows = sweep_rows(rows);
+    joint_sweeps::converges(minv, &sweep_rows, sweeps)
+}
+
+/// The joint rows as `joint_sweeps` reads them.
+fn sweep_rows(rows: &[JointRow]) -> Vec<SweepRow<'_>> {
+    rows.iter()
+        .map(|r| SweepRow {
+            g: &r.g,
+            compliance: r.compliance,
+            joint: r.joint,
+        })
+        .collect()
 }
 
 /// The Gauss-Seidel sweeps per solver pass at which rapier's sweeps over the joint rows of the
@@ -299,14 +328,7 @@ pub(crate) fn sweeps_needed(
             }
         }
     }
-    let sweep_rows: Vec<SweepRow<'_>> = rows
-        .iter()
-        .map(|r| SweepRow {
-            g: &r.g,
-            compliance: r.compliance,
-            joint: r.joint,
-        })
-        .collect();
+    let sweep_rows = sweep_rows(&rows);
     joint_sweeps::sweeps_for(joint_sweeps::sweep_rate(&minv, &sweep_rows)?)
 }
 

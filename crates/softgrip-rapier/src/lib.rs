@@ -16,7 +16,9 @@ mod guard;
 mod hooks;
 mod joint_sweeps;
 mod jointed;
+mod kinematic;
 mod link_contacts;
+mod mobility;
 mod model;
 mod multibody;
 mod presets;
@@ -32,6 +34,7 @@ mod step_error;
 mod substep;
 mod tactile;
 mod taxels;
+mod tip_contact;
 mod tip_record;
 mod world;
 
@@ -46,7 +49,6 @@ pub use fingertip::{
     hunt_crossley_zeta,
 };
 pub use presets::Preset;
-pub use readout::TipContact;
 pub use rigid::IMMOBILE;
 pub use step_error::{
     Divergence, MAX_ANGULAR_SPEED, MAX_JOINT_COORDINATE, MAX_LINEAR_SPEED, MAX_POSITION, Phase,
@@ -55,6 +57,7 @@ pub use step_error::{
 pub use substep::{AMPLITUDE_FRACTION, MAX_SUBSTEPS, SoftAccuracy};
 pub use tactile::{MAX_TAXELS_PER_SIDE, MIN_TAXEL_SIDE_OVER_RADIUS, TactileGrid, TactilePad};
 pub use taxels::TactileImage;
+pub use tip_contact::TipContact;
 pub use world::SoftWorld;
 
 /// Re-exports of the crates the API uses.

@@ -34,107 +34,16 @@
 
 use std::collections::HashMap;
 
-use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
+use nalgebra::{DMatrix, DVector, Vector3, Vector6};
 use rapier3d::prelude::{
     AngVector, ImpulseJointSet, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet,
     PhysicsWorld, Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector,
 };
 
-use crate::bodies::{KinematicPath, interpolate};
 use crate::boundary::{to_f32, to_f64};
 use crate::fast_hash::FastMap;
-use crate::problem::BodyState;
-use crate::saturation::{Fold, Motor, couple};
-
-/// A link of a multibody in the solver's body table.
-#[derive(Debug, Clone)]
-pub(crate) struct Link {
-    /// Table index of the body that holds the multibody's generalised mobility (the first of
-    /// its links entered in the table; this body itself if it is that one).
-    pub host: usize,
-    /// The link's place in its multibody's `links` (and `blocks`).
-    pub slot: usize,
-    /// On the host only: the multibody.
-    pub multi: Option<Generalised>,
-}
-
-/// A multibody's generalised mobility, held by its host link.
-#[derive(Debug, Clone)]
-pub(crate) struct Generalised {
-    /// The mobility the solve sees (motors folded in) \[1/kg, 1/(kg m^2)\], n x n.
-    pub mobility: DMatrix<f64>,
-    /// The free generalised velocity over the (sub)step (external accelerations and motors).
-    pub qdot: DVector<f64>,
-    /// The generalised acceleration of gravity and the user's forces.
-    pub acc: DVector<f64>,
-    /// The generalised velocity over the (sub)step without the joint motors' push (the
-    /// velocity now plus `acc` over the step; `qdot` where the motors are not separated).
-    pub passive: DVector<f64>,
-    /// Table indices of the multibody's links in the table (the host first).
-    pub links: Vec<usize>,
-    /// Each link's jacobian (6 x n: the linear velocity of its centre of mass, then its
-    /// angular velocity, per generalised velocity), world frame, by slot.
-    pub jacs: Vec<DMatrix<f64>>,
-    /// `W J^T` of each link (n x 6), by slot.
-    pub wj: Vec<DMatrix<f64>>,
-    /// The links' spatial mobility blocks `J_a W J_b^T` (6 x 6), by slots `[a][b]`: what a
-    /// wrench on link `b` does to the velocity of link `a`.
-    pub blocks: Vec<Vec<Matrix6<f64>>>,
-    /// What folding the motors again needs (`saturation`); `None` for a generalised body
-    /// whose motors are not folded here (`jointed`).
-    pub fold: Option<Fold>,
-}
-
-impl Generalised {
-    /// A generalised body of mobility `mobility`, free velocity `qdot` and external
-    /// acceleration `acc`, with no links yet ([`Generalised::add`]).
-    pub(crate) fn new(mobility: DMatrix<f64>, qdot: DVector<f64>, acc: DVector<f64>) -> Self {
-        Self {
-            mobility,
-            passive: qdot.clone(),
-            qdot,
-            acc,
-            links: Vec::with_capacity(2),
-            jacs: Vec::with_capacity(2),
-            wj: Vec::with_capacity(2),
-            blocks: Vec::with_capacity(2),
-            fold: None,
-        }
-    }
-
-    /// Recomputes every link's `W J^T` and the blocks from `mobility` (after a new fold:
-    /// `saturation`).
-    pub(crate) fn refresh(&mut self) {
-        let jacs = std::mem::take(&mut self.jacs);
-        let links = std::mem::take(&mut self.links);
-        self.wj.clear();
-        self.blocks.clear();
-        for (index, jac) in links.into_iter().zip(jacs) {
-            self.add(index, jac);
-        }
-    }
-
-    /// Adds a link of jacobian `jac` at table index `index`, returning its slot.
-    pub(crate) fn add(&mut self, index: usize, jac: DMatrix<f64>) -> usize {
-        let wj = &self.mobility * jac.transpose();
-        let block = |j: &DMatrix<f64>, w: &DMatrix<f64>| -> Matrix6<f64> {
-            let m = j * w;
-            Matrix6::from_fn(|r, c| m[(r, c)])
-        };
-        let slot = self.links.len();
-        for a in 0..slot {
-            let b = block(&self.jacs[a], &wj);
-            self.blocks[a].push(b);
-        }
-        let mut row: Vec<Matrix6<f64>> = (0..slot).map(|b| block(&jac, &self.wj[b])).collect();
-        row.push(block(&jac, &wj));
-        self.blocks.push(row);
-        self.links.push(index);
-        self.jacs.push(jac);
-        self.wj.push(wj);
-        slot
-    }
-}
+use crate::kinematic::{KinematicPath, interpolate};
+use crate::mobility::{BodyState, Fold, Generalised, Link, Motor, couple};
 
 /// What a link's entry needs of the world.
 pub(crate) struct LinkCtx<'a> {
@@ -165,56 +74,6 @@ fn link_velocity(jac: &DMatrix<f64>, q: &DVector<f64>) -> (Vector3<f64>, Vector3
         Vector3::new(row(0), row(1), row(2)),
         Vector3::new(row(3), row(4), row(5)),
     )
-}
-
-/// The multibody of link `i` (held by its host) and the link's slot in it.
-fn multi_of(bodies: &[BodyState], i: usize) -> Option<(&Generalised, usize)> {
-    let link = bodies[i].link.as_deref()?;
-    let multi = bodies[link.host].link.as_deref()?.multi.as_ref()?;
-    Some((multi, link.slot))
-}
-
-/// Applies the wrench `[lin; ang]` (force at its centre of mass \[N s\], torque \[N m s\]) to
-/// link `i`: the multibody's generalised velocity changes by `W J^T f`, and every link of it in
-/// the table moves with it (by its block `J_k W J_i^T f`).
-pub(crate) fn apply(bodies: &mut [BodyState], i: usize, lin: &Vector3<f64>, ang: &Vector3<f64>) {
-    let f = Vector6::new(lin.x, lin.y, lin.z, ang.x, ang.y, ang.z);
-    let count = multi_of(bodies, i).map(|(m, _)| m.links.len()).unwrap_or(0);
-    for k in 0..count {
-        let Some((b, d)) = multi_of(bodies, i).map(|(m, s)| (m.links[k], m.blocks[k][s] * f))
-        else {
-            return;
-        };
-        bodies[b].v += Vector3::new(d[0], d[1], d[2]);
-        bodies[b].w += Vector3::new(d[3], d[4], d[5]);
-    }
-}
-
-/// The mobility between a wrench direction `(lin_x, ang_x)` on body `x` and `(lin_y, ang_y)`
-/// on body `y` if both are links of one multibody (`f_x^T J_x W J_y^T f_y`), else `None`.
-pub(crate) fn pair(
-    bodies: &[BodyState],
-    x: usize,
-    (lin_x, ang_x): (&Vector3<f64>, &Vector3<f64>),
-    y: usize,
-    (lin_y, ang_y): (&Vector3<f64>, &Vector3<f64>),
-) -> Option<f64> {
-    if !same_multibody(bodies, x, y) {
-        return None;
-    }
-    let (multi, sx) = multi_of(bodies, x)?;
-    let sy = bodies[y].link.as_deref()?.slot;
-    let fx = Vector6::new(lin_x.x, lin_x.y, lin_x.z, ang_x.x, ang_x.y, ang_x.z);
-    let fy = Vector6::new(lin_y.x, lin_y.y, lin_y.z, ang_y.x, ang_y.y, ang_y.z);
-    Some(fx.dot(&(multi.blocks[sx][sy] * fy)))
-}
-
-/// Whether bodies `x` and `y` are links of one multibody.
-pub(crate) fn same_multibody(bodies: &[BodyState], x: usize, y: usize) -> bool {
-    match (bodies[x].link.as_deref(), bodies[y].link.as_deref()) {
-        (Some(a), Some(b)) => a.host == b.host,
-        _ => false,
-    }
 }
 
 /// Moves every position-based kinematic body of `kinematic` that is the root of a multibody
@@ -314,24 +173,7 @@ pub(crate) fn link_state(
     let com = to_f64(rb.mass_properties().world_com);
     let (mut v, mut w) = link_velocity(&jac, &qdot);
     let (mut vp, mut wp) = link_velocity(&jac, &passive);
-    // A kinematic root (a lifted hand) carries its links along: rapier moves a multibody's
-    // links to its root body's pose at the start of its step (`forward_kinematics`), with no
-    // velocity, and the plugin moves the root there before each pipeline step
-    // ([`carry_kinematic_roots`]). Over the coming (sub)step the links move by the root's
-    // target pose minus where the multibody has it now.
-    let root = mb.root();
-    if let Some(rr) = bodies
-        .get(root.rigid_body_handle())
-        .filter(|r| r.is_kinematic())
-    {
-        let (now, frame) = (rr.next_position(), root.local_to_world());
-        let (axis, mut angle) = (now.rotation * frame.rotation.inverse()).to_axis_angle();
-        if angle > std::f32::consts::PI {
-            angle -= 2.0 * std::f32::consts::PI;
-        }
-        let wr = to_f64(axis * angle) / ctx.h;
-        let vr = to_f64(now.translation - frame.translation) / ctx.h;
-        let carried = vr + wr.cross(&(com - to_f64(frame.translation)));
+    if let Some((carried, wr)) = root_carry(bodies, mb, &com, ctx.h) {
         v += carried;
         w += wr;
         vp += carried;
@@ -370,6 +212,33 @@ pub(crate) fn link_state(
         passive: (vp, wp),
         link: Some(Box::new(Link { host, slot, multi })),
     })
+}
+
+/// What a kinematic root (a lifted hand) carries a link at `com` \[m\] along with over the
+/// coming (sub)step `h` \[s\]: (linear [m/s], angular [rad/s]); `None` if the multibody's root
+/// is not kinematic. rapier moves a multibody's links to its root body's pose at the start of
+/// its step (`forward_kinematics`), with no velocity, and the plugin moves the root there
+/// before each pipeline step ([`carry_kinematic_roots`]). Over the coming (sub)step the links
+/// move by the root's target pose minus where the multibody has it now.
+fn root_carry(
+    bodies: &RigidBodySet,
+    mb: &Multibody,
+    com: &Vector3<f64>,
+    h: f64,
+) -> Option<(Vector3<f64>, Vector3<f64>)> {
+    let root = mb.root();
+    let rr = bodies
+        .get(root.rigid_body_handle())
+        .filter(|r| r.is_kinematic())?;
+    let (now, frame) = (rr.next_position(), root.local_to_world());
+    let (axis, mut angle) = (now.rotation * frame.rotation.inverse()).to_axis_angle();
+    if angle > std::f32::consts::PI {
+        angle -= 2.0 * std::f32::consts::PI;
+    }
+    let wr = to_f64(axis * angle) / h;
+    let vr = to_f64(now.translation - frame.translation) / h;
+    let carried = vr + wr.cross(&(com - to_f64(frame.translation)));
+    Some((carried, wr))
 }
 
 /// A multibody's generalised mobility (see the module's docs), expanded from rapier's reduced
@@ -491,7 +360,7 @@ pub(crate) fn rapier_mobility(mb: &Multibody) -> Option<(Vec<usize>, DMatrix<f64
 }
 
 /// The multibody's dof couplings (a URDF `<mimic>`: `qdot_2 = coeff qdot_1`, a hard row of
-/// rapier's solver) as `(k1, k2, coeff)` in the reduced order `pos` (`saturation::couple`
+/// rapier's solver) as `(k1, k2, coeff)` in the reduced order `pos` (`mobility::couple`
 /// applies them).
 fn couplings(mb: &Multibody, pos: &HashMap<usize, usize>) -> Vec<(usize, usize, f64)> {
     let mut out = Vec::new();

@@ -2,80 +2,57 @@
 //! kinematics.
 //!
 //! A contact problem over one (sub)step of size `h` \[s\] is a table of bodies
-//! ([`BodyState`]: velocities, inverse mass and inertia or a multibody link, for each kind of
-//! body: free, fixed or kinematic (zero inverse mass), multibody link) and the rows between
-//! them ([`Row`]: a soft contact's point, normal and tangent basis, its law's force and
-//! stiffness, damping, friction and the impulses the solve writes). This module holds no
-//! solver: it gives the rows' relative velocities and mobilities on the bodies
-//! ([`normal_velocity`], [`normal_mobility`], [`pair_mobility`]) and the static friction
-//! spring's velocity equation ([`spring`]). It imports neither `solve` nor `rigid`; both
-//! import it.
+//! ([`BodyState`], from `mobility`: velocities, and the mobility of each kind of body: free,
+//! fixed or kinematic (zero inverse mass), multibody link or jointed assembly) and the rows
+//! between them: [`Row`], a soft contact's point, normal and tangent basis, its law's force and
+//! stiffness, damping, friction and the impulses the solve writes; [`RigidRow`], one of
+//! rapier's touching contacts of a body the soft contacts move. This module holds no solver:
+//! it gives the rows' relative velocities and mobilities on the bodies ([`normal_velocity`],
+//! [`normal_mobility`], [`pair_mobility`]) and the static friction spring's velocity equation
+//! ([`spring`]). It imports only `mobility`; the solvers (`solve`, `rigid`, `saturation`) and
+//! the plugin's step import it.
 //!
 //! Units: SI, all `f64` (nalgebra): positions \[m\], velocities [m/s], angular velocities
 //! [rad/s], inverse masses [1/kg], inverse inertias [1/(kg m^2)], forces \[N\], impulses
 //! \[N s\], stiffnesses \[N/m\], damping [N s/m], mobilities [1/kg].
 
-use nalgebra::{Matrix2, Matrix3, Vector3};
+use nalgebra::{Matrix2, Vector3};
+use rapier3d::prelude::ColliderHandle;
 
-use crate::multibody::{self, Link};
+use crate::mobility::{self, BodyState};
 
-/// Velocity state and inverse mass of one body as the solver sees it.
-#[derive(Debug, Clone)]
-pub(crate) struct BodyState {
-    /// Linear velocity [m/s].
-    pub v: Vector3<f64>,
-    /// Angular velocity [rad/s].
-    pub w: Vector3<f64>,
-    /// Per-axis inverse mass [1/kg] (zero for fixed, kinematic or sleeping bodies).
-    pub inv_m: Vector3<f64>,
-    /// World inverse inertia [1/(kg m^2)].
-    pub inv_i: Matrix3<f64>,
-    /// World centre of mass \[m\].
-    pub com: Vector3<f64>,
-    /// External acceleration (gravity, user force / m) [m/s^2]; zero if not dynamic.
-    pub a_ext: Vector3<f64>,
-    /// The body's linear and angular velocity over the (sub)step without the push of the
-    /// joint motors that hold it \[m/s, rad/s\]: its velocity now plus its external
-    /// accelerations' (what the step's substep count reads, `step::split`). Equal to `(v, w)`
-    /// for a free, fixed or kinematic body.
-    pub passive: (Vector3<f64>, Vector3<f64>),
-    /// A link of a multibody: its response comes from the multibody (`multibody`; `inv_m`
-    /// and `inv_i` are then zero). `None`: a free, fixed or kinematic body.
-    pub link: Option<Box<Link>>,
+/// A contact's impulses over the previous (sub)step, which warm-start the coupled solve
+/// (`rigid::solve_coupled`): kept in the contact's state between (sub)steps (a soft contact's
+/// in its `PairState`, a rigid support's in `Scratch::rigid_warm`, keyed by rapier's contact
+/// pair and the point's feature ids).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Warm {
+    /// Normal impulse \[N s\].
+    pub jn: f64,
+    /// Tangential impulse (world) \[N s\].
+    pub jt: Vector3<f64>,
+    /// Torsional impulse about the normal [N m s].
+    pub jtw: f64,
+    /// The (sub)step they are over \[s\], > 0.
+    pub h: f64,
 }
 
-impl BodyState {
-    /// Velocity of the body's material point at `p` (world) [m/s].
-    #[inline]
-    pub(crate) fn vel_at(&self, p: &Vector3<f64>) -> Vector3<f64> {
-        self.v + self.w.cross(&(p - self.com))
-    }
-
-    /// Applies the impulse `imp` \[N s\] at `p` (world) to a free body's velocities (not a
-    /// multibody link's: `multibody::apply`).
-    #[inline]
-    pub(crate) fn apply(&mut self, p: &Vector3<f64>, imp: &Vector3<f64>) {
-        self.v += self.inv_m.component_mul(imp);
-        self.w += self.inv_i * (p - self.com).cross(imp);
-    }
-
-    /// Relative velocity change along `dir_i` at `p_i` from a unit impulse along `dir_k` at `p_k`.
-    #[inline]
-    fn mobility(
-        &self,
-        p_i: &Vector3<f64>,
-        dir_i: &Vector3<f64>,
-        p_k: &Vector3<f64>,
-        dir_k: &Vector3<f64>,
-    ) -> f64 {
-        let (ri, rk) = (p_i - self.com, p_k - self.com);
-        let dw = self.inv_i * rk.cross(dir_k);
-        dir_i.dot(&(self.inv_m.component_mul(dir_k) + dw.cross(&ri)))
-    }
-
-    /// Whether impulses move the body (a free dynamic body or a multibody link).
-    pub(crate) fn is_dynamic(&self) -> bool {
-        self.inv_m.iter().any(|m| *m > 0.0) || self.link.is_some()
+impl Warm {
+    /// The impulses scaled to a (sub)step of `h` \[s\] (the same forces): normal, along
+    /// `t1`, along `t2`, torsion \[N s, N m s\]; zeros if not finite.
+    pub(crate) fn over(&self, h: f64, t1: &Vector3<f64>, t2: &Vector3<f64>) -> [f64; 4] {
+        let s = h / self.h;
+        let out = [
+            self.jn * s,
+            self.jt.dot(t1) * s,
+            self.jt.dot(t2) * s,
+            self.jtw * s,
+        ];
+        if out.iter().all(|x| x.is_finite()) {
+            out
+        } else {
+            [0.0; 4]
+        }
     }
 }
 
@@ -140,6 +117,9 @@ pub(crate) struct Row {
     /// A contact beginning within the step: the compression its law is linearised at \[m\]
     /// (0: at the start; `step::onset`).
     pub lin: f64,
+    /// Its impulses of the previous (sub)step (`None`: a new contact), the coupled solve's
+    /// start.
+    pub warm: Option<Warm>,
 }
 
 /// The body at index `i` of the body table (`None`: fixed, no body).
@@ -174,7 +154,7 @@ pub(crate) fn pair_mobility(
             };
             if x == y && bodies[x].link.is_none() {
                 m += si * sk * bodies[x].mobility(&ri.p, di, &rk.p, dk);
-            } else if let Some(w) = multibody::pair(
+            } else if let Some(w) = mobility::pair(
                 bodies,
                 x,
                 (di, &(ri.p - bodies[x].com).cross(di)),
@@ -234,3 +214,67 @@ pub(crate) fn spring(r: &Row, h: f64) -> (f64, Vector3<f64>) {
 /// Positional correction factor of the hard static friction (fraction of the anchor offset
 /// removed per step) where it is not a spring ([`spring`]).
 pub(crate) const FRICTION_BETA: f64 = 0.3;
+
+/// One of rapier's touching contact points between a dynamic body `a` that the soft contacts
+/// move (directly or through other rigid contacts) and another body `b` (`None`: fixed).
+#[derive(Debug, Clone)]
+pub(crate) struct RigidRow {
+    pub a: usize,
+    pub b: Option<usize>,
+    /// Contact point (world) \[m\].
+    pub p: Vector3<f64>,
+    /// Unit normal, b -> a.
+    pub n: Vector3<f64>,
+    /// Tangent basis.
+    pub t1: Vector3<f64>,
+    /// Tangent basis.
+    pub t2: Vector3<f64>,
+    /// rapier's friction coefficient of the manifold.
+    pub mu: f64,
+    /// The normal impulse the plugin applies (the soft contacts' part) \[N s\].
+    pub jn: f64,
+    /// The tangential impulse the plugin applies \[N s\].
+    pub jt: Vector3<f64>,
+    /// Which contact point it is, kept from (sub)step to (sub)step: rapier's pair (collider
+    /// handles) and the point's feature ids.
+    pub key: Option<RigidKey>,
+    /// The point's impulses of the previous (sub)step, without the soft contacts (rapier's
+    /// part) and with them (`None`: a new point): the coupled solve's warm start.
+    pub warm: Option<[Warm; 2]>,
+    /// The same, as the coupled solve answered them this (sub)step (`None`: not answered).
+    pub solved: Option<[Warm; 2]>,
+}
+
+/// A rigid contact point's persistent id: rapier's collider pair and the point's feature ids
+/// on each collider (`TrackedContact::fid1`, `fid2`).
+pub(crate) type RigidKey = (ColliderHandle, ColliderHandle, u32, u32);
+
+impl RigidRow {
+    pub(crate) fn new(
+        a: usize,
+        b: Option<usize>,
+        p: Vector3<f64>,
+        n: Vector3<f64>,
+        mu: f64,
+    ) -> Self {
+        let t1 = if n.x.abs() < 0.9 {
+            n.cross(&Vector3::x()).normalize()
+        } else {
+            n.cross(&Vector3::y()).normalize()
+        };
+        Self {
+            a,
+            b,
+            p,
+            n,
+            t1,
+            t2: n.cross(&t1),
+            mu,
+            jn: 0.0,
+            jt: Vector3::zeros(),
+            key: None,
+            warm: None,
+            solved: None,
+        }
+    }
+}

@@ -17,91 +17,14 @@
 //! **What is done.** Each motor is a box-constrained row: after a coupled answer, every
 //! unsaturated motor's impulse is read from the answer's end velocity; one past its effort is
 //! saturated (its `B` leaves the generalised mass, `+-max_force h` joins the momentum), the
-//! multibody's mobility and free velocity are folded again ([`Fold::fold`]) and the group is
+//! multibody's mobility and free velocity are folded again (`mobility::Fold::fold`) and the group is
 //! solved again. The set only grows within a solve (at most one pass per motor), so it ends.
 //! A motor within its effort is folded as before: a grasp whose motors hold is unchanged.
 
-use nalgebra::{DMatrix, DVector, Vector6};
+use nalgebra::{DVector, Vector6};
 
-use crate::problem::{BodyState, Row};
-
-/// One motor of a free dof, in the multibody's reduced order.
-#[derive(Debug, Clone)]
-pub(crate) struct Motor {
-    /// Its place in the reduced order.
-    pub k: usize,
-    /// Its dof (all dofs' order).
-    pub dof: usize,
-    /// What it adds to the generalised mass while it holds (`b / a`) \[kg or kg m^2\].
-    pub b: f64,
-    /// What it adds to the momentum while it holds (`c / a`) \[N s or N m s\].
-    pub c: f64,
-    /// Its largest impulse over the (sub)step, `max_force h` \[N s or N m s\].
-    pub max: f64,
-    /// The impulse it pushes once saturated (`+-max`); `None` while it holds.
-    pub saturated: Option<f64>,
-}
-
-/// What a multibody's motor folding needs to be done again with some motors saturated.
-#[derive(Debug, Clone)]
-pub(crate) struct Fold {
-    /// The free dofs (reduced order -> all dofs).
-    pub free: Vec<usize>,
-    /// rapier's generalised mass of the free dofs (reduced order).
-    pub m_r: DMatrix<f64>,
-    /// The free velocity without motors over the (sub)step (reduced order).
-    pub q_r: DVector<f64>,
-    /// The motors.
-    pub motors: Vec<Motor>,
-    /// The dof couplings `(k1, k2, coeff)`: `qdot_k2 = coeff qdot_k1` (reduced order).
-    pub couplings: Vec<(usize, usize, f64)>,
-}
-
-impl Fold {
-    /// The folded mobility and free velocity (reduced order): `(M + B)^-1` and `(M + B)^-1 (M
-    /// q + C)` over the motors that hold, each saturated one's impulse in the momentum, the
-    /// couplings applied as rank-one Schur complements; `None` if singular.
-    pub(crate) fn fold(&self) -> Option<(DMatrix<f64>, DVector<f64>)> {
-        let mut m_eff = self.m_r.clone();
-        let mut momentum = &self.m_r * &self.q_r;
-        for m in &self.motors {
-            match m.saturated {
-                None => {
-                    m_eff[(m.k, m.k)] += m.b;
-                    momentum[m.k] += m.c;
-                }
-                Some(l) => momentum[m.k] += l,
-            }
-        }
-        let mut w = m_eff.try_inverse()?;
-        let mut qf = &w * momentum;
-        couple(&self.couplings, &mut w, &mut qf);
-        Some((w, qf))
-    }
-}
-
-/// The dof couplings `couplings` applied to the reduced mobility `w` and free velocity `qf`:
-/// each a rank-one Schur complement, `w - (w g)(w g)^T / (g^T w g)`, `qf - w g (g^T qf) / (g^T
-/// w g)` with `g = e_2 - coeff e_1` (one after the other on the updated `w`).
-pub(crate) fn couple(
-    couplings: &[(usize, usize, f64)],
-    w: &mut DMatrix<f64>,
-    qf: &mut DVector<f64>,
-) {
-    for &(k1, k2, coeff) in couplings {
-        let mut g = DVector::<f64>::zeros(w.nrows());
-        g[k2] += 1.0;
-        g[k1] -= coeff;
-        let wg = &*w * &g;
-        let gwg = g.dot(&wg);
-        if !(gwg > 0.0 && gwg.is_finite()) {
-            continue;
-        }
-        let along = g.dot(qf) / gwg;
-        *qf -= &wg * along;
-        *w -= (&wg * wg.transpose()) / gwg;
-    }
-}
+use crate::mobility::BodyState;
+use crate::problem::Row;
 
 /// Saturates the motors of the multibodies in `bodies` that the impulses `wrenches` (per table
 /// index: force at the centre of mass, torque \[N s, N m s\]; zero for the bodies that are not

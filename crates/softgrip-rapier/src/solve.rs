@@ -34,9 +34,9 @@
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2, Vector3};
 
-use crate::multibody;
-use crate::problem::{BodyState, Row, body, normal_velocity, pair_mobility, rel_vel, spring};
-use crate::rigid::{self, CoupledScratch, RigidRow};
+use crate::mobility::{self, BodyState};
+use crate::problem::{RigidRow, Row, body, normal_velocity, pair_mobility, rel_vel, spring};
+use crate::rigid::{self, CoupledScratch};
 use crate::saturation;
 
 /// Most outer passes (normals, then friction sweeps) of one [`solve_group`] of two or more
@@ -63,7 +63,7 @@ fn apply_linear(bodies: &mut [BodyState], r: &Row, imp: &Vector3<f64>) {
         let Some(i) = i else { continue };
         if bodies[i].link.is_some() {
             let arm = (r.p - bodies[i].com).cross(&imp);
-            multibody::apply(bodies, i, &imp, &arm);
+            mobility::apply(bodies, i, &imp, &arm);
         } else {
             bodies[i].apply(&r.p, &imp);
         }
@@ -75,7 +75,7 @@ fn apply_torque(bodies: &mut [BodyState], r: &Row, t: f64) {
     for (i, sign) in [(r.a, 1.0), (r.b, -1.0)] {
         let Some(i) = i else { continue };
         if bodies[i].link.is_some() {
-            multibody::apply(bodies, i, &Vector3::zeros(), &(tv * sign));
+            mobility::apply(bodies, i, &Vector3::zeros(), &(tv * sign));
         } else if sign > 0.0 {
             bodies[i].w += bodies[i].inv_i * tv;
         } else {
@@ -192,7 +192,7 @@ fn friction_mobility(bodies: &[BodyState], r: &Row, h: f64) -> (Option<Matrix2<f
     let zero = Vector3::zeros();
     let spin = |i: Option<usize>| {
         i.map(
-            |i| match multibody::pair(bodies, i, (&zero, &r.n), i, (&zero, &r.n)) {
+            |i| match mobility::pair(bodies, i, (&zero, &r.n), i, (&zero, &r.n)) {
                 Some(w) => w,
                 None => r.n.dot(&(bodies[i].inv_i * r.n)),
             },
@@ -201,10 +201,10 @@ fn friction_mobility(bodies: &[BodyState], r: &Row, h: f64) -> (Option<Matrix2<f
     };
     let mut kt = spin(r.a) + spin(r.b);
     if let (Some(a), Some(b)) = (r.a, r.b)
-        && multibody::same_multibody(bodies, a, b)
+        && mobility::same_multibody(bodies, a, b)
     {
         // One multibody on both sides: the cross term (rows on a and b have opposite signs).
-        kt -= 2.0 * multibody::pair(bodies, a, (&zero, &r.n), b, (&zero, &r.n)).unwrap_or(0.0);
+        kt -= 2.0 * mobility::pair(bodies, a, (&zero, &r.n), b, (&zero, &r.n)).unwrap_or(0.0);
     }
     (k_inv, kt)
 }
@@ -267,9 +267,18 @@ fn friction_sweep(bodies: &mut [BodyState], rows: &mut [Row], h: f64) {
 /// except for the dense LU of coupled groups of two or more contacts).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct SolveScratch {
+    /// The rows' independent groups ([`Groups::build`]).
+    groups: Groups,
+    /// The buffers of one group's solve.
+    work: GroupWork,
+}
+
+/// The partition of a solve's rows into independent groups (see [`solve`]).
+#[derive(Debug, Clone, Default)]
+struct Groups {
     /// Union-find parent of each body of the table.
     parent: Vec<usize>,
-    /// Group id of each row.
+    /// Group id of each row (`usize::MAX`: it carries no impulse, [`carries_impulse`]).
     group: Vec<usize>,
     /// Group id of each union-find root (`usize::MAX`: none yet).
     root_group: Vec<usize>,
@@ -277,12 +286,19 @@ pub(crate) struct SolveScratch {
     order: Vec<usize>,
     /// Start of each group in `order` (one past the end: the last entry).
     starts: Vec<usize>,
+    /// Group id of each rigid row (`usize::MAX`: its bodies have no soft contact).
+    rigid_group: Vec<usize>,
+    /// The number of groups.
+    count: usize,
+}
+
+/// The buffers of one group's solve.
+#[derive(Debug, Clone, Default)]
+struct GroupWork {
     /// The bodies before any impulse of the step.
     base: Vec<BodyState>,
     /// The rows of a coupled group, gathered contiguously.
     group_rows: Vec<Row>,
-    /// Group id of each rigid row (`usize::MAX`: its bodies have no soft contact).
-    rigid_group: Vec<usize>,
     /// The rigid rows of one group, gathered contiguously.
     group_rigid: Vec<RigidRow>,
     /// The coupled solve's buffers (`rigid`).
@@ -305,18 +321,19 @@ impl SolveScratch {
     /// Full coupled solves, their outer passes, those that did not settle, the rows found
     /// immobile and the solves found degenerate, total.
     pub(crate) fn coupled_stats(&self) -> [u64; 5] {
-        self.coupled.stats
+        self.work.coupled.stats
     }
 
     /// Solves of soft groups of two or more rows on a dynamic body without rigid supports
     /// ([`solve_group`]), their outer passes, and those that used every pass allowed, total.
     pub(crate) fn group_stats(&self) -> [u64; 3] {
-        self.group_solve.stats
+        self.work.group_solve.stats
     }
 
     /// The most soft rows of one group in the last [`solve`] (0 if it had none).
     pub(crate) fn largest_group(&self) -> usize {
-        self.starts
+        self.groups
+            .starts
             .windows(2)
             .map(|w| w[1] - w[0])
             .max()
@@ -330,6 +347,151 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
         i = parent[i];
     }
     i
+}
+
+/// Body `i` if it is dynamic (impulses move it), else `None`.
+fn dynamic(bodies: &[BodyState], i: Option<usize>) -> Option<usize> {
+    i.filter(|&i| bodies[i].is_dynamic())
+}
+
+impl Groups {
+    /// Splits `rows` and `rigid` into independent groups (see [`solve`]) and zeroes the rigid
+    /// rows' impulses.
+    fn build(&mut self, bodies: &[BodyState], rows: &[Row], rigid: &mut [RigidRow], h: f64) {
+        self.join_bodies(bodies, rows, rigid, h);
+        self.label_rows(bodies, rows, h);
+        self.label_rigid(bodies, rigid);
+        self.sort_rows();
+    }
+
+    /// The union-find of the bodies: the links of one multibody, and the dynamic bodies of
+    /// each row that can carry an impulse and of each rigid row.
+    fn join_bodies(&mut self, bodies: &[BodyState], rows: &[Row], rigid: &[RigidRow], h: f64) {
+        let parent = &mut self.parent;
+        parent.clear();
+        parent.extend(0..bodies.len());
+        // The links of one multibody are one body of the union.
+        for (i, b) in bodies.iter().enumerate() {
+            if let Some(l) = b.link.as_deref() {
+                let (ra, rb) = (find(parent, i), find(parent, l.host));
+                if ra != rb {
+                    parent[ra.max(rb)] = ra.min(rb);
+                }
+            }
+        }
+        let dynamic = |i: Option<usize>| dynamic(bodies, i);
+        // Only rows that can carry an impulse couple bodies (see [`carries_impulse`]).
+        let links = rows
+            .iter()
+            .filter(|r| carries_impulse(r, h))
+            .map(|r| (r.a, r.b))
+            .chain(rigid.iter().map(|r| (Some(r.a), r.b)));
+        for (a, b) in links {
+            if let (Some(a), Some(b)) = (dynamic(a), dynamic(b)) {
+                let (ra, rb) = (find(parent, a), find(parent, b));
+                if ra != rb {
+                    parent[ra.max(rb)] = ra.min(rb);
+                }
+            }
+        }
+    }
+
+    /// Group ids of the rows, in the order of each group's first row.
+    fn label_rows(&mut self, bodies: &[BodyState], rows: &[Row], h: f64) {
+        let dynamic = |i: Option<usize>| dynamic(bodies, i);
+        let Self {
+            parent,
+            group,
+            root_group,
+            count,
+            ..
+        } = self;
+        root_group.clear();
+        root_group.resize(bodies.len(), usize::MAX);
+        group.clear();
+        let mut groups = 0usize;
+        for r in rows.iter() {
+            if !carries_impulse(r, h) {
+                group.push(usize::MAX);
+                continue;
+            }
+            let g = match dynamic(r.a).or(dynamic(r.b)) {
+                Some(b) => {
+                    let root = find(parent, b);
+                    if root_group[root] == usize::MAX {
+                        root_group[root] = groups;
+                        groups += 1;
+                    }
+                    root_group[root]
+                }
+                None => {
+                    // No dynamic body: no mobility, a group of its own.
+                    groups += 1;
+                    groups - 1
+                }
+            };
+            group.push(g);
+        }
+        *count = groups;
+    }
+
+    /// A rigid row joins the group of its dynamic body, if a soft contact moves that body
+    /// (directly or through other rigid rows); its impulses are zeroed.
+    fn label_rigid(&mut self, bodies: &[BodyState], rigid: &mut [RigidRow]) {
+        let dynamic = |i: Option<usize>| dynamic(bodies, i);
+        let Self {
+            parent,
+            root_group,
+            rigid_group,
+            ..
+        } = self;
+        rigid_group.clear();
+        for r in rigid.iter_mut() {
+            r.jn = 0.0;
+            r.jt = Vector3::zeros();
+            r.solved = None;
+            let g = dynamic(Some(r.a))
+                .or(dynamic(r.b))
+                .map(|b| root_group[find(parent, b)])
+                .unwrap_or(usize::MAX);
+            rigid_group.push(g);
+        }
+    }
+
+    /// Counting sort of the rows by group (stable) into `order` and `starts`.
+    fn sort_rows(&mut self) {
+        let Self {
+            group,
+            root_group,
+            order,
+            starts,
+            count,
+            ..
+        } = self;
+        let groups = *count;
+        starts.clear();
+        starts.resize(groups + 1, 0);
+        for &g in group.iter().filter(|g| **g != usize::MAX) {
+            starts[g + 1] += 1;
+        }
+        for g in 0..groups {
+            starts[g + 1] += starts[g];
+        }
+        order.clear();
+        order.resize(starts[groups], 0);
+        // Fill `order` using `root_group` as the per-group cursor (it is no longer needed).
+        root_group.clear();
+        root_group.extend_from_slice(&starts[..groups]);
+        for (i, &g) in group.iter().enumerate().filter(|(_, g)| **g != usize::MAX) {
+            order[root_group[g]] = i;
+            root_group[g] += 1;
+        }
+    }
+
+    /// The rows of group `g`, ascending.
+    fn members(&self, g: usize) -> &[usize] {
+        &self.order[self.starts[g]..self.starts[g + 1]]
+    }
 }
 
 /// Solves all rows over a step `h` \[s\], starting from the body velocities `bodies` (external
@@ -347,9 +509,10 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 ///
 /// Returns the number of groups whose normal system was not finite (their impulses are then
 /// zero and their bodies untouched; the other groups are unaffected).
-// 92 lines, kept whole on purpose: the grouping, the closed form and the LU share one set of
-// scratch buffers and one order of floating-point operations, which the bit-identity tests
-// (determinism, ECS vs plugin, golden digest) pin down.
+///
+/// The steps ([`Groups::build`], then per group [`GroupWork::on_supports`], [`solve_group`] or
+/// [`GroupWork::soft_group`], then [`finish_rows`]) keep the one order of floating-point
+/// operations that the bit-identity tests (determinism, ECS vs plugin, golden digest) pin down.
 pub(crate) fn solve(
     bodies: &mut [BodyState],
     rows: &mut [Row],
@@ -357,188 +520,147 @@ pub(crate) fn solve(
     h: f64,
     scratch: &mut SolveScratch,
 ) -> u64 {
-    let nb = bodies.len();
     let n = rows.len();
-    let SolveScratch {
-        parent,
-        group,
-        root_group,
-        order,
-        starts,
-        base,
-        group_rows,
-        rigid_group,
-        group_rigid,
-        coupled,
-        group_solve: group_scratch,
-    } = scratch;
-    parent.clear();
-    parent.extend(0..nb);
-    // The links of one multibody are one body of the union.
-    for (i, b) in bodies.iter().enumerate() {
-        if let Some(l) = b.link.as_deref() {
-            let (ra, rb) = (find(parent, i), find(parent, l.host));
-            if ra != rb {
-                parent[ra.max(rb)] = ra.min(rb);
-            }
-        }
-    }
-    let dynamic = |i: Option<usize>| i.filter(|&i| bodies[i].is_dynamic());
-    // Only rows that can carry an impulse couple bodies (see [`carries_impulse`]).
-    let links = rows
-        .iter()
-        .filter(|r| carries_impulse(r, h))
-        .map(|r| (r.a, r.b))
-        .chain(rigid.iter().map(|r| (Some(r.a), r.b)));
-    for (a, b) in links {
-        if let (Some(a), Some(b)) = (dynamic(a), dynamic(b)) {
-            let (ra, rb) = (find(parent, a), find(parent, b));
-            if ra != rb {
-                parent[ra.max(rb)] = ra.min(rb);
-            }
-        }
-    }
-    // Group ids in the order of each group's first row.
-    root_group.clear();
-    root_group.resize(nb, usize::MAX);
-    group.clear();
-    let mut groups = 0usize;
-    for r in rows.iter() {
-        if !carries_impulse(r, h) {
-            group.push(usize::MAX);
-            continue;
-        }
-        let g = match dynamic(r.a).or(dynamic(r.b)) {
-            Some(b) => {
-                let root = find(parent, b);
-                if root_group[root] == usize::MAX {
-                    root_group[root] = groups;
-                    groups += 1;
-                }
-                root_group[root]
-            }
-            None => {
-                // No dynamic body: no mobility, a group of its own.
-                groups += 1;
-                groups - 1
-            }
-        };
-        group.push(g);
-    }
-    // A rigid row joins the group of its dynamic body, if a soft contact moves that body
-    // (directly or through other rigid rows).
-    rigid_group.clear();
-    for r in rigid.iter_mut() {
-        r.jn = 0.0;
-        r.jt = Vector3::zeros();
-        let g = dynamic(Some(r.a))
-            .or(dynamic(r.b))
-            .map(|b| root_group[find(parent, b)])
-            .unwrap_or(usize::MAX);
-        rigid_group.push(g);
-    }
-    // Counting sort of the rows by group (stable).
-    starts.clear();
-    starts.resize(groups + 1, 0);
-    for &g in group.iter().filter(|g| **g != usize::MAX) {
-        starts[g + 1] += 1;
-    }
-    for g in 0..groups {
-        starts[g + 1] += starts[g];
-    }
-    order.clear();
-    order.resize(starts[groups], 0);
-    // Fill `order` using `root_group` as the per-group cursor (it is no longer needed).
-    root_group.clear();
-    root_group.extend_from_slice(&starts[..groups]);
-    for (i, &g) in group.iter().enumerate().filter(|(_, g)| **g != usize::MAX) {
-        order[root_group[g]] = i;
-        root_group[g] += 1;
-    }
-
-    base.clear();
-    base.extend_from_slice(bodies);
+    let SolveScratch { groups, work } = scratch;
+    groups.build(bodies, rows, rigid, h);
+    work.base.clear();
+    work.base.extend_from_slice(bodies);
     let mut failed = 0;
-    for g in 0..groups {
-        let members = &order[starts[g]..starts[g + 1]];
-        let ok = if rigid_group.contains(&g) {
-            // On rapier's rigid contacts: the coupled solve (`rigid`).
-            group_rows.clear();
-            group_rows.extend(members.iter().map(|&i| rows[i].clone()));
-            group_rigid.clear();
-            group_rigid.extend(
-                rigid
-                    .iter()
-                    .zip(rigid_group.iter())
-                    .filter(|(_, rg)| **rg == g)
-                    .map(|(r, _)| r.clone()),
-            );
-            let outcome = rigid::solve_coupled(bodies, group_rows, group_rigid, h, coupled);
-            match outcome {
-                rigid::Coupled::Solved => {
-                    for (&i, r) in members.iter().zip(group_rows.iter()) {
-                        rows[i] = r.clone();
-                    }
-                    let mut k = 0;
-                    for (r, rg) in rigid.iter_mut().zip(rigid_group.iter()) {
-                        if *rg == g {
-                            *r = group_rigid[k].clone();
-                            k += 1;
-                        }
-                    }
-                    true
-                }
-                rigid::Coupled::Degenerate => {
-                    // rapier's contacts of the group cannot all hold (a link pressing a box
-                    // that the table holds: `rigid::degenerate`): the soft rows are solved
-                    // as a group of their bodies alone, rapier's contacts left to rapier.
-                    for (r, rg) in rigid.iter_mut().zip(rigid_group.iter()) {
-                        if *rg == g {
-                            r.jn = 0.0;
-                            r.jt = Vector3::zeros();
-                        }
-                    }
-                    let ok = solve_group_saturating(bodies, base, group_rows, h, n, group_scratch);
-                    for (&i, r) in members.iter().zip(group_rows.iter()) {
-                        rows[i] = r.clone();
-                    }
-                    ok
-                }
-                rigid::Coupled::NotFinite => {
-                    for &i in members {
-                        let r = &mut rows[i];
-                        r.jn = 0.0;
-                        r.jt = Vector3::zeros();
-                        r.jtw = 0.0;
-                        r.vn_end = normal_velocity(bodies, r);
-                    }
-                    false
-                }
-            }
+    for g in 0..groups.count {
+        let members = groups.members(g);
+        let ok = if groups.rigid_group.contains(&g) {
+            work.on_supports(bodies, rows, rigid, groups, g, h)
         } else if let [i] = members {
             solve_group(
                 bodies,
-                base,
+                &work.base,
                 std::slice::from_mut(&mut rows[*i]),
                 h,
                 n,
-                group_scratch,
+                &mut work.group_solve,
             )
         } else {
-            group_rows.clear();
-            group_rows.extend(members.iter().map(|&i| rows[i].clone()));
-            let ok = solve_group(bodies, base, group_rows, h, n, group_scratch);
-            for (&i, r) in members.iter().zip(group_rows.iter()) {
-                rows[i] = r.clone();
-            }
-            ok
+            work.soft_group(bodies, rows, members, h)
         };
         if !ok {
             failed += 1;
         }
     }
-    // The rows that carry no impulse: none, and their end velocity for the onset check
-    // (their bodies are final: every group that moves them has been solved).
+    finish_rows(bodies, rows, &groups.group);
+    failed
+}
+
+impl GroupWork {
+    /// Solves group `g` of `groups`, which rests on rapier's rigid contacts: the coupled solve
+    /// (`rigid`) of its soft and rigid rows, gathered contiguously and written back; where
+    /// rapier's contacts cannot all hold, its soft rows alone ([`solve_group_saturating`]).
+    /// Returns false if the group's system was not finite.
+    fn on_supports(
+        &mut self,
+        bodies: &mut [BodyState],
+        rows: &mut [Row],
+        rigid: &mut [RigidRow],
+        groups: &Groups,
+        g: usize,
+        h: f64,
+    ) -> bool {
+        let n = rows.len();
+        let members = groups.members(g);
+        let rigid_group = &groups.rigid_group;
+        let Self {
+            base,
+            group_rows,
+            group_rigid,
+            coupled,
+            group_solve: group_scratch,
+        } = self;
+        // On rapier's rigid contacts: the coupled solve (`rigid`).
+        group_rows.clear();
+        group_rows.extend(members.iter().map(|&i| rows[i].clone()));
+        group_rigid.clear();
+        group_rigid.extend(
+            rigid
+                .iter()
+                .zip(rigid_group.iter())
+                .filter(|(_, rg)| **rg == g)
+                .map(|(r, _)| r.clone()),
+        );
+        let outcome = rigid::solve_coupled(bodies, group_rows, group_rigid, h, coupled);
+        match outcome {
+            rigid::Coupled::Solved => {
+                for (&i, r) in members.iter().zip(group_rows.iter()) {
+                    rows[i] = r.clone();
+                }
+                let mut k = 0;
+                for (r, rg) in rigid.iter_mut().zip(rigid_group.iter()) {
+                    if *rg == g {
+                        *r = group_rigid[k].clone();
+                        k += 1;
+                    }
+                }
+                true
+            }
+            rigid::Coupled::Degenerate => {
+                // rapier's contacts of the group cannot all hold (a link pressing a box
+                // that the table holds: `rigid::degenerate`): the soft rows are solved
+                // as a group of their bodies alone, rapier's contacts left to rapier.
+                for (r, rg) in rigid.iter_mut().zip(rigid_group.iter()) {
+                    if *rg == g {
+                        r.jn = 0.0;
+                        r.jt = Vector3::zeros();
+                    }
+                }
+                let ok = solve_group_saturating(bodies, base, group_rows, h, n, group_scratch);
+                for (&i, r) in members.iter().zip(group_rows.iter()) {
+                    rows[i] = r.clone();
+                }
+                ok
+            }
+            rigid::Coupled::NotFinite => {
+                for &i in members {
+                    let r = &mut rows[i];
+                    r.jn = 0.0;
+                    r.jt = Vector3::zeros();
+                    r.jtw = 0.0;
+                    r.vn_end = normal_velocity(bodies, r);
+                }
+                false
+            }
+        }
+    }
+
+    /// Solves a soft group of two or more rows (`members`) without rigid supports:
+    /// [`solve_group`] on its rows gathered contiguously, written back. Returns false if its
+    /// normal system was not finite.
+    fn soft_group(
+        &mut self,
+        bodies: &mut [BodyState],
+        rows: &mut [Row],
+        members: &[usize],
+        h: f64,
+    ) -> bool {
+        let n = rows.len();
+        let Self {
+            base,
+            group_rows,
+            group_solve,
+            ..
+        } = self;
+        group_rows.clear();
+        group_rows.extend(members.iter().map(|&i| rows[i].clone()));
+        let ok = solve_group(bodies, base, group_rows, h, n, group_solve);
+        for (&i, r) in members.iter().zip(group_rows.iter()) {
+            rows[i] = r.clone();
+        }
+        ok
+    }
+}
+
+/// After every group is solved: the rows that carry no impulse (`group` `usize::MAX`) get none,
+/// and their end velocity for the onset check (their bodies are final: every group that moves
+/// them has been solved); a sliding contact gets its relative tangential velocity at the end,
+/// where its spring goes (`step`; every body is final).
+fn finish_rows(bodies: &[BodyState], rows: &mut [Row], group: &[usize]) {
     for (r, _) in rows
         .iter_mut()
         .zip(group.iter())
@@ -549,13 +671,12 @@ pub(crate) fn solve(
         r.jtw = 0.0;
         r.vn_end = normal_velocity(bodies, r);
     }
-    // The slip that stretches a contact's spring (`step`): the relative tangential velocity
-    // at the end (every body is final).
-    for r in rows.iter_mut().filter(|r| r.sliding || r.k_t > 0.0) {
+    // A sliding contact's memory (`step::remember`): the relative tangential velocity at the
+    // end (every body is final). A sticking spring's slip is measured on the poses instead.
+    for r in rows.iter_mut().filter(|r| r.sliding) {
         let v = rel_vel(bodies, r);
         r.vt_end = v - r.n * v.dot(&r.n);
     }
-    failed
 }
 
 /// Whether a row can carry an impulse in this solve. Its normal equation is

@@ -21,20 +21,25 @@
 use std::time::Instant;
 
 use nalgebra::Vector3;
-use rapier3d::prelude::{EventHandler, PhysicsHooks, PhysicsWorld, Pose};
+use rapier3d::prelude::{
+    Collider, ColliderHandle, ContactPair, EventHandler, PhysicsHooks, PhysicsWorld, Pose,
+    RigidBodyHandle,
+};
 use softgrip_law::Regime;
 
-use crate::bodies::{self, KinematicPath, KinematicVelocity, body_index, interpolate};
+use crate::bodies::{self, body_index};
 use crate::boundary::{to_f32, to_f64};
 use crate::contacts::{PairState, Scratch, SoftContacts};
 use crate::counters::Lap;
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
+use crate::fast_hash::{FastMap, FastSet};
 use crate::guard::{self, At};
 use crate::hooks::{SoftEvents, SoftHooks};
+use crate::kinematic::{self, KinematicPath, KinematicVelocity, interpolate};
+use crate::model::Model;
 use crate::multibody::{self, LinkCtx};
-use crate::problem::{self, Row};
+use crate::problem::{self, RigidKey, RigidRow, Row, Warm};
 use crate::readout;
-use crate::rigid::RigidRow;
 use crate::step_error::{Phase, StepError, Subject};
 use crate::substep;
 use onset::update_blend;
@@ -231,14 +236,14 @@ impl Step<'_> {
         self.soft.counters.steps += 1;
 
         // Kinematic paths.
-        let kinematic = bodies::kinematic_paths(&self.physics.bodies);
+        let kinematic = kinematic::kinematic_paths(&self.physics.bodies);
 
         // The plugin's buffers, reused from step to step (no allocation once warm).
         let mut scratch = std::mem::take(&mut self.soft.scratch);
 
         // 2.-3. Contacts now, and the substep count.
         self.detect(dt, &mut scratch);
-        let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, &kinematic, 1.0, dt);
+        let kin_vel = kinematic::kinematic_velocities(&self.physics.bodies, &kinematic, 1.0, dt);
         self.prepare(dt, &kin_vel, &mut scratch);
         let n = self.substep_count(dt, &scratch);
         let h = dt / n as f64;
@@ -305,7 +310,7 @@ impl Step<'_> {
                     rb.set_next_kinematic_position(interpolate(start, target, s as f32));
                 }
             }
-            let kin_vel = bodies::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
+            let kin_vel = kinematic::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
             multibody::carry_kinematic_roots(self.physics, kinematic, s as f32);
             self.substep_contacts(h, &kin_vel, fresh, scratch)?;
             self.pipeline_step(h);
@@ -423,20 +428,7 @@ impl Step<'_> {
         queued.clear();
         pairs.clear();
         let tb = &mut s.body_table;
-        // The dynamic bodies of the touching soft contacts (one that does not touch has no
-        // impulse), each once (`queued`: a set, not a scan of the queue, which was quadratic in
-        // the resting fingertips).
-        for (row, &gi) in s.rows.iter().zip(&s.geom) {
-            if !(compression_from_signed_distance(self.soft.geoms[gi].dist) > 0.0) {
-                continue;
-            }
-            for i in [row.a, row.b].into_iter().flatten() {
-                let handle = tb.handles[i];
-                if tb.table[i].is_dynamic() && queued.insert(handle) {
-                    queue.push(handle);
-                }
-            }
-        }
+        queue_touching(&s.rows, &s.geom, &self.soft.geoms, tb, queue, queued);
         let w = &*self.physics;
         let slop = w.integration_parameters.allowed_linear_error() as f64;
         let ctx = LinkCtx {
@@ -486,30 +478,15 @@ impl Step<'_> {
                         }
                         Some(i)
                     });
-                    for m in pair.manifolds() {
-                        if m.data.solver_contacts.is_empty() {
-                            continue;
-                        }
-                        let n = to_f64(m.data.normal) * sign;
-                        let mu = m.data.friction as f64;
-                        for pt in &m.points {
-                            if !(pt.dist as f64 <= slop) || s.rigid.len() >= MAX_RIGID_ROWS {
-                                continue;
-                            }
-                            let p1 = to_f64(co1.position().transform_point(pt.local_p1));
-                            let p2 = to_f64(co2.position().transform_point(pt.local_p2));
-                            // The gap at the current poses: a manifold's points can outlive
-                            // the touch (a box lifted 5 cm kept its ground pair's four points, `dist` 0,
-                            // for the whole lift, and the coupled solve held it on that table).
-                            if (p2 - p1).dot(&to_f64(m.data.normal)) > slop {
-                                continue;
-                            }
-                            let p = 0.5 * (p1 + p2);
-                            if p.iter().chain(n.iter()).all(|v| v.is_finite()) && mu >= 0.0 {
-                                s.rigid.push(RigidRow::new(a, b, p, n, mu));
-                            }
-                        }
-                    }
+                    push_pair_points(
+                        pair,
+                        (co1, co2),
+                        sign,
+                        (a, b),
+                        slop,
+                        &s.rigid_warm,
+                        &mut s.rigid,
+                    );
                 }
             }
         }
@@ -570,8 +547,10 @@ impl Step<'_> {
                     .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
                     .unwrap_or(g.point_other),
                 stamp,
+                warm: None,
             });
             state.stamp = stamp;
+            row.warm = state.warm;
             // Hunt-Crossley: F_total = F (1 + alpha d delta/dt), alpha a material constant.
             row.force = resp.force;
             row.stiffness = resp.stiffness;
@@ -584,21 +563,7 @@ impl Step<'_> {
                 soft.counters.past_wall += 1;
             }
             if model.friction > 0.0 && (model.torsion || soft.friction_spring) {
-                // The torsion limit (the integral of mu p r dA over the law's pressure
-                // profile, per unit normal force) and the friction spring read the patch.
-                let patch = model.law.patch(delta);
-                if model.torsion {
-                    row.torsion_arm = patch.torsion_limit(model.friction, 1.0);
-                }
-                // Mindlin's tangential stiffness of the patch, damped with the normal's time
-                // constant `c / K` (`SoftContacts::set_friction_spring`).
-                let k_t = 8.0 * model.shear_modulus * patch.equivalent_radius();
-                if soft.friction_spring && k_t.is_finite() && k_t > 0.0 {
-                    row.k_t = k_t;
-                    if resp.stiffness > 0.0 {
-                        row.c_t = row.damping * k_t / resp.stiffness;
-                    }
-                }
+                patch_friction(row, model, delta, resp.stiffness, soft.friction_spring);
             }
             if model.friction > 0.0 && row.k_t > 0.0 {
                 // The spring's stretch: the last step's, carried in the other body's frame, plus
@@ -620,23 +585,7 @@ impl Step<'_> {
                 row.offset = d - n_proj(&row.n, &d);
             }
         }
-        // Pairs in contact but without a row this substep (no model, non-finite) keep their
-        // memory.
-        for key in &s.skipped {
-            if let Some(state) = soft.pairs.get_mut(key) {
-                state.stamp = stamp;
-            }
-        }
-        // Forget pairs that are no longer in contact (not stamped this substep), but for the
-        // held ones (`detect`: a sleeping fingertip's, not detected): they keep their memory.
-        let detected = &s.detected;
-        if detected.all {
-            soft.pairs.retain(|_, v| v.stamp == stamp);
-        } else if !detected.tips.is_empty() {
-            let tips = &soft.tips;
-            soft.pairs
-                .retain(|k, v| v.stamp == stamp || detected.held(detect::owner(tips, k.0, k.1)));
-        }
+        forget_pairs(soft, &s.skipped, &s.detected, stamp);
     }
 
     fn substep_contacts(
@@ -670,6 +619,13 @@ impl Step<'_> {
             &mut self.soft.counters,
             &mut s.net,
         );
+        // The rigid rows' warm start of the next (sub)step: those the coupled solve answered.
+        s.rigid_warm.clear();
+        for r in &s.rigid {
+            if let (Some(key), Some(w)) = (r.key, r.solved) {
+                s.rigid_warm.insert(key, w);
+            }
+        }
         if !s.rows.is_empty() {
             let geoms = &self.soft.geoms;
             let contact = |i: usize| {
@@ -693,41 +649,16 @@ impl Step<'_> {
         for ((row, model), gi) in s.rows.iter().zip(s.models.drain(..)).zip(&s.geom) {
             let g = &self.soft.geoms[*gi];
             let key = (g.tip, g.other);
-            // Contact memory. The spring's stretch at the step's end: the start's plus the
-            // slip over the step, `s + h v_t(end)` (the material's relative tangential
-            // velocity, [`problem::spring`]), or, sliding, the stretch that carries the
-            // Coulomb cap, `-j_t / (h k_t)` (along the slip), not more. Without the spring
-            // (`k_t = 0`) a sliding contact's anchor goes to the contact point.
-            if let Some(state) = self.soft.pairs.get_mut(&key)
-                && let Some(co) = self.physics.colliders.get(g.other)
-            {
-                if row.k_t > 0.0 {
-                    // Sticking, the stretch stays and the coming step's slip is measured on
-                    // the poses; sliding, it is the one that will carry the cap once the slip
-                    // over this step (`h v_t(end)`) is added.
-                    let s = if row.sliding {
-                        -row.jt / (h * row.k_t) - row.vt_end * h
-                    } else {
-                        row.offset
-                    };
-                    let tip = self.physics.colliders.get(g.tip).map(|c| *c.position());
-                    if s.iter().chain(g.point_other.iter()).all(|x| x.is_finite())
-                        && let Some(tip) = tip
-                    {
-                        let other = co.position();
-                        state.stretch_local = to_f64(other.inverse_transform_vector(to_f32(&s)));
-                        state.anchor_local =
-                            to_f64(other.inverse_transform_point(to_f32(&g.point_other)));
-                        state.tip_local =
-                            to_f64(tip.inverse_transform_point(to_f32(&g.point_other)));
-                    }
-                } else if row.sliding {
-                    let anchor = g.point_other;
-                    if anchor.iter().all(|x| x.is_finite()) {
-                        state.anchor_local =
-                            to_f64(co.position().inverse_transform_point(to_f32(&anchor)));
-                    }
-                }
+            if let Some(state) = self.soft.pairs.get_mut(&key) {
+                let colliders = &self.physics.colliders;
+                remember(
+                    state,
+                    row,
+                    g,
+                    colliders.get(g.tip),
+                    colliders.get(g.other),
+                    h,
+                );
             }
             let delta_end = compression_from_signed_distance(g.dist) - h * row.vn_end;
             let delta = compression_from_signed_distance(g.dist);
@@ -741,6 +672,168 @@ impl Step<'_> {
 
 /// A contact's row before the law's response: bodies `a` (the fingertip's) and `b` (the
 /// other's) in the body table, the geometry `g` and the friction coefficient `mu`.
+/// A contact's memory after the solve of a (sub)step of `h` \[s\]: the next (sub)step's warm
+/// start (`problem::Warm`), and the friction spring's stretch or the rigid stick's anchor.
+///
+/// With the spring (`k_t > 0`): sticking, the stretch stays (`row.offset`) and the coming
+/// step's slip is measured on the poses between the material points that touch now (`tip` the
+/// fingertip's collider, `other` the other body's; `PairState::stretch_local`); sliding, the
+/// stretch is the one that will carry the Coulomb cap, `-j_t / (h k_t)` (along the slip), once
+/// the slip over this step (`h v_t(end)`) is added, not more. Without the spring a sliding
+/// contact's anchor goes to the contact point.
+fn remember(
+    state: &mut PairState,
+    row: &Row,
+    g: &Geom,
+    tip: Option<&Collider>,
+    other: Option<&Collider>,
+    h: f64,
+) {
+    state.warm = Some(Warm {
+        jn: row.jn,
+        jt: row.jt,
+        jtw: row.jtw,
+        h,
+    });
+    let Some(co) = other else {
+        return;
+    };
+    if row.k_t > 0.0 {
+        let s = if row.sliding {
+            -row.jt / (h * row.k_t) - row.vt_end * h
+        } else {
+            row.offset
+        };
+        if s.iter().chain(g.point_other.iter()).all(|x| x.is_finite())
+            && let Some(tip) = tip
+        {
+            let other = co.position();
+            state.stretch_local = to_f64(other.inverse_transform_vector(to_f32(&s)));
+            state.anchor_local = to_f64(other.inverse_transform_point(to_f32(&g.point_other)));
+            state.tip_local = to_f64(
+                tip.position()
+                    .inverse_transform_point(to_f32(&g.point_other)),
+            );
+        }
+    } else if row.sliding && g.point_other.iter().all(|x| x.is_finite()) {
+        state.anchor_local = to_f64(
+            co.position()
+                .inverse_transform_point(to_f32(&g.point_other)),
+        );
+    }
+}
+
+/// The patch's part of a contact's friction (`row`, compressed `delta` \[m\] with `model`,
+/// which has friction, torsion or a friction spring): the torsion limit (the integral of mu p r
+/// dA over the law's pressure profile, per unit normal force) and, with `spring`, Mindlin's
+/// tangential stiffness of the patch, damped with the normal's time constant `c / K`
+/// (`SoftContacts::set_friction_spring`; `stiffness` the law's at `delta` \[N/m\], `row.damping`
+/// the row's).
+fn patch_friction(row: &mut Row, model: &Model, delta: f64, stiffness: f64, spring: bool) {
+    let patch = model.law.patch(delta);
+    if model.torsion {
+        row.torsion_arm = patch.torsion_limit(model.friction, 1.0);
+    }
+    let k_t = 8.0 * model.shear_modulus * patch.equivalent_radius();
+    if spring && k_t.is_finite() && k_t > 0.0 {
+        row.k_t = k_t;
+        if stiffness > 0.0 {
+            row.c_t = row.damping * k_t / stiffness;
+        }
+    }
+}
+
+/// Ends the memory of the pairs of `soft` no longer in contact (not stamped `stamp` this
+/// substep), but for the pairs in contact without a row (`skipped`: no model, non-finite),
+/// which keep it, and the held ones (`detected`: a sleeping fingertip's, not detected).
+fn forget_pairs(
+    soft: &mut SoftContacts,
+    skipped: &[(ColliderHandle, ColliderHandle)],
+    detected: &detect::Detected,
+    stamp: u64,
+) {
+    for key in skipped {
+        if let Some(state) = soft.pairs.get_mut(key) {
+            state.stamp = stamp;
+        }
+    }
+    if detected.all {
+        soft.pairs.retain(|_, v| v.stamp == stamp);
+    } else if !detected.tips.is_empty() {
+        let tips = &soft.tips;
+        soft.pairs
+            .retain(|k, v| v.stamp == stamp || detected.held(detect::owner(tips, k.0, k.1)));
+    }
+}
+
+/// Queues the dynamic bodies of the touching soft contacts `rows` (their geometries `geom`
+/// into `geoms`; one that does not touch has no impulse), each once (`queued`: a set, not a
+/// scan of the queue, which was quadratic in the resting fingertips).
+fn queue_touching(
+    rows: &[Row],
+    geom: &[usize],
+    geoms: &[Geom],
+    tb: &bodies::BodyTable,
+    queue: &mut Vec<RigidBodyHandle>,
+    queued: &mut FastSet<RigidBodyHandle>,
+) {
+    for (row, &gi) in rows.iter().zip(geom) {
+        if !(compression_from_signed_distance(geoms[gi].dist) > 0.0) {
+            continue;
+        }
+        for i in [row.a, row.b].into_iter().flatten() {
+            let handle = tb.handles[i];
+            if tb.table[i].is_dynamic() && queued.insert(handle) {
+                queue.push(handle);
+            }
+        }
+    }
+}
+
+/// Pushes the touching points of `pair`'s manifolds that have solver contacts onto `rigid`
+/// (at most [`MAX_RIGID_ROWS`]) as rows between body `a`, on this side (rapier's manifold
+/// normal times `sign`), and `b` (`None`: fixed), each with its warm start from `warm`;
+/// `slop`: rapier's allowed linear error \[m\].
+fn push_pair_points(
+    pair: &ContactPair,
+    (co1, co2): (&Collider, &Collider),
+    sign: f64,
+    (a, b): (usize, Option<usize>),
+    slop: f64,
+    warm: &FastMap<RigidKey, [Warm; 2]>,
+    rigid: &mut Vec<RigidRow>,
+) {
+    let (c1, c2) = (pair.collider1, pair.collider2);
+    for m in pair.manifolds() {
+        if m.data.solver_contacts.is_empty() {
+            continue;
+        }
+        let n = to_f64(m.data.normal) * sign;
+        let mu = m.data.friction as f64;
+        for pt in &m.points {
+            if !(pt.dist as f64 <= slop) || rigid.len() >= MAX_RIGID_ROWS {
+                continue;
+            }
+            let p1 = to_f64(co1.position().transform_point(pt.local_p1));
+            let p2 = to_f64(co2.position().transform_point(pt.local_p2));
+            // The gap at the current poses: a manifold's points can outlive the touch (a box
+            // lifted 5 cm kept its ground pair's four points, `dist` 0, for the whole lift, and
+            // the coupled solve held it on that table).
+            if (p2 - p1).dot(&to_f64(m.data.normal)) > slop {
+                continue;
+            }
+            let p = 0.5 * (p1 + p2);
+            if p.iter().chain(n.iter()).all(|v| v.is_finite()) && mu >= 0.0 {
+                let mut row = RigidRow::new(a, b, p, n, mu);
+                let key = (c1, c2, pt.fid1.0, pt.fid2.0);
+                row.key = Some(key);
+                row.warm = warm.get(&key).copied();
+                rigid.push(row);
+            }
+        }
+    }
+}
+
 fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
     let n = g.normal;
     let (t1, t2) = tangents(&n);
@@ -770,6 +863,7 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         past_wall: false,
         friction_mobility: None,
         lin: 0.0,
+        warm: None,
     }
 }
 

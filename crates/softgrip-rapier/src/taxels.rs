@@ -5,8 +5,8 @@ use std::sync::OnceLock;
 
 use rapier3d::prelude::ColliderHandle;
 
-use crate::readout::TipContact;
 use crate::tactile::TactileGrid;
+use crate::tip_contact::TipContact;
 
 /// Mean pressure \[Pa\] of each taxel of a fingertip's pad over the last step, row-major
 /// (row 0 at the pad's top, `v = +height/2`; column 0 at its left, `u = -width/2`).
