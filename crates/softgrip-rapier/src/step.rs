@@ -20,15 +20,15 @@
 
 use std::time::Instant;
 
-use nalgebra::Vector3;
+use nalgebra::{Isometry3, Point3, Vector3};
 use rapier3d::prelude::{
-    Collider, ColliderHandle, ContactPair, EventHandler, PhysicsHooks, PhysicsWorld, Pose,
+    Collider, ColliderHandle, ContactPair, EventHandler, PhysicsHooks, PhysicsWorld,
     RigidBodyHandle,
 };
 use softgrip_law::Regime;
 
 use crate::bodies::{self, body_index};
-use crate::boundary::{to_f32, to_f64};
+use crate::boundary::{pose_f64, to_f32, to_f64};
 use crate::contacts::{PairState, Scratch, SoftContacts};
 use crate::counters::Lap;
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
@@ -522,7 +522,14 @@ impl Step<'_> {
                 continue;
             }
             let other_pose = self.physics.colliders.get(g.other).map(|c| *c.position());
-            let tip_pose = self.physics.colliders.get(g.tip).map(|c| *c.position());
+            // The friction spring's material points are carried through the poses in `f64`
+            // (`boundary::pose_f64`).
+            let other_iso = other_pose.as_ref().map(pose_f64);
+            let tip_iso = self
+                .physics
+                .colliders
+                .get(g.tip)
+                .map(|c| pose_f64(c.position()));
             let resp = model.law.response(delta);
             match resp.regime {
                 Regime::Extended => {
@@ -539,12 +546,12 @@ impl Step<'_> {
             }
             soft.counters.contacts_evaluated += 1;
             let state = soft.pairs.entry(key).or_insert_with(|| PairState {
-                anchor_local: other_pose
-                    .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
+                anchor_local: other_iso
+                    .map(|p| p.inverse_transform_point(&g.point_other.into()).coords)
                     .unwrap_or(g.point_other),
                 stretch_local: Vector3::zeros(),
-                tip_local: tip_pose
-                    .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
+                tip_local: tip_iso
+                    .map(|p| p.inverse_transform_point(&g.point_other.into()).coords)
                     .unwrap_or(g.point_other),
                 stamp,
                 warm: None,
@@ -568,14 +575,14 @@ impl Step<'_> {
             if model.friction > 0.0 && row.k_t > 0.0 {
                 // The spring's stretch: the last step's, carried in the other body's frame, plus
                 // the slip since between the material points that touched then (`PairState`).
-                let at = |pose: Option<Pose>, v: &Vector3<f64>, point: bool| match pose {
-                    Some(p) if point => to_f64(p.transform_point(to_f32(v))),
-                    Some(p) => to_f64(p.transform_vector(to_f32(v))),
+                let at = |pose: Option<Isometry3<f64>>, v: &Vector3<f64>, point: bool| match pose {
+                    Some(p) if point => (p * Point3::from(*v)).coords,
+                    Some(p) => p * v,
                     None => *v,
                 };
-                let slip = at(tip_pose, &state.tip_local, true)
-                    - at(other_pose, &state.anchor_local, true);
-                let d = at(other_pose, &state.stretch_local, false) + slip;
+                let slip =
+                    at(tip_iso, &state.tip_local, true) - at(other_iso, &state.anchor_local, true);
+                let d = at(other_iso, &state.stretch_local, false) + slip;
                 row.offset = d - n_proj(&row.n, &d);
             } else if model.friction > 0.0 {
                 let anchor = other_pose
@@ -707,13 +714,11 @@ fn remember(
         if s.iter().chain(g.point_other.iter()).all(|x| x.is_finite())
             && let Some(tip) = tip
         {
-            let other = co.position();
-            state.stretch_local = to_f64(other.inverse_transform_vector(to_f32(&s)));
-            state.anchor_local = to_f64(other.inverse_transform_point(to_f32(&g.point_other)));
-            state.tip_local = to_f64(
-                tip.position()
-                    .inverse_transform_point(to_f32(&g.point_other)),
-            );
+            let (other, tip) = (pose_f64(co.position()), pose_f64(tip.position()));
+            let p = Point3::from(g.point_other);
+            state.stretch_local = other.inverse_transform_vector(&s);
+            state.anchor_local = other.inverse_transform_point(&p).coords;
+            state.tip_local = tip.inverse_transform_point(&p).coords;
         }
     } else if row.sliding && g.point_other.iter().all(|x| x.is_finite()) {
         state.anchor_local = to_f64(
