@@ -35,6 +35,8 @@ struct Grasped {
     slip: f64,
     /// The same from the hold's second step \[m\].
     creep: f64,
+    /// The same over the hold's second half (from its middle step) \[m\].
+    late: f64,
     /// The largest compression ratio of any pad.
     peak_x: f64,
     /// The object's mass \[kg\].
@@ -134,6 +136,7 @@ fn grasp_with(name: &str, object: &str, spring: bool) -> Grasped {
         base_rise,
         slip: common::excursion(&hold, 0),
         creep: common::excursion(&hold, 1),
+        late: common::excursion(&hold, hold.len() / 2),
         peak_x,
         mass: run.world.physics.bodies[obj].mass() as f64,
         k_up,
@@ -192,9 +195,22 @@ fn grasp_with(name: &str, object: &str, spring: bool) -> Grasped {
 
 /// The checks every hand scene passes: the grasp reached its force; at the end of the hold each
 /// pad presses at least `least[k]` \[N\] and less than `most` \[N\]; object and hand lifted
-/// by `lift` \[m\] (the object within 1 mm); hold slip < 100 um (issue 25), creep after the
-/// hold's first step < `creep` \[m\]; pads within their law's range (x < 0.3).
-fn check(g: &Grasped, least: &[f64], most: f64, lift: f64, creep: f64) {
+/// by `lift` \[m\] (the object within 1 mm); hold slip < 100 um (issue 25); no creep late in
+/// the hold, the object's motion relative to the base over the hold's second half < 0.1 um
+/// (`Grasped::late`); pads within their law's range (x < 0.3).
+///
+/// With the friction spring (the default) the hold's first steps are not a creep: the lift's
+/// last step stops the base at about twice the ramp's deceleration (the trapezoid's `sqrt(2 a
+/// d)` cap), and the object, hung on the pads' springs (`omega h = h sqrt(k_up / m)` 3.3-4.4,
+/// not resolved by the step), rings that out over 2-6 steps back to its steady lift's height
+/// (session 19: 0.02-0.24 um from it). The old bound on the motion from the hold's second step
+/// (0.1 um gripper, 1-2 um three-finger hand) was set for the rigid stick, which has no such
+/// spring: it is kept for the rigid stick's run (`check_rigid_stick`); the spring's run is
+/// bounded by Mindlin's static sag (`assert_mindlin_sag`, where the fingers are rigid
+/// vertically) and by the late hold, where a creep (a slipping pad, or a stretch that
+/// drifts: session 20's `f32` pose round-off, 0.104 um over the gripper cylinder's second
+/// half) would show.
+fn check(g: &Grasped, least: &[f64], most: f64, lift: f64) {
     assert!(g.reached, "{g:?}: the grasp never reached its force");
     assert_eq!(g.pads.len(), least.len(), "{g:?}");
     for (f, l) in g.pads.iter().zip(least) {
@@ -203,8 +219,16 @@ fn check(g: &Grasped, least: &[f64], most: f64, lift: f64, creep: f64) {
     assert!((g.base_rise - lift).abs() < 1e-6, "{g:?}: hand lifted");
     assert!((g.rise - lift).abs() < 1e-3, "{g:?}: object lifted");
     assert!(g.slip < 100e-6, "{g:?}: hold slip");
-    assert!(g.creep < creep, "{g:?}: creep");
+    assert!(g.late < 1e-7, "{g:?}: creep over the hold's second half");
     assert!(g.peak_x < 0.3, "{g:?}: peak x");
+}
+
+/// The rigid stick's run (`set_friction_spring(false)`) of the same scene: the checks of
+/// [`check`] and its creep after the hold's first step below `creep` \[m\] (the bound the
+/// hand scenes had before the spring was the default).
+fn check_rigid_stick(g: &Grasped, least: &[f64], most: f64, lift: f64, creep: f64) {
+    check(g, least, most, lift);
+    assert!(g.creep < creep, "{g:?}: creep (rigid stick)");
 }
 
 /// Mindlin's static sag, measured: the parallel gripper's fingers slide on prismatic joints
@@ -214,7 +238,7 @@ fn check(g: &Grasped, least: &[f64], most: f64, lift: f64, creep: f64) {
 /// (session 19): box 257 um against 256.9 um, ball 154 against 153.5, cylinder 224 against
 /// 224.7 (the vertical friction, not `m g`: on the curved objects the normals carry part of
 /// the weight). Within 1 %.
-fn assert_mindlin_sag(name: &str, object: &str) -> Grasped {
+fn assert_mindlin_sag(name: &str, object: &str) -> (Grasped, Grasped) {
     let spring = grasp_with(name, object, true);
     let rigid = grasp_with(name, object, false);
     let sag = (rigid.rise - spring.rise) - (rigid.base_rise - spring.base_rise);
@@ -232,7 +256,7 @@ fn assert_mindlin_sag(name: &str, object: &str) -> Grasped {
         (sag / mindlin - 1.0).abs() < 0.01,
         "{name}: sag {sag} vs {mindlin}"
     );
-    spring
+    (spring, rigid)
 }
 
 // The parallel gripper: 5 N per pad (the motors hold 4.97-5.05 N once settled: the target froze
@@ -241,35 +265,23 @@ fn assert_mindlin_sag(name: &str, object: &str) -> Grasped {
 
 #[test]
 fn parallel_gripper_grasps_a_box() {
-    check(
-        &assert_mindlin_sag("parallel_gripper_box", "box"),
-        &[4.9; 2],
-        5.5,
-        0.1,
-        1e-7,
-    );
+    let (spring, rigid) = assert_mindlin_sag("parallel_gripper_box", "box");
+    check(&spring, &[4.9; 2], 5.5, 0.1);
+    check_rigid_stick(&rigid, &[4.9; 2], 5.5, 0.1, 1e-7);
 }
 
 #[test]
 fn parallel_gripper_grasps_a_ball() {
-    check(
-        &assert_mindlin_sag("parallel_gripper_ball", "ball"),
-        &[4.9; 2],
-        5.5,
-        0.1,
-        1e-7,
-    );
+    let (spring, rigid) = assert_mindlin_sag("parallel_gripper_ball", "ball");
+    check(&spring, &[4.9; 2], 5.5, 0.1);
+    check_rigid_stick(&rigid, &[4.9; 2], 5.5, 0.1, 1e-7);
 }
 
 #[test]
 fn parallel_gripper_grasps_a_cylinder() {
-    check(
-        &assert_mindlin_sag("parallel_gripper_cylinder", "cylinder"),
-        &[4.9; 2],
-        5.5,
-        0.1,
-        1e-7,
-    );
+    let (spring, rigid) = assert_mindlin_sag("parallel_gripper_cylinder", "cylinder");
+    check(&spring, &[4.9; 2], 5.5, 0.1);
+    check_rigid_stick(&rigid, &[4.9; 2], 5.5, 0.1, 1e-7);
 }
 
 // The three-finger hand: 1 N per pad (2 N on the box), lift 5 cm at 0.05 m/s ramped at
@@ -293,8 +305,10 @@ fn parallel_gripper_grasps_a_cylinder() {
 /// after the freeze), NOT fixed; the bounds are not loosened.
 #[test]
 fn three_finger_hand_grasps_a_box() {
-    check(
-        &grasp("three_finger_hand_box", "box"),
+    let name = "three_finger_hand_box";
+    check(&grasp(name, "box"), &[2.0, 2.0, 2.0], 2.6, 0.05);
+    check_rigid_stick(
+        &grasp_with(name, "box", false),
         &[2.0, 2.0, 2.0],
         2.6,
         0.05,
@@ -304,13 +318,9 @@ fn three_finger_hand_grasps_a_box() {
 
 #[test]
 fn three_finger_hand_grasps_a_ball() {
-    check(
-        &grasp("three_finger_hand_ball", "ball"),
-        &[1.0; 3],
-        1.5,
-        0.05,
-        1e-6,
-    );
+    let name = "three_finger_hand_ball";
+    check(&grasp(name, "ball"), &[1.0; 3], 1.5, 0.05);
+    check_rigid_stick(&grasp_with(name, "ball", false), &[1.0; 3], 1.5, 0.05, 1e-6);
 }
 
 /// The lying cylinder: fingers 1 and 2 on its round side carry it; finger 0 on its flat end
@@ -319,8 +329,10 @@ fn three_finger_hand_grasps_a_ball() {
 /// the motors' push split each step into ~78 substeps read as an approach), creep 0.04 um.
 #[test]
 fn three_finger_hand_grasps_a_cylinder() {
-    check(
-        &grasp("three_finger_hand_cylinder", "cylinder"),
+    let name = "three_finger_hand_cylinder";
+    check(&grasp(name, "cylinder"), &[0.5, 1.0, 1.0], 1.5, 0.05);
+    check_rigid_stick(
+        &grasp_with(name, "cylinder", false),
         &[0.5, 1.0, 1.0],
         1.5,
         0.05,
