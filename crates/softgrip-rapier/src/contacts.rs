@@ -342,18 +342,21 @@ impl SoftContacts {
         self.profiling = on;
     }
 
-    /// Static friction as Mindlin's tangential spring (default on since session 19; crate
-    /// README, "Session 16, friction as a tangential spring"): each contact's tangential
-    /// offset from its anchor is the stretch of a spring of stiffness `k_t = 8 G* a` (`G*` the
-    /// pair's effective shear modulus, `a` the law's contact radius), solved implicitly like
-    /// the normal and capped by the Coulomb disk, instead of a hard stick with a positional
-    /// correction of 0.3 of the offset per step. It cuts the coupled solve's passes (the
-    /// default grasp: 31.6 to 8.3 a solve) and gives the fingertip's elastic shear (a held box
-    /// sags by its share of the weight over `k_t`). With it, rapier's part of the rigid
-    /// supports' normal impulses is split per pair of bodies instead of per point (the box
-    /// pressed against a wall by a free tip settles with it since session 18). It is the
-    /// default since session 19 (issue 23; `SPRING_DEFAULT_STATUS.md`). Off: the physics is
-    /// bit-identical to before the switch existed (the rigid stick).
+    /// Static friction as Mindlin's tangential spring (on by default; crate README, "Session
+    /// 16, friction as a tangential spring"): each contact's tangential slip, summed over its
+    /// steps in contact (the separation of the two bodies' material points that touched at
+    /// the last step's start, measured on the poses), is the stretch of a spring of stiffness
+    /// `k_t = 8 G* a` \[N/m\] (`G*` the pair's effective shear modulus, `a` the law's contact
+    /// radius), solved implicitly like the normal and capped by the Coulomb disk, instead of a
+    /// hard stick with a positional correction of 0.3 of the offset per step. It cuts the
+    /// coupled solve's passes (the default grasp, with the warm start it allows: 31.6 to 4.9
+    /// a solve) and gives the fingertip's elastic shear (a held box sags by its share of the
+    /// weight over `k_t`). With it, rapier's part of the rigid supports' normal impulses is
+    /// split per pair of bodies instead of per point (the box pressed against a wall by a free
+    /// tip settles with it since session 18), and the coupled solve starts warm where no body
+    /// of the group is a jointed link. `false`: the rigid stick, cold-started (the default
+    /// before session 20; since session 19's tighter `solve_group` stop not bit-identical to
+    /// before).
     pub fn set_friction_spring(&mut self, on: bool) {
         self.friction_spring = on;
     }
