@@ -111,14 +111,104 @@ fn can_close(bodies: &RigidBodySet, g: &Geom, r: f64, gravity: Vector3<f64>, dt:
     g.dist <= reach
 }
 
-/// Applies the gravity impulse `m g tau` to every awake dynamic body.
-pub(crate) fn gravity_kick(bodies: &mut RigidBodySet, gravity: Vector, tau: f64) {
-    for (_, rb) in bodies.iter_mut() {
+/// The gravity lag of a split step (`step`, note 1), per dynamic body: the share of gravity
+/// each body felt in rapier's passes at the end of the last split step, and the bodies the
+/// current split step's lead-in kicked.
+///
+/// rapier's stored velocity lags the true one by `a h / (2N)`, `a` the acceleration the body
+/// has *within* rapier's passes. In free flight, or held by the plugin's impulses (applied
+/// before rapier's pipeline, outside its passes), that is gravity. A body resting on rapier's
+/// own contact (a table) has `a = 0` in the passes: its stored velocity is its true velocity,
+/// 0, and there is no lag to convert. The lead-in and the give-back are therefore gravity's
+/// times the share `f` in \[0, 1\] of gravity the body still feels in rapier's passes: `f =
+/// (dv / h) . g / |g|^2` over the last substep (`dv` rapier's change of the body's velocity in
+/// it, the plugin's impulses excluded), clamped to \[0, 1\] so an impact on rapier's contact
+/// in the last substep gives back nothing and a pull past gravity no more than free flight.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct SplitLag {
+    /// `f` of each body awake at the end of the last split step (absent: 1, free flight).
+    shares: FastMap<RigidBodyHandle, f64>,
+    /// The bodies the lead-in kicked, each with its velocity before the current substep's
+    /// pipeline step (after the plugin's impulses) \[m/s\] and the sum of rapier's changes of
+    /// it over the substeps after the first \[m/s\].
+    kicked: Vec<(RigidBodyHandle, Vector, Vector3<f64>)>,
+}
+
+impl SplitLag {
+    /// Forgets the shares: after a step that was not split, they are not known any more.
+    pub(crate) fn forget(&mut self) {
+        self.shares.clear();
+        self.kicked.clear();
+    }
+}
+
+/// The lead-in of a split step: the impulse `m g f tau` on every awake dynamic body, `f` its
+/// share of gravity at the end of the last split step ([`SplitLag`]; 1 when not known), `tau
+/// = (dt - h) / (2N)` \[s\].
+pub(crate) fn lag_lead_in(
+    bodies: &mut RigidBodySet,
+    gravity: Vector,
+    lag: &mut SplitLag,
+    tau: f64,
+) {
+    lag.kicked.clear();
+    for (handle, rb) in bodies.iter_mut() {
         if rb.is_dynamic() && !rb.is_sleeping() && rb.is_enabled() {
-            let imp = gravity * (rb.gravity_scale() * rb.mass() * tau as f32);
+            let f = lag.shares.get(&handle).copied().unwrap_or(1.0);
+            let imp = gravity * (rb.gravity_scale() * rb.mass() * (f * tau) as f32);
             rb.apply_impulse(imp, false);
+            lag.kicked.push((handle, rb.linvel(), Vector3::zeros()));
         }
     }
+}
+
+/// Before a substep's pipeline step (`before`) or after it: the velocity of each body the
+/// lead-in kicked (the plugin's impulses applied), and rapier's change of it summed.
+pub(crate) fn lag_pass(bodies: &RigidBodySet, lag: &mut SplitLag, before: bool) {
+    for (handle, v, sum) in &mut lag.kicked {
+        if let Some(rb) = bodies.get(*handle) {
+            if before {
+                *v = rb.linvel();
+            } else {
+                *sum += to_f64(rb.linvel()) - to_f64(*v);
+            }
+        }
+    }
+}
+
+/// The give-back of a split step: the impulse `-m g f tau` on every body the lead-in kicked
+/// that is still awake, `f` its share of gravity in rapier's passes over the substeps after
+/// the first, `span` \[s\] of them ([`SplitLag`]), remembered for the next split step's
+/// lead-in. `tau` as in [`lag_lead_in`].
+pub(crate) fn lag_give_back(
+    bodies: &mut RigidBodySet,
+    gravity: Vector,
+    lag: &mut SplitLag,
+    span: f64,
+    tau: f64,
+) {
+    lag.shares.clear();
+    for &(handle, _, dv) in &lag.kicked {
+        let Some(rb) = bodies.get_mut(handle) else {
+            continue;
+        };
+        if !(rb.is_dynamic() && !rb.is_sleeping() && rb.is_enabled()) {
+            continue;
+        }
+        let g = to_f64(gravity) * rb.gravity_scale() as f64;
+        let gg = g.norm_squared();
+        let a = dv / span;
+        let f = if gg > 0.0 { a.dot(&g) / gg } else { 1.0 };
+        let f = if f.is_finite() {
+            f.clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
+        let imp = gravity * (rb.gravity_scale() * rb.mass() * (-f * tau) as f32);
+        rb.apply_impulse(imp, false);
+        lag.shares.insert(handle, f);
+    }
+    lag.kicked.clear();
 }
 
 /// The body's row in the solver's table: for a dynamic body, its velocity with the external

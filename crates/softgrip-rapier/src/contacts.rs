@@ -101,6 +101,8 @@ pub(crate) struct Scratch {
     /// The multibody links' user forces while the plugin's force is on them for one pipeline
     /// step (`multibody::apply_to_rapier`).
     pub link_forces: Vec<crate::multibody::SavedForce>,
+    /// The gravity lag of split steps: the lead-in's and give-back's share per body.
+    pub split_lag: crate::bodies::SplitLag,
 }
 
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.

@@ -5,9 +5,18 @@
 //!    `g dt / (2N)`. A step split into `n` substeps of `h = dt/n` must keep that convention,
 //!    or every bounce gains or loses `g (dt - h) / (2N)` of speed (measured: +8 % energy per
 //!    bounce of a ball dropped 10 cm at 60 Hz before this rule). So a split step first applies
-//!    the impulse `m g (dt - h) / (2N)`, runs its substeps with gravity, and removes
-//!    `m g (dt - h) / (2N)` at the end. In free flight that is *exactly* one rapier step of
-//!    `dt`; in contact it is a fine symplectic integration.
+//!    the impulse `m g f (dt - h) / (2N)`, runs its substeps with gravity, and removes
+//!    `m g f (dt - h) / (2N)` at the end. `f` in \[0, 1\] is the share of gravity the body
+//!    feels in rapier's passes (the lag is the passes' acceleration's, `a h / (2N)`): 1 in
+//!    free flight and for a body the plugin's impulses hold (they act before the passes), 0
+//!    for a body resting on rapier's own contact, whose stored velocity is its true one. The
+//!    give-back's `f` is measured over the substeps after the first (rapier's change of the
+//!    body's velocity, the plugin's impulses excluded, along gravity), and is the next split
+//!    step's lead-in's (1 when not known: after an unsplit step, or for a body asleep at the
+//!    end of the last step). With `f = 1` for every body, the table took the lead-in from a
+//!    resting box and the give-back left it moving up at `g (dt - h) / (2N)` = 0.0163 m/s
+//!    (issue 23; `bodies::SplitLag`). In free flight a split step is *exactly* one rapier step
+//!    of `dt`; in contact it is a fine symplectic integration.
 //! 2. The soft contacts are found fresh at the current poses (`detect`).
 //! 3. The substep count `n` is chosen (`substep`); position-based kinematic bodies are moved
 //!    along their path in `n` equal parts (linear in translation, slerp in rotation).
@@ -256,9 +265,17 @@ impl Step<'_> {
                 .num_solver_iterations
                 .max(1) as f64;
         self.carry_unsplit(n, dt, &mut scratch);
+        let gravity = self.physics.gravity;
         if n > 1 {
-            let gravity = self.physics.gravity;
-            bodies::gravity_kick(&mut self.physics.bodies, gravity, lag * (dt - h));
+            let tau = lag * (dt - h);
+            bodies::lag_lead_in(
+                &mut self.physics.bodies,
+                gravity,
+                &mut scratch.split_lag,
+                tau,
+            );
+        } else {
+            scratch.split_lag.forget();
         }
 
         // 4. Substeps.
@@ -268,8 +285,9 @@ impl Step<'_> {
             return substeps;
         }
         if n > 1 {
-            let gravity = self.physics.gravity;
-            bodies::gravity_kick(&mut self.physics.bodies, gravity, -lag * (dt - h));
+            let (bodies, lag_state) = (&mut self.physics.bodies, &mut scratch.split_lag);
+            let span = dt - h;
+            bodies::lag_give_back(bodies, gravity, lag_state, span, lag * (dt - h));
         }
 
         // 5. Readout.
@@ -313,7 +331,15 @@ impl Step<'_> {
             let kin_vel = kinematic::kinematic_velocities(&self.physics.bodies, kinematic, s, h);
             multibody::carry_kinematic_roots(self.physics, kinematic, s as f32);
             self.substep_contacts(h, &kin_vel, fresh, scratch)?;
+            // The lead-in is taken by a support in the first substep: the share is read after.
+            let measure = n > 1 && i > 0;
+            if measure {
+                bodies::lag_pass(&self.physics.bodies, &mut scratch.split_lag, true);
+            }
             self.pipeline_step(h);
+            if measure {
+                bodies::lag_pass(&self.physics.bodies, &mut scratch.split_lag, false);
+            }
             if !scratch.link_forces.is_empty() {
                 multibody::restore_forces(&mut self.physics.bodies, &mut scratch.link_forces);
             }

@@ -168,8 +168,8 @@ fn press(p: &mut Press, depth: f64, hold: usize) -> Measured {
         {
             let rb = &p.world.physics.bodies[*b];
             let d = (rb.translation() - *b0).length() as f64;
-            // The speed from the poses (rapier's stored velocity of a resting body carries the
-            // split step's gravity convention, `g (dt - h) / (2N)`, see `step.rs`).
+            // The speed from the poses (rapier's stored velocity of a body carries its passes'
+            // lag, `a h / (2N)`, see `step.rs`).
             let pose = *rb.position();
             let v = ((pose.translation - prev.translation).length() as f64
                 + HALF as f64
