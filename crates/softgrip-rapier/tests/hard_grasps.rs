@@ -238,7 +238,10 @@ fn assert_held(m: &Held) {
 ///   still catches a rattle or a creep of 1 um/s.
 /// - no drift: within 1 um over the hold's second half; over the whole hold within 2 um: the
 ///   box settles ~1.2 um in the hold's first half as the lift's end (smoothstep's -0.3 m/s^2
-///   at its end, 0.06 N on the pads' friction) gives way to the static load, then stays.
+///   at its end, 0.06 N on the pads' friction) gives way to the static load, then stays. With
+///   the friction spring (the default since session 19) the whole hold's drift is the
+///   springs' give-back, asserted against Mindlin within 2 % (below); the 2 um bound is the
+///   rigid stick's, kept in `two_hands_lift_and_hold_one_box_rigid_stick`.
 #[test]
 fn two_hands_lift_and_hold_one_box() {
     let mut h = hands(0.2, &[Vector::X, -Vector::X, Vector::Z, -Vector::Z]);
