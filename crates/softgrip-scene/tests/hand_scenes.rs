@@ -302,7 +302,10 @@ fn parallel_gripper_grasps_a_cylinder() {
 /// tangential force 0.23 -> 1.07 N); in the settle those springs push the box back to +0.079
 /// mm and the thumb's frozen motor gives way to 1.82-1.84 N. The grip's force is then the
 /// frozen target against the springs' recoil, not 2 N: a controller matter (no force servo
-/// after the freeze), NOT fixed; the bounds are not loosened.
+/// after the freeze). Session 20: the grasp primitive now closes a force-stopped finger again
+/// through the settle, lift and hold while it presses less than its force (`control/grasp.rs`,
+/// `keep_force`): the thumb ends at 2.0144 N (pads 2.0144 / 2.1592 / 2.1619 N); the rigid
+/// stick's run (2.2717 / 2.1101 / 2.1246 N) never falls below 2 N and is not moved by it.
 #[test]
 fn three_finger_hand_grasps_a_box() {
     let name = "three_finger_hand_box";
