@@ -32,6 +32,10 @@ use softgrip_law::{Backing, ContactLaw, ContactParams, Counterpart, Level};
 const CYLINDER_K1: &str =
     include_str!("../../../tests/data/fe/cylinder/flat/axes_nu0.48_k1_n40.csv");
 /// The same pad and mesh on a plane.
+/// Session 20: the same pad and mesh on the cylinder R2 = 3R, run after the claim was made on
+/// R2 = R (blind: nothing was chosen with it in view).
+const CYLINDER_K3: &str =
+    include_str!("../../../tests/data/fe/cylinder/flat/axes_nu0.48_k3_n40.csv");
 const PLANE: &str = include_str!("../../../tests/data/fe/cylinder/flat/axes_nu0.48_plane_n40.csv");
 
 /// The four semi-axis readings of a file: (raw column, its envelope column, name).
@@ -161,7 +165,11 @@ fn flat_on_cylinder(k: f64) -> ContactLaw {
 
 #[test]
 fn the_stored_envelope_is_the_reading_of_the_stored_columns() {
-    for (name, text) in [("cylinder k = 1", CYLINDER_K1), ("plane", PLANE)] {
+    for (name, text) in [
+        ("cylinder k = 1", CYLINDER_K1),
+        ("cylinder k = 3", CYLINDER_K3),
+        ("plane", PLANE),
+    ] {
         let f = AxesFile::parse(text);
         for (raw, env, what) in COLUMNS {
             let (c, kept) = envelope(&f.x, &f.column(raw));
@@ -177,8 +185,9 @@ fn the_stored_envelope_is_the_reading_of_the_stored_columns() {
             println!("{name:14} {what:17}: {kept} points kept, stored within {worst:.1e}");
             // The file's 6 significant digits.
             assert!(worst < 1e-5, "{name} {what}: {worst:e}");
-            // The envelope keeps the upper half or so of the saw-tooth, never one or two points.
-            assert!((8..=12).contains(&kept), "{name} {what}: {kept} points");
+            // The envelope keeps the upper half or so of the saw-tooth (a third to two thirds of
+            // the 22 points at x >= 0.05; 13 on the cylinder of 3R), never one or two points.
+            assert!((8..=14).contains(&kept), "{name} {what}: {kept} points");
         }
     }
 }
@@ -226,35 +235,45 @@ fn the_envelope_reads_the_plane_within_its_stated_error_of_the_axisymmetric_radi
 /// as much as the envelope reads the plane low).
 const CYLINDER_K1_STATED: [f64; 4] = [4.0, 4.5, 3.5, 0.9];
 
+/// The same on the cylinder R2 = 3R (session 20, blind: run after the K = 1 claim and its
+/// tolerances were set), rounded up to 0.1 %: across +0.46..+2.91, along +2.14..+3.31, against
+/// the edge-fit envelopes -0.69..-0.06 and -0.55..+2.88 %.
+const CYLINDER_K3_STATED: [f64; 4] = [3.0, 3.4, 0.7, 2.9];
+
 #[test]
 fn cylinder_semi_axes_are_within_five_percent_of_the_r40_envelope() {
-    let law = flat_on_cylinder(1.0);
-    assert!(law.x_max() > 0.3, "the law ends at {}", law.x_max());
-    let f = AxesFile::parse(CYLINDER_K1);
-    for ((raw, _, what), stated) in COLUMNS.iter().zip(CYLINDER_K1_STATED) {
-        let (c, _) = envelope(&f.x, &f.column(raw));
-        let along = what.starts_with("along");
-        let (lo, hi) = grid()
-            .map(|x| {
-                let p = law.patch(x);
-                // The cylinder's first principal direction is its axis (curvature 0).
-                let l = if along { p.radius } else { p.radius2 };
-                l / eval(&c, x) - 1.0
-            })
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), e| {
-                (lo.min(e), hi.max(e))
-            });
-        println!(
-            "cylinder k = 1 {what:17}: law / envelope - 1 = {:+.2} .. {:+.2} %",
-            100.0 * lo,
-            100.0 * hi
-        );
-        let worst = lo.abs().max(hi.abs());
-        assert!(
-            worst <= (stated + 0.2) / 100.0 && worst < 0.05,
-            "cylinder k = 1 {what}: {:.2} %",
-            100.0 * worst
-        );
+    for (k, text, stated) in [
+        (1.0, CYLINDER_K1, CYLINDER_K1_STATED),
+        (3.0, CYLINDER_K3, CYLINDER_K3_STATED),
+    ] {
+        let law = flat_on_cylinder(k);
+        assert!(law.x_max() > 0.3, "the law ends at {}", law.x_max());
+        let f = AxesFile::parse(text);
+        for ((raw, _, what), stated) in COLUMNS.iter().zip(stated) {
+            let (c, _) = envelope(&f.x, &f.column(raw));
+            let along = what.starts_with("along");
+            let (lo, hi) = grid()
+                .map(|x| {
+                    let p = law.patch(x);
+                    // The cylinder's first principal direction is its axis (curvature 0).
+                    let l = if along { p.radius } else { p.radius2 };
+                    l / eval(&c, x) - 1.0
+                })
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), e| {
+                    (lo.min(e), hi.max(e))
+                });
+            println!(
+                "cylinder k = {k} {what:17}: law / envelope - 1 = {:+.2} .. {:+.2} %",
+                100.0 * lo,
+                100.0 * hi
+            );
+            let worst = lo.abs().max(hi.abs());
+            assert!(
+                worst <= (stated + 0.2) / 100.0 && worst < 0.05,
+                "cylinder k = {k} {what}: {:.2} %",
+                100.0 * worst
+            );
+        }
     }
 }
 
