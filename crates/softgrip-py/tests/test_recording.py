@@ -99,7 +99,10 @@ def test_the_law_comes_back_from_the_metadata(tmp_path: Path):
 
 def committed_controllers(path: Path) -> list:
     """The controllers a committed recording names: none for those recorded before controllers
-    were (session 10); the hand scenes' (session 11) their grasp and their robot's commands."""
+    were (session 10); the hand scenes' (session 11) their grasp and their robot's commands; the
+    default scene's, re-made in session 20, its two-jaw gripper."""
+    if path.stem == "default":
+        return [{"name": "gripper", "kind": "parallel_jaws", "code": 0}]
     robots = {"parallel_gripper_": "gripper", "three_finger_hand_": "hand"}
     for prefix, robot in robots.items():
         if path.stem.startswith(prefix):
