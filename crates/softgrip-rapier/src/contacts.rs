@@ -31,6 +31,19 @@ pub(crate) struct PairState {
     /// Friction anchor on the other body, in its collider's frame \[m\]: the static
     /// friction spring's stretch is the contact's tangential offset from it (`problem::spring`).
     pub anchor_local: Vector3<f64>,
+    /// The friction spring's stretch (`SoftContacts::set_friction_spring`) at the last
+    /// (sub)step's start, in the other collider's frame \[m\]: the relative tangential slip of
+    /// the two bodies' material at the contact, summed over the steps in contact (zero when the
+    /// contact starts). Each step adds the slip between the material points that touched at the
+    /// last step's start (`anchor_local` on the other body, `tip_local` on the fingertip),
+    /// measured on the poses; both are then re-set to the contact. Not the offset from a fixed
+    /// anchor: a fingertip rolling over the other body moves the contact point over it without
+    /// any slip, and that offset, taken as the stretch, tethered a rolling ball to where it
+    /// first touched.
+    pub stretch_local: Vector3<f64>,
+    /// With the friction spring: the material point of the fingertip at the contact at the
+    /// last (sub)step's start, in the fingertip collider's frame \[m\].
+    pub tip_local: Vector3<f64>,
     /// The last substep in contact (`Scratch::stamp`).
     pub stamp: u64,
     /// The contact's impulses of its last (sub)step: the coupled solve's warm start.
@@ -93,7 +106,7 @@ pub(crate) struct Scratch {
 }
 
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub struct SoftContacts {
     // A fingertip's state is one `TipRecord` (`tips`); `tip_order` and `hook_view` are indexes
     // derived from the records at registration, for the two readers that cannot use the map:
@@ -142,6 +155,34 @@ pub struct SoftContacts {
 /// The fingertips' colliders as rapier's hooks see them: each with its facing in its
 /// collider's frame if it is backed, `None` if it is soft all round.
 pub(crate) type HookView = FastMap<ColliderHandle, Option<Vector3<f64>>>;
+
+impl Default for SoftContacts {
+    /// An empty plugin state with the default accuracy and the friction spring on
+    /// (`set_friction_spring`, the default since session 19, issue 23).
+    fn default() -> Self {
+        Self {
+            tips: Default::default(),
+            tip_order: Default::default(),
+            hook_view: Default::default(),
+            link_contacts: Default::default(),
+            started: false,
+            profiling: false,
+            friction_spring: true,
+            pairs: Default::default(),
+            soft_pairs: Default::default(),
+            curved_models: Default::default(),
+            contacts: Default::default(),
+            counters: Default::default(),
+            accuracy: Default::default(),
+            geoms: Default::default(),
+            scratch: Default::default(),
+            fault: None,
+            time: 0.0,
+            max_radius: 0.0,
+            any_tactile: false,
+        }
+    }
+}
 
 impl SoftContacts {
     /// An empty plugin state with the default accuracy.
@@ -303,18 +344,21 @@ impl SoftContacts {
         self.profiling = on;
     }
 
-    /// Static friction as Mindlin's tangential spring (default off; experimental, crate
-    /// README, "Session 16, friction as a tangential spring"): each contact's tangential
-    /// offset from its anchor is the stretch of a spring of stiffness `k_t = 8 G* a` (`G*` the
-    /// pair's effective shear modulus, `a` the law's contact radius), solved implicitly like
-    /// the normal and capped by the Coulomb disk, instead of a hard stick with a positional
-    /// correction of 0.3 of the offset per step. It cuts the coupled solve's passes (the
-    /// default grasp: 31.6 to 8.3 a solve) and gives the fingertip's elastic shear (a held box
-    /// sags by its share of the weight over `k_t`). With it, rapier's part of the rigid
-    /// supports' normal impulses is split per pair of bodies instead of per point (the box
-    /// pressed against a wall by a free tip settles with it since session 18). It is not the
-    /// default: several hold bounds of the crate's tests encode the rigid stick (crate README,
-    /// Limits). Off: the physics is bit-identical to before the switch existed.
+    /// Static friction as Mindlin's tangential spring (on by default; crate README, "Session
+    /// 16, friction as a tangential spring"): each contact's tangential slip, summed over its
+    /// steps in contact (the separation of the two bodies' material points that touched at
+    /// the last step's start, measured on the poses), is the stretch of a spring of stiffness
+    /// `k_t = 8 G* a` \[N/m\] (`G*` the pair's effective shear modulus, `a` the law's contact
+    /// radius), solved implicitly like the normal and capped by the Coulomb disk, instead of a
+    /// hard stick with a positional correction of 0.3 of the offset per step. It cuts the
+    /// coupled solve's passes (the default grasp, with the warm start it allows: 31.6 to 4.9
+    /// a solve) and gives the fingertip's elastic shear (a held box sags by its share of the
+    /// weight over `k_t`). With it, rapier's part of the rigid supports' normal impulses is
+    /// split per pair of bodies instead of per point (the box pressed against a wall by a free
+    /// tip settles with it since session 18), and the coupled solve starts warm where no body
+    /// of the group is a jointed link. `false`: the rigid stick, cold-started (the default
+    /// before session 20; since session 19's tighter `solve_group` stop not bit-identical to
+    /// before).
     pub fn set_friction_spring(&mut self, on: bool) {
         self.friction_spring = on;
     }

@@ -95,7 +95,7 @@ pub(crate) struct Row {
     /// (the same time constant as the normal's Hunt-Crossley damping).
     pub c_t: f64,
     /// Relative tangential velocity (fingertip - other, in the tangent plane) at the end of
-    /// the step [m/s]: where the spring's anchor goes when the contact slides (`step`).
+    /// the step [m/s]: the slip that stretches the friction spring (`step`).
     pub vt_end: Vector3<f64>,
     /// Normal impulse \[N s\], >= 0.
     pub jn: f64,

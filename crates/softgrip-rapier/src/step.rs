@@ -29,7 +29,7 @@
 
 use std::time::Instant;
 
-use nalgebra::Vector3;
+use nalgebra::{Isometry3, Point3, Vector3};
 use rapier3d::prelude::{
     Collider, ColliderHandle, ContactPair, EventHandler, PhysicsHooks, PhysicsWorld,
     RigidBodyHandle,
@@ -37,7 +37,7 @@ use rapier3d::prelude::{
 use softgrip_law::Regime;
 
 use crate::bodies::{self, body_index};
-use crate::boundary::{to_f32, to_f64};
+use crate::boundary::{pose_f64, to_f32, to_f64};
 use crate::contacts::{PairState, Scratch, SoftContacts};
 use crate::counters::Lap;
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
@@ -548,6 +548,14 @@ impl Step<'_> {
                 continue;
             }
             let other_pose = self.physics.colliders.get(g.other).map(|c| *c.position());
+            // The friction spring's material points are carried through the poses in `f64`
+            // (`boundary::pose_f64`).
+            let other_iso = other_pose.as_ref().map(pose_f64);
+            let tip_iso = self
+                .physics
+                .colliders
+                .get(g.tip)
+                .map(|c| pose_f64(c.position()));
             let resp = model.law.response(delta);
             match resp.regime {
                 Regime::Extended => {
@@ -564,8 +572,12 @@ impl Step<'_> {
             }
             soft.counters.contacts_evaluated += 1;
             let state = soft.pairs.entry(key).or_insert_with(|| PairState {
-                anchor_local: other_pose
-                    .map(|p| to_f64(p.inverse_transform_point(to_f32(&g.point_other))))
+                anchor_local: other_iso
+                    .map(|p| p.inverse_transform_point(&g.point_other.into()).coords)
+                    .unwrap_or(g.point_other),
+                stretch_local: Vector3::zeros(),
+                tip_local: tip_iso
+                    .map(|p| p.inverse_transform_point(&g.point_other.into()).coords)
                     .unwrap_or(g.point_other),
                 stamp,
                 warm: None,
@@ -586,7 +598,19 @@ impl Step<'_> {
             if model.friction > 0.0 && (model.torsion || soft.friction_spring) {
                 patch_friction(row, model, delta, resp.stiffness, soft.friction_spring);
             }
-            if model.friction > 0.0 {
+            if model.friction > 0.0 && row.k_t > 0.0 {
+                // The spring's stretch: the last step's, carried in the other body's frame, plus
+                // the slip since between the material points that touched then (`PairState`).
+                let at = |pose: Option<Isometry3<f64>>, v: &Vector3<f64>, point: bool| match pose {
+                    Some(p) if point => (p * Point3::from(*v)).coords,
+                    Some(p) => p * v,
+                    None => *v,
+                };
+                let slip =
+                    at(tip_iso, &state.tip_local, true) - at(other_iso, &state.anchor_local, true);
+                let d = at(other_iso, &state.stretch_local, false) + slip;
+                row.offset = d - n_proj(&row.n, &d);
+            } else if model.friction > 0.0 {
                 let anchor = other_pose
                     .map(|p| to_f64(p.transform_point(to_f32(&state.anchor_local))))
                     .unwrap_or(state.anchor_local);
@@ -659,7 +683,15 @@ impl Step<'_> {
             let g = &self.soft.geoms[*gi];
             let key = (g.tip, g.other);
             if let Some(state) = self.soft.pairs.get_mut(&key) {
-                remember(state, row, g, self.physics.colliders.get(g.other), h);
+                let colliders = &self.physics.colliders;
+                remember(
+                    state,
+                    row,
+                    g,
+                    colliders.get(g.tip),
+                    colliders.get(g.other),
+                    h,
+                );
             }
             let delta_end = compression_from_signed_distance(g.dist) - h * row.vn_end;
             let delta = compression_from_signed_distance(g.dist);
@@ -674,29 +706,51 @@ impl Step<'_> {
 /// A contact's row before the law's response: bodies `a` (the fingertip's) and `b` (the
 /// other's) in the body table, the geometry `g` and the friction coefficient `mu`.
 /// A contact's memory after the solve of a (sub)step of `h` \[s\]: the next (sub)step's warm
-/// start (`problem::Warm`), and the friction anchor: a sliding contact drags its anchor along,
-/// so that the spring's stretch at the step's end is the one that carries the Coulomb cap
-/// (`-j_t / (h k_t)`, along the slip), not more: where the contact point will be (it moves over
-/// the other body, `other`, at the relative velocity), less that stretch. Without the spring
-/// (`k_t = 0`) the anchor goes to the contact point.
-fn remember(state: &mut PairState, row: &Row, g: &Geom, other: Option<&Collider>, h: f64) {
+/// start (`problem::Warm`), and the friction spring's stretch or the rigid stick's anchor.
+///
+/// With the spring (`k_t > 0`): sticking, the stretch stays (`row.offset`) and the coming
+/// step's slip is measured on the poses between the material points that touch now (`tip` the
+/// fingertip's collider, `other` the other body's; `PairState::stretch_local`); sliding, the
+/// stretch is the one that will carry the Coulomb cap, `-j_t / (h k_t)` (along the slip), once
+/// the slip over this step (`h v_t(end)`) is added, not more. Without the spring a sliding
+/// contact's anchor goes to the contact point.
+fn remember(
+    state: &mut PairState,
+    row: &Row,
+    g: &Geom,
+    tip: Option<&Collider>,
+    other: Option<&Collider>,
+    h: f64,
+) {
     state.warm = Some(Warm {
         jn: row.jn,
         jt: row.jt,
         jtw: row.jtw,
         h,
     });
-    if row.sliding
-        && let Some(co) = other
-    {
-        let anchor = if row.k_t > 0.0 {
-            g.point_other + row.vt_end * h + row.jt / (h * row.k_t)
+    let Some(co) = other else {
+        return;
+    };
+    if row.k_t > 0.0 {
+        let s = if row.sliding {
+            -row.jt / (h * row.k_t) - row.vt_end * h
         } else {
-            g.point_other
+            row.offset
         };
-        if anchor.iter().all(|x| x.is_finite()) {
-            state.anchor_local = to_f64(co.position().inverse_transform_point(to_f32(&anchor)));
+        if s.iter().chain(g.point_other.iter()).all(|x| x.is_finite())
+            && let Some(tip) = tip
+        {
+            let (other, tip) = (pose_f64(co.position()), pose_f64(tip.position()));
+            let p = Point3::from(g.point_other);
+            state.stretch_local = other.inverse_transform_vector(&s);
+            state.anchor_local = other.inverse_transform_point(&p).coords;
+            state.tip_local = tip.inverse_transform_point(&p).coords;
         }
+    } else if row.sliding && g.point_other.iter().all(|x| x.is_finite()) {
+        state.anchor_local = to_f64(
+            co.position()
+                .inverse_transform_point(to_f32(&g.point_other)),
+        );
     }
 }
 

@@ -14,16 +14,27 @@ struct Outcome {
     slip: f64,
     /// Largest |slip| during the hold [m].
     slip_hold_max: f64,
+    /// Creep over the hold's second half (`common::late_spread`) [m].
+    late_spread: f64,
+    /// Mindlin's slide `m g / (2 k_t)` with the friction spring (`common::mindlin_sag`) [m].
+    mindlin: f64,
     turn_deg: f64,
     grip_force: f64,
     lifted: f64,
 }
 
 fn run(spec: &GraspSpec) -> Outcome {
+    run_with(spec, true)
+}
+
+/// [`run`] with the friction spring on or off (`SoftContacts::set_friction_spring`).
+fn run_with(spec: &GraspSpec, spring: bool) -> Outcome {
     let mut g = common::grasp(spec);
+    g.world.soft.set_friction_spring(spring);
     let mut rel0 = None;
     let mut rel_hold0 = None;
     let mut slip_hold_max = 0.0f64;
+    let mut hold = Vec::new();
     let mut grip_force = 0.0;
     g.run(0.1, 10.0, |g: &Grasp, phase| {
         assert!(common::all_finite(&g.world), "non-finite in {phase}");
@@ -34,6 +45,7 @@ fn run(spec: &GraspSpec) -> Outcome {
         if phase == "hold" {
             let r0 = *rel_hold0.get_or_insert(rel);
             slip_hold_max = slip_hold_max.max((rel - r0).abs());
+            hold.push(rel);
             grip_force = g
                 .world
                 .soft
@@ -46,6 +58,8 @@ fn run(spec: &GraspSpec) -> Outcome {
     Outcome {
         slip: rel0.unwrap() - rel,
         slip_hold_max,
+        late_spread: common::late_spread(&hold),
+        mindlin: common::mindlin_sag(spec, g.squeeze).0,
         turn_deg: g.object_turn_deg(),
         grip_force,
         lifted: g.object_y() - g.half,
@@ -56,7 +70,31 @@ fn run(spec: &GraspSpec) -> Outcome {
 fn box_held_10_s_slips_less_than_1_mm() {
     let o = run(&GraspSpec::default());
     println!(
-        "grasp 5 N: slip {:.3e} m (hold only {:.3e} m), lifted {:.4} m, grip {:.4} N, turn {:.3} deg",
+        "grasp 5 N: slip {:.3e} m (Mindlin {:.3e} m; hold only {:.3e} m, late hold {:.2e} m), lifted {:.4} m, grip {:.4} N, turn {:.3} deg",
+        o.slip, o.mindlin, o.slip_hold_max, o.late_spread, o.lifted, o.grip_force, o.turn_deg
+    );
+    // Session 19: the friction spring is the default. The box slides by Mindlin's elastic
+    // shear of the two pads, m g / (2 k_t) (258.0 um; measured 258.7 um), within 2 %, and then
+    // holds: < 1 um over the hold's second half (the hold's first part still carries the
+    // lift's deceleration). The hard stick's figures below (0.5 um, 0 in the hold) stand with
+    // `set_friction_spring(false)` (`rigid_stick_box_held_10_s_slips_less_than_5_um`).
+    assert!(
+        (o.slip / o.mindlin - 1.0).abs() < 0.02,
+        "slip {} m, Mindlin {} m",
+        o.slip,
+        o.mindlin
+    );
+    assert!(o.late_spread < 1e-6, "late hold spread {} m", o.late_spread);
+    assert!((o.lifted - 0.1).abs() < 2e-3);
+    assert!((o.grip_force / 5.0 - 1.0).abs() < 0.005);
+}
+
+/// The rigid stick (`set_friction_spring(false)`, the default before session 19).
+#[test]
+fn rigid_stick_box_held_10_s_slips_less_than_5_um() {
+    let o = run_with(&GraspSpec::default(), false);
+    println!(
+        "rigid stick, grasp 5 N: slip {:.3e} m (hold only {:.3e} m), lifted {:.4} m, grip {:.4} N, turn {:.3} deg",
         o.slip, o.slip_hold_max, o.lifted, o.grip_force, o.turn_deg
     );
     // The READMEs state "slip 0.5 um, 0 m during the hold; grip 5.000 N". The friction limit
@@ -83,11 +121,17 @@ fn off_centre_load_turns_less_than_2_degrees_thanks_to_torsion() {
         com_offset_z: 0.002,
         ..GraspSpec::default()
     });
-    let without = run(&GraspSpec {
-        com_offset_z: 0.002,
-        torsion: false,
-        ..GraspSpec::default()
-    });
+    // Without torsion, the figure below is the rigid stick's (`set_friction_spring(false)`).
+    // With the friction spring (the default since session 19) the same box turns 42.2 deg
+    // without torsion: no derived bound yet (`SPRING_DEFAULT_STATUS.md`).
+    let without = run_with(
+        &GraspSpec {
+            com_offset_z: 0.002,
+            torsion: false,
+            ..GraspSpec::default()
+        },
+        false,
+    );
     println!(
         "off-centre load: turn {:.3} deg with torsion, {:.2} deg without; slip {:.3e} m",
         with.turn_deg, without.turn_deg, with.slip
@@ -142,16 +186,27 @@ fn flat_pads_hold_the_box_and_resist_twist() {
         "flat pads, grasp 5 N: slip {:.3e} m (hold only {:.3e} m), lifted {:.4} m, grip {:.4} N; off-centre load: turn {:.3} deg",
         o.slip, o.slip_hold_max, o.lifted, o.grip_force, twist.turn_deg
     );
-    // The free pads' figures (above): slip 0.5 um, 0 in the hold, grip 5.000 N, 0.04 deg.
-    assert!(o.slip.abs() < 5e-6, "slip {} m", o.slip);
-    assert!(o.slip_hold_max < 1e-6, "hold slip {} m", o.slip_hold_max);
+    // Session 19 (the friction spring the default): Mindlin's slide m g / (2 k_t) with the
+    // flat law's patch within 2 % and < 1 um over the hold's second half, as the free pads.
+    // (Rigid stick: slip 0.5 um, 0 in the hold, grip 5.000 N, 0.04 deg.)
+    println!(
+        "flat pads: Mindlin {:.3e} m, late hold {:.2e} m",
+        o.mindlin, o.late_spread
+    );
+    assert!(
+        (o.slip / o.mindlin - 1.0).abs() < 0.02,
+        "slip {} m, Mindlin {} m",
+        o.slip,
+        o.mindlin
+    );
+    assert!(o.late_spread < 1e-6, "late hold spread {} m", o.late_spread);
     assert!((o.lifted - 0.1).abs() < 2e-3);
     assert!((o.grip_force / 5.0 - 1.0).abs() < 0.005);
     assert!(twist.turn_deg < 0.19, "turn {} deg", twist.turn_deg);
 }
 
 /// Session 16: static friction as Mindlin's tangential spring
-/// (`SoftContacts::set_friction_spring`, off by default). Each pad's contact shears like a
+/// (`SoftContacts::set_friction_spring`, the default since session 19). Each pad's contact shears like a
 /// spring of stiffness `k_t = 8 G* a` (`G* = G / (2 - nu)` against the rigid box, `a` the law's
 /// contact radius at the grip): the held box sags in the grip by its weight shared over the
 /// two pads, `m g / (2 k_t)`, and then holds (the Coulomb disk `mu F` is not reached).

@@ -238,12 +238,70 @@ fn assert_held(m: &Held) {
 ///   still catches a rattle or a creep of 1 um/s.
 /// - no drift: within 1 um over the hold's second half; over the whole hold within 2 um: the
 ///   box settles ~1.2 um in the hold's first half as the lift's end (smoothstep's -0.3 m/s^2
-///   at its end, 0.06 N on the pads' friction) gives way to the static load, then stays.
+///   at its end, 0.06 N on the pads' friction) gives way to the static load, then stays. With
+///   the friction spring (the default since session 19) the whole hold's drift is the
+///   springs' give-back, asserted against Mindlin within 2 % (below); the 2 um bound is the
+///   rigid stick's, kept in `two_hands_lift_and_hold_one_box_rigid_stick`.
 #[test]
 fn two_hands_lift_and_hold_one_box() {
     let mut h = hands(0.2, &[Vector::X, -Vector::X, Vector::Z, -Vector::Z]);
     let m = h.run(0.05, 2.0);
-    println!("two hands, 200 g box lifted 5 cm, held 2 s: {m:?}");
+    // Session 19, the friction spring the default: as the lift ends, its deceleration gives
+    // way to the static load, and the four pads' springs (`k_t = 8 G* a` each, all shearing
+    // vertically) give back the stretch `m a / (4 k_t)` it put on them: the hold's drift
+    // (from the lift's last step) within 2 % of it, none over the second half. (The rigid
+    // stick: `two_hands_lift_and_hold_one_box_rigid_stick`.)
+    // Session 20: `a` is the deceleration the pads were commanded at the lift's last step,
+    // their velocity change over that step / dt (the second difference of the stepped
+    // smoothstep, `L / T^2 (6 - 12 dt / T)` = 0.29 m/s^2 for 5 cm over 1 s at 1/60 s), not
+    // smoothstep's continuous end value `6 L / T^2` (0.3 m/s^2): the springs (`omega dt` ~4.6,
+    // implicit) carry at each step the stretch of that step's acceleration, which for the
+    // step-wise linear ramp of smoothstep's end is exact after its transients die out.
+    // Measured: 3.8594 um against 3.8136 um, +1.2 % (against the continuous 3.9451, -2.2 %).
+    let nu = 0.49;
+    let g_star = 0.59e6 / (2.0 * (1.0 + nu)) / (2.0 - nu);
+    let squeeze = h.law.compression_for_force(GRIP).unwrap();
+    let k_t = 8.0 * g_star * h.law.patch(squeeze).radius;
+    let a_end = lift_end_deceleration(0.05, 1.0);
+    let mindlin = 0.2 * a_end / (4.0 * k_t);
+    println!(
+        "two hands: hold drift {:.4e} m, Mindlin m a / (4 k_t) {mindlin:.4e} m ({:+.2} %; k_t \
+         {k_t:.1} N/m, the last step's deceleration {a_end:.4} m/s^2), law {:.3e}",
+        m.drift_hold,
+        (m.drift_hold / mindlin - 1.0) * 100.0,
+        m.worst_law
+    );
+    assert!((m.height - (HALF + 0.05)).abs() < 2e-3, "{m:?}");
+    assert!(m.worst_sum < 5e-3, "{m:?}");
+    assert!(m.speed_window < 1e-6, "{m:?}");
+    assert!(m.drift_late < 1e-6, "{m:?}");
+    assert!((m.drift_hold / mindlin - 1.0).abs() < 0.02, "{m:?}");
+    // The law: a pad's force off the law at its compression by 16-18 times `solve_group`'s
+    // stop (`solve::GROUP_CONVERGED`; measured 1.40e-5 / 1.78e-6 / 1.6e-7 at 1e-6 / 1e-7 /
+    // 1e-8: the springs couple the pads and the passes contract by ~0.94); at the stop of 1e-7
+    // it is 1.78e-6.
+    assert!(m.worst_law < 1e-5, "{m:?}");
+}
+
+/// The deceleration \[m/s^2\] the pads are commanded at the last step of [`Hands::run`]'s
+/// lift of `lift` \[m\] over `time` \[s\]: their velocity change over that step / `DT`, the
+/// second difference of the stepped smoothstep over `DT^2`.
+fn lift_end_deceleration(lift: f64, time: f64) -> f64 {
+    let n = (time / DT).round() as usize;
+    let y = |i: usize| lift * smoothstep(i as f64 / n as f64);
+    -(y(n) - 2.0 * y(n - 1) + y(n - 2)) / (DT * DT)
+}
+
+/// [`two_hands_lift_and_hold_one_box`] with the rigid stick (`set_friction_spring(false)`,
+/// the default before session 19): its bounds as they were set for it (session 13), the
+/// drift over the whole hold within 2 um (measured 1.16 um in session 13; 9.3 nm in session
+/// 20, with `solve_group`'s tighter stop).
+#[test]
+fn two_hands_lift_and_hold_one_box_rigid_stick() {
+    let mut h = hands(0.2, &[Vector::X, -Vector::X, Vector::Z, -Vector::Z]);
+    h.world.soft.set_friction_spring(false);
+    let m = h.run(0.05, 2.0);
+    println!("two hands (rigid stick), 200 g box lifted 5 cm, held 2 s: {m:?}");
     assert!((m.height - (HALF + 0.05)).abs() < 2e-3, "{m:?}");
     assert!(m.worst_law < 1e-5, "{m:?}");
     assert!(m.worst_sum < 5e-3, "{m:?}");

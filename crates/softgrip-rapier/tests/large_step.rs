@@ -11,7 +11,7 @@ use common::{Grasp, GraspSpec};
 
 #[test]
 fn one_kg_box_squeezed_and_lifted_at_30_hz_stays_bounded() {
-    let mut g = common::grasp(&GraspSpec {
+    let spec = GraspSpec {
         dt: 1.0 / 30.0,
         mass: 1.0,
         half: 0.05,
@@ -19,7 +19,9 @@ fn one_kg_box_squeezed_and_lifted_at_30_hz_stays_bounded() {
         friction: 0.8,
         youngs_modulus: 3.0e6,
         ..GraspSpec::default()
-    });
+    };
+    let mut g = common::grasp(&spec);
+    let mut hold = Vec::new();
     let (mut ke_max, mut w_max, mut f_max) = (0.0f64, 0.0f64, 0.0f64);
     let dt = g.world.physics.integration_parameters.dt as f64;
     // Velocities from the poses of consecutive steps: rapier's stored velocity of a supported
@@ -46,10 +48,15 @@ fn one_kg_box_squeezed_and_lifted_at_30_hz_stays_bounded() {
         if phase == "settle" {
             rel0 = Some(g.object_y() - g.jaw_y());
         }
+        if phase == "hold" {
+            hold.push(g.object_y() - g.jaw_y());
+        }
     });
+    let (mindlin, k_t) = common::mindlin_sag(&spec, g.squeeze);
+    let late = common::late_spread(&hold);
     let slip = rel0.unwrap() - (g.object_y() - g.jaw_y());
     println!(
-        "dt = 1/30, 1 kg: max relative KE {ke_max:.3e} J, max |w| {w_max:.3e} rad/s, max normal force {f_max:.3} N, slip {slip:.3e} m, lifted {:.4} m, substeps total {}",
+        "dt = 1/30, 1 kg: max relative KE {ke_max:.3e} J, max |w| {w_max:.3e} rad/s, max normal force {f_max:.3} N, slip {slip:.3e} m (Mindlin m g / (2 k_t) {mindlin:.3e} m, k_t {k_t:.1} N/m; late hold {late:.2e} m), lifted {:.4} m, substeps total {}",
         g.object_y() - g.half,
         g.world.soft.counters().substeps_total
     );
@@ -67,6 +74,13 @@ fn one_kg_box_squeezed_and_lifted_at_30_hz_stays_bounded() {
     // chi = zeta / (R * 1/s), 100x today's damping, and the peak was 0.05 rad/s.
     assert!(w_max < 0.1, "max spin {w_max} rad/s, README: 0.044");
     assert!(f_max < 22.0, "max force {f_max} N, README: 20.1"); // 20 N grip plus the lift's share, no spikes
-    assert!(slip.abs() < 1e-5, "slip {slip} m, README: 0.3 um");
+    // Session 19, the friction spring the default: the box slides by Mindlin's elastic shear
+    // of the pads, m g / (2 k_t) (275.2 um; measured 276.4 um), within 2 %, then holds (< 1 um
+    // over the hold's second half). The rigid stick's slip was 0.3 um.
+    assert!(
+        (slip / mindlin - 1.0).abs() < 0.02,
+        "slip {slip} m, Mindlin {mindlin} m"
+    );
+    assert!(late < 1e-6, "late hold spread {late} m");
     assert!((g.object_y() - g.half - 0.1).abs() < 2e-3);
 }

@@ -3,10 +3,11 @@
 //! (`SoftCounters::coupled_*`, `group_*`), its substeps per step (`SoftCounters::substeps_total`), and
 //! the golden digest line, to compare solver changes.
 //!
-//! `cargo run --release -p softgrip-scene --example solve_counters [scene.toml] [--friction-spring]`
+//! `cargo run --release -p softgrip-scene --example solve_counters [scene.toml] [--rigid-stick]`
 //!
-//! `--friction-spring`: static friction as Mindlin's tangential spring
-//! (`SoftContacts::set_friction_spring`, off by default).
+//! The plugin's default friction: Mindlin's tangential spring (`SoftContacts::set_friction_spring`,
+//! the default since session 20). `--rigid-stick`: the rigid stick (`set_friction_spring(false)`),
+//! the default before. `--friction-spring` (the spring, explicitly) is still accepted.
 
 use std::time::Instant;
 
@@ -14,13 +15,18 @@ use softgrip_scene::{ContactDigest, PlainRun, Scene};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let spring = args.iter().any(|a| a == "--friction-spring");
+    let rigid = args.iter().any(|a| a == "--rigid-stick");
+    if rigid && args.iter().any(|a| a == "--friction-spring") {
+        return Err("give at most one of `--rigid-stick` and `--friction-spring`".into());
+    }
     let scene = match args.iter().find(|a| !a.starts_with("--")) {
         Some(path) => Scene::from_file(std::path::Path::new(path))?,
         None => Scene::default_scene(),
     };
     let mut run = PlainRun::new(&scene);
-    run.world.soft.set_friction_spring(spring);
+    if rigid {
+        run.world.soft.set_friction_spring(false);
+    }
     let mut digest = ContactDigest::new();
     // The largest substep normal force of each fingertip (the summary's peak force) [N].
     let mut peaks: Vec<(String, f64)> = Vec::new();

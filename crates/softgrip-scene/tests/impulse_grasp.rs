@@ -18,7 +18,21 @@
 //! peak (the largest substep force) may exceed the stopping step's average by the rise within
 //! that step: 3 % (measured at most 1.2 %). Between the joint models: each stops within one
 //! step's increment of `F`, so their peaks and held forces differ by less than `k v dt`. Hold
-//! slip: issue 25's 100 um, and here below 25 um (measured at most 11.6 um in both models).
+//! slip (the object's motion relative to the base from the hold's first step): issue 25's 100
+//! um, and with the rigid stick (`set_friction_spring(false)`, the default before session 19)
+//! below 25 um (measured at most 11.6 um in both models; session 20: at most 11.53 um).
+//!
+//! With the friction spring (the default since session 19) the object hangs on the pads'
+//! springs, `k_up = sum 8 G* a (1 - n_y^2)` (Mindlin), and the lift's stop (the base's last
+//! speed, 0.0324 m/s, taken away in one step: ~1.95 m/s^2) stretches them by up to `m a /
+//! k_up` (34-61 um here), which the hold's first steps ring out (`omega dt` ~3-4, not resolved
+//! by the step). Session 20, measured: slip 1.6-31 um, 0.03-0.72 of `m a / k_up`, as the
+//! multibody (fingers rigid vertically): bounded by it. The impulse fingers' joints are solved
+//! by rapier's passes and give vertically in series with the springs: slip 13-61 um, up to 1.8
+//! of `m a / k_up` (the ball at 3 N; 1.14 the cylinder at 7 N); that compliance is not
+//! derived, so those runs keep issue 25's 100 um. Both: no creep over the hold's second half
+//! (< 0.1 um, measured at most 0.008 um), where a slipping pad or a drifting stretch would
+//! show.
 //! `cargo test -p softgrip-scene --test impulse_grasp -- --nocapture` prints the numbers
 //! (the table in SCENES.md; `cargo run --release -p softgrip-scene --example impulse_grasp
 //! <scene> 3 5 7` prints the same with the time per step).
@@ -53,11 +67,18 @@ struct Grasped {
     held: Vec<f64>,
     /// The object's largest motion relative to the hand's base over the hold \[m\].
     slip: f64,
+    /// The same over the hold's second half (from its middle step) \[m\].
+    late: f64,
+    /// The stretch the lift's stop puts on the pads' friction springs, `m a / k_up` \[m\]:
+    /// the object's mass, the base's velocity change as the hold starts / dt, over the pads'
+    /// summed vertical spring stiffness `sum 8 G* a (1 - n_y^2)` (Mindlin; as the plugin) at
+    /// the lift's last step.
+    ringing: f64,
 }
 
 /// `scenes/robots/parallel_gripper_{object}.toml` with `joints = model` and the grasp at
-/// `force` \[N\].
-fn grasp(object: &str, model: &str, force: f64) -> Grasped {
+/// `force` \[N\], the pads' friction spring on (the default) or off (the rigid stick).
+fn grasp(object: &str, model: &str, force: f64, spring: bool) -> Grasped {
     let path = repo().join(format!("scenes/robots/parallel_gripper_{object}.toml"));
     let mut text = String::new();
     for line in std::fs::read_to_string(&path).unwrap().lines() {
@@ -77,6 +98,7 @@ fn grasp(object: &str, model: &str, force: f64) -> Grasped {
     );
     let scene = Scene::parse(&text, "gripper.toml", path.parent().unwrap()).unwrap();
     let mut run = PlainRun::new(&scene);
+    run.world.soft.set_friction_spring(spring);
     let obj = run.handles.body(object).unwrap();
     let base = run.handles.robots[0].1.links[scene.robots()[0].root()];
     let pads: Vec<_> = ["left_pad", "right_pad"]
@@ -87,8 +109,27 @@ fn grasp(object: &str, model: &str, force: f64) -> Grasped {
     let (mut held, mut hold) = (Vec::new(), Vec::<[f64; 3]>::new());
     // The forces the controller read at the start of the step (those of the step before).
     let mut read = vec![0.0; pads.len()];
+    // The base's height at the last two steps, its speed as the hold starts, and the pads'
+    // summed vertical spring stiffness at the lift's last step.
+    let (mut base_y, mut stop, mut k_up) = ([0.0f64; 2], f64::NAN, 0.0);
     for _ in 0..scene.steps() {
         run.step();
+        base_y = [
+            base_y[1],
+            f64::from(run.world.physics.bodies[base].translation().y),
+        ];
+        if run.control.controllers()[0].phase() == Some(Phase::Lift) {
+            k_up = 0.0;
+            for c in run.world.soft.contacts() {
+                if run.world.physics.colliders[c.other].parent() != Some(obj) {
+                    continue;
+                }
+                let m = run.world.soft.fingertip(c.fingertip).unwrap().material();
+                let g_star = m.shear_modulus() / (2.0 - m.poisson_ratio());
+                let n = c.reading.normal;
+                k_up += 8.0 * g_star * c.patch().equivalent_radius() * (1.0 - n[1] * n[1]);
+            }
+        }
         let f: Vec<f64> = (pads.iter())
             .map(|&p| run.world.soft.contacts_of(p).map(|c| c.normal_force).sum())
             .collect();
@@ -101,6 +142,9 @@ fn grasp(object: &str, model: &str, force: f64) -> Grasped {
             stopped_at = read.iter().copied().fold(f64::INFINITY, f64::min);
         }
         if run.control.controllers()[0].phase() == Some(Phase::Hold) {
+            if hold.is_empty() {
+                stop = (base_y[1] - base_y[0]) / DT;
+            }
             let b = &run.world.physics.bodies;
             let (o, h) = (b[obj].translation(), b[base].translation());
             hold.push([o.x - h.x, o.y - h.y, o.z - h.z].map(f64::from));
@@ -110,25 +154,33 @@ fn grasp(object: &str, model: &str, force: f64) -> Grasped {
     }
     assert!(hold.len() > 2, "{object} {model} {force} N: never held");
     let slip = common::excursion(&hold, 0);
+    let mass = f64::from(run.world.physics.bodies[obj].mass());
     let g = Grasped {
         stopped_at,
         peak,
         held,
         slip,
+        late: common::excursion(&hold, hold.len() / 2),
+        ringing: mass * (stop.abs() / DT) / k_up,
     };
     eprintln!(
-        "{object} {model:9} {force} N: stopped at {:.4} N, peak {:.4} N, held {:.4?} N, \
-         slip {:.2} um",
+        "{object} {model:9} {force} N spring {spring}: stopped at {:.4} N, peak {:.4} N, held \
+         {:.4?} N, slip {:.2} um (m a / k_up {:.2} um: {:.3} of it; k_up {k_up:.1} N/m, the \
+         base's last speed {stop:.5} m/s), second half {:.4} um",
         g.stopped_at,
         g.peak,
         g.held,
-        g.slip * 1e6
+        g.slip * 1e6,
+        g.ringing * 1e6,
+        g.slip / g.ringing,
+        g.late * 1e6
     );
     g
 }
 
-/// Every bound of the module's header on one run at `force` \[N\].
-fn check(g: &Grasped, force: f64, what: &str) {
+/// Every bound of the module's header on one run at `force` \[N\] in joint model `model`;
+/// the hold slip's for the friction spring (`spring`) or the rigid stick.
+fn check(g: &Grasped, force: f64, model: &str, what: &str, spring: bool) {
     let step = K * V * DT;
     assert!(
         g.stopped_at >= force && g.stopped_at < force + step,
@@ -145,17 +197,30 @@ fn check(g: &Grasped, force: f64, what: &str) {
         (g.held[0] - g.held[1]).abs() < 0.01 * force,
         "{what}: pads, {g:?}"
     );
-    assert!(g.slip < 25e-6, "{what}: slip, {g:?}");
+    if spring {
+        assert!(g.slip < 100e-6, "{what}: slip (issue 25), {g:?}");
+        if model == "multibody" {
+            assert!(g.slip < g.ringing, "{what}: slip against m a / k_up, {g:?}");
+        }
+        assert!(
+            g.late < 1e-7,
+            "{what}: creep over the hold's second half, {g:?}"
+        );
+    } else {
+        assert!(g.slip < 25e-6, "{what}: slip (rigid stick), {g:?}");
+    }
 }
 
-/// `object` at 3, 5 and 7 N in both joint models: each within the bounds, and the impulse run
-/// within one step's force increment of the multibody run.
-fn both_models(object: &str) {
+/// `object` at 3, 5 and 7 N in both joint models, with the friction spring (`spring`) or the
+/// rigid stick: each within the bounds, and the impulse run within one step's force increment
+/// of the multibody run.
+fn both_models(object: &str, spring: bool) {
     for force in [3.0, 5.0, 7.0] {
-        let mb = grasp(object, "multibody", force);
-        let ij = grasp(object, "impulse", force);
-        check(&mb, force, &format!("{object} multibody {force} N"));
-        check(&ij, force, &format!("{object} impulse {force} N"));
+        let mb = grasp(object, "multibody", force, spring);
+        let ij = grasp(object, "impulse", force, spring);
+        let what = |model| format!("{object} {model} {force} N spring {spring}");
+        check(&mb, force, "multibody", &what("multibody"), spring);
+        check(&ij, force, "impulse", &what("impulse"), spring);
         let step = K * V * DT;
         assert!(
             (ij.peak - mb.peak).abs() < step,
@@ -171,17 +236,32 @@ fn both_models(object: &str) {
 
 #[test]
 fn impulse_gripper_grasps_the_box_as_the_multibody() {
-    both_models("box");
+    both_models("box", true);
+}
+
+#[test]
+fn impulse_gripper_grasps_the_box_as_the_multibody_rigid_stick() {
+    both_models("box", false);
 }
 
 #[test]
 fn impulse_gripper_grasps_the_ball_as_the_multibody() {
-    both_models("ball");
+    both_models("ball", true);
+}
+
+#[test]
+fn impulse_gripper_grasps_the_ball_as_the_multibody_rigid_stick() {
+    both_models("ball", false);
 }
 
 #[test]
 fn impulse_gripper_grasps_the_cylinder_as_the_multibody() {
-    both_models("cylinder");
+    both_models("cylinder", true);
+}
+
+#[test]
+fn impulse_gripper_grasps_the_cylinder_as_the_multibody_rigid_stick() {
+    both_models("cylinder", false);
 }
 
 /// The anchors' move keeps the joints as the URDF has them: built with impulse joints, each

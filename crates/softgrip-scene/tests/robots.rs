@@ -101,23 +101,45 @@ fn mimic_finger_follows_in_both_joint_models() {
     }
 }
 
-/// The grasp reaches its force on the 200 g box (5 N per pad), lifts it 10 cm and holds it
-/// 2 s (issue 25 item 8: hold slip < 100 um). The hand's base is the multibody's kinematic
-/// root: the plugin moves it (rapier 0.36.1 overwrites a root's `next_position`), the soft rows
-/// carry the links by the root's displacement. Slip: the box's motion relative to the hand's
-/// base over the hold, from the first hold step (6.9 um: the lift slows down at 1 m/s^2; it was
-/// 92 um when the hand stopped dead from 0.1 m/s in one step) and after that step (creep while
-/// held).
-#[test]
-fn grasp_reaches_its_force_and_lifts_the_box() {
+/// What [`gripper_grasp`] measured.
+#[derive(Debug)]
+struct GripperGrasp {
+    reached: bool,
+    peak_x: f64,
+    /// How far the box and the base rose by the end of the hold \[m\].
+    lifted: f64,
+    base_lift: f64,
+    /// The box's largest motion relative to the base over the hold: from its first step, from
+    /// its second (creep) and over its second half (from its middle step) \[m\].
+    slip: f64,
+    creep: f64,
+    late: f64,
+    /// The pads' total normal force at the end of the hold \[N\].
+    hold_force: f64,
+    /// The ringing's bound `m a / k_up` \[m\]: the box's mass, the base's velocity change
+    /// over the hold's first step (the lift's last) / dt, over the pads' friction springs'
+    /// summed vertical stiffness `sum 8 G* a (1 - n_y^2)` (Mindlin; as the plugin) at the
+    /// lift's last step.
+    ringing: f64,
+}
+
+/// The shipped gripper grasps, lifts and holds the 200 g box, its pads' friction spring on
+/// (the default) or off (the rigid stick).
+fn gripper_grasp(spring: bool) -> GripperGrasp {
     let scene = gripper_scene();
+    let dt = scene.file().dt;
     let mut run = PlainRun::new(&scene);
+    run.world.soft.set_friction_spring(spring);
     let box_h = run.handles.body("box").unwrap();
     let base = run.handles.robots[0].1.links[0];
     let (mut reached, mut peak_x, mut lifted, mut base_lift) = (false, 0.0f64, 0.0, 0.0);
     // The box relative to the base at each hold step.
     let mut hold: Vec<[f64; 3]> = Vec::new();
     let mut hold_force = 0.0;
+    // The base's height at the last two steps, and the pads' summed vertical spring stiffness
+    // at the lift's last step.
+    let (mut base_y, mut k_up) = ([0.0f64; 2], 0.0);
+    let mut stop = f64::NAN;
     for _ in 0..scene.steps() {
         run.step();
         reached |= !run.events().is_empty();
@@ -129,7 +151,25 @@ fn grasp_reaches_its_force_and_lifts_the_box() {
             .iter()
             .map(|c| c.max_x)
             .fold(peak_x, f64::max);
-        if run.control.controllers()[0].phase() == Some(Phase::Hold) {
+        base_y = [base_y[1], w.bodies[base].translation().y as f64];
+        let phase = run.control.controllers()[0].phase();
+        if phase == Some(Phase::Lift) {
+            k_up = 0.0;
+            for c in run.world.soft.contacts() {
+                if w.colliders[c.other].parent() != Some(box_h) {
+                    continue;
+                }
+                let m = run.world.soft.fingertip(c.fingertip).unwrap().material();
+                let g_star = m.shear_modulus() / (2.0 - m.poisson_ratio());
+                let n = c.reading.normal;
+                k_up += 8.0 * g_star * c.patch().equivalent_radius() * (1.0 - n[1] * n[1]);
+            }
+        }
+        if phase == Some(Phase::Hold) {
+            if hold.is_empty() {
+                // The base's speed at the lift's last step, stopped over this one [m/s].
+                stop = (base_y[1] - base_y[0]) / dt;
+            }
             let rel = w.bodies[box_h].translation() - w.bodies[base].translation();
             hold.push([rel.x as f64, rel.y as f64, rel.z as f64]);
             lifted = w.bodies[box_h].translation().y as f64 - 0.02;
@@ -144,27 +184,83 @@ fn grasp_reaches_its_force_and_lifts_the_box() {
         }
     }
     assert!(hold.len() > 2, "the grasp never held");
-    let (slip, creep) = (common::excursion(&hold, 0), common::excursion(&hold, 1));
+    let mass = run.world.physics.bodies[box_h].mass() as f64;
+    let g = GripperGrasp {
+        reached,
+        peak_x,
+        lifted,
+        base_lift,
+        slip: common::excursion(&hold, 0),
+        creep: common::excursion(&hold, 1),
+        late: common::excursion(&hold, hold.len() / 2),
+        hold_force,
+        ringing: mass * (stop.abs() / dt) / k_up,
+    };
     eprintln!(
-        "base lifted {base_lift:.6} m, box lifted {lifted:.6} m, hold slip {:.2} um (after \
-         the stop step {:.3} um), pads' total force at the end of the hold {hold_force:.4} N, \
-         peak x {peak_x:.4}",
-        slip * 1e6,
-        creep * 1e6
+        "spring {spring}: base lifted {:.6} m, box lifted {:.6} m, hold slip {:.2} um (after \
+         the stop step {:.3} um, over the second half {:.4} um), m a / k_up {:.3} um (mass \
+         {mass:.4} kg, the base's last speed {stop:.5} m/s, k_up {k_up:.1} N/m), pads' total \
+         force at the end of the hold {:.4} N, peak x {:.4}",
+        g.base_lift,
+        g.lifted,
+        g.slip * 1e6,
+        g.creep * 1e6,
+        g.late * 1e6,
+        g.ringing * 1e6,
+        g.hold_force,
+        g.peak_x
     );
-    assert!(reached, "the grasp never reached its force");
+    g
+}
+
+/// The checks of both runs: reached, peak x, lifted, slip, the pads' force.
+fn check_gripper_grasp(g: &GripperGrasp) {
+    assert!(g.reached, "the grasp never reached its force");
     assert!(
-        peak_x < 0.3,
-        "peak x {peak_x}: a 5 N squeeze of this pad is x ~ 0.1"
+        g.peak_x < 0.3,
+        "peak x {}: a 5 N squeeze of this pad is x ~ 0.1",
+        g.peak_x
     );
-    assert!((base_lift - 0.1).abs() < 1e-6, "hand lifted {base_lift} m");
-    assert!((lifted - 0.1).abs() < 5e-4, "box lifted {lifted} m");
-    assert!(slip < 100e-6, "hold slip {slip} m");
-    assert!(creep < 1e-7, "the held box creeps {creep} m");
+    assert!((g.base_lift - 0.1).abs() < 1e-6, "{g:?}: hand lifted");
+    assert!((g.lifted - 0.1).abs() < 5e-4, "{g:?}: box lifted");
+    assert!(g.slip < 100e-6, "{g:?}: hold slip");
     assert!(
-        (hold_force - 10.0).abs() < 0.5,
-        "pads hold {hold_force} N of 2 x 5 N"
+        (g.hold_force - 10.0).abs() < 0.5,
+        "{g:?}: pads hold 2 x 5 N"
     );
+}
+
+/// The grasp reaches its force on the 200 g box (5 N per pad), lifts it 10 cm and holds it
+/// 2 s (issue 25 item 8: hold slip < 100 um). The hand's base is the multibody's kinematic
+/// root: the plugin moves it (rapier 0.36.1 overwrites a root's `next_position`), the soft rows
+/// carry the links by the root's displacement. Slip: the box's motion relative to the hand's
+/// base over the hold, from the first hold step (6.9 um: the lift slows down at 1 m/s^2; it was
+/// 92 um when the hand stopped dead from 0.1 m/s in one step) and after that step (creep while
+/// held).
+///
+/// With the friction spring (the default since session 19) the box hangs on the pads' springs
+/// (`omega dt` ~3-4, not resolved by the step): the hold's first step stops the base from the
+/// lift's last speed, and the box rings that out over the next steps (session 20: 1.90 um from
+/// the second step). That motion is bounded by the stretch the stop puts on the springs, `m a
+/// / k_up` (`GripperGrasp::ringing`), and none is left over the hold's second half (< 0.1
+/// um: a slipping pad or a drifting stretch would show there). The old creep bound (< 0.1 um
+/// from the second step) was set for the rigid stick: kept in its run
+/// (`grasp_lifts_the_box_with_the_rigid_stick`).
+#[test]
+fn grasp_reaches_its_force_and_lifts_the_box() {
+    let g = gripper_grasp(true);
+    check_gripper_grasp(&g);
+    assert!(g.creep < g.ringing, "{g:?}: creep against m a / k_up");
+    assert!(g.late < 1e-7, "{g:?}: creep over the hold's second half");
+}
+
+/// [`grasp_reaches_its_force_and_lifts_the_box`] with the rigid stick
+/// (`set_friction_spring(false)`): no creep after the hold's first step (< 0.1 um).
+#[test]
+fn grasp_lifts_the_box_with_the_rigid_stick() {
+    let g = gripper_grasp(false);
+    check_gripper_grasp(&g);
+    assert!(g.creep < 1e-7, "{g:?}: the held box creeps");
 }
 
 /// A scene of one robot from `urdf` (text, written to a fresh folder with `files`).

@@ -135,6 +135,32 @@ impl Default for GraspSpec {
     }
 }
 
+/// Mindlin's static slide of a [`Grasp`]'s held box with the friction spring (the default
+/// since session 19): each of the two pads shears like a spring of stiffness `k_t = 8 G* a`
+/// (`G* = G / (2 - nu)` against the rigid box, `a` the law's contact radius at the squeeze
+/// `squeeze` [m]), so the box sags by its weight shared over the two pads, `m g / (2 k_t)`
+/// [m]. Returns `(sag, k_t)`.
+pub fn mindlin_sag(spec: &GraspSpec, squeeze: f64) -> (f64, f64) {
+    let nu = 0.49;
+    let g_star = spec.youngs_modulus / (2.0 * (1.0 + nu)) / (2.0 - nu);
+    let tip = SoftFingertip::builder(GRASP_R)
+        .material(Material::try_new(spec.youngs_modulus, nu).unwrap())
+        .backing(spec.backing)
+        .facing([-1.0, 0.0, 0.0])
+        .build()
+        .unwrap();
+    let a = tip.law().patch(squeeze).radius;
+    let k_t = 8.0 * g_star * a;
+    (f64::from(spec.mass) * 9.81 / (2.0 * k_t), k_t)
+}
+
+/// The largest distance of the samples of `hold`'s second half from the first of them [m]
+/// (creep after the slide; the f32 poses near 0.1 m are ~1e-8 m apart).
+pub fn late_spread(hold: &[f64]) -> f64 {
+    let late = &hold[hold.len() / 2..];
+    late.iter().fold(0.0f64, |m, r| m.max((r - late[0]).abs()))
+}
+
 /// Fingertip radius of the grasp scenes [m].
 pub const GRASP_R: f64 = 0.01;
 

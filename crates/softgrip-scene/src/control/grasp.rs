@@ -1,6 +1,7 @@
 //! `type = "grasp"`: the grasp primitive for a group of a robot's joints ([`Grasp`]): close at
 //! a speed until each finger presses a force (or until a closed position), settle, lift the
-//! robot's base, hold, open.
+//! robot's base, hold, open; through the settle, lift and hold a finger that presses less than
+//! the force closes again.
 
 use std::any::Any;
 
@@ -29,7 +30,8 @@ pub struct Grasp {
     pub open: Vec<f64>,
     /// Target speed \[m/s or rad/s\].
     pub speed: f64,
-    /// Force each finger stops at \[N\], if force-controlled.
+    /// Force each finger stops at \[N\], if force-controlled; after the squeeze a finger
+    /// pressing less closes again (see `keep_force`).
     pub force: Option<f64>,
     /// Time before closing starts \[s\].
     pub start: f64,
@@ -242,6 +244,37 @@ impl Grasp {
         None
     }
 
+    /// After the squeeze (settle, lift, hold): each joint that stopped at `force` and whose
+    /// finger now presses less (the least of its pads' normal forces `f`, e.g. when the
+    /// object, pushed while the finger closed, springs back and unloads it) closes again,
+    /// its target moved toward `closed` by `speed dt (force - f) / force` (at most `speed dt`,
+    /// never past `closed`). It never opens: a finger pressing `force` or more keeps its
+    /// target, so the grasp holds at least `force` where the joint can reach it.
+    fn keep_force(&mut self, io: &ControlIo<'_>) {
+        let Some(force) = self.force else { return };
+        for k in 0..self.joints.len() {
+            let tips = &self.fingers[k];
+            if !self.state.stopped[k] || tips.is_empty() {
+                continue;
+            }
+            let f = tips
+                .iter()
+                .map(|&t| io.normal_force(t))
+                .fold(f64::INFINITY, f64::min);
+            if f >= force || f.is_nan() {
+                continue;
+            }
+            let step = self.speed * io.dt * ((force - f) / force).min(1.0);
+            let t = &mut self.state.targets[k];
+            let d = self.closed[k] - *t;
+            *t = if d.abs() <= step {
+                self.closed[k]
+            } else {
+                *t + step * d.signum()
+            };
+        }
+    }
+
     /// The lift's advance over the coming step \[m\]: at `lift.speed`, or with
     /// `lift.acceleration` a trapezoid: the speed grows by `a dt` a step up to `lift.speed` and
     /// never exceeds `sqrt(2 a d)`, `d` the distance left, so it reaches 0 at the top.
@@ -326,6 +359,7 @@ impl Controller for Grasp {
             Phase::Squeeze if io.time > self.start => event = self.squeeze(io),
             Phase::Squeeze => {}
             Phase::Settle | Phase::Hold => {
+                self.keep_force(io);
                 self.state.progress += io.dt;
                 let (wait, next) = if self.state.phase == Phase::Settle {
                     (self.settle, Phase::Lift)
@@ -338,6 +372,7 @@ impl Controller for Grasp {
                 }
             }
             Phase::Lift => {
+                self.keep_force(io);
                 let base = *self
                     .state
                     .base

@@ -119,7 +119,9 @@ pub struct GraspSpec {
     /// within the joint's URDF velocity limit.
     pub speed: f64,
     /// Stop closing a joint once every fingertip of its finger presses at least this normal
-    /// force \[N\], > 0; without it, each joint closes to `closed`.
+    /// force \[N\], > 0; through the settle, lift and hold a stopped joint whose finger presses
+    /// less (its least pad force `f`) closes again by `speed dt (force - f) / force` a step.
+    /// Without it, each joint closes to `closed`.
     #[serde(default)]
     pub force: Option<f64>,
     /// Time before closing starts \[s\], >= 0 (default 0).
