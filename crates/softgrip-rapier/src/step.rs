@@ -316,7 +316,7 @@ impl Step<'_> {
         if plan == Plan::Record {
             let eligible = n == 1
                 && kinematic.is_empty()
-                && self.physics.impulse_joints.len() == 0
+                && self.physics.impulse_joints.is_empty()
                 && self.physics.multibody_joints.iter().next().is_none()
                 && scratch.rigid.is_empty()
                 && !scratch.rigid_read

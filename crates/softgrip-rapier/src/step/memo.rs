@@ -454,12 +454,11 @@ pub(crate) fn world_key(world: &PhysicsWorld, out: &mut impl Sink) {
             .parent()
             .map_or((u32::MAX, u32::MAX), |b| b.into_raw_parts());
         out.extend([i, g, pi, pg]);
-        out.push(
-            co.is_enabled() as u32
-                | (co.is_sensor() as u32) << 1
-                | (co.active_hooks().bits() as u32) << 8
-                | (co.active_collision_types().bits() as u32) << 16,
-        );
+        out.extend([
+            co.is_enabled() as u32 | (co.is_sensor() as u32) << 1,
+            co.active_hooks().bits(),
+            co.active_collision_types().bits() as u32,
+        ]);
         pose_bits(co.position(), out);
         if let Some(rel) = co.position_wrt_parent() {
             pose_bits(rel, out);
