@@ -97,7 +97,10 @@ HELD = {(0.35, 0.7), (0.45, 0.5), (0.4, 0.3), (0.49, 0.3),
         (0.47, 0.25),
         # the sixth (session 20): skins thinner than any run before (t/R 0.08, R/75), blind tests
         # of the thin-layer variants of try_thin_skin_s20.py (run after they were fixed)
-        (0.4, 0.08), (0.3, 0.08)}
+        (0.4, 0.08), (0.3, 0.08),
+        # the seventh (session 21): blind tests of the adopted thin-layer floor (run after its
+        # constants were fixed; tools/fe/fe_campaign.py S21_DT, smaller increments)
+        (0.48, 0.08), (0.4, 0.06), (0.48, 0.06), (0.45, 0.07), (0.35, 0.06)}
 # Fit data made after the law's constants (session 15, role "main" in tools/fe/fe_campaign.py:
 # t/R 0.25, 0.3 and 0.35 between the fitted 0.2 and 0.4). The law was not refitted
 # (CORE_FORM.md, "Thin skins: session 15"), so this script keeps them out of its fit and
