@@ -2,6 +2,10 @@
 """Fit and validate the `core` construction's calibrated force law (a soft skin of thickness t
 over a rigid core, `Backing::Core`) against softgrip's own FE (tests/data/fe/core/).
 
+Since session 21 the law (backed.rs) is this form plus the thin-layer floor and the small-patch
+widening, refitted with the S20B skins: tools/calibration/try_thin_skin_s21.py reproduces it.
+This script still fits the session-10 form below and reproduces the session-10 constants.
+
     chi_core = chi_flat + L T / K
       tau = t/R, eps = mu/kappa = 3 (1 - 2 nu) / (2 (1 + nu))
       h   = 1 + tau^2 / (1 - tau)                 the skin's mean depth over r <= 2t, over t
