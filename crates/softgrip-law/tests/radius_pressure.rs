@@ -574,7 +574,10 @@ fn pressure_follows_the_fe_profile_for_every_construction() {
         );
         let name = format!("{} nu {} t {:?} x {}", p.geometry, p.nu, p.t, p.x);
         for (ok, what) in [
-            (pk_fe.abs() < p.fe_force[0], format!("peak {pk_fe} (FE force)")),
+            (
+                pk_fe.abs() < p.fe_force[0],
+                format!("peak {pk_fe} (FE force)"),
+            ),
             (pr_fe < p.fe_force[1], format!("profile {pr_fe} (FE force)")),
             (pk.abs() < p.law_force[0], format!("peak {pk} (law force)")),
             (pr < p.law_force[1], format!("profile {pr} (law force)")),
