@@ -500,6 +500,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.06)
     ),
+    fe_file!(
+        "core/force_nu0.48_t0.06.csv",
+        Force,
+        Some(0.48),
+        "held out of every fit (session 21, blind: run after the thin-layer floor's constants were fixed): skin t/R = 0.06 over a rigid core, nu = 0.48, R/100, increments <= 0.0005, x = 0.0025..0.02",
+        "core",
+        Some(0.06)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
