@@ -508,6 +508,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.06)
     ),
+    fe_file!(
+        "core/force_nu0.45_t0.07.csv",
+        Force,
+        Some(0.45),
+        "held out of every fit (session 21, blind: run after the thin-layer floor's constants were fixed): skin t/R = 0.07 over a rigid core, nu = 0.45, R/90, increments <= 0.0005, x = 0.0025..0.0275",
+        "core",
+        Some(0.07)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then
