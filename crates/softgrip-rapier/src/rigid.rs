@@ -311,7 +311,10 @@ fn fill_mobility(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) 
         *mob = DMatrix::zeros(m, m);
     }
     let moved = |r: &Scalar| {
-        [r.a.filter(|_| r.fixed[0].is_none()), r.b.filter(|_| r.fixed[1].is_none())]
+        [
+            r.a.filter(|_| r.fixed[0].is_none()),
+            r.b.filter(|_| r.fixed[1].is_none()),
+        ]
     };
     let links = rows
         .iter()
@@ -631,24 +634,24 @@ struct Buffers {
 fn pair_inverses(rows: &[Scalar], mob: &DMatrix<f64>, out: &mut Vec<Option<Matrix2<f64>>>) {
     out.clear();
     out.extend((0..rows.len()).map(|i| match rows[i].kind {
-            Kind::Tangent { other, .. } if other > i => {
-                let (x, y) = (&rows[i], &rows[other]);
-                // A fingertip's friction spring adds its compliance where the row moves.
-                let mut k = Matrix2::new(
-                    mob[(i, i)] * (1.0 + x.compliance),
-                    mob[(i, other)],
-                    mob[(other, i)],
-                    mob[(other, other)] * (1.0 + y.compliance),
-                );
-                for (d, r, s) in [(0, i, x), (1, other, y)] {
-                    if s.spring > 0.0 && mob[(r, r)] > 0.0 {
-                        k[(d, d)] += s.spring;
-                    }
+        Kind::Tangent { other, .. } if other > i => {
+            let (x, y) = (&rows[i], &rows[other]);
+            // A fingertip's friction spring adds its compliance where the row moves.
+            let mut k = Matrix2::new(
+                mob[(i, i)] * (1.0 + x.compliance),
+                mob[(i, other)],
+                mob[(other, i)],
+                mob[(other, other)] * (1.0 + y.compliance),
+            );
+            for (d, r, s) in [(0, i, x), (1, other, y)] {
+                if s.spring > 0.0 && mob[(r, r)] > 0.0 {
+                    k[(d, d)] += s.spring;
                 }
-                pair_inverse(&k)
             }
-            _ => None,
-        }));
+            pair_inverse(&k)
+        }
+        _ => None,
+    }));
 }
 
 /// Starts each row that moves at its warm start (`warm`: its impulse of the previous
@@ -1252,7 +1255,9 @@ pub(crate) fn solve_coupled(
         let mut rest_n = std::mem::take(&mut scratch.rest_n);
         rest_normals(rigid, &scratch.rest, &mut rest_n);
         // Everything.
-        let solved = stage.solve(bodies, soft, rigid, &rest_n, 1, scratch).is_some();
+        let solved = stage
+            .solve(bodies, soft, rigid, &rest_n, 1, scratch)
+            .is_some();
         scratch.rest_n = rest_n;
         if !solved {
             bodies.clone_from_slice(&base);
@@ -1501,16 +1506,7 @@ fn solve_saturating(
         let mut immobile = 0;
         u0.clear();
         u0.extend(rows.iter().map(|r| r.velocity_parts(bodies)));
-        let bound = solve_scalars(
-            bodies,
-            rows,
-            warm,
-            h,
-            state,
-            passes,
-            &mut immobile,
-            buffers,
-        )?;
+        let bound = solve_scalars(bodies, rows, warm, h, state, passes, &mut immobile, buffers)?;
         let j = &buffers.j;
         if links {
             wrenches.iter_mut().for_each(|w| *w = Vector6::zeros());
