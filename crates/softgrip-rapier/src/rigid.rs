@@ -524,13 +524,13 @@ fn push_friction_pair(
     base: f64,
     out: &mut Vec<Scalar>,
 ) {
-    for k in 0..2 {
+    for (k, t) in tangents.iter().enumerate() {
         out.push(Scalar::point(
             bodies,
             ab.0,
             ab.1,
             p,
-            &tangents[k],
+            t,
             Kind::Tangent {
                 normal,
                 other: normal + 2 - k,
@@ -542,7 +542,8 @@ fn push_friction_pair(
 }
 
 /// Solves the scalar rows from the body velocities `bodies` (left at the velocities after the
-/// impulses), returning their impulses (`None` if not finite).
+/// impulses), leaving their impulses in `buffers.j` and returning the group's impulse scale
+/// ([`impulse_bound`]; `None` if not finite).
 ///
 /// Block Gauss-Seidel, [`OUTER`] times: a dense LU of the normals (soft and hard, on their
 /// active set) and of the rigid friction pairs that stick and carry mostly soft load, the
@@ -887,9 +888,9 @@ fn immobile(
 }
 
 /// An upper bound of [`immobile`]'s scale of row `r` (its bodies' mobility at its point summed
-/// over three axes), `None` where a body is a multibody or jointed link: per body, `sum |m_k|
-/// + 2 |p - com|^2 sum |I_kl|` (`m` the inverse mass, `I` the inverse inertia; a torsion's
-/// `sum |I_kl|`), each axis's angular part being a quadratic form of `I` on `(p - com) x e_k`,
+/// over three axes), `None` where a body is a multibody or jointed link: per body, the sum of
+/// `|m_k|` plus `2 |p - com|^2` times the sum of `|I_kl|` (`m` the inverse mass, `I` the
+/// inverse inertia; a torsion's: the sum of `|I_kl|`), each axis's angular part being a quadratic form of `I` on `(p - com) x e_k`,
 /// whose squares sum to `2 |p - com|^2`. Where a row's own mobility is clear of the threshold
 /// on the bound, the scale's three `mobility` products per row (4.7 % of a sweep trial's CPU
 /// samples, session 21) are not needed to decide.
