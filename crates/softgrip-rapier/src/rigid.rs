@@ -1439,7 +1439,8 @@ fn write_rigid(
 /// went from the plugin's impulses at up to 7.6 rad/s, which rapier's first kick-drift pass
 /// turned into jumps of ~0.1 mm along the wall before its contacts stopped it; the spring then
 /// held every jump (8 N along the wall, the box moving at 11 mm/s in the hold and thrown when
-/// the tip withdrew; `press_on_table::friction_spring_presses_a_box_against_a_wall`).
+/// the tip withdrew; `press_on_table::tip_presses_a_box_against_a_wall`, the spring being the
+/// default).
 fn pair_scales(rigid: &[RigidRow], j_rigid: &[f64], rest: &[f64]) -> Vec<f64> {
     // Each rigid row's normal (index into `j_rigid` and `rest`, which share the layout).
     let mut normals = Vec::with_capacity(rigid.len());
