@@ -364,4 +364,3 @@ fn rigid_stick_presses_a_box_against_a_wall() {
     assert!(m.speed < 0.02, "{m:?}");
     assert!(m.speed_hold < 1e-6, "{m:?}");
 }
-
