@@ -247,6 +247,7 @@ impl Step<'_> {
         self.soft.counters.steps += 1;
         // The resting fast path (`memo`): a step whose inputs equal the last step's.
         let substeps_before = self.soft.counters.substeps_last;
+        let held_before = self.soft.counters.held_tips;
         let plan = self
             .soft
             .rest
@@ -313,14 +314,16 @@ impl Step<'_> {
             &mut self.soft.contacts,
         );
         lap.lap(&mut self.soft.counters.readout_time);
+        let eligible = n == 1
+            && kinematic.is_empty()
+            && self.physics.impulse_joints.is_empty()
+            && self.physics.multibody_joints.iter().next().is_none()
+            && scratch.rigid.is_empty()
+            && !scratch.rigid_read
+            && scratch.link_forces.is_empty()
+            && self.soft.counters.held_tips == held_before;
+        self.soft.rest.note_full(eligible);
         if plan == Plan::Record {
-            let eligible = n == 1
-                && kinematic.is_empty()
-                && self.physics.impulse_joints.is_empty()
-                && self.physics.multibody_joints.iter().next().is_none()
-                && scratch.rigid.is_empty()
-                && !scratch.rigid_read
-                && scratch.link_forces.is_empty();
             let soft = &mut *self.soft;
             soft.rest.finish(
                 eligible,
