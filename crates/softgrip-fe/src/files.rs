@@ -516,6 +516,14 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.07)
     ),
+    fe_file!(
+        "core/force_nu0.35_t0.06.csv",
+        Force,
+        Some(0.35),
+        "held out of every fit (session 21's run, exported in session 22, blind: run after the thin-layer floor's constants were fixed; stopped from outside at x = 0.03, its provenance says how): skin t/R = 0.06 over a rigid core, nu = 0.35, R/100, increments <= 0.001, x = 0.0025..0.03",
+        "core",
+        Some(0.06)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then

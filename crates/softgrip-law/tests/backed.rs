@@ -301,6 +301,14 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             Backing::Core { thickness: 0.07 },
             0.0386,
         ),
+        // Session 21's fifth blind skin, exported in session 22: (0.35, 0.06) on R/100 1.97 %
+        // (x = 0.03, its end: too stiff, +0.5 to +2.0 % along it; session 20's law 9.14 %).
+        (
+            "core/force_nu0.35_t0.06.csv",
+            0.35,
+            Backing::Core { thickness: 0.06 },
+            0.0210,
+        ),
         (
             "core/force_nu0.4_t0.1.csv",
             0.4,
