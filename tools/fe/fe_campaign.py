@@ -118,7 +118,9 @@ def cases():
     # session 21 (run under /work/fe-scratch/runs/skins-s21/): blind thin skins for the
     # thin-layer form (held out of its fit), with smaller increments (`S21_DT`): the nu 0.48
     # skins of session 20 stopped at delta/t 0.35-0.4; t/R 0.06 and 0.07 are between the fitted
-    # 0.05 and 0.1, at nu none of those has (0.35, 0.45) and at 0.4 / 0.48
+    # 0.05 and 0.1, at nu none of those has (0.35, 0.45) and at 0.4 / 0.48. The nu 0.35 run was
+    # stopped from outside at x = 0.0335 before it wrote meta.json; session 22 wrote it from this
+    # case (the deck regenerates byte-identical) with a STOPPED note, and exported it
     c += [(g, nu, t, h, "heldout") for g, nu, t, h in S21_DT]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
