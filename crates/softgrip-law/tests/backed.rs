@@ -409,7 +409,7 @@ fn core_validity_reaches_the_fe_reach() {
         );
         files += 1;
     }
-    assert_eq!(files, 46);
+    assert_eq!(files, 47);
     for j in 0..=20 {
         let nu = 0.3 + 0.01 * f64::from(j);
         for (t, x) in [(0.3, 0.22), (0.5, 0.38)] {
