@@ -10,6 +10,7 @@ Variant letters:
   3 / C / H  session 21's letters (try_thin_skin_s21.py): Dimitriadis' third order (C: its
      weight fitted), the crossover at Matthewson's confinement length
   T  the thinning as the layer excess at the thinned skin t - l0 delta (`thinned`)
+  X / Y  the large-strain factor on x / on (chi_flat - 1) x/(x + 0.1) (`stiffening`)
   W  the 14 thick fitted curves weighted 1.25 in the minimax (not to make them worse)
   B  the FE uncertainty of the nu 0.48 thin fit skins (session 20's, increments 0.0025) taken
      into the fit's weighting: session 21's R/80 re-run of nu 0.48 t/R 0.08 with increments
@@ -32,12 +33,15 @@ unchanged. Worst error, fitted / the 14 / thin fit skins / held out t/R >= 0.1 /
   DH   3.73 / 3.71 / 3.73 / 4.39 / 3.73
   W    3.43 / 2.74 / 3.43 / 3.60 / 3.90;  DW 3.94 / 3.22 / 3.94 / 3.83 / 3.95
   T    3.97 / 3.86 / 3.97 / 4.89 / 5.51;  DT 3.85 / 3.85 / 3.67 / 5.38 / 4.74 (l0 fits to 0.02)
+  X    4.84 / 4.84 / 4.07 / 4.38 / 5.08;  DX 5.27 / 5.27 / 4.43 / 4.57 / 4.91
+  Y    3.40 / 2.95 / 3.40 / 3.53 / 3.83;  DY 3.29 / 3.29 / 3.18 / 4.04 / 3.45
 What D leaves at x = 0.01 splits on nu, not on a/t: every skin with a_H/t >= 0.67 at nu >= 0.46
 is too soft (-1.4 to -3.3 %), every one at nu <= 0.45 too stiff (+1.1 to +3.1 %), where the
-thin-layer floor is 2-4 % of the series excess (L/X 0.02-0.04 at a_H/t = 1): no p-norm of the
+thin-layer floor is 1-4 % of the series excess (L/X 0.01-0.04 at a_H/t = 1): no p-norm of the
 two reaches it.
 
-usage: PY tools/calibration/try_thin_skin_s22.py [VARIANT ...]   ("" = the adopted form refitted)
+usage: PY tools/calibration/try_thin_skin_s22.py [VARIANT ...]   ("" = the adopted form refitted;
+       every row above: "" D B DB DC D3 DH W DW T DT D3H X DX Y DY, about 2 minutes)
        (PY: a python with numpy + scipy, e.g. /work/fe-scratch/fe-venv/bin/python)
 """
 import sys
@@ -101,7 +105,28 @@ def s20_thin(x, nu, tau):
     return np.array([s20.thin_limit(xi, nu, ti) for xi, ti in zip(xs, ts)])
 
 
+def stiffening(mode):
+    """Session 21's form with the large-strain factor exp(-(k0 + k1 eps) g) taken on g = x
+    (X) or on g = (chi_flat - 1) x/(x + 0.1) (Y) instead of g = chi_flat - 1: chi_flat - 1 is
+    already 0.07 at x = 0.01 (the hemisphere's finite size, 1 + c sqrt(x)), so the factor, whose
+    k1 eps is nu-dependent, splits the skins by nu from the first contact: at x = 0.01 it is
+    +4 % at nu 0.3, +0.9 % at 0.4, -1.2 % at 0.48 with the adopted constants."""
+    def chi(p, x, nu, tau):
+        q = list(p)
+        if "D" in mode:
+            q[0] = p[0] * f.dimitriadis_d1(nu) ** 2
+        k0, k1 = q[3], q[4]
+        q[3], q[4] = 0.0, 0.0
+        base = s21.form("")(q, x, nu, tau)
+        fl = f.chi_flat(x, nu)
+        g = x if "X" in mode else (fl - 1) * x / (x + 0.1)
+        return fl + (base - fl) * np.exp(-(k0 + k1 * f.eps_of(nu)) * g)
+    return chi
+
+
 def form(mode):
+    if "X" in mode or "Y" in mode:
+        return stiffening(mode)
     if "T" in mode:
         return thinned(mode)
     base = s21.form("".join(k for k in mode if k in "3CH"))
@@ -148,6 +173,8 @@ def run(mode):
     f.chi_core = form(mode)
     p0 = list(s21.ADOPTED) + sum((s21.EXTRA[k] for k in "CH" if k in mode), [])
     if "D" in mode and "T" not in mode:
+        p0[0] /= f.dimitriadis_d1(0.45) ** 2
+    if "D" in mode and ("X" in mode or "Y" in mode):
         p0[0] /= f.dimitriadis_d1(0.45) ** 2
     if "T" in mode and "D" in mode:
         p0[0] /= f.dimitriadis_d1(0.45) ** 2
