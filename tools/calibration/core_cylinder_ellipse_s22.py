@@ -17,7 +17,7 @@ thin-layer limit the shape matters:
 c_inc = (R_thin/rho_H)^2 and c_W = R_w/rho_H: the thin layer's force on the ellipse over the
 Hertz-equivalent disc's at the same delta (1 on a ball). Prints them for cylinders of k R.
 
-usage: python3 tools/calibration/core_cylinder_ellipse_s22.py   (numpy, scipy; < 1 s)
+usage: /work/fe-scratch/fe-venv/bin/python tools/calibration/core_cylinder_ellipse_s22.py   (numpy, scipy; < 1 s)
 """
 import numpy as np
 from scipy.optimize import brentq
