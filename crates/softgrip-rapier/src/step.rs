@@ -262,7 +262,7 @@ impl Step<'_> {
         let kinematic = kinematic::kinematic_paths(&self.physics.bodies);
 
         // The plugin's buffers, reused from step to step (no allocation once warm).
-        let mut scratch = std::mem::take(&mut self.soft.scratch);
+        let mut scratch = self.soft.scratch.take().unwrap_or_default();
 
         // 2.-3. Contacts now, and the substep count.
         self.detect(dt, &mut scratch);
@@ -295,7 +295,7 @@ impl Step<'_> {
         // 4. Substeps.
         let substeps = self.substeps(n, h, &kinematic, &mut scratch);
         if substeps.is_err() {
-            self.soft.scratch = scratch;
+            self.soft.scratch = Some(scratch);
             return substeps;
         }
         if n > 1 {
@@ -336,7 +336,7 @@ impl Step<'_> {
                 scratch.stamp,
             );
         }
-        self.soft.scratch = scratch;
+        self.soft.scratch = Some(scratch);
         self.soft.update_tactile(&self.physics.colliders);
         Ok(())
     }
@@ -363,7 +363,9 @@ impl Step<'_> {
         }
         soft.counters.add_increments(before, after);
         soft.counters.replayed_steps += 1;
-        soft.scratch.split_lag.forget();
+        if let Some(scratch) = soft.scratch.as_mut() {
+            scratch.split_lag.forget();
+        }
         self.pipeline_step(dt);
         self.soft.update_tactile(&self.physics.colliders);
     }
