@@ -142,7 +142,10 @@ pub struct SoftContacts {
     pub(crate) counters: SoftCounters,
     pub(crate) accuracy: SoftAccuracy,
     pub(crate) geoms: Vec<Geom>,
-    pub(crate) scratch: Scratch,
+    /// The step's buffers, boxed: a step takes them out and puts them back, which moved the
+    /// whole struct twice and built and dropped a default one every step unboxed (`None` only
+    /// while a step holds them, or after a step that panicked).
+    pub(crate) scratch: Option<Box<Scratch>>,
     /// The error that faulted the plugin (`step`): a faulted plugin steps no more.
     pub(crate) fault: Option<crate::step_error::StepError>,
     /// Simulated time of the steps taken \[s\].
@@ -180,7 +183,7 @@ impl Default for SoftContacts {
             counters: Default::default(),
             accuracy: Default::default(),
             geoms: Default::default(),
-            scratch: Default::default(),
+            scratch: Some(Box::default()),
             fault: None,
             time: 0.0,
             max_radius: 0.0,
@@ -333,8 +336,9 @@ impl SoftContacts {
             self.pairs.clone_from(&end.pairs);
             self.contacts.clone_from(&end.contacts);
             self.geoms.clone_from(&end.geoms);
-            self.scratch.unsplit_carry.clone_from(&end.unsplit_carry);
-            self.scratch.stamp = end.stamp;
+            let scratch = self.scratch.get_or_insert_with(Box::default);
+            scratch.unsplit_carry.clone_from(&end.unsplit_carry);
+            scratch.stamp = end.stamp;
         }
     }
 

@@ -14,7 +14,7 @@ use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query;
 use rapier3d::prelude::{
     BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, IslandManager,
-    NarrowPhase, QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet, Vector,
+    NarrowPhase, QueryFilter, QueryPipeline, RigidBody, RigidBodyHandle, RigidBodySet, Vector,
 };
 
 use crate::boundary::{raw, to_f64};
@@ -106,10 +106,15 @@ pub(crate) struct Scene<'a> {
 /// immobile (it sleeps only when every contact is with something fixed or asleep, see
 /// `bodies::wake_touched`), so its geometry and its law's answer are those of the step it fell
 /// asleep in.
+///
+/// `fastest`: the world's fastest motion ([`fastest_motion`]) if the caller found it at the
+/// current state (the step's walk of the body set for the kinematic paths), else found here.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn detect(
     scene: &Scene<'_>,
     tips: &FastMap<ColliderHandle, TipRecord>,
     dt: f64,
+    fastest: Option<(f32, f32)>,
     out: &mut Vec<Geom>,
     candidates: &mut Vec<(ColliderHandle, f32)>,
     detected: &mut Detected,
@@ -124,7 +129,8 @@ pub(crate) fn detect(
         scene.colliders,
         QueryFilter::default(),
     );
-    detected.fastest = fastest_motion(scene.bodies);
+    // Found by the caller's walk of the body set when it had one (`fastest`), the same value.
+    detected.fastest = fastest.unwrap_or_else(|| fastest_motion(scene.bodies));
     // In handle order: the contacts come out sorted by (fingertip, other).
     for (i, &(tip_h, tip_groups)) in scene.tip_order.iter().enumerate() {
         if asleep(scene, tip_h) {
@@ -188,15 +194,21 @@ fn detect_tip(
 
 /// The largest linear [m/s] and angular [rad/s] speed of any moving body of the world: it
 /// bounds the other side's motion in every prediction.
-fn fastest_motion(bodies: &RigidBodySet) -> (f32, f32) {
-    let (mut v_max, mut w_max) = (0.0f32, 0.0f32);
+pub(crate) fn fastest_motion(bodies: &RigidBodySet) -> (f32, f32) {
+    let mut fastest = (0.0f32, 0.0f32);
     for (_, rb) in bodies.iter() {
-        if !rb.is_fixed() && !rb.is_sleeping() {
-            v_max = v_max.max(rb.linvel().length());
-            w_max = w_max.max(rb.angvel().length());
-        }
+        fold_fastest(&mut fastest, rb);
     }
-    (v_max, w_max)
+    fastest
+}
+
+/// One body's part of [`fastest_motion`] (a moving body: neither fixed nor asleep).
+#[inline]
+pub(crate) fn fold_fastest((v_max, w_max): &mut (f32, f32), rb: &RigidBody) {
+    if !rb.is_fixed() && !rb.is_sleeping() {
+        *v_max = v_max.max(rb.linvel().length());
+        *w_max = w_max.max(rb.angvel().length());
+    }
 }
 
 /// One fingertip's side of its pairs in a detection over `dt`.

@@ -62,7 +62,11 @@ fn within(value: f64, bound: f64) -> bool {
 /// Checks every body's pose and velocity, and every multibody joint's coordinates and
 /// velocities, against the bounds of [`step_error`](crate::step_error).
 pub(crate) fn check_state(world: &PhysicsWorld, at: At) -> Result<(), StepError> {
-    check_bodies(&world.bodies, at)?;
+    if at.phase == Phase::After {
+        check_active_bodies(world, at)?;
+    } else {
+        check_bodies(&world.bodies, at)?;
+    }
     for mb in world.multibody_joints.multibodies() {
         for link in mb.links() {
             let coords = link.joint().coords();
@@ -88,12 +92,60 @@ pub(crate) fn check_state(world: &PhysicsWorld, at: At) -> Result<(), StepError>
     Ok(())
 }
 
+/// After the step: only the bodies in rapier's active set can have changed since the check
+/// before it (rapier's pipeline moves those alone; the plugin's velocity sets are checked where
+/// they are made, `check_impulses`, and its wakes put the bodies in the active set), so they
+/// are checked first; on a failure the whole set is walked as before, so that the error is the
+/// one of the first failing body in the set's order, as [`check_bodies`] reports it. A
+/// sleeping world is not walked at all (the walk over its sleeping bodies was a third of a
+/// sleeping N = 1000 step's state checks).
+fn check_active_bodies(world: &PhysicsWorld, at: At) -> Result<(), StepError> {
+    let all_ok = world.islands.active_bodies().all(|h| {
+        world
+            .bodies
+            .get(h)
+            .is_none_or(|rb| rb.is_sleeping() || body_ok(rb))
+    });
+    if all_ok {
+        Ok(())
+    } else {
+        check_bodies(&world.bodies, at)
+    }
+}
+
+/// Whether `rb` passes every check of [`check_bodies`] (the same comparisons, component by
+/// component, without finding the worst one): the fast path, the detailed checks run only for
+/// a body that fails it, to name what failed.
+#[inline]
+fn body_ok(rb: &RigidBody) -> bool {
+    let p = rb.position();
+    let (t, q) = (p.translation, p.rotation);
+    let (v, w) = (rb.linvel(), rb.angvel());
+    let le = |x: f32, bound: f64| (x as f64).abs() <= bound;
+    le(t.x, MAX_POSITION)
+        & le(t.y, MAX_POSITION)
+        & le(t.z, MAX_POSITION)
+        & q.x.is_finite()
+        & q.y.is_finite()
+        & q.z.is_finite()
+        & q.w.is_finite()
+        & le(v.x, MAX_LINEAR_SPEED)
+        & le(v.y, MAX_LINEAR_SPEED)
+        & le(v.z, MAX_LINEAR_SPEED)
+        & le(w.x, MAX_ANGULAR_SPEED)
+        & le(w.y, MAX_ANGULAR_SPEED)
+        & le(w.z, MAX_ANGULAR_SPEED)
+}
+
 fn check_bodies(bodies: &RigidBodySet, at: At) -> Result<(), StepError> {
     for (h, rb) in bodies.iter() {
         // After the step, a sleeping body is as it was before it (checked then): rapier's
         // pipeline does not move it, and it fell asleep only if still (a diverged pose or
         // velocity never is).
         if at.phase == Phase::After && rb.is_sleeping() {
+            continue;
+        }
+        if body_ok(rb) {
             continue;
         }
         let p = rb.position();

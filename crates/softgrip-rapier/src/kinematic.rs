@@ -11,13 +11,19 @@ pub(crate) type KinematicVelocity = FastMap<RigidBodyHandle, (Vector3<f64>, Vect
 
 /// A position-based kinematic body's path over one step: (handle, start pose, target pose).
 pub(crate) type KinematicPath = (RigidBodyHandle, Pose, Pose);
-/// The paths of every position-based kinematic body over the coming step.
-pub(crate) fn kinematic_paths(bodies: &RigidBodySet) -> Vec<KinematicPath> {
-    bodies
-        .iter()
-        .filter(|(_, rb)| rb.body_type() == RigidBodyType::KinematicPositionBased)
-        .map(|(h, rb)| (h, *rb.position(), *rb.next_position()))
-        .collect()
+/// The paths of every position-based kinematic body over the coming step, and the fastest
+/// motion of the world (`detect::fastest_motion`, found in the same walk of the body set: a
+/// sleeping world of N bodies walked it twice per step).
+pub(crate) fn kinematic_paths(bodies: &RigidBodySet) -> (Vec<KinematicPath>, (f32, f32)) {
+    let mut paths = Vec::new();
+    let mut fastest = (0.0f32, 0.0f32);
+    for (h, rb) in bodies.iter() {
+        if rb.body_type() == RigidBodyType::KinematicPositionBased {
+            paths.push((h, *rb.position(), *rb.next_position()));
+        }
+        crate::detect::fold_fastest(&mut fastest, rb);
+    }
+    (paths, fastest)
 }
 
 /// The pose at fraction `s` of a path (linear in translation, slerp in rotation).

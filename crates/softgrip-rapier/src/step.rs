@@ -204,7 +204,9 @@ impl Step<'_> {
         self.soft.counters.pipeline_time += t.elapsed();
     }
 
-    fn detect(&mut self, dt: f64, s: &mut Scratch) {
+    /// Detection for a (sub)step of `dt` \[s\]; `fastest`: the world's fastest motion if the
+    /// caller found it at the current state (else found here).
+    fn detect(&mut self, dt: f64, fastest: Option<(f32, f32)>, s: &mut Scratch) {
         let t = Instant::now();
         let soft = &mut *self.soft;
         let scene = Scene {
@@ -221,6 +223,7 @@ impl Step<'_> {
             &scene,
             &soft.tips,
             dt,
+            fastest,
             &mut soft.geoms,
             &mut s.candidates,
             &mut s.detected,
@@ -259,13 +262,14 @@ impl Step<'_> {
         self.soft.materialize_rest();
 
         // Kinematic paths.
-        let kinematic = kinematic::kinematic_paths(&self.physics.bodies);
+        let (kinematic, fastest) = kinematic::kinematic_paths(&self.physics.bodies);
 
         // The plugin's buffers, reused from step to step (no allocation once warm).
-        let mut scratch = std::mem::take(&mut self.soft.scratch);
+        let mut scratch = self.soft.scratch.take().unwrap_or_default();
 
         // 2.-3. Contacts now, and the substep count.
-        self.detect(dt, &mut scratch);
+        // Nothing writes to the bodies between the walk above and the detection.
+        self.detect(dt, Some(fastest), &mut scratch);
         let kin_vel = kinematic::kinematic_velocities(&self.physics.bodies, &kinematic, 1.0, dt);
         self.prepare(dt, &kin_vel, &mut scratch);
         let n = self.substep_count(dt, &scratch);
@@ -295,7 +299,7 @@ impl Step<'_> {
         // 4. Substeps.
         let substeps = self.substeps(n, h, &kinematic, &mut scratch);
         if substeps.is_err() {
-            self.soft.scratch = scratch;
+            self.soft.scratch = Some(scratch);
             return substeps;
         }
         if n > 1 {
@@ -336,7 +340,7 @@ impl Step<'_> {
                 scratch.stamp,
             );
         }
-        self.soft.scratch = scratch;
+        self.soft.scratch = Some(scratch);
         self.soft.update_tactile(&self.physics.colliders);
         Ok(())
     }
@@ -363,7 +367,9 @@ impl Step<'_> {
         }
         soft.counters.add_increments(before, after);
         soft.counters.replayed_steps += 1;
-        soft.scratch.split_lag.forget();
+        if let Some(scratch) = soft.scratch.as_mut() {
+            scratch.split_lag.forget();
+        }
         self.pipeline_step(dt);
         self.soft.update_tactile(&self.physics.colliders);
     }
@@ -380,7 +386,7 @@ impl Step<'_> {
         scratch.accums.clear();
         for i in 0..n {
             if i > 0 {
-                self.detect(h, scratch);
+                self.detect(h, None, scratch);
             }
             // An unsplit step's rows are those of the substep count's pass above: same
             // geometry, same step, same kinematic velocities (they read the current poses).

@@ -186,6 +186,46 @@ fn a_state_that_leaves_the_bounds_during_the_step_faults_the_world() {
     assert_eq!(w.physics.bodies[boxed].translation().x, x);
 }
 
+/// The check after the step walks rapier's active set only (a sleeping world is not walked):
+/// a body that leaves the bounds beside sleeping ones is still caught, and with two such
+/// bodies the error names the first in the body set's order, as the full walk does.
+#[test]
+fn a_body_leaving_the_bounds_beside_sleeping_ones_is_caught_after_the_step() {
+    let (mut w, tip, boxed) = world();
+    for _ in 0..600 {
+        w.try_step().unwrap();
+    }
+    assert!(w.physics.bodies[tip].is_sleeping() && w.physics.bodies[boxed].is_sleeping());
+    assert_eq!(w.physics.islands.num_active_bodies(), 0);
+    let runaway = |w: &mut SoftWorld, z: f32| {
+        let p = &mut w.physics;
+        let b = p.bodies.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(999_999.0, 5.0, z))
+                .linvel(Vector::new(300.0, 0.0, 0.0)),
+        );
+        p.colliders
+            .insert_with_parent(ColliderBuilder::ball(0.01), b, &mut p.bodies);
+        b
+    };
+    let first = runaway(&mut w, 0.0);
+    let second = runaway(&mut w, 1.0);
+    assert!(first.into_raw_parts().0 < second.into_raw_parts().0);
+    let e = w.try_step().unwrap_err();
+    let (s, q, value, bound, phase) = diverged(&e);
+    assert_eq!(
+        (s, q, bound, phase),
+        (
+            Subject::Body(first),
+            Quantity::Position,
+            MAX_POSITION,
+            Phase::After
+        )
+    );
+    assert!((value - 1_000_004.0).abs() < 0.1, "{value}");
+    assert!(w.physics.bodies[tip].is_sleeping() && w.physics.bodies[boxed].is_sleeping());
+}
+
 #[test]
 fn a_panic_inside_rapier_is_caught_and_faults_the_world() {
     // Limits upside down: rapier's joint motor clamps its target velocity between them
