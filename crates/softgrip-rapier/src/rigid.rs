@@ -35,6 +35,15 @@
 //! of iterations to do. A rigid pair that slides leaves the LU for good (the set must not
 //! cycle: it did, and a squeezed box on the ground rang at 2.5 cm/s).
 //!
+//! **rapier's soft rows.** A body's single rigid pair with a fixed body (a box on the table)
+//! whose load the soft contacts took off (half of it, kept while any is: `Step::
+//! prepare_rigid`) is solved as rapier's soft contact (`problem::ContactSoftness`: its
+//! biased row over the step, `v(end) + (c / N) w j = -dist erp_inv_dt`), its normal impulse
+//! left to rapier whole, and the plugin's impulses on the body given as a force over rapier's
+//! passes (`bodies::apply_impulses`): rapier's contact is a spring of `m erp_inv_dt / (c dt)`
+//! (about 2.3e3 N/m for a 16 g box at 60 Hz), which a fingertip pressing the box would sink
+//! it into; such rows stay hard (below).
+//!
 //! **Who applies what.** The rigid rows' normal impulses without any soft contact (the
 //! bodies' weight on the table, `rest`, scaled down to the row's impulse with the soft
 //! contacts: a box lifted off the table gets none) are rapier's: its own solver makes them and
@@ -420,6 +429,13 @@ fn push_rigid(bodies: &[BodyState], r: &RigidRow, rest: f64, out: &mut Vec<Scala
     let nrm = out.len();
     let mut normal = Scalar::point(bodies, Some(r.a), r.b, &r.p, &r.n, Kind::HardNormal);
     normal.prox = rest;
+    if let Some(s) = r.softness {
+        // rapier's own soft contact (`problem::ContactSoftness`): `v(end) + c w j = target`,
+        // its compliance pulling towards 0 as rapier's does.
+        normal.target = s.target;
+        normal.compliance = s.compliance;
+        normal.prox = 0.0;
+    }
     out.push(normal);
     if r.mu > 0.0 {
         let base = rest;
@@ -1229,6 +1245,12 @@ fn write_rigid(
             0.0
         };
         r.jn = j[i] - s * rest[k];
+        if r.softness.is_some() {
+            // rapier's soft row: its whole normal impulse is rapier's own answer to the
+            // state the plugin leaves (applying a part of it too made the box move 1.7 um a
+            // step; `SPRING_DEFAULT_STATUS.md`, 21).
+            r.jn = 0.0;
+        }
         r.jt = Vector3::zeros();
         // The next (sub)step's warm start: rapier's part and the whole, as solved.
         let mut solved = [(rest[k], Vector3::zeros()), (j[i], Vector3::zeros())];
