@@ -321,7 +321,13 @@ fn tip_presses_a_stack_of_three_boxes() {
 /// bounds: the force within 0.1 % of the law over the hold, the box still (< 1 um/s over the
 /// hold's second half) and not drifting (< 1 um over the hold, < 0.1 um over its second
 /// half); along the wall the tip carries less than the box's weight. The rigid stick keeps
-/// the bounds set for it: [`rigid_stick_presses_a_box_against_a_wall`].
+/// the bounds set for it: [`rigid_stick_presses_a_box_against_a_wall`]. Before rapier's part
+/// of the table's normal impulses was split per pair of bodies (`rigid::pair_scales`), the
+/// spring's run left the box spinning at up to 7.6 rad/s for rapier to stop, the spring held
+/// each jump that made (8.3 N along the wall), the box moved at 11 mm/s in the hold and was
+/// thrown when the tip withdrew (66 mm, 1.4 m/s). (This was
+/// `friction_spring_presses_a_box_against_a_wall` until the spring became the default: the
+/// same run.)
 // Measured (`-- --nocapture`, session 21, the spring default): worst 3.1e-6, 59.76 N,
 // friction 0.0115 N, moved 8.8 um, 1.7 mm/s at most (the approach), 1.2e-8 m/s in the hold's
 // second half, drift 0.57 um over the hold (its first steps), 2.1e-9 m over its second half.
@@ -334,7 +340,8 @@ fn tip_presses_a_box_against_a_wall() {
     assert!(m.force > 50.0, "{m:?}");
     assert!(m.moved < 5e-5, "{m:?}");
     assert!(m.speed < 5e-3, "{m:?}");
-    assert!(m.speed_hold < 1e-6, "{m:?}");
+    // Issue 23's bound is 1 um/s; the spring's run has held 1e-7 since session 19.
+    assert!(m.speed_hold < 1e-7, "{m:?}");
     assert!(m.drift_hold < 1e-6, "{m:?}");
     assert!(m.drift_late < 1e-7, "{m:?}");
     let weight = (2.0 * HALF as f64).powi(3) * DENSITY as f64 * 9.81;
@@ -356,33 +363,4 @@ fn rigid_stick_presses_a_box_against_a_wall() {
     assert!(m.moved < 5e-4, "{m:?}");
     assert!(m.speed < 0.02, "{m:?}");
     assert!(m.speed_hold < 1e-6, "{m:?}");
-}
-
-/// The box pressed against the wall with static friction as Mindlin's tangential spring
-/// (`SoftContacts::set_friction_spring`): the same bands as the hard stick's (force within
-/// 0.1 % of the law, still in the hold) and more. Before rapier's part of the table's
-/// normal impulses was split per pair of bodies (`rigid::pair_scales`), the plugin's impulses
-/// left the box spinning at up to 7.6 rad/s for rapier to stop, the spring held each jump
-/// that made (8.3 N along the wall), the box moved at 11 mm/s in the hold and was thrown when
-/// the tip withdrew (66 mm, 1.4 m/s).
-// Measured (`-- --nocapture`): worst 3.5e-6, 59.76 N, friction 0.025 N, moved 9.1 um, speed
-// 1.8 mm/s at most (the approach), 5.7e-9 m/s in the hold. Session 21 (the same run as
-// [`tip_presses_a_box_against_a_wall`] since the spring is the default): worst 3.1e-6, friction
-// 0.0115 N, moved 8.8 um, 1.7 mm/s, 1.2e-8 m/s in the hold.
-#[test]
-fn friction_spring_presses_a_box_against_a_wall() {
-    let mut p = scene(1, true, Backing::Free);
-    p.world.soft.set_friction_spring(true);
-    let m = press(&mut p, 0.002, 120);
-    println!("free tip, friction spring, box against a wall, 2 mm: {m:?}");
-    assert!(m.worst < 1e-3, "{m:?}");
-    assert!(m.force > 50.0, "{m:?}");
-    assert!(m.moved < 5e-5, "{m:?}");
-    assert!(m.speed < 5e-3, "{m:?}");
-    assert!(m.speed_hold < 1e-7, "{m:?}");
-    assert!(m.drift_hold < 1e-6, "{m:?}");
-    // Along the wall the tip carries at most the box's weight (4 g: 0.039 N); a stretch locked
-    // in by rapier's jumps carried 8.3 N.
-    let weight = (2.0 * HALF as f64).powi(3) * DENSITY as f64 * 9.81;
-    assert!(m.friction < weight, "{m:?} (weight {weight} N)");
 }
