@@ -390,7 +390,7 @@ pub(crate) fn apply_impulses(
     let on_soft_rows: Vec<usize> = rigid
         .iter()
         .filter(|r| r.softness.is_some())
-        .map(|r| r.a)
+        .flat_map(|r| std::iter::once(r.a).chain(r.b))
         .collect();
     let soft = rows
         .iter()

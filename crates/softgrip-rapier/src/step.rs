@@ -588,31 +588,35 @@ impl Step<'_> {
                 }
             }
         }
-        // rapier's softness only on a body's single rigid pair with a fixed body (a box on the
-        // table), and only where the soft contacts took load off that pair at the previous
-        // (sub)step (its whole normal impulse is then rapier's: `rigid::write_rigid`); where
-        // two pairs share the load (a wall, a stack) or the soft contacts press, hard rows.
-        let pair_of = |r: &RigidRow| r.key.map(|k| (k.0, k.1));
-        for i in 0..s.rigid.len() {
-            let r = &s.rigid[i];
-            let (a, key) = (r.a, pair_of(r));
-            let mine = || s.rigid.iter().filter(|o| o.a == a && pair_of(o) == key);
-            let (with, without) = mine()
-                .filter_map(|o| o.warm)
-                .fold((0.0, 0.0), |(w, wo), [rest, all]| {
-                    (w + all.jn.max(0.0), wo + rest.jn.max(0.0))
-                });
-            let single = !s
-                .rigid
-                .iter()
-                .any(|o| (o.a == a && pair_of(o) != key) || o.b == Some(a))
-                && r.b.is_none_or(|b| !tb.table[b].is_dynamic());
-            // Hysteresis: soft from half the pair's load taken off, kept while any load is.
+        // One rule for every rigid row (`rigid`, rapier's soft rows): a row is rapier's soft
+        // contact where the soft contacts took the rigid load off its dynamic bodies at the
+        // previous (sub)step (each body's rigid normal impulse over all its pairs, with the
+        // soft contacts against without them: its whole normal impulse is then rapier's,
+        // `rigid::write_rigid`); hard where they press a body onto its rigid contacts (a
+        // fingertip on a box, a box pushed into a wall whose friction then takes its weight
+        // off the table: the load moves between rigid pairs, it is not taken off them).
+        // Hysteresis: soft from half the load taken off, kept while any load is.
+        let mut load = vec![(0.0, 0.0); tb.table.len()];
+        for o in &s.rigid {
+            if let Some([rest, all]) = o.warm {
+                for x in std::iter::once(o.a).chain(o.b) {
+                    load[x].0 += all.jn.max(0.0);
+                    load[x].1 += rest.jn.max(0.0);
+                }
+            }
+        }
+        let unloaded = |x: usize, limit: f64| {
+            let (with, without) = load[x];
+            without > 0.0 && with <= limit * without
+        };
+        for r in s.rigid.iter_mut() {
             let was_soft = r.key.is_some_and(|k| s.rigid_soft.contains(&k));
             let limit = if was_soft { 1.0 } else { 0.5 };
-            let unloaded = without > 0.0 && with <= limit * without;
-            if !(single && unloaded) {
-                s.rigid[i].softness = None;
+            let soft = unloaded(r.a, limit)
+                && r.b
+                    .is_none_or(|b| !tb.table[b].is_dynamic() || unloaded(b, limit));
+            if !soft {
+                r.softness = None;
             }
         }
     }
