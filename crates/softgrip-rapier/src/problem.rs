@@ -245,7 +245,8 @@ pub(crate) struct RigidRow {
     pub solved: Option<[Warm; 2]>,
     /// rapier's contact softness at this point over the coming (sub)step
     /// ([`ContactSoftness`]); `None`: a hard row (a separated point, which rapier solves
-    /// rigidly).
+    /// rigidly, or a point whose bodies the soft contacts do not unload: `Step::
+    /// prepare_rigid`).
     pub softness: Option<ContactSoftness>,
 }
 

@@ -35,14 +35,20 @@
 //! of iterations to do. A rigid pair that slides leaves the LU for good (the set must not
 //! cycle: it did, and a squeezed box on the ground rang at 2.5 cm/s).
 //!
-//! **rapier's soft rows.** A body's single rigid pair with a fixed body (a box on the table)
-//! whose load the soft contacts took off (half of it, kept while any is: `Step::
-//! prepare_rigid`) is solved as rapier's soft contact (`problem::ContactSoftness`: its
-//! biased row over the step, `v(end) + (c / N) w j = -dist erp_inv_dt`), its normal impulse
-//! left to rapier whole, and the plugin's impulses on the body given as a force over rapier's
-//! passes (`bodies::apply_impulses`): rapier's contact is a spring of `m erp_inv_dt / (c dt)`
-//! (about 2.3e3 N/m for a 16 g box at 60 Hz), which a fingertip pressing the box would sink
-//! it into; such rows stay hard (below).
+//! **rapier's soft rows.** One rule for every rigid row (`Step::prepare_rigid`): a row is
+//! solved as rapier's soft contact (`problem::ContactSoftness`: its biased row over the step,
+//! `v(end) + (c / N) w j = -dist erp_inv_dt`), its normal impulse left to rapier whole and the
+//! plugin's impulses on its bodies given as a force over rapier's passes
+//! (`bodies::apply_impulses`), where the soft contacts took the rigid load off its dynamic
+//! bodies at the previous (sub)step: each body's rigid normal impulse summed over all its
+//! pairs, with the soft contacts, at most half of it without them (kept while at most all of
+//! it). Then rapier's own contacts carry what is left of the body's weight, as rapier solves
+//! them, and the plugin's one-pass prediction has to be rapier's. Where the soft contacts press
+//! a body onto its rigid contacts (a fingertip on a box; a box pushed into a wall, whose
+//! friction then takes the weight off the table: the load moves between the body's pairs, it
+//! is not taken off them) the rows stay hard: rapier's contact is a spring of `m erp_inv_dt /
+//! (c dt)` (about 2.3e3 N/m for a 16 g box at 60 Hz), which the press would sink the box into,
+//! so the plugin applies the pressing part itself (below).
 //!
 //! **Who applies what.** The rigid rows' normal impulses without any soft contact (the
 //! bodies' weight on the table, `rest`, scaled down to the row's impulse with the soft

@@ -970,8 +970,8 @@ fn push_pair_points(
                 let key = (c1, c2, pt.fid1.0, pt.fid2.0);
                 row.key = Some(key);
                 row.warm = warm.get(&key).copied();
-                // rapier's softness where the soft contacts took load off the point at the
-                // previous (sub)step (its whole impulse rapier's: `rigid::write_rigid`).
+                // rapier's softness of the point; kept only where the soft contacts took the
+                // rigid load off its bodies (`Step::prepare_rigid`, after the gathering).
                 row.softness = ContactSoftness::of(params, h, gap, fixed_other);
                 rigid.push(row);
             }
