@@ -66,6 +66,9 @@ pub(crate) struct Scratch {
     /// The warm start of each rigid row the last coupled solve answered (`RigidRow::solved`),
     /// by [`RigidKey`](crate::problem::RigidKey): looked up, never iterated.
     pub rigid_warm: FastMap<crate::problem::RigidKey, [crate::problem::Warm; 2]>,
+    /// The rigid rows of the last coupled solve that were rapier's soft rows
+    /// (`RigidRow::softness`), by key: the switch's hysteresis (`Step::prepare_rigid`).
+    pub rigid_soft: crate::fast_hash::FastSet<crate::problem::RigidKey>,
     /// The bodies to visit while gathering `rigid` (in order), the set of them, and the
     /// collider pairs already taken.
     pub rigid_visit: (

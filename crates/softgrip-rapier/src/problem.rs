@@ -243,6 +243,62 @@ pub(crate) struct RigidRow {
     pub warm: Option<[Warm; 2]>,
     /// The same, as the coupled solve answered them this (sub)step (`None`: not answered).
     pub solved: Option<[Warm; 2]>,
+    /// rapier's contact softness at this point over the coming (sub)step
+    /// ([`ContactSoftness`]); `None`: a hard row (a separated point, which rapier solves
+    /// rigidly, or a point whose bodies the soft contacts do not unload: `Step::
+    /// prepare_rigid`).
+    pub softness: Option<ContactSoftness>,
+}
+
+/// What rapier 0.36's contact constraint does with a penetrating point over a pipeline step of
+/// `h` seconds, as one row of the coupled solve (`rigid`). rapier runs `N`
+/// (`num_solver_iterations`) substeps of `dt = h / N`; in each, its biased pass solves the
+/// point's normal impulse `lambda` to the fixed point of `lambda <- cfm_factor (lambda - m
+/// (v + rhs))` (`contact_constraint_element.rs`: `cfm_factor = 1 / (1 + cfm_coeff)`, `m` the
+/// point's projected mass), i.e. `v + rhs + cfm_coeff w lambda = 0` (`w = 1 / m`), with
+/// `rhs = clamp(dist erp_inv_dt, -max_corrective_velocity, 0)` for a penetration `dist < 0`
+/// (`contact_with_coulomb_friction.rs`, `update`: no slop deadzone), and integrates the poses
+/// with that biased velocity. Over the `N` substeps of a steady hold the impulse of the step is
+/// `J = N lambda`: the row `v(end) + cfm_coeff / N w J = target`, `target = -rhs`.
+/// `erp_inv_dt` and `cfm_coeff` are `SpringCoefficients::{erp_inv_dt, cfm_coeff}(dt)` of
+/// `static_contact_softness` where the other side is not dynamic, else of `contact_softness`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ContactSoftness {
+    /// The row's target end velocity, `min(-dist erp_inv_dt, max_corrective_velocity)`
+    /// \[m/s\], >= 0.
+    pub target: f64,
+    /// The row's compliance relative to its own mobility, `cfm_coeff(dt) / N`, > 0.
+    pub compliance: f64,
+}
+
+impl ContactSoftness {
+    /// rapier's softness of a point `gap` \[m\] apart (negative: penetrating) over a
+    /// pipeline step of `h` \[s\] with integration parameters `p`, against a body that is
+    /// not dynamic (`fixed_other`: the table) or a dynamic one. `None` where rapier solves
+    /// the point rigidly (`gap >= 0`) or the coefficients are not finite and positive.
+    pub(crate) fn of(
+        p: &rapier3d::dynamics::IntegrationParameters,
+        h: f64,
+        gap: f64,
+        fixed_other: bool,
+    ) -> Option<Self> {
+        if !(gap < 0.0) {
+            return None;
+        }
+        let n = p.num_solver_iterations.max(1) as f64;
+        let dt = (h / n) as f32;
+        let s = if fixed_other {
+            p.static_contact_softness
+        } else {
+            p.contact_softness
+        };
+        let (erp_inv_dt, cfm) = (s.erp_inv_dt(dt) as f64, s.cfm_coeff(dt) as f64);
+        let max_v = p.max_corrective_velocity() as f64;
+        let target = (-gap * erp_inv_dt).min(max_v);
+        let compliance = cfm / n;
+        (target.is_finite() && target >= 0.0 && compliance.is_finite() && compliance > 0.0)
+            .then_some(Self { target, compliance })
+    }
 }
 
 /// A rigid contact point's persistent id: rapier's collider pair and the point's feature ids
@@ -275,6 +331,7 @@ impl RigidRow {
             key: None,
             warm: None,
             solved: None,
+            softness: None,
         }
     }
 }

@@ -35,6 +35,21 @@
 //! of iterations to do. A rigid pair that slides leaves the LU for good (the set must not
 //! cycle: it did, and a squeezed box on the ground rang at 2.5 cm/s).
 //!
+//! **rapier's soft rows.** One rule for every rigid row (`Step::prepare_rigid`): a row is
+//! solved as rapier's soft contact (`problem::ContactSoftness`: its biased row over the step,
+//! `v(end) + (c / N) w j = -dist erp_inv_dt`), its normal impulse left to rapier whole and the
+//! plugin's impulses on its bodies given as a force over rapier's passes
+//! (`bodies::apply_impulses`), where the soft contacts took the rigid load off its dynamic
+//! bodies at the previous (sub)step: each body's rigid normal impulse summed over all its
+//! pairs, with the soft contacts, at most half of it without them (kept while at most all of
+//! it). Then rapier's own contacts carry what is left of the body's weight, as rapier solves
+//! them, and the plugin's one-pass prediction has to be rapier's. Where the soft contacts press
+//! a body onto its rigid contacts (a fingertip on a box; a box pushed into a wall, whose
+//! friction then takes the weight off the table: the load moves between the body's pairs, it
+//! is not taken off them) the rows stay hard: rapier's contact is a spring of `m erp_inv_dt /
+//! (c dt)` (about 2.3e3 N/m for a 16 g box at 60 Hz), which the press would sink the box into,
+//! so the plugin applies the pressing part itself (below).
+//!
 //! **Who applies what.** The rigid rows' normal impulses without any soft contact (the
 //! bodies' weight on the table, `rest`, scaled down to the row's impulse with the soft
 //! contacts: a box lifted off the table gets none) are rapier's: its own solver makes them and
@@ -493,6 +508,13 @@ fn push_rigid(bodies: &[BodyState], r: &RigidRow, rest: f64, out: &mut Vec<Scala
     let nrm = out.len();
     let mut normal = Scalar::point(bodies, Some(r.a), r.b, &r.p, &r.n, Kind::HardNormal);
     normal.prox = rest;
+    if let Some(s) = r.softness {
+        // rapier's own soft contact (`problem::ContactSoftness`): `v(end) + c w j = target`,
+        // its compliance pulling towards 0 as rapier's does.
+        normal.target = s.target;
+        normal.compliance = s.compliance;
+        normal.prox = 0.0;
+    }
     out.push(normal);
     if r.mu > 0.0 {
         let base = rest;
@@ -1404,6 +1426,12 @@ fn write_rigid(
             0.0
         };
         r.jn = j[i] - s * rest[k];
+        if r.softness.is_some() {
+            // rapier's soft row: its whole normal impulse is rapier's own answer to the
+            // state the plugin leaves (applying a part of it too made the box move 1.7 um a
+            // step; `SPRING_DEFAULT_STATUS.md`, 21).
+            r.jn = 0.0;
+        }
         r.jt = Vector3::zeros();
         // The next (sub)step's warm start: rapier's part and the whole, as solved.
         let mut solved = [(rest[k], Vector3::zeros()), (j[i], Vector3::zeros())];

@@ -31,8 +31,8 @@ use std::time::Instant;
 
 use nalgebra::{Isometry3, Point3, Vector3};
 use rapier3d::prelude::{
-    Collider, ColliderHandle, ContactPair, EventHandler, PhysicsHooks, PhysicsWorld,
-    RigidBodyHandle,
+    Collider, ColliderHandle, ContactPair, EventHandler, IntegrationParameters, PhysicsHooks,
+    PhysicsWorld, RigidBodyHandle,
 };
 use softgrip_law::Regime;
 
@@ -47,7 +47,7 @@ use crate::hooks::{SoftEvents, SoftHooks};
 use crate::kinematic::{self, KinematicPath, KinematicVelocity, interpolate};
 use crate::model::Model;
 use crate::multibody::{self, LinkCtx};
-use crate::problem::{self, RigidKey, RigidRow, Row, Warm};
+use crate::problem::{self, ContactSoftness, RigidKey, RigidRow, Row, Warm};
 use crate::readout;
 use crate::step_error::{Phase, StepError, Subject};
 use crate::substep;
@@ -576,16 +576,53 @@ impl Step<'_> {
                         }
                         Some(i)
                     });
+                    // rapier's contact softness of the pair: its static one where the other
+                    // side is not a dynamic body (`ContactSoftness`).
+                    let fixed_other = other
+                        .parent()
+                        .and_then(|ob| w.bodies.get(ob))
+                        .is_none_or(|ob| !ob.is_dynamic());
                     push_pair_points(
                         pair,
                         (co1, co2),
                         sign,
                         (a, b),
-                        slop,
+                        (slop, h, fixed_other, &w.integration_parameters),
                         &s.rigid_warm,
                         &mut s.rigid,
                     );
                 }
+            }
+        }
+        // One rule for every rigid row (`rigid`, rapier's soft rows): a row is rapier's soft
+        // contact where the soft contacts took the rigid load off its dynamic bodies at the
+        // previous (sub)step (each body's rigid normal impulse over all its pairs, with the
+        // soft contacts against without them: its whole normal impulse is then rapier's,
+        // `rigid::write_rigid`); hard where they press a body onto its rigid contacts (a
+        // fingertip on a box, a box pushed into a wall whose friction then takes its weight
+        // off the table: the load moves between rigid pairs, it is not taken off them).
+        // Hysteresis: soft from half the load taken off, kept while any load is.
+        let mut load = vec![(0.0, 0.0); tb.table.len()];
+        for o in &s.rigid {
+            if let Some([rest, all]) = o.warm {
+                for x in std::iter::once(o.a).chain(o.b) {
+                    load[x].0 += all.jn.max(0.0);
+                    load[x].1 += rest.jn.max(0.0);
+                }
+            }
+        }
+        let unloaded = |x: usize, limit: f64| {
+            let (with, without) = load[x];
+            without > 0.0 && with <= limit * without
+        };
+        for r in s.rigid.iter_mut() {
+            let was_soft = r.key.is_some_and(|k| s.rigid_soft.contains(&k));
+            let limit = if was_soft { 1.0 } else { 0.5 };
+            let soft = unloaded(r.a, limit)
+                && r.b
+                    .is_none_or(|b| !tb.table[b].is_dynamic() || unloaded(b, limit));
+            if !soft {
+                r.softness = None;
             }
         }
     }
@@ -727,9 +764,13 @@ impl Step<'_> {
         );
         // The rigid rows' warm start of the next (sub)step: those the coupled solve answered.
         s.rigid_warm.clear();
+        s.rigid_soft.clear();
         for r in &s.rigid {
             if let (Some(key), Some(w)) = (r.key, r.solved) {
                 s.rigid_warm.insert(key, w);
+                if r.softness.is_some() {
+                    s.rigid_soft.insert(key);
+                }
             }
         }
         if !s.rows.is_empty() {
@@ -897,13 +938,15 @@ fn queue_touching(
 /// Pushes the touching points of `pair`'s manifolds that have solver contacts onto `rigid`
 /// (at most [`MAX_RIGID_ROWS`]) as rows between body `a`, on this side (rapier's manifold
 /// normal times `sign`), and `b` (`None`: fixed), each with its warm start from `warm`;
-/// `slop`: rapier's allowed linear error \[m\].
+/// `slop`: rapier's allowed linear error \[m\]; `h`: the coming pipeline step \[s\],
+/// `fixed_other`: whether the other side is not dynamic, and `params` rapier's integration
+/// parameters, for the point's softness (`ContactSoftness`).
 fn push_pair_points(
     pair: &ContactPair,
     (co1, co2): (&Collider, &Collider),
     sign: f64,
     (a, b): (usize, Option<usize>),
-    slop: f64,
+    (slop, h, fixed_other, params): (f64, f64, bool, &IntegrationParameters),
     warm: &FastMap<RigidKey, [Warm; 2]>,
     rigid: &mut Vec<RigidRow>,
 ) {
@@ -923,7 +966,8 @@ fn push_pair_points(
             // The gap at the current poses: a manifold's points can outlive the touch (a box
             // lifted 5 cm kept its ground pair's four points, `dist` 0, for the whole lift, and
             // the coupled solve held it on that table).
-            if (p2 - p1).dot(&to_f64(m.data.normal)) > slop {
+            let gap = (p2 - p1).dot(&to_f64(m.data.normal));
+            if gap > slop {
                 continue;
             }
             let p = 0.5 * (p1 + p2);
@@ -932,6 +976,9 @@ fn push_pair_points(
                 let key = (c1, c2, pt.fid1.0, pt.fid2.0);
                 row.key = Some(key);
                 row.warm = warm.get(&key).copied();
+                // rapier's softness of the point; kept only where the soft contacts took the
+                // rigid load off its bodies (`Step::prepare_rigid`, after the gathering).
+                row.softness = ContactSoftness::of(params, h, gap, fixed_other);
                 rigid.push(row);
             }
         }
