@@ -205,7 +205,7 @@ impl Scalar {
     /// The row's velocity \[m/s or rad/s\]: the sum over its bodies (a, then b) of `s (lin . v +
     /// ang . w)`, `s` 1 on a and -1 on b; a body's term read from `fixed` where no impulse
     /// moves it (the same operands, so the same bits).
-    #[inline]
+    #[inline(always)]
     fn velocity(&self, bodies: &[BodyState]) -> f64 {
         let mut v = 0.0;
         for (k, (i, s)) in [(self.a, 1.0), (self.b, -1.0)].into_iter().enumerate() {
@@ -225,7 +225,7 @@ impl Scalar {
 
     /// Applies the impulse `j` \[N s or N m s\] to the row's bodies (none to a body that no
     /// impulse moves: `fixed`).
-    #[inline]
+    #[inline(always)]
     fn apply(&self, bodies: &mut [BodyState], j: f64) {
         for (i, s, ang, (dv, dw), fixed) in [
             (self.a, 1.0, self.ang_a, self.response[0], self.fixed[0]),
