@@ -220,6 +220,7 @@ impl Scalar {
     /// The row's velocity \[m/s or rad/s\]: the sum over its bodies (a, then b) of `s (lin . v +
     /// ang . w)`, `s` 1 on a and -1 on b; a body's term read from `fixed` where no impulse
     /// moves it (the same operands, so the same bits).
+    #[inline(always)]
     fn velocity(&self, bodies: &[BodyState]) -> f64 {
         let mut v = 0.0;
         for (k, (i, s)) in [(self.a, 1.0), (self.b, -1.0)].into_iter().enumerate() {
@@ -239,6 +240,7 @@ impl Scalar {
 
     /// Applies the impulse `j` \[N s or N m s\] to the row's bodies (none to a body that no
     /// impulse moves: `fixed`).
+    #[inline(always)]
     fn apply(&self, bodies: &mut [BodyState], j: f64) {
         for (i, s, ang, (dv, dw), fixed) in [
             (self.a, 1.0, self.ang_a, self.response[0], self.fixed[0]),
@@ -313,14 +315,27 @@ fn built_mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
     m
 }
 
-/// The rows' mutual mobility (`built_mobility` of every pair) into `mob`, resized to `m x m`.
+/// The rows' mutual mobility (`built_mobility` of every pair) into `mob`, resized to `m x m`;
+/// returns whether a row moves a multibody or jointed link.
 ///
 /// Where no row moves a multibody or jointed link, the same products in the same order, each
-/// row's moved sides gathered once (body, sign and angular Jacobian of the sides `built_mobility`
-/// visits, and of every row the side it takes on each body): the same bits without
-/// `built_mobility`'s per-pair look-ups, which were 3.8 % of a sweep trial's CPU samples (the
-/// whole matrix, session 20). With a link, `built_mobility` itself.
-fn fill_mobility(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) {
+/// row's moved sides gathered once into `sides` (body, sign and angular Jacobian of the sides
+/// `built_mobility` visits, and of every row the side it takes on each body): the same bits
+/// without `built_mobility`'s per-pair look-ups, which were 3.8 % of a sweep trial's CPU
+/// samples (the whole matrix, session 20). With a link, `built_mobility` itself.
+///
+/// `prior`: the mobility of the last `k` rows, `k x k`, as this function computed it for
+/// the same rows on the same bodies (the coupled solve's rigid rows, solved alone first),
+/// copied rather than recomputed: the same bits. Unused with a link. (Session 22: the
+/// matrix was 7.5 % of a sweep trial's CPU samples, `fill_mobility` kept out of line; the
+/// rigid block is 144 of the default grasp's 400 entries.)
+fn fill_mobility(
+    bodies: &[BodyState],
+    rows: &[Scalar],
+    mob: &mut DMatrix<f64>,
+    prior: Option<&DMatrix<f64>>,
+    sides: &mut Vec<[Option<Side>; 2]>,
+) -> bool {
     let m = rows.len();
     if mob.shape() != (m, m) {
         *mob = DMatrix::zeros(m, m);
@@ -343,8 +358,28 @@ fn fill_mobility(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) 
                 out[c * m + r] = built_mobility(bodies, &rows[r], &rows[c]);
             }
         }
-        return;
+        return true;
     }
+    // `x.on(i)` of each moved side `i` of each row `x`: a first.
+    sides.clear();
+    sides.extend(rows.iter().map(|x| {
+        moved(x).map(|i| {
+            i.map(|i| {
+                if x.a == Some(i) {
+                    (i, 1.0, x.ang_a)
+                } else {
+                    (i, -1.0, x.ang_b)
+                }
+            })
+        })
+    }));
+    let (k, prior) = match prior {
+        Some(p) if p.nrows() <= m && p.shape() == (p.nrows(), p.nrows()) => {
+            (p.nrows(), p.as_slice())
+        }
+        _ => (0, &[][..]),
+    };
+    let off = m - k;
     for c in 0..m {
         let y = &rows[c];
         // `built_mobility`'s side of `y` on body `i` (a first): its sign and response.
@@ -357,23 +392,25 @@ fn fill_mobility(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) 
                 None
             }
         };
-        for r in 0..m {
+        let column = &mut out[c * m..(c + 1) * m];
+        let computed = if c >= off {
+            column[off..].copy_from_slice(&prior[(c - off) * k..(c - off + 1) * k]);
+            off
+        } else {
+            m
+        };
+        for (r, w_out) in column[..computed].iter_mut().enumerate() {
             let x = &rows[r];
             let mut w = 0.0;
-            for i in moved(x).into_iter().flatten() {
-                // `x.on(i)`: a first.
-                let (sx, ax) = if x.a == Some(i) {
-                    (1.0, &x.ang_a)
-                } else {
-                    (-1.0, &x.ang_b)
-                };
+            for &(i, sx, ax) in sides[r].iter().flatten() {
                 if let Some((sy, (rl, ra))) = side(i) {
                     w += sx * sy * (x.lin.dot(rl) + ax.dot(ra));
                 }
             }
-            out[c * m + r] = w;
+            *w_out = w;
         }
     }
+    false
 }
 
 /// The part of [`mobility`] through the multibody of link `i` (a body of `x`), added to `m`.
@@ -403,8 +440,11 @@ enum State {
 pub(crate) struct CoupledScratch {
     scalars: Vec<Scalar>,
     state: Vec<State>,
-    /// [`solve_scalars`]'s buffers; its answer in `buffers.j`.
-    buffers: Buffers,
+    /// [`solve_scalars`]'s buffers of each stage (0: the rigid rows alone, 1: everything;
+    /// kept apart, their sizes differ and each stays the same from solve to solve, so nothing
+    /// is reallocated; stage 1 reads stage 0's mobility, [`fill_mobility`]); the answer in
+    /// `buffers[1].j`.
+    buffers: [Buffers; 2],
     /// The bodies at the group's base ([`solve_coupled`]).
     base: Vec<BodyState>,
     /// The answer of the rigid rows alone, and rapier's normal impulse per rigid row.
@@ -582,6 +622,7 @@ fn solve_scalars(
     passes: &mut usize,
     immobile_count: &mut u64,
     buffers: &mut Buffers,
+    prior: Option<&DMatrix<f64>>,
 ) -> Option<f64> {
     let m = rows.len();
     let Buffers {
@@ -593,12 +634,17 @@ fn solve_scalars(
         pair_inv,
         zero,
         cache,
+        sides,
+        pure,
+        ..
     } = buffers;
     cache.reset();
     // The rows' mutual mobility: the impulses change the bodies' velocities, never their mass,
     // inertia or centre, so it is computed once per solve (was: once per LU pass).
-    fill_mobility(bodies, rows, &mut cache.mob);
-    *immobile_count += immobile(bodies, rows, &mut cache.mob, zero);
+    let links = fill_mobility(bodies, rows, &mut cache.mob, prior, sides);
+    let zeroed = immobile(bodies, rows, &mut cache.mob, zero);
+    *pure = !links && zeroed == 0;
+    *immobile_count += zeroed;
     let bound = impulse_bound(bodies, rows, &cache.mob, h);
     pair_inverses(rows, &cache.mob, pair_inv);
     j.clear();
@@ -650,7 +696,18 @@ struct Buffers {
     zero: Vec<bool>,
     /// The LU passes' matrices and buffers.
     cache: LuCache,
+    /// Each row's moved sides ([`fill_mobility`]).
+    sides: Vec<[Option<Side>; 2]>,
+    /// `cache.mob` is [`fill_mobility`]'s matrix of the last solve's rows as computed without
+    /// a multibody or jointed link, no row zeroed by [`immobile`].
+    pure: bool,
+    /// The rows' velocity parts before the solve ([`solve_saturating`]).
+    u0: Vec<(f64, f64)>,
 }
+
+/// A side of a row that an impulse moves ([`fill_mobility`]): its body, its sign (1 on body
+/// a, -1 on b) and its angular Jacobian.
+type Side = (usize, f64, Vector3<f64>);
 
 /// The friction pairs' inverse 2 x 2 mobility (by the pair's first row; `None` elsewhere), from
 /// the rows' mutual mobility `mob`, into `out`.
@@ -1114,7 +1171,10 @@ impl LuCache {
         // The matrix depends on the rows only (the mobility and coefficients are fixed over a
         // solve): rebuilt when the set of LU rows changes, not every pass.
         if a_rows.as_slice() != lu || a.nrows() != n {
-            a.resize_mut(n, n, 0.0);
+            // (Reallocated only when the size changes: `resize_mut` copied it every time.)
+            if a.shape() != (n, n) {
+                *a = DMatrix::zeros(n, n);
+            }
             a.fill(0.0);
             for (r, &i) in lu.iter().enumerate() {
                 match rows[i].kind {
@@ -1201,7 +1261,10 @@ impl LuCache {
                     lu_rows.extend(idx.iter().map(|&r| lu[r]));
                     *factor = Some(sub.lu());
                 }
-                rhs.resize_vertically_mut(idx.len(), 0.0);
+                // Every entry is written below.
+                if rhs.len() != idx.len() {
+                    *rhs = DVector::zeros(idx.len());
+                }
                 for (p, &r) in idx.iter().enumerate() {
                     rhs[p] = b[r];
                 }
@@ -1274,7 +1337,7 @@ pub(crate) fn solve_coupled(
     let outcome = if !solved {
         failure(scratch_degenerate_before, scratch.stats[4])
     } else {
-        std::mem::swap(&mut scratch.rest, &mut scratch.buffers.j);
+        std::mem::swap(&mut scratch.rest, &mut scratch.buffers[0].j);
         let mut rest_n = std::mem::take(&mut scratch.rest_n);
         rest_normals(rigid, &scratch.rest, &mut rest_n);
         // Everything.
@@ -1297,8 +1360,8 @@ pub(crate) fn solve_coupled(
             stats[0] += 1;
             stats[1] += passes.min(OUTER) as u64;
             stats[2] += u64::from(passes > OUTER);
-            write_soft(bodies, soft, stage.first, &buffers.j);
-            write_rigid(soft, rigid, &scalars[..], &buffers.j, rest, h);
+            write_soft(bodies, soft, stage.first, &buffers[1].j);
+            write_rigid(soft, rigid, &scalars[..], &buffers[1].j, rest, h);
             Coupled::Solved
         }
     };
@@ -1349,6 +1412,17 @@ impl Stage<'_> {
             warm_start(soft, rigid, which, self.h, self.warm);
         }
         let [.., immobile, degenerate] = stats;
+        let [first, all] = buffers;
+        // Stage 1's rigid rows are stage 0's, built from the same bodies (`solve_coupled`
+        // restores them): their block of the mobility is stage 0's, where that is
+        // `fill_mobility`'s own (`Buffers::pure`).
+        let (buffers, prior) = if which == 0 {
+            (first, None)
+        } else {
+            let k = rigid_scalars(rigid);
+            let pure = first.pure && first.cache.mob.nrows() == k && k <= scalars.len();
+            (all, pure.then_some(&first.cache.mob))
+        };
         solve_saturating(
             bodies,
             scalars,
@@ -1359,6 +1433,7 @@ impl Stage<'_> {
             immobile,
             degenerate,
             buffers,
+            prior,
         )
     }
 }
@@ -1513,6 +1588,7 @@ fn solve_saturating(
     immobile_count: &mut u64,
     degenerate_count: &mut u64,
     buffers: &mut Buffers,
+    prior: Option<&DMatrix<f64>>,
 ) -> Option<()> {
     let links = rows
         .iter()
@@ -1531,12 +1607,25 @@ fn solve_saturating(
     };
     let mut start = if links { bodies.to_vec() } else { Vec::new() };
     let mut wrenches = vec![Vector6::zeros(); if links { bodies.len() } else { 0 }];
-    let mut u0 = Vec::with_capacity(rows.len());
+    let mut u0 = std::mem::take(&mut buffers.u0);
     loop {
         let mut immobile = 0;
         u0.clear();
         u0.extend(rows.iter().map(|r| r.velocity_parts(bodies)));
-        let bound = solve_scalars(bodies, rows, warm, h, state, passes, &mut immobile, buffers)?;
+        let Some(bound) = solve_scalars(
+            bodies,
+            rows,
+            warm,
+            h,
+            state,
+            passes,
+            &mut immobile,
+            buffers,
+            prior,
+        ) else {
+            buffers.u0 = u0;
+            return None;
+        };
         let j = &buffers.j;
         if links {
             wrenches.iter_mut().for_each(|w| *w = Vector6::zeros());
@@ -1548,7 +1637,11 @@ fn solve_saturating(
                     }
                 }
             }
-            if saturation::saturate(&mut start, &wrenches)? > 0 {
+            let Some(saturated) = saturation::saturate(&mut start, &wrenches) else {
+                buffers.u0 = u0;
+                return None;
+            };
+            if saturated > 0 {
                 bodies.clone_from_slice(&start);
                 continue;
             }
@@ -1559,10 +1652,11 @@ fn solve_saturating(
         } else {
             0.0
         };
-        if degenerate(j, bound)
+        let failed = degenerate(j, bound)
             || locked > LOCKED_FACTOR * bound
-            || speed_ratio(bodies, rows, &u0, h) > SPEED_FACTOR
-        {
+            || speed_ratio(bodies, rows, &u0, h) > SPEED_FACTOR;
+        buffers.u0 = u0;
+        if failed {
             *degenerate_count += 1;
             return None;
         }

@@ -84,34 +84,74 @@ fn apply_torque(bodies: &mut [BodyState], r: &Row, t: f64) {
     }
 }
 
+/// [`solve_normal`]'s system and buffers, kept from pass to pass of a group's solve and from
+/// solve to solve (no allocation but the LU's once warm).
+#[derive(Debug, Clone, Default)]
+struct NormalSystem {
+    /// Each row's `d = theta K h + c`.
+    d: Vec<f64>,
+    /// `A = I + h D W`.
+    a: DMatrix<f64>,
+    /// `d` and `a` are of the group's rows over this solve (they depend on the rows'
+    /// coefficients and the bodies' mass, inertia and centre, fixed over a group's solve):
+    /// the later passes reuse them (the same arithmetic, so the same bits). Session 22:
+    /// `pair_mobility`, 1.6 % of a sweep trial's CPU samples, was called `n^2` times a pass.
+    built: bool,
+    rhs: Vec<f64>,
+    active: Vec<bool>,
+    j: Vec<f64>,
+    idx: Vec<usize>,
+}
+
 /// Solves the normal impulses given the body velocities `v0` (everything but the normal
-/// impulses), writing `jn` of every row. Returns false if the system was not finite.
-fn solve_normal(bodies: &[BodyState], rows: &mut [Row], h: f64, bound: usize) -> bool {
+/// impulses), writing `jn` of every row; `sys` keeps its system (built unless
+/// `sys.built`). Returns false if the system was not finite.
+fn solve_normal(
+    bodies: &[BodyState],
+    rows: &mut [Row],
+    h: f64,
+    bound: usize,
+    sys: &mut NormalSystem,
+) -> bool {
     let n = rows.len();
-    let d: Vec<f64> = rows
-        .iter()
-        .map(|r| r.theta * r.stiffness * h + r.damping)
-        .collect();
-    let rhs: Vec<f64> = rows
-        .iter()
-        .zip(&d)
-        .map(|(r, di)| h * (r.force - di * normal_velocity(bodies, r)))
-        .collect();
-    // A = I + h D W
-    let mut a = DMatrix::<f64>::identity(n, n);
-    for i in 0..n {
-        if d[i] == 0.0 {
-            continue;
+    let NormalSystem {
+        d,
+        a,
+        built,
+        rhs,
+        active,
+        j,
+        idx,
+    } = sys;
+    if !*built || d.len() != n || a.shape() != (n, n) {
+        d.clear();
+        d.extend(rows.iter().map(|r| r.theta * r.stiffness * h + r.damping));
+        // A = I + h D W
+        *a = DMatrix::<f64>::identity(n, n);
+        for i in 0..n {
+            if d[i] == 0.0 {
+                continue;
+            }
+            for k in 0..n {
+                let w = pair_mobility(bodies, &rows[i], &rows[i].n, &rows[k], &rows[k].n);
+                a[(i, k)] += h * d[i] * w;
+            }
         }
-        for k in 0..n {
-            let w = pair_mobility(bodies, &rows[i], &rows[i].n, &rows[k], &rows[k].n);
-            a[(i, k)] += h * d[i] * w;
-        }
+        *built = true;
     }
-    let mut active: Vec<bool> = rhs.iter().map(|v| *v > 0.0).collect();
-    let mut j = vec![0.0; n];
+    rhs.clear();
+    rhs.extend(
+        rows.iter()
+            .zip(d.iter())
+            .map(|(r, di)| h * (r.force - di * normal_velocity(bodies, r))),
+    );
+    active.clear();
+    active.extend(rhs.iter().map(|v| *v > 0.0));
+    j.clear();
+    j.resize(n, 0.0);
     for _ in 0..(2 * bound.max(n) + 2) {
-        let idx: Vec<usize> = (0..n).filter(|i| active[*i]).collect();
+        idx.clear();
+        idx.extend((0..n).filter(|i| active[*i]));
         j.iter_mut().for_each(|v| *v = 0.0);
         if !idx.is_empty() {
             let m = idx.len();
@@ -141,7 +181,7 @@ fn solve_normal(bodies: &[BodyState], rows: &mut [Row], h: f64, bound: usize) ->
             break;
         }
     }
-    for (r, ji) in rows.iter_mut().zip(&j) {
+    for (r, ji) in rows.iter_mut().zip(j.iter()) {
         r.jn = ji.max(0.0);
     }
     j.iter().all(|v| v.is_finite())
@@ -315,6 +355,8 @@ struct GroupScratch {
     previous: Vec<[f64; 5]>,
     /// Group solves, their outer passes, and those that used every pass allowed.
     stats: [u64; 3],
+    /// The normal solve's system ([`solve_normal`]).
+    normal: NormalSystem,
 }
 
 impl SolveScratch {
@@ -771,6 +813,10 @@ fn solve_group(
     });
     let mut ok = true;
     let outer = if any_dynamic { OUTER_ITERATIONS } else { 1 };
+    // The normal system is built in the first pass and reused in the later ones, but where a
+    // row moves a multibody or jointed link (its mobility read from the link's state).
+    scratch.normal.built = false;
+    let reuse = !(rows.iter().flat_map(|r| [r.a, r.b]).flatten()).any(|i| bodies[i].link.is_some());
     let mut passes = 0;
     for pass in 0..outer {
         passes = pass + 1;
@@ -782,7 +828,10 @@ fn solve_group(
         ok = if let [r] = rows {
             solve_normal_single(bodies, r, h)
         } else {
-            solve_normal(bodies, rows, h, bound)
+            if !reuse {
+                scratch.normal.built = false;
+            }
+            solve_normal(bodies, rows, h, bound, &mut scratch.normal)
         };
         if !ok {
             break;
