@@ -139,6 +139,9 @@ pub struct SoftContacts {
     pub(crate) counters: SoftCounters,
     pub(crate) accuracy: SoftAccuracy,
     pub(crate) geoms: Vec<Geom>,
+    /// Each contact's gap and normal velocity at the start of the last step
+    /// (`step::split`'s approach check for links of jointed bodies).
+    pub(crate) gaps: FastMap<(ColliderHandle, ColliderHandle), crate::step::GapMemory>,
     pub(crate) scratch: Scratch,
     /// The error that faulted the plugin (`step`): a faulted plugin steps no more.
     pub(crate) fault: Option<crate::step_error::StepError>,
@@ -175,6 +178,7 @@ impl Default for SoftContacts {
             counters: Default::default(),
             accuracy: Default::default(),
             geoms: Default::default(),
+            gaps: Default::default(),
             scratch: Default::default(),
             fault: None,
             time: 0.0,
