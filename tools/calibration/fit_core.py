@@ -2,6 +2,10 @@
 """Fit and validate the `core` construction's calibrated force law (a soft skin of thickness t
 over a rigid core, `Backing::Core`) against softgrip's own FE (tests/data/fe/core/).
 
+Since session 21 the law (backed.rs) is this form plus the thin-layer floor and the small-patch
+widening, refitted with the S20B skins: tools/calibration/try_thin_skin_s21.py reproduces it.
+This script still fits the session-10 form below and reproduces the session-10 constants.
+
     chi_core = chi_flat + L T / K
       tau = t/R, eps = mu/kappa = 3 (1 - 2 nu) / (2 (1 + nu))
       h   = 1 + tau^2 / (1 - tau)                 the skin's mean depth over r <= 2t, over t
@@ -97,7 +101,10 @@ HELD = {(0.35, 0.7), (0.45, 0.5), (0.4, 0.3), (0.49, 0.3),
         (0.47, 0.25),
         # the sixth (session 20): skins thinner than any run before (t/R 0.08, R/75), blind tests
         # of the thin-layer variants of try_thin_skin_s20.py (run after they were fixed)
-        (0.4, 0.08), (0.3, 0.08)}
+        (0.4, 0.08), (0.3, 0.08),
+        # the seventh (session 21): blind tests of the adopted thin-layer floor (run after its
+        # constants were fixed; tools/fe/fe_campaign.py S21_DT, smaller increments)
+        (0.48, 0.08), (0.4, 0.06), (0.48, 0.06), (0.45, 0.07), (0.35, 0.06)}
 # Fit data made after the law's constants (session 15, role "main" in tools/fe/fe_campaign.py:
 # t/R 0.25, 0.3 and 0.35 between the fitted 0.2 and 0.4). The law was not refitted
 # (CORE_FORM.md, "Thin skins: session 15"), so this script keeps them out of its fit and

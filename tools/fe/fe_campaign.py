@@ -115,7 +115,18 @@ def cases():
           ("core", 0.3, 0.1, 60, "main"), ("core", 0.48, 0.1, 60, "main"),
           ("core", 0.3, 0.1, 80, "conv"), ("core", 0.4, 0.1, 60, "main"),
           ("core", 0.4, 0.05, 120, "main")]
+    # session 21 (run under /work/fe-scratch/runs/skins-s21/): blind thin skins for the
+    # thin-layer form (held out of its fit), with smaller increments (`S21_DT`): the nu 0.48
+    # skins of session 20 stopped at delta/t 0.35-0.4; t/R 0.06 and 0.07 are between the fitted
+    # 0.05 and 0.1, at nu none of those has (0.35, 0.45) and at 0.4 / 0.48
+    c += [(g, nu, t, h, "heldout") for g, nu, t, h in S21_DT]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
+
+
+# session 21's skins: (geometry, nu, t/R, R/h) -> max increment in x (output every 0.0025)
+S21_DT = {("core", 0.48, 0.08, 80): 0.0005, ("core", 0.4, 0.06, 100): 0.001,
+          ("core", 0.48, 0.06, 100): 0.0005, ("core", 0.45, 0.07, 90): 0.0005,
+          ("core", 0.35, 0.06, 100): 0.001}
 
 
 def curved_cases():
@@ -303,6 +314,12 @@ def make(geometry, nu, t, h, role="main", cp="plane", k=0.0):
         # the nearly incompressible layer bonded on both sides: at 0.005 the first Newton
         # iterate past x = 0.04 (t/R = 0.4) throws the contact open and ccx aborts; 0.001 passes
         dt_small, late_dt = 0.001, 0.002
+    if (geometry, nu, t, h) in S21_DT:
+        # session 21: one step to x = t/R (delta/t = 1; every such run stops before), output
+        # every 0.0025 in x
+        case = fe_run.make_case(geometry, nu, t, h, t, dt_small=S21_DT[geometry, nu, t, h])
+        case.tp = 0.0025
+        return case
     if geometry == "core" and t < 0.075:
         # a skin thinner than t/R 0.075 (session 20) is squeezed to delta/t 0.5 by x = 0.4 t/R:
         # output every 0.005 in x (every 0.01 would leave 2-3 rows), increments <= 0.0025

@@ -27,7 +27,10 @@
 //! - `resting`: N = 1, 10, 100, 1000 fingertips resting on a fixed ground
 //!   (`softgrip_bench::overhead::OverheadScene`, settled 120 steps), softgrip and rapier's own
 //!   contacts, µs per step (best of 3 rounds, and the median of a fourth round's single
-//!   steps, each timed alone). The balls never sleep (`can_sleep(false)`).
+//!   steps, each timed alone). The balls never sleep (`can_sleep(false)`). `replayed`: the
+//!   share of softgrip's timed single steps that the resting fast path replayed
+//!   (`SoftContacts::set_rest_replay`; `SOFTGRIP_REST_REPLAY=off` in the environment turns it
+//!   off, for its A/B in one binary).
 //! - `resting-sleep`: the same with the balls allowed to sleep (rapier's default thresholds),
 //!   asleep once settled (kind `resting_sleep`; `peers.py` puts it beside MuJoCo with its
 //!   sleeping enabled).
@@ -449,6 +452,10 @@ fn resting(sleep: bool) {
         let steps = (20_000 / n).clamp(60, 2000);
         let mut rigid = new(n, false);
         let mut soft = new(n, true);
+        // `SOFTGRIP_REST_REPLAY=off`: the plugin's resting fast path off (the A/B of its cost;
+        // the physics is bit for bit the same either way).
+        let replay = std::env::var("SOFTGRIP_REST_REPLAY").map_or(true, |v| v != "off");
+        soft.world.soft.set_rest_replay(replay);
         let (mut best_rigid, mut best_soft) = ([f64::MAX; 2], [f64::MAX; 2]);
         for _ in 0..3 {
             for (scene, best) in [(&mut rigid, &mut best_rigid), (&mut soft, &mut best_soft)] {
@@ -462,10 +469,17 @@ fn resting(sleep: bool) {
         }
         // Then one more round of single steps, timed one by one: their median (a round's mean
         // on a loaded machine carries every preemption that fell in it).
+        let before = *soft.world.soft.counters();
         let medians = [&mut soft, &mut rigid].map(|scene| median_step(scene, steps));
-        for ((peer, [us, cpu]), median) in [("softgrip", best_soft), ("rapier", best_rigid)]
-            .into_iter()
-            .zip(medians)
+        let after = soft.world.soft.counters();
+        // The share of the timed single steps the fast path replayed (softgrip's line).
+        let replayed = (after.replayed_steps - before.replayed_steps) as f64
+            / (after.steps - before.steps).max(1) as f64;
+        for (((peer, [us, cpu]), median), replayed) in
+            [("softgrip", best_soft), ("rapier", best_rigid)]
+                .into_iter()
+                .zip(medians)
+                .zip([replayed, 0.0])
         {
             let cpu = if cpu < f64::MAX {
                 format!("{:.4}", cpu * 1e6)
@@ -474,7 +488,8 @@ fn resting(sleep: bool) {
             };
             println!(
                 "{{\"kind\":\"{kind}\",\"peer\":\"{peer}\",\"n\":{n},\"dt\":{:.6e},\"steps\":{steps},\
-                 \"us_per_step\":{:.4},\"cpu_us_per_step\":{cpu},\"median_us_per_step\":{:.4}}}",
+                 \"us_per_step\":{:.4},\"cpu_us_per_step\":{cpu},\"median_us_per_step\":{:.4},\
+                 \"replayed\":{replayed:.3}}}",
                 1.0 / 60.0,
                 us * 1e6,
                 median * 1e6

@@ -484,6 +484,38 @@ pub const FILES: &[FeFile] = &[
         "core",
         Some(0.1)
     ),
+    fe_file!(
+        "core/force_nu0.48_t0.08.csv",
+        Force,
+        Some(0.48),
+        "held out of every fit (session 21, blind: run after the thin-layer floor's constants were fixed): skin t/R = 0.08 over a rigid core, nu = 0.48, R/80, increments <= 0.0005, x = 0.0025..0.0325",
+        "core",
+        Some(0.08)
+    ),
+    fe_file!(
+        "core/force_nu0.4_t0.06.csv",
+        Force,
+        Some(0.4),
+        "held out of every fit (session 21, blind: run after the thin-layer floor's constants were fixed): skin t/R = 0.06 over a rigid core, nu = 0.4, R/100, increments <= 0.001, x = 0.0025..0.03",
+        "core",
+        Some(0.06)
+    ),
+    fe_file!(
+        "core/force_nu0.48_t0.06.csv",
+        Force,
+        Some(0.48),
+        "held out of every fit (session 21, blind: run after the thin-layer floor's constants were fixed): skin t/R = 0.06 over a rigid core, nu = 0.48, R/100, increments <= 0.0005, x = 0.0025..0.02",
+        "core",
+        Some(0.06)
+    ),
+    fe_file!(
+        "core/force_nu0.45_t0.07.csv",
+        Force,
+        Some(0.45),
+        "held out of every fit (session 21, blind: run after the thin-layer floor's constants were fixed): skin t/R = 0.07 over a rigid core, nu = 0.45, R/90, increments <= 0.0005, x = 0.0025..0.0275",
+        "core",
+        Some(0.07)
+    ),
 ];
 
 /// Every embedded file: [`FILES`] (the plane), then [`COUNTERPART_FILES`], then

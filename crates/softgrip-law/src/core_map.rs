@@ -10,6 +10,12 @@
 //! F = h (4/3) x^(3/2) chi_on(x) - tail
 //! ```
 //!
+//! The errors quoted below are those of the plane core form before session 21 (which added the
+//! thin-layer floor to it and refitted its constants without refitting anything here); today's
+//! per curve are in `tests/core_counterpart_fe.rs` (`w` refitted on its curve: every ball within
+//! 2.90 %; cylinder nu 0.48, t/R 0.4 on R 3.56 % and on 3R 3.29 %, past the issue's 3 %; crate
+//! README *Thin skins*).
+//!
 //! - **`chi_core(rho_H x)`, the patch.** Hertz's reduction: a fingertip on a ball of radius R2
 //!   makes at `delta` the patch `a^2 = R_eff delta` it makes on a plane at `rho_H delta`
 //!   (`rho_H = h^2`, `R_eff = rho_H R`), with `R/R_eff` times the plane's pressure over it. In
@@ -42,7 +48,7 @@
 //!   (D_t(delta/t) - D_t(rho_H delta/t))` (0 for an incompressible skin), where the skin is
 //!   confined laterally: `E/(1 + E)`, `E = (a_H/l)^2 = eps a_H^2/t^2` the patch over the
 //!   layer's confinement length `l = t sqrt(kappa/mu)` (the plane form's crossover measure, at
-//!   Hertz's patch `a_H^2 = rho_H R delta`), times a share `w` (0.018 since session 17, the one constant, fitted
+//!   Hertz's patch `a_H^2 = rho_H R delta`), times a share `w` (0.026 since session 21, 0.018 in session 17, the one constant, fitted
 //!   on the FE of nu 0.3, t/R 0.4 on 2R). Without it a compressible skin squeezed past
 //!   `delta/t` 0.7 on a ball was 3.4-14 % too soft (nu 0.3-0.4); with it within 1.07 % on the
 //!   three held out of `w`, and on two blind ones 2.39 % (nu 0.3, t/R 0.5 on R: 9.23 %
@@ -180,7 +186,7 @@
 //! soft at x = 0.38 on R at t/R 0.5). No constant is fitted here: `rho` and the tail are the
 //! bonded pad's (`mapping`), `rho_H` Hertz's.
 //!
-//! The force is tabulated when the law is bound (the core's own table, 256 cells in
+//! The force is tabulated when the law is bound (the core's own table, 384 cells in
 //! `sqrt(x)`): stiffness, energy and inverse stay exact (the table's derivative and integral,
 //! as on the plane). Binding costs one table (`cargo bench -p softgrip-law --bench law --
 //! with_counterpart`).
@@ -355,8 +361,11 @@ const CAP_AREA: f64 = 0.25;
 /// squeeze that the ball's deeper squeeze adds to the layer's part of the force (module docs;
 /// fitted minimax on the one FE curve of nu 0.3, t/R 0.4 on 2R, `tests/data/fe/ball/core/`,
 /// through the bonded pad's map of session 14 (0.036952 on session 12's map, 0.0276 on session
-/// 14's; 0.018246 since session 17's wrapped cap and `chi_flat`'s continuation in `Phi`)).
-const CONFINED_SHARE: f64 = 0.018246;
+/// 14's; 0.018246 since session 17's wrapped cap and `chi_flat`'s continuation in `Phi`; 0.026
+/// since session 21's refit of the plane core form (the thin-layer floor): with 0.018246 that
+/// curve was 4.48 % too soft at its end, with 0.022 / 0.024 / 0.026 / 0.028 / 0.03 its worst
+/// is 3.15 / 2.61 / 2.08 / 2.10 / 2.13 %, a scan in steps of 0.002, not a continuous fit)).
+const CONFINED_SHARE: f64 = 0.026;
 
 /// `D_t(s) = (2/3) ((1/3) lam^(-2/3) + (5/3) lam^(-8/3)) - 4/3`, `lam = 1 - s`: the tangent
 /// stiffness of a neo-Hookean layer confined laterally (an oedometer: the FE's material,

@@ -71,23 +71,21 @@ fn flat_calibrated_is_within_1_percent_of_its_fe_at_every_nu() {
 
 #[test]
 fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
-    // nu and t/R between the fitted ones (tools/fe/fe_campaign.py role "heldout"). Seen: flat
-    // 0.35: 1.66 %, flat 0.45: 0.54 %; core, each to its FE reach (the law's x_max = 0.8 t/R
-    // since session 10): (0.45, 0.5) 2.24 % (at x = 0.15; reach 0.39), (0.35, 0.7) 1.39 % (to
-    // 0.49), (0.4, 0.3) 1.05 % (to 0.23), (0.49, 0.3) 2.17 % (at x = 0.18; to 0.20). The second
-    // set (made after the five-constant form was chosen; the sixth and seventh constants were
-    // chosen with it in view): (0.46, 0.25) 1.80 %, (0.33, 0.25) 2.37 % (to 0.20), (0.42, 0.55)
-    // 1.88 %, (0.36, 0.2) 2.31 % (to 0.16), (0.44, 0.8) 1.23 %, (0.495, 0.35) 1.76 %: the 2 %
-    // target is missed on four of ten. The third set (session 11): (0.47, 0.15) 1.86 % (to
-    // 0.08), (0.42, 0.25) 1.62 % (to 0.18). The fourth set (session 13), thinner than any
-    // fitted: (0.38, 0.12) 4.02 % (at x = 0.01, +; -2.0 % at its end 0.08), (0.46, 0.1) 2.56 %
-    // (x = 0.02, +; to 0.04), (0.32, 0.14) 3.73 % (at its end x = 0.1, delta/t 0.71, -; +2.5 %
-    // at 0.01), (0.49, 0.12) 2.49 % (at its end x = 0.05, -; +0.01 % at 0.01): the 2 % target
-    // is missed, more the thinner the skin (crate README). Session 15, t/R 0.3 (fit data for
-    // the next refit, made after the constants): (0.48, 0.3) 1.46 % (x = 0.01; to 0.20), (0.35,
-    // 0.3) 2.07 % (x = 0.19, delta/t 0.63; to 0.24), (0.45, 0.35) 1.86 % (x = 0.09; to 0.25),
-    // (0.49, 0.25) 2.11 % (at its end x = 0.15, delta/t 0.6: a miss of the 2 %); and a blind run,
-    // (0.47, 0.25) 1.67 % (x = 0.01, +; to 0.17). Each tolerance: seen + 0.1 %.
+    // nu and t/R between the fitted ones (tools/fe/fe_campaign.py role "heldout"), each to
+    // its FE reach. Seen: flat 0.35: 1.66 %, flat 0.45: 0.54 %. Core since session 21 (the
+    // thin-layer floor, seven constants refitted with session 20's t/R 0.05-0.1 skins; the
+    // session-20 law's value in brackets): (0.45, 0.5) 1.63 [2.24], (0.35, 0.7) 0.48 [1.39],
+    // (0.4, 0.3) 2.40 [1.05], (0.49, 0.3) 2.01 [2.17]; the second set (0.46, 0.25) 3.53
+    // [1.80], (0.33, 0.25) 1.24 [2.37], (0.42, 0.55) 1.66 [1.88], (0.36, 0.2) 2.88 [2.31],
+    // (0.44, 0.8) 1.09 [1.23], (0.495, 0.35) 1.78 [1.76]; the third (0.47, 0.15) 2.05 [1.86],
+    // (0.42, 0.25) 2.92 [1.62]; the fourth, thinner than any fitted before session 21: (0.38,
+    // 0.12) 2.51 [4.02], (0.46, 0.1) 1.64 [2.56], (0.32, 0.14) 1.21 [3.73], (0.49, 0.12) 3.40
+    // [2.49]; session 15's (0.48, 0.3) 1.18 [1.46], (0.35, 0.3) 0.82 [2.07], (0.45, 0.35)
+    // 1.88 [1.86], (0.49, 0.25) 1.83 [2.11], (0.47, 0.25) 1.86 [1.67]; session 20's blind t/R
+    // 0.08: (0.4, 0.08) 3.30 [3.77], (0.3, 0.08) 2.25 [10.16]; session 20's thin skins (fit
+    // data of session 21's refit): (0.3, 0.05) 3.46 [16.17], (0.4, 0.05) 3.26 [10.86], (0.3,
+    // 0.1) 1.87 [8.72], (0.48, 0.1) 3.18 [3.50], (0.4, 0.1) 3.06 [4.02]. The 2 % target is
+    // missed on nine (crate README *Thin skins*). Each tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -95,61 +93,61 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.45_t0.5.csv",
             0.45,
             Backing::Core { thickness: 0.5 },
-            0.0235,
+            0.0173,
         ),
         (
             "core/force_nu0.35_t0.7.csv",
             0.35,
             Backing::Core { thickness: 0.7 },
-            0.0149,
+            0.0058,
         ),
         (
             "core/force_nu0.4_t0.3.csv",
             0.4,
             Backing::Core { thickness: 0.3 },
-            0.0115,
+            0.0250,
         ),
         (
             "core/force_nu0.49_t0.3.csv",
             0.49,
             Backing::Core { thickness: 0.3 },
-            0.0227,
+            0.0211,
         ),
         (
             "core/force_nu0.46_t0.25.csv",
             0.46,
             Backing::Core { thickness: 0.25 },
-            0.0190,
+            0.0363,
         ),
         (
             "core/force_nu0.33_t0.25.csv",
             0.33,
             Backing::Core { thickness: 0.25 },
-            0.0247,
+            0.0134,
         ),
         (
             "core/force_nu0.42_t0.55.csv",
             0.42,
             Backing::Core { thickness: 0.55 },
-            0.0198,
+            0.0176,
         ),
         (
             "core/force_nu0.36_t0.2.csv",
             0.36,
             Backing::Core { thickness: 0.2 },
-            0.0241,
+            0.0298,
         ),
         (
             "core/force_nu0.44_t0.8.csv",
             0.44,
             Backing::Core { thickness: 0.8 },
-            0.0133,
+            0.0119,
         ),
         (
             "core/force_nu0.495_t0.35.csv",
             0.495,
             Backing::Core { thickness: 0.35 },
-            0.0186,
+            0.0188,
         ),
         // The third set (session 11, run after every constant was fixed): a skin thinner than
         // any fitted (t/R 0.15, to its FE's end 0.08) and one between them.
@@ -157,13 +155,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.47_t0.15.csv",
             0.47,
             Backing::Core { thickness: 0.15 },
-            0.0195,
+            0.0215,
         ),
         (
             "core/force_nu0.42_t0.25.csv",
             0.42,
             Backing::Core { thickness: 0.25 },
-            0.0172,
+            0.0302,
         ),
         // The fourth set (session 13, run after every constant was fixed): skins thinner than
         // any fitted, each to its FE's end, on finer meshes (R/75 and R/60).
@@ -171,25 +169,25 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.38_t0.12.csv",
             0.38,
             Backing::Core { thickness: 0.12 },
-            0.0412,
+            0.0261,
         ),
         (
             "core/force_nu0.46_t0.1.csv",
             0.46,
             Backing::Core { thickness: 0.1 },
-            0.0266,
+            0.0174,
         ),
         (
             "core/force_nu0.32_t0.14.csv",
             0.32,
             Backing::Core { thickness: 0.14 },
-            0.0383,
+            0.0131,
         ),
         (
             "core/force_nu0.49_t0.12.csv",
             0.49,
             Backing::Core { thickness: 0.12 },
-            0.0259,
+            0.0350,
         ),
         // Session 15: fit data for the next refit between the fitted t/R 0.2 and 0.4 (made
         // after the constants; the refit tried was not adopted, crate README *Thin skins*).
@@ -197,32 +195,32 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.48_t0.3.csv",
             0.48,
             Backing::Core { thickness: 0.3 },
-            0.0156,
+            0.0128,
         ),
         (
             "core/force_nu0.35_t0.3.csv",
             0.35,
             Backing::Core { thickness: 0.3 },
-            0.0217,
+            0.0092,
         ),
         (
             "core/force_nu0.45_t0.35.csv",
             0.45,
             Backing::Core { thickness: 0.35 },
-            0.0196,
+            0.0198,
         ),
         (
             "core/force_nu0.49_t0.25.csv",
             0.49,
             Backing::Core { thickness: 0.25 },
-            0.0221,
+            0.0193,
         ),
         // Session 15, blind (run after every constant tried that session was fixed).
         (
             "core/force_nu0.47_t0.25.csv",
             0.47,
             Backing::Core { thickness: 0.25 },
-            0.0177,
+            0.0196,
         ),
         // Session 20, blind (run after the session's thin-layer variants were fixed), thinner
         // than any run before: (0.4, 0.08) 3.77 % (at its end x = 0.04, delta/t 0.5, -; +3.47 %
@@ -235,13 +233,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.4_t0.08.csv",
             0.4,
             Backing::Core { thickness: 0.08 },
-            0.0387,
+            0.0340,
         ),
         (
             "core/force_nu0.3_t0.08.csv",
             0.3,
             Backing::Core { thickness: 0.08 },
-            0.1026,
+            0.0235,
         ),
         // Session 20, second part: fit data for the thin-layer floor (not fitted: the law was
         // not refitted; CORE_FORM.md "Thin skins: session 20, fit data at t/R 0.05-0.1"),
@@ -251,39 +249,76 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.3_t0.05.csv",
             0.3,
             Backing::Core { thickness: 0.05 },
-            0.1627,
+            0.0356,
         ),
         (
             "core/force_nu0.4_t0.05.csv",
             0.4,
             Backing::Core { thickness: 0.05 },
-            0.1096,
+            0.0336,
         ),
         (
             "core/force_nu0.3_t0.1.csv",
             0.3,
             Backing::Core { thickness: 0.1 },
-            0.0882,
+            0.0197,
         ),
         (
             "core/force_nu0.48_t0.1.csv",
             0.48,
             Backing::Core { thickness: 0.1 },
-            0.0360,
+            0.0328,
+        ),
+        // Session 21, blind (run after the thin-layer floor's constants were fixed; smaller
+        // increments, `fe_campaign.py` S21_DT): (0.48, 0.08) on R/80 2.71 % (x = 0.01, too
+        // soft; within 1.3 % from x = 0.015; session 20's law 3.15 %, too soft at its end x =
+        // 0.0325), (0.4, 0.06) on R/100 3.75 % (x = 0.01, too stiff, falling to +1.94 % at its
+        // end x = 0.03; session 20's law 6.99 %, too soft at the end), (0.48, 0.06) on R/100
+        // 1.47 % (x = 0.01, too soft; to x = 0.02; session 20's law 5.38 %, too soft at its end).
+        (
+            "core/force_nu0.48_t0.08.csv",
+            0.48,
+            Backing::Core { thickness: 0.08 },
+            0.0281,
+        ),
+        (
+            "core/force_nu0.4_t0.06.csv",
+            0.4,
+            Backing::Core { thickness: 0.06 },
+            0.0385,
+        ),
+        (
+            "core/force_nu0.48_t0.06.csv",
+            0.48,
+            Backing::Core { thickness: 0.06 },
+            0.0157,
+        ),
+        // ... and (0.45, 0.07) on R/90 3.76 % (x = 0.0175, too stiff, +2.3 to +3.8 % along
+        // it; session 20's law 2.94 %: on this blind skin the thin-layer floor is worse).
+        (
+            "core/force_nu0.45_t0.07.csv",
+            0.45,
+            Backing::Core { thickness: 0.07 },
+            0.0386,
         ),
         (
             "core/force_nu0.4_t0.1.csv",
             0.4,
             Backing::Core { thickness: 0.1 },
-            0.0412,
+            0.0316,
         ),
     ];
+    // Every file is printed before any is asserted (one run shows them all).
+    let mut missed = Vec::new();
     for (path, nu, backing, tol) in cases {
         let cal = law(Level::Calibrated, nu, backing);
         let (w, x) = worst(&cal, &fe(path), cal.x_max());
         eprintln!("{path}: {:.2} % at x = {x}", w * 100.0);
-        assert!(w < tol, "{path}: {:.2} % at x = {x}", w * 100.0);
+        if w >= tol {
+            missed.push(format!("{path}: {:.2} % at x = {x}", w * 100.0));
+        }
     }
+    assert!(missed.is_empty(), "{missed:#?}");
 }
 
 #[test]
@@ -300,25 +335,26 @@ fn flat_is_stiffer_than_the_free_sphere_as_the_issue_measured() {
 
 #[test]
 fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
-    // Fitted on these 14 curves (tools/calibration/fit_core.py: seven constants). Seen, to x_max
+    // Fitted on these 14 curves and session 20's six t/R 0.05-0.1 skins (session 21,
+    // tools/calibration/try_thin_skin_s21.py: seven constants). Seen, to x_max
     // = min(flat's, 0.8 t/R) (each FE curve's reach: delta/t 0.45-0.8), the largest
     // |F/F_FE - 1| in %; each tolerance is the seen value plus 0.1 % above, 0.25 % below (a
     // changed constant or term breaks it).
     let seen = [
-        (0.3, 0.2, 2.12),
-        (0.4, 0.2, 2.48),
-        (0.48, 0.2, 1.87),
-        (0.499, 0.2, 2.20),
-        (0.3, 0.4, 1.95),
-        (0.4, 0.4, 2.34),
-        (0.48, 0.4, 2.10),
-        (0.499, 0.4, 1.84),
-        (0.3, 0.6, 1.47),
-        (0.48, 0.6, 1.55),
-        (0.499, 0.6, 2.01),
-        (0.3, 0.8, 0.80),
-        (0.48, 0.8, 2.03),
-        (0.499, 0.8, 1.76),
+        (0.3, 0.2, 1.65),
+        (0.4, 0.2, 2.98),
+        (0.48, 0.2, 2.20),
+        (0.499, 0.2, 2.09),
+        (0.3, 0.4, 2.66),
+        (0.4, 0.4, 1.41),
+        (0.48, 0.4, 0.86),
+        (0.499, 0.4, 1.04),
+        (0.3, 0.6, 2.17),
+        (0.48, 0.6, 1.58),
+        (0.499, 0.6, 2.38),
+        (0.3, 0.8, 0.87),
+        (0.48, 0.8, 1.94),
+        (0.499, 0.8, 1.75),
     ];
     for (nu, t, pct) in seen {
         let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
@@ -326,6 +362,7 @@ fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
         assert!((core.x_max() - (0.8 * t).min(flat.x_max())).abs() < 1e-12);
         let data = fe(&format!("core/force_nu{nu}_t{t}.csv"));
         let (w, x) = worst(&core, &data, core.x_max());
+        eprintln!("nu = {nu} t = {t}: {:.2} % at x = {x}", w * 100.0);
         assert!(
             w * 100.0 < pct + 0.1,
             "nu = {nu} t = {t}: {:.2} % at x = {x} (seen {pct} %)",
@@ -364,7 +401,7 @@ fn core_validity_reaches_the_fe_reach() {
         );
         files += 1;
     }
-    assert_eq!(files, 42);
+    assert_eq!(files, 46);
     for j in 0..=20 {
         let nu = 0.3 + 0.01 * f64::from(j);
         for (t, x) in [(0.3, 0.22), (0.5, 0.38)] {

@@ -456,7 +456,8 @@ macro_rules! profiles {
 }
 
 /// Every FE profile inside the law's validity (x <= x_max; the core's x <= 0.8 t/R since session
-/// 10): tolerances in fractions of FE's peak, seen values just below. Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
+/// 10): tolerances in fractions of FE's peak, seen values just below (the law-force columns of
+/// 14 core profiles raised in session 21, when the core's force changed: the thin-layer floor). Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
 /// integrates to 1.076 F (every other one to 0.93-1.03 F): a contact-edge node entering contact
 /// carries a penalty spike (3.53 MPa at r = 0.661 mm, twice the centre's), which would be taken
 /// as FE's peak (`fit_radius_pressure.py` `usable` leaves it out of the fits for the same reason).
@@ -488,34 +489,34 @@ fn all_profiles() -> Vec<Profile> {
         "flat", 0.45, 0.0, 0.1, true, [0.013, 0.017], [0.014, 0.017];
         "flat", 0.45, 0.0, 0.3, true, [0.029, 0.031], [0.032, 0.033];
         "core", 0.35, 0.7, 0.1, true, [0.019, 0.023], [0.019, 0.023];
-        "core", 0.35, 0.7, 0.3, true, [0.020, 0.021], [0.015, 0.021];
-        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.005, 0.038];
+        "core", 0.35, 0.7, 0.3, true, [0.020, 0.021], [0.017, 0.021];
+        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.010, 0.038];
         "core", 0.4, 0.4, 0.1, false, [0.030, 0.034], [0.053, 0.056];
         "core", 0.3, 0.2, 0.1, false, [0.018, 0.048], [0.034, 0.060];
         "core", 0.3, 0.4, 0.1, false, [0.012, 0.015], [0.030, 0.034];
         "core", 0.3, 0.6, 0.1, false, [0.013, 0.017], [0.025, 0.028];
-        "core", 0.3, 0.6, 0.3, false, [0.008, 0.048], [0.007, 0.047];
+        "core", 0.3, 0.6, 0.3, false, [0.008, 0.048], [0.011, 0.047];
         "core", 0.3, 0.8, 0.1, false, [0.010, 0.017], [0.007, 0.020];
         "core", 0.3, 0.8, 0.3, false, [0.019, 0.041], [0.026, 0.048];
         "core", 0.45, 0.5, 0.1, true, [0.017, 0.021], [0.035, 0.039];
-        "core", 0.45, 0.5, 0.3, true, [0.042, 0.046], [0.049, 0.053];
+        "core", 0.45, 0.5, 0.3, true, [0.042, 0.046], [0.052, 0.056];
         "core", 0.48, 0.2, 0.1, false, [0.029, 0.046], [0.034, 0.051];
         "core", 0.48, 0.4, 0.1, false, [0.022, 0.026], [0.043, 0.047];
-        "core", 0.48, 0.6, 0.1, false, [0.014, 0.018], [0.009, 0.018];
+        "core", 0.48, 0.6, 0.1, false, [0.014, 0.018], [0.009, 0.020];
         "core", 0.48, 0.6, 0.3, false, [0.046, 0.048], [0.043, 0.046];
         "core", 0.48, 0.8, 0.1, false, [0.009, 0.018], [0.011, 0.031];
         "core", 0.48, 0.8, 0.3, false, [0.007, 0.023], [0.009, 0.032];
         "core", 0.499, 0.4, 0.1, false, [0.005, 0.022], [0.023, 0.028];
-        "core", 0.499, 0.6, 0.1, false, [0.009, 0.018], [0.008, 0.028];
+        "core", 0.499, 0.6, 0.1, false, [0.009, 0.018], [0.010, 0.030];
         "core", 0.499, 0.6, 0.3, false, [0.027, 0.029], [0.020, 0.031];
         "core", 0.499, 0.8, 0.1, false, [0.004, 0.024], [0.021, 0.041];
         "core", 0.499, 0.8, 0.3, false, [0.016, 0.039], [0.025, 0.048];
         "core", 0.49, 0.3, 0.1, true, [0.047, 0.053], [0.053, 0.059];
         "core", 0.4, 0.3, 0.1, true, [0.054, 0.058], [0.057, 0.062];
         "core", 0.46, 0.25, 0.1, true, [0.056, 0.063], [0.052, 0.058];
-        "core", 0.33, 0.25, 0.1, true, [0.028, 0.034], [0.013, 0.029];
+        "core", 0.33, 0.25, 0.1, true, [0.028, 0.034], [0.021, 0.029];
         "core", 0.42, 0.55, 0.1, true, [0.020, 0.023], [0.034, 0.037];
-        "core", 0.42, 0.55, 0.3, true, [0.042, 0.045], [0.048, 0.051];
+        "core", 0.42, 0.55, 0.3, true, [0.042, 0.045], [0.052, 0.054];
         "core", 0.36, 0.2, 0.1, true, [0.010, 0.034], [0.019, 0.050];
         "core", 0.44, 0.8, 0.1, true, [0.017, 0.021], [0.010, 0.018];
         "core", 0.495, 0.35, 0.1, true, [0.031, 0.036], [0.046, 0.051];
@@ -524,12 +525,12 @@ fn all_profiles() -> Vec<Profile> {
         // t/R 0.7 x 0.5 lies past the flat construction's x_max 0.495).
         "core", 0.3, 0.4, 0.3, false, [0.112, 0.115], [0.097, 0.105];
         "core", 0.3, 0.8, 0.5, false, [0.049, 0.102], [0.050, 0.103];
-        "core", 0.4, 0.4, 0.3, false, [0.089, 0.094], [0.083, 0.088];
+        "core", 0.4, 0.4, 0.3, false, [0.089, 0.094], [0.096, 0.101];
         // Session 13, held out: the first thin skin past 0.6 t/R (nu 0.32 t/R 0.14 x 0.1, delta/t
         // 0.71, R/60; its profile integrates to 0.993 F). Seen: FE force -2.71 / 9.07 %, law
         // force -6.33 / 6.76 % (the law's force is 3.7 % low there): over the 5 % target, as the
         // three above (CORE_PRESSURE.md, session 13).
-        "core", 0.32, 0.14, 0.1, true, [0.030, 0.094], [0.066, 0.070];
+        "core", 0.32, 0.14, 0.1, true, [0.030, 0.094], [0.066, 0.084];
     )
     .into_iter()
     .collect()
@@ -537,6 +538,8 @@ fn all_profiles() -> Vec<Profile> {
 
 #[test]
 fn pressure_follows_the_fe_profile_for_every_construction() {
+    // Every profile is printed before any is asserted (one run shows them all).
+    let mut missed = Vec::new();
     for p in all_profiles() {
         let backing = match (p.geometry, p.t) {
             ("free", _) => Backing::Free,
@@ -570,14 +573,21 @@ fn pressure_follows_the_fe_profile_for_every_construction() {
             pr * 100.0
         );
         let name = format!("{} nu {} t {:?} x {}", p.geometry, p.nu, p.t, p.x);
-        assert!(
-            pk_fe.abs() < p.fe_force[0],
-            "{name}: peak {pk_fe} (FE force)"
-        );
-        assert!(pr_fe < p.fe_force[1], "{name}: profile {pr_fe} (FE force)");
-        assert!(pk.abs() < p.law_force[0], "{name}: peak {pk} (law force)");
-        assert!(pr < p.law_force[1], "{name}: profile {pr} (law force)");
+        for (ok, what) in [
+            (
+                pk_fe.abs() < p.fe_force[0],
+                format!("peak {pk_fe} (FE force)"),
+            ),
+            (pr_fe < p.fe_force[1], format!("profile {pr_fe} (FE force)")),
+            (pk.abs() < p.law_force[0], format!("peak {pk} (law force)")),
+            (pr < p.law_force[1], format!("profile {pr} (law force)")),
+        ] {
+            if !ok {
+                missed.push(format!("{name}: {what}"));
+            }
+        }
     }
+    assert!(missed.is_empty(), "{missed:#?}");
 }
 
 /// The FE force (normalised) of the construction at x.

@@ -64,6 +64,7 @@ pub(crate) fn wake_touched(
     gravity: Vector3<f64>,
     dt: f64,
     woken: &mut Vec<RigidBodyHandle>,
+    mut log: Option<&mut Vec<RigidBodyHandle>>,
 ) {
     let (a, b) = (g.body_tip, g.body_other);
     let both_dynamic = [a, b].iter().all(|h| {
@@ -85,6 +86,9 @@ pub(crate) fn wake_touched(
             .is_none_or(|o| o.is_fixed() || (o.is_dynamic() && o.is_sleeping()));
         if !holds && let Some(rb) = bodies.get_mut(this) {
             rb.wake_up(true);
+            if let Some(log) = log.as_deref_mut() {
+                log.push(this);
+            }
             if asleep {
                 woken.push(this);
             }
@@ -377,6 +381,7 @@ pub(crate) fn apply_impulses(
     rigid: &[RigidRow],
     counters: &mut SoftCounters,
     net: &mut Vec<(Vector3<f64>, Vector3<f64>)>,
+    mut log: Option<&mut Vec<(RigidBodyHandle, Vector, Vector)>>,
 ) {
     net.clear();
     net.resize(table.len(), (Vector3::zeros(), Vector3::zeros()));
@@ -412,6 +417,9 @@ pub(crate) fn apply_impulses(
             let (v, w) = (to_f64(rb.linvel()) + dv, to_f64(rb.angvel()) + dw);
             rb.set_linvel(to_f32(&v), false);
             rb.set_angvel(to_f32(&w), false);
+            if let Some(log) = log.as_deref_mut() {
+                log.push((*handle, rb.linvel(), rb.angvel()));
+            }
         }
     }
     // The multibody links: a force over the coming pipeline step (`multibody`).

@@ -103,6 +103,9 @@ pub(crate) struct Scratch {
     pub link_forces: Vec<crate::multibody::SavedForce>,
     /// The gravity lag of split steps: the lead-in's and give-back's share per body.
     pub split_lag: crate::bodies::SplitLag,
+    /// The rigid supports' gathering read a pair of rapier's narrow phase this step (such a
+    /// step is not replayed: `step::memo`).
+    pub rigid_read: bool,
 }
 
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.
@@ -153,6 +156,8 @@ pub struct SoftContacts {
     /// Whether any fingertip was registered with a tactile pad (`update_tactile` walks the
     /// fingertips only then).
     pub(crate) any_tactile: bool,
+    /// The resting fast path's memo of the last step (`step::memo`).
+    pub(crate) rest: crate::step::memo::RestMemo,
 }
 
 /// The fingertips' colliders as rapier's hooks see them: each with its facing in its
@@ -184,6 +189,7 @@ impl Default for SoftContacts {
             time: 0.0,
             max_radius: 0.0,
             any_tactile: false,
+            rest: Default::default(),
         }
     }
 }
@@ -229,6 +235,8 @@ impl SoftContacts {
         collider: ColliderHandle,
         fingertip: SoftFingertip,
     ) -> Result<()> {
+        self.materialize_rest();
+        self.rest.invalidate();
         let co = world
             .colliders
             .get_mut(collider)
@@ -313,12 +321,30 @@ impl SoftContacts {
 
     /// The soft contacts of the last step.
     pub fn contacts(&self) -> &[TipContact] {
-        &self.contacts
+        self.live_contacts()
+    }
+
+    /// The readout of the last step: its own, or that of the step it replayed
+    /// (`step::memo`, kept there until the next full step).
+    fn live_contacts(&self) -> &[TipContact] {
+        self.rest.live_contacts().unwrap_or(&self.contacts)
+    }
+
+    /// Moves the plugin's state a replayed step ended with (`step::memo`) into its own fields:
+    /// before anything reads or changes them but the readout's accessors.
+    pub(crate) fn materialize_rest(&mut self) {
+        if let Some(end) = self.rest.take_live() {
+            self.pairs.clone_from(&end.pairs);
+            self.contacts.clone_from(&end.contacts);
+            self.geoms.clone_from(&end.geoms);
+            self.scratch.unsplit_carry.clone_from(&end.unsplit_carry);
+            self.scratch.stamp = end.stamp;
+        }
     }
 
     /// The contacts of one fingertip in the last step.
     pub fn contacts_of(&self, fingertip: ColliderHandle) -> impl Iterator<Item = &TipContact> {
-        self.contacts
+        self.live_contacts()
             .iter()
             .filter(move |c| c.fingertip == fingertip)
     }
@@ -336,6 +362,27 @@ impl SoftContacts {
     /// Sets the accuracy (phase per substep).
     pub fn set_accuracy(&mut self, accuracy: SoftAccuracy) {
         self.accuracy = accuracy;
+        self.materialize_rest();
+        self.rest.invalidate();
+    }
+
+    /// Turns the resting fast path on or off (default on; crate README, "Resting steps
+    /// replayed"): a step whose inputs (rapier's bodies and colliders, the integration
+    /// parameters, gravity, the plugin's fingertips, settings and contact memory) are
+    /// bit-identical to the last step's, when that step was unsplit and had no kinematic body,
+    /// joint or rigid support, applies that step's velocity changes again instead of
+    /// recomputing them, then runs rapier's pipeline. The physics is bit for bit the same
+    /// either way (`tests/rest_replay.rs`); counted in
+    /// [`SoftCounters::replayed_steps`](crate::SoftCounters::replayed_steps).
+    pub fn set_rest_replay(&mut self, on: bool) {
+        self.materialize_rest();
+        self.rest.enabled = on;
+        self.rest.invalidate();
+    }
+
+    /// Whether the resting fast path is on ([`set_rest_replay`](Self::set_rest_replay)).
+    pub fn rest_replay(&self) -> bool {
+        self.rest.enabled
     }
 
     /// Turns the timing of a step's parts on or off (default off): with it on, each step adds
@@ -365,6 +412,8 @@ impl SoftContacts {
     /// before).
     pub fn set_friction_spring(&mut self, on: bool) {
         self.friction_spring = on;
+        self.materialize_rest();
+        self.rest.invalidate();
     }
 
     /// Whether static friction is a tangential spring
@@ -385,7 +434,7 @@ impl SoftContacts {
     /// [`SoftFingertipBuilder::tactile`]: crate::SoftFingertipBuilder::tactile
     pub fn tactile_image(&self, collider: ColliderHandle) -> Option<&TactileImage> {
         let slot = self.tips.get(&collider)?.tactile.as_ref()?;
-        Some(slot.image(collider, &self.contacts))
+        Some(slot.image(collider, self.live_contacts()))
     }
 
     /// Every tactile image, in the fingertips' handle order (each computed on its first read
@@ -393,7 +442,7 @@ impl SoftContacts {
     pub fn tactile_images(&self) -> impl Iterator<Item = (ColliderHandle, &TactileImage)> {
         self.tip_order.iter().filter_map(|(h, _)| {
             let slot = self.tips.get(h)?.tactile.as_ref()?;
-            Some((*h, slot.image(*h, &self.contacts)))
+            Some((*h, slot.image(*h, self.live_contacts())))
         })
     }
 

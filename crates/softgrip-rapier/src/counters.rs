@@ -96,6 +96,12 @@ pub struct SoftCounters {
     /// their readout and contact memory stay those of the step they fell asleep in (crate
     /// README, Sleeping).
     pub held_tips: u64,
+    /// Steps replayed by the resting fast path, total: their inputs (rapier's bodies and
+    /// colliders, the parameters, the plugin's state) were bit-identical to the last step's,
+    /// so its writes were applied again instead of recomputed (crate README, "Resting steps
+    /// replayed"). A replayed step adds the counts of the step it replays (`contacts_evaluated`
+    /// included: the same contacts, reused bit for bit), not its times.
+    pub replayed_steps: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the contact stage of the substeps: the rows of every substep after the
@@ -131,6 +137,41 @@ pub struct SoftCounters {
     /// Time spent on the readout: the substeps' sums and the step's contacts assembled (not
     /// the tactile images, which are laid on their first read).
     pub readout_time: Duration,
+}
+
+impl SoftCounters {
+    /// Adds the counts `after - before` (a recorded step's) again: every count but `steps`
+    /// (the caller's), `substeps_last` (set to `after`'s), `largest_group` (a maximum, already
+    /// reached) and `replayed_steps`; not the times.
+    pub(crate) fn add_increments(&mut self, before: &Self, after: &Self) {
+        macro_rules! add {
+            ($($f:ident),*) => { $( self.$f += after.$f - before.$f; )* };
+        }
+        add!(
+            contacts_evaluated,
+            substeps_total,
+            substep_cap_hits,
+            validity_excursions,
+            past_wall,
+            non_finite,
+            unsupported_pairs,
+            onset_solves,
+            counterpart_fallbacks,
+            coupled_solves,
+            coupled_passes,
+            coupled_unsettled,
+            coupled_degenerate,
+            group_solves,
+            group_passes,
+            group_unsettled,
+            immobile_rows,
+            locked_link_contacts,
+            jointed_free,
+            woken,
+            held_tips
+        );
+        self.substeps_last = after.substeps_last;
+    }
 }
 
 /// A stopwatch over a step's parts that reads the clock only while profiling is on

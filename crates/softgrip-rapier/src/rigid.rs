@@ -298,6 +298,69 @@ fn built_mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
     m
 }
 
+/// The rows' mutual mobility (`built_mobility` of every pair) into `mob`, resized to `m x m`.
+///
+/// Where no row moves a multibody or jointed link, the same products in the same order, each
+/// row's moved sides gathered once (body, sign and angular Jacobian of the sides `built_mobility`
+/// visits, and of every row the side it takes on each body): the same bits without
+/// `built_mobility`'s per-pair look-ups, which were 3.8 % of a sweep trial's CPU samples (the
+/// whole matrix, session 20). With a link, `built_mobility` itself.
+fn fill_mobility(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) {
+    let m = rows.len();
+    if mob.shape() != (m, m) {
+        *mob = DMatrix::zeros(m, m);
+    }
+    let moved = |r: &Scalar| {
+        [
+            r.a.filter(|_| r.fixed[0].is_none()),
+            r.b.filter(|_| r.fixed[1].is_none()),
+        ]
+    };
+    let links = rows
+        .iter()
+        .flat_map(moved)
+        .flatten()
+        .any(|i| bodies[i].link.is_some());
+    let out = mob.as_mut_slice();
+    if links {
+        for c in 0..m {
+            for r in 0..m {
+                out[c * m + r] = built_mobility(bodies, &rows[r], &rows[c]);
+            }
+        }
+        return;
+    }
+    for c in 0..m {
+        let y = &rows[c];
+        // `built_mobility`'s side of `y` on body `i` (a first): its sign and response.
+        let side = |i: usize| {
+            if y.a == Some(i) {
+                Some((1.0, &y.response[0]))
+            } else if y.b == Some(i) {
+                Some((-1.0, &y.response[1]))
+            } else {
+                None
+            }
+        };
+        for r in 0..m {
+            let x = &rows[r];
+            let mut w = 0.0;
+            for i in moved(x).into_iter().flatten() {
+                // `x.on(i)`: a first.
+                let (sx, ax) = if x.a == Some(i) {
+                    (1.0, &x.ang_a)
+                } else {
+                    (-1.0, &x.ang_b)
+                };
+                if let Some((sy, (rl, ra))) = side(i) {
+                    w += sx * sy * (x.lin.dot(rl) + ax.dot(ra));
+                }
+            }
+            out[c * m + r] = w;
+        }
+    }
+}
+
 /// The part of [`mobility`] through the multibody of link `i` (a body of `x`), added to `m`.
 fn link_mobility(bodies: &[BodyState], i: usize, x: &Scalar, y: &Scalar, m: &mut f64) {
     let (sx, lx, ax) = x.on(i).unwrap_or((0.0, Vector3::zeros(), Vector3::zeros()));
@@ -319,11 +382,23 @@ enum State {
     Fixed(f64),
 }
 
-/// Reusable buffers of the coupled solve.
+/// Reusable buffers of the coupled solve (kept from solve to solve: once grown to a group's
+/// size, a solve allocates only its LU factorisations and a multibody's copies).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct CoupledScratch {
     scalars: Vec<Scalar>,
     state: Vec<State>,
+    /// [`solve_scalars`]'s buffers; its answer in `buffers.j`.
+    buffers: Buffers,
+    /// The bodies at the group's base ([`solve_coupled`]).
+    base: Vec<BodyState>,
+    /// The answer of the rigid rows alone, and rapier's normal impulse per rigid row.
+    rest: Vec<f64>,
+    rest_n: Vec<f64>,
+    /// Each soft row's first scalar row ([`build`]).
+    first: Vec<usize>,
+    /// The warm start ([`warm_start`]).
+    warm: Vec<Option<f64>>,
     /// Full coupled solves, their outer passes, those that did not settle, the rows found
     /// immobile ([`immobile`]) and the solves found degenerate ([`degenerate`]), total
     /// (`SoftCounters::coupled_*`, `immobile_rows`).
@@ -375,21 +450,19 @@ fn push_soft(bodies: &[BodyState], r: &Row, h: f64, out: &mut Vec<Scalar>) {
     if r.mu > 0.0 {
         // The friction spring (`problem::spring`).
         let (spring, target) = crate::problem::spring(r, h);
-        for s in friction_pair(bodies, (r.a, r.b), &r.p, [r.t1, r.t2], nrm, r.mu, 0.0) {
+        let first = out.len();
+        push_friction_pair(bodies, (r.a, r.b), &r.p, [r.t1, r.t2], nrm, r.mu, 0.0, out);
+        for s in &mut out[first..] {
             // `lin` is the row's tangent.
             // With a spring, its compliance bounds the impulse (the relative one would make
             // the LU's answer and the sweeps' differ, and the solve never settle).
-            let compliance = if spring > 0.0 {
+            s.compliance = if spring > 0.0 {
                 0.0
             } else {
                 SOFT_FRICTION_COMPLIANCE
             };
-            out.push(Scalar {
-                target: target.dot(&s.lin),
-                compliance,
-                spring,
-                ..s
-            });
+            s.target = target.dot(&s.lin);
+            s.spring = spring;
         }
         if r.torsion_arm > 0.0 {
             out.push(Scalar {
@@ -423,7 +496,7 @@ fn push_rigid(bodies: &[BodyState], r: &RigidRow, rest: f64, out: &mut Vec<Scala
     out.push(normal);
     if r.mu > 0.0 {
         let base = rest;
-        out.extend(friction_pair(
+        push_friction_pair(
             bodies,
             (Some(r.a), r.b),
             &r.p,
@@ -431,13 +504,17 @@ fn push_rigid(bodies: &[BodyState], r: &RigidRow, rest: f64, out: &mut Vec<Scala
             nrm,
             r.mu,
             base,
-        ));
+            out,
+        );
     }
 }
 
-/// The two tangential rows of the contact at `p` between bodies `ab` whose normal is row
-/// `normal` (pushed just before them), in the disk `mu (j_normal - base)`.
-fn friction_pair(
+/// Pushes onto `out` the two tangential rows of the contact at `p` between bodies `ab` whose
+/// normal is row `normal` (pushed just before them), in the disk `mu (j_normal - base)`.
+/// (Pushed one by one: built as an array and copied, these ~400-byte rows were 2.3 % of a
+/// sweep trial's CPU samples in `memmove`, session 21.)
+#[allow(clippy::too_many_arguments)]
+fn push_friction_pair(
     bodies: &[BodyState],
     ab: (Option<usize>, Option<usize>),
     p: &Vector3<f64>,
@@ -445,32 +522,35 @@ fn friction_pair(
     normal: usize,
     mu: f64,
     base: f64,
-) -> [Scalar; 2] {
-    [0, 1].map(|k| {
-        Scalar::point(
+    out: &mut Vec<Scalar>,
+) {
+    for (k, t) in tangents.iter().enumerate() {
+        out.push(Scalar::point(
             bodies,
             ab.0,
             ab.1,
             p,
-            &tangents[k],
+            t,
             Kind::Tangent {
                 normal,
                 other: normal + 2 - k,
                 mu,
                 base,
             },
-        )
-    })
+        ));
+    }
 }
 
 /// Solves the scalar rows from the body velocities `bodies` (left at the velocities after the
-/// impulses), returning their impulses (`None` if not finite).
+/// impulses), leaving their impulses in `buffers.j` and returning the group's impulse scale
+/// ([`impulse_bound`]; `None` if not finite).
 ///
 /// Block Gauss-Seidel, [`OUTER`] times: a dense LU of the normals (soft and hard, on their
 /// active set) and of the rigid friction pairs that stick and carry mostly soft load, the
 /// other rows held at their impulses; then [`SWEEPS`] sweeps of the friction pairs and
 /// torsions, each in closed form on its own mobility and clamped to its disk or limit. The
 /// fingertips' friction stays in the sweeps (its targets carry a kinematic tip's noise).
+#[allow(clippy::too_many_arguments)]
 fn solve_scalars(
     bodies: &mut [BodyState],
     rows: &[Scalar],
@@ -479,71 +559,100 @@ fn solve_scalars(
     state: &mut Vec<State>,
     passes: &mut usize,
     immobile_count: &mut u64,
-) -> Option<(Vec<f64>, f64)> {
+    buffers: &mut Buffers,
+) -> Option<f64> {
     let m = rows.len();
+    let Buffers {
+        j,
+        slid,
+        lu,
+        previous,
+        previous_lu,
+        pair_inv,
+        zero,
+        cache,
+    } = buffers;
+    cache.reset();
     // The rows' mutual mobility: the impulses change the bodies' velocities, never their mass,
     // inertia or centre, so it is computed once per solve (was: once per LU pass).
-    let mut mob = DMatrix::from_fn(m, m, |r, c| built_mobility(bodies, &rows[r], &rows[c]));
-    *immobile_count += immobile(bodies, rows, &mut mob);
-    let bound = impulse_bound(bodies, rows, &mob, h);
-    let pair_inv = pair_inverses(rows, &mob);
-    let mut j = vec![0.0; m];
-    start_rows(bodies, rows, warm, &mob, &mut j);
-    let mut slid = vec![false; m];
-    let mut lu: Vec<usize> = (0..m).filter(|&i| in_lu(rows, i, &j, &slid)).collect();
+    fill_mobility(bodies, rows, &mut cache.mob);
+    *immobile_count += immobile(bodies, rows, &mut cache.mob, zero);
+    let bound = impulse_bound(bodies, rows, &cache.mob, h);
+    pair_inverses(rows, &cache.mob, pair_inv);
+    j.clear();
+    j.resize(m, 0.0);
+    start_rows(bodies, rows, warm, &cache.mob, j);
+    slid.clear();
+    slid.resize(m, false);
+    lu.clear();
+    lu.extend((0..m).filter(|&i| in_lu(rows, i, j, slid)));
     state.clear();
     state.resize(m, State::Active);
-    let mut previous = j.clone();
-    let mut previous_lu = Vec::with_capacity(m);
-    let mut cache = LuCache {
-        mob,
-        ..LuCache::default()
-    };
+    previous.clone_from(j);
     *passes = OUTER + 1;
     for pass in 0..OUTER {
-        lu_pass(bodies, rows, &mut j, &lu, h, state, &mut cache)?;
+        lu_pass(bodies, rows, j, lu, h, state, cache)?;
         for _ in 0..SWEEPS {
-            sweep(bodies, rows, &cache.mob, &pair_inv, &mut j)?;
+            sweep(bodies, rows, &cache.mob, pair_inv, j)?;
         }
-        mark_slid(rows, &lu, &j, &mut slid);
-        previous_lu.clone_from(&lu);
+        mark_slid(rows, lu, j, slid);
+        previous_lu.clone_from(lu);
         lu.clear();
-        lu.extend((0..m).filter(|&i| in_lu(rows, i, &j, &slid)));
+        lu.extend((0..m).filter(|&i| in_lu(rows, i, j, slid)));
         // Converged: the same rows in the LU and no impulse moved by more than CONVERGED of the
         // largest since the last pass (`moved_within`).
-        if lu == previous_lu && moved_within(&j, &previous) {
+        if lu == previous_lu && moved_within(j, previous) {
             *passes = pass + 1;
             break;
         }
-        previous.copy_from_slice(&j);
+        previous.copy_from_slice(j);
     }
-    Some((j, bound))
+    Some(bound)
+}
+
+/// [`solve_scalars`]'s buffers, kept between solves.
+#[derive(Debug, Clone, Default)]
+struct Buffers {
+    /// The impulses (the answer, once solved).
+    j: Vec<f64>,
+    /// The friction rows that slid out of the LU for good.
+    slid: Vec<bool>,
+    /// The rows in the LU, in this pass and the previous one.
+    lu: Vec<usize>,
+    previous_lu: Vec<usize>,
+    /// The impulses after the previous pass.
+    previous: Vec<f64>,
+    /// The friction pairs' inverse mobility ([`pair_inverses`]).
+    pair_inv: Vec<Option<Matrix2<f64>>>,
+    /// The rows found immobile ([`immobile`]).
+    zero: Vec<bool>,
+    /// The LU passes' matrices and buffers.
+    cache: LuCache,
 }
 
 /// The friction pairs' inverse 2 x 2 mobility (by the pair's first row; `None` elsewhere), from
-/// the rows' mutual mobility `mob`.
-fn pair_inverses(rows: &[Scalar], mob: &DMatrix<f64>) -> Vec<Option<Matrix2<f64>>> {
-    (0..rows.len())
-        .map(|i| match rows[i].kind {
-            Kind::Tangent { other, .. } if other > i => {
-                let (x, y) = (&rows[i], &rows[other]);
-                // A fingertip's friction spring adds its compliance where the row moves.
-                let mut k = Matrix2::new(
-                    mob[(i, i)] * (1.0 + x.compliance),
-                    mob[(i, other)],
-                    mob[(other, i)],
-                    mob[(other, other)] * (1.0 + y.compliance),
-                );
-                for (d, r, s) in [(0, i, x), (1, other, y)] {
-                    if s.spring > 0.0 && mob[(r, r)] > 0.0 {
-                        k[(d, d)] += s.spring;
-                    }
+/// the rows' mutual mobility `mob`, into `out`.
+fn pair_inverses(rows: &[Scalar], mob: &DMatrix<f64>, out: &mut Vec<Option<Matrix2<f64>>>) {
+    out.clear();
+    out.extend((0..rows.len()).map(|i| match rows[i].kind {
+        Kind::Tangent { other, .. } if other > i => {
+            let (x, y) = (&rows[i], &rows[other]);
+            // A fingertip's friction spring adds its compliance where the row moves.
+            let mut k = Matrix2::new(
+                mob[(i, i)] * (1.0 + x.compliance),
+                mob[(i, other)],
+                mob[(other, i)],
+                mob[(other, other)] * (1.0 + y.compliance),
+            );
+            for (d, r, s) in [(0, i, x), (1, other, y)] {
+                if s.spring > 0.0 && mob[(r, r)] > 0.0 {
+                    k[(d, d)] += s.spring;
                 }
-                pair_inverse(&k)
             }
-            _ => None,
-        })
-        .collect()
+            pair_inverse(&k)
+        }
+        _ => None,
+    }));
 }
 
 /// Starts each row that moves at its warm start (`warm`: its impulse of the previous
@@ -732,10 +841,20 @@ pub const IMMOBILE: f64 = f32::EPSILON as f64;
 /// (`softgrip-scene/tests/gripper_on_table.rs`). An immobile row has no impulse (the body
 /// does not move along it whatever the row does); a normal that carries nothing carries no
 /// friction either.
-fn immobile(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) -> u64 {
+fn immobile(
+    bodies: &[BodyState],
+    rows: &[Scalar],
+    mob: &mut DMatrix<f64>,
+    zero: &mut Vec<bool>,
+) -> u64 {
     let m = rows.len();
-    let mut zero = vec![false; m];
+    zero.clear();
+    zero.resize(m, false);
     for (i, r) in rows.iter().enumerate() {
+        // Clear of the threshold by the bound: the decision the scale would make.
+        if scale_bound(bodies, r).is_some_and(|b| mob[(i, i)] > IMMOBILE * b * (1.0 + 1e-9)) {
+            continue;
+        }
         let scale: f64 = (0..3)
             .map(|k| {
                 let e = Vector3::ith(k, 1.0);
@@ -766,6 +885,32 @@ fn immobile(bodies: &[BodyState], rows: &[Scalar], mob: &mut DMatrix<f64>) -> u6
         mob.column_mut(i).fill(0.0);
     }
     zero.iter().filter(|z| **z).count() as u64
+}
+
+/// An upper bound of [`immobile`]'s scale of row `r` (its bodies' mobility at its point summed
+/// over three axes), `None` where a body is a multibody or jointed link: per body, the sum of
+/// `|m_k|` plus `2 |p - com|^2` times the sum of `|I_kl|` (`m` the inverse mass, `I` the
+/// inverse inertia; a torsion's: the sum of `|I_kl|`), each axis's angular part being a quadratic form of `I` on `(p - com) x e_k`,
+/// whose squares sum to `2 |p - com|^2`. Where a row's own mobility is clear of the threshold
+/// on the bound, the scale's three `mobility` products per row (4.7 % of a sweep trial's CPU
+/// samples, session 21) are not needed to decide.
+fn scale_bound(bodies: &[BodyState], r: &Scalar) -> Option<f64> {
+    let mut bound = 0.0;
+    for i in [r.a, r.b].into_iter().flatten() {
+        let b = &bodies[i];
+        if b.link.is_some() {
+            return None;
+        }
+        let inertia: f64 = b.inv_i.iter().map(|v| v.abs()).sum();
+        bound += match r.at {
+            Some(p) => {
+                b.inv_m.iter().map(|v| v.abs()).sum::<f64>()
+                    + 2.0 * (p - b.com).norm_squared() * inertia
+            }
+            None => inertia,
+        };
+    }
+    Some(bound)
 }
 
 /// Whether row `i` moves (a nonzero own mobility; an immobile row's is zeroed, [`immobile`]).
@@ -867,8 +1012,8 @@ fn inside_disk(v: &Vector2<f64>, limit: f64) -> bool {
 
 /// What the LU passes of one solve share: the rows' mutual mobility, the last factorisation
 /// with the scalar rows it is of, and the passes' buffers (a pass allocates nothing unless its
-/// set of rows changes).
-#[derive(Default)]
+/// set of rows changes; kept from solve to solve, [`LuCache::reset`] at each one's start).
+#[derive(Debug, Clone, Default)]
 struct LuCache {
     mob: DMatrix<f64>,
     rows: Vec<usize>,
@@ -932,6 +1077,13 @@ fn lu_pass(
 }
 
 impl LuCache {
+    /// Forgets the previous solve's system and factorisation (its rows are not this one's).
+    fn reset(&mut self) {
+        self.rows.clear();
+        self.lu = None;
+        self.a_rows.clear();
+    }
+
     /// The system `a` of the LU rows `lu` over a step `h`.
     fn assemble(&mut self, rows: &[Scalar], lu: &[usize], h: f64) {
         let n = lu.len();
@@ -1075,12 +1227,14 @@ pub(crate) fn solve_coupled(
     h: f64,
     scratch: &mut CoupledScratch,
 ) -> Coupled {
-    let mut first = Vec::with_capacity(soft.len());
     let scratch_degenerate_before = scratch.stats[4];
     let mut passes = 0;
-    let mut warm = Vec::new();
     // rapier's part: the rigid rows alone.
-    let base: Vec<BodyState> = bodies.to_vec();
+    let mut base = std::mem::take(&mut scratch.base);
+    base.clear();
+    base.extend_from_slice(bodies);
+    let mut first = std::mem::take(&mut scratch.first);
+    let mut warm = std::mem::take(&mut scratch.warm);
     // Warm-started only where the fingertips' friction is a spring (`problem::spring`): the
     // hard stick's solves stop at the pass cap on a drift (crate README, session 14), which a
     // warm start carries on from step to step; measured (session 19), the 1 kg box of
@@ -1093,24 +1247,43 @@ pub(crate) fn solve_coupled(
         warm: &mut warm,
         passes: &mut passes,
     };
-    let Some(rest) = stage.solve(bodies, &[], rigid, &[], 0, scratch) else {
-        bodies.clone_from_slice(&base);
-        return failure(scratch_degenerate_before, scratch.stats[4]);
-    };
+    let solved = stage.solve(bodies, &[], rigid, &[], 0, scratch).is_some();
     bodies.clone_from_slice(&base);
-    let rest_n = rest_normals(rigid, &rest);
-    // Everything.
-    let Some(j) = stage.solve(bodies, soft, rigid, &rest_n, 1, scratch) else {
-        bodies.clone_from_slice(&base);
-        return failure(scratch_degenerate_before, scratch.stats[4]);
+    let outcome = if !solved {
+        failure(scratch_degenerate_before, scratch.stats[4])
+    } else {
+        std::mem::swap(&mut scratch.rest, &mut scratch.buffers.j);
+        let mut rest_n = std::mem::take(&mut scratch.rest_n);
+        rest_normals(rigid, &scratch.rest, &mut rest_n);
+        // Everything.
+        let solved = stage
+            .solve(bodies, soft, rigid, &rest_n, 1, scratch)
+            .is_some();
+        scratch.rest_n = rest_n;
+        if !solved {
+            bodies.clone_from_slice(&base);
+            failure(scratch_degenerate_before, scratch.stats[4])
+        } else {
+            let CoupledScratch {
+                scalars,
+                stats,
+                buffers,
+                rest,
+                ..
+            } = scratch;
+            let passes = *stage.passes;
+            stats[0] += 1;
+            stats[1] += passes.min(OUTER) as u64;
+            stats[2] += u64::from(passes > OUTER);
+            write_soft(bodies, soft, stage.first, &buffers.j);
+            write_rigid(soft, rigid, &scalars[..], &buffers.j, rest, h);
+            Coupled::Solved
+        }
     };
-    let CoupledScratch { scalars, stats, .. } = scratch;
-    stats[0] += 1;
-    stats[1] += passes.min(OUTER) as u64;
-    stats[2] += u64::from(passes > OUTER);
-    write_soft(bodies, soft, &first, &j);
-    write_rigid(soft, rigid, &scalars[..], &j, &rest, h);
-    Coupled::Solved
+    scratch.base = base;
+    scratch.first = first;
+    scratch.warm = warm;
+    outcome
 }
 
 /// What the two solves of [`solve_coupled`] (the rigid rows alone, then everything) share.
@@ -1139,11 +1312,13 @@ impl Stage<'_> {
         rest_n: &[f64],
         which: usize,
         scratch: &mut CoupledScratch,
-    ) -> Option<Vec<f64>> {
+    ) -> Option<()> {
         let CoupledScratch {
             scalars,
             state,
             stats,
+            buffers,
+            ..
         } = scratch;
         build(bodies, soft, rigid, rest_n, self.h, scalars, self.first);
         // Not built at all when unused (a row past the buffer's end starts cold: `start_rows`).
@@ -1161,20 +1336,20 @@ impl Stage<'_> {
             self.passes,
             immobile,
             degenerate,
+            buffers,
         )
     }
 }
 
 /// rapier's normal impulse of each rigid row (its friction goes with it: see `Kind::Tangent`)
-/// from the solve of the rigid rows alone, `rest` (per scalar row).
-fn rest_normals(rigid: &[RigidRow], rest: &[f64]) -> Vec<f64> {
-    let mut rest_n = Vec::with_capacity(rigid.len());
+/// from the solve of the rigid rows alone, `rest` (per scalar row), into `rest_n`.
+fn rest_normals(rigid: &[RigidRow], rest: &[f64], rest_n: &mut Vec<f64>) {
+    rest_n.clear();
     let mut k = 0;
     for r in rigid.iter() {
         rest_n.push(rest[k].max(0.0));
         k += if r.mu > 0.0 { 3 } else { 1 };
     }
-    rest_n
 }
 
 /// The soft rows' impulses from the answer `j` (`first`: each soft row's first scalar) and
@@ -1264,7 +1439,8 @@ fn write_rigid(
 /// went from the plugin's impulses at up to 7.6 rad/s, which rapier's first kick-drift pass
 /// turned into jumps of ~0.1 mm along the wall before its contacts stopped it; the spring then
 /// held every jump (8 N along the wall, the box moving at 11 mm/s in the hold and thrown when
-/// the tip withdrew; `press_on_table::friction_spring_presses_a_box_against_a_wall`).
+/// the tip withdrew; `press_on_table::tip_presses_a_box_against_a_wall`, the spring being the
+/// default).
 fn pair_scales(rigid: &[RigidRow], j_rigid: &[f64], rest: &[f64]) -> Vec<f64> {
     // Each rigid row's normal (index into `j_rigid` and `rest`, which share the layout).
     let mut normals = Vec::with_capacity(rigid.len());
@@ -1308,7 +1484,8 @@ fn solve_saturating(
     passes: &mut usize,
     immobile_count: &mut u64,
     degenerate_count: &mut u64,
-) -> Option<Vec<f64>> {
+    buffers: &mut Buffers,
+) -> Option<()> {
     let links = rows
         .iter()
         .flat_map(|r| [r.a, r.b])
@@ -1331,10 +1508,11 @@ fn solve_saturating(
         let mut immobile = 0;
         u0.clear();
         u0.extend(rows.iter().map(|r| r.velocity_parts(bodies)));
-        let (j, bound) = solve_scalars(bodies, rows, warm, h, state, passes, &mut immobile)?;
+        let bound = solve_scalars(bodies, rows, warm, h, state, passes, &mut immobile, buffers)?;
+        let j = &buffers.j;
         if links {
             wrenches.iter_mut().for_each(|w| *w = Vector6::zeros());
-            for (r, &ji) in rows.iter().zip(&j) {
+            for (r, &ji) in rows.iter().zip(j) {
                 for (i, s, ang) in [(r.a, 1.0, r.ang_a), (r.b, -1.0, r.ang_b)] {
                     if let Some(i) = i.filter(|&i| bodies[i].link.is_some()) {
                         let (l, a) = (r.lin * (s * ji), ang * (s * ji));
@@ -1353,14 +1531,14 @@ fn solve_saturating(
         } else {
             0.0
         };
-        if degenerate(&j, bound)
+        if degenerate(j, bound)
             || locked > LOCKED_FACTOR * bound
             || speed_ratio(bodies, rows, &u0, h) > SPEED_FACTOR
         {
             *degenerate_count += 1;
             return None;
         }
-        return Some(j);
+        return Some(());
     }
 }
 

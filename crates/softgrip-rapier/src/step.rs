@@ -51,8 +51,10 @@ use crate::problem::{self, RigidKey, RigidRow, Row, Warm};
 use crate::readout;
 use crate::step_error::{Phase, StepError, Subject};
 use crate::substep;
+use memo::Plan;
 use onset::update_blend;
 
+pub(crate) mod memo;
 mod onset;
 mod split;
 mod wake;
@@ -245,6 +247,18 @@ impl Step<'_> {
             self.soft.started = true;
         }
         self.soft.counters.steps += 1;
+        // The resting fast path (`memo`): a step whose inputs equal the last step's.
+        let substeps_before = self.soft.counters.substeps_last;
+        let held_before = self.soft.counters.held_tips;
+        let plan = self
+            .soft
+            .rest
+            .begin(self.physics, &self.soft.counters, &self.soft.pairs);
+        if let Plan::Replay(slot) = plan {
+            self.replay(slot, dt);
+            return Ok(());
+        }
+        self.soft.materialize_rest();
 
         // Kinematic paths.
         let kinematic = kinematic::kinematic_paths(&self.physics.bodies);
@@ -302,9 +316,58 @@ impl Step<'_> {
             &mut self.soft.contacts,
         );
         lap.lap(&mut self.soft.counters.readout_time);
+        let eligible = n == 1
+            && kinematic.is_empty()
+            && self.physics.impulse_joints.is_empty()
+            && self.physics.multibody_joints.iter().next().is_none()
+            && scratch.rigid.is_empty()
+            && !scratch.rigid_read
+            && scratch.link_forces.is_empty()
+            && self.soft.counters.held_tips == held_before;
+        self.soft.rest.note_full(eligible);
+        if plan == Plan::Record {
+            let soft = &mut *self.soft;
+            soft.rest.finish(
+                eligible,
+                substeps_before,
+                &soft.counters,
+                &soft.pairs,
+                &soft.contacts,
+                &soft.geoms,
+                &scratch.unsplit_carry,
+                scratch.stamp,
+            );
+        }
         self.soft.scratch = scratch;
         self.soft.update_tactile(&self.physics.colliders);
         Ok(())
+    }
+
+    /// Replays the recorded step of `slot` (`memo`): its wakes and velocity sets through the
+    /// same calls in the same order, its counts, then rapier's pipeline of `dt` \[s\], as the
+    /// full unsplit step does. The plugin's state it ended with (the contacts' memory,
+    /// readout, geometry and unsplit carry) stays in the slot, read from there
+    /// (`SoftContacts::contacts`) until a full step or a setting moves it back
+    /// (`SoftContacts::materialize_rest`).
+    fn replay(&mut self, slot: usize, dt: f64) {
+        let soft = &mut *self.soft;
+        let (writes, before, after) = soft.rest.replay(slot);
+        for &h in &writes.wakes {
+            if let Some(rb) = self.physics.bodies.get_mut(h) {
+                rb.wake_up(true);
+            }
+        }
+        for &(h, v, w) in &writes.sets {
+            if let Some(rb) = self.physics.bodies.get_mut(h) {
+                rb.set_linvel(v, false);
+                rb.set_angvel(w, false);
+            }
+        }
+        soft.counters.add_increments(before, after);
+        soft.counters.replayed_steps += 1;
+        soft.scratch.split_lag.forget();
+        self.pipeline_step(dt);
+        self.soft.update_tactile(&self.physics.colliders);
     }
 
     /// `n` substeps of `h` \[s\]: fresh contacts (the first substep's are the prepared ones),
@@ -448,6 +511,7 @@ impl Step<'_> {
         s: &mut Scratch,
     ) {
         s.rigid.clear();
+        s.rigid_read = false;
         if s.rows.is_empty() {
             return;
         }
@@ -482,6 +546,8 @@ impl Step<'_> {
                     continue;
                 }
                 for pair in w.narrow_phase.contact_pairs_with(ch) {
+                    // rapier's narrow phase is read (not in the resting fast path's inputs).
+                    s.rigid_read = true;
                     let (c1, c2) = (pair.collider1, pair.collider2);
                     if self.soft.tips.contains_key(&c1)
                         || self.soft.tips.contains_key(&c2)
@@ -653,6 +719,7 @@ impl Step<'_> {
             &s.rigid,
             &mut self.soft.counters,
             &mut s.net,
+            self.soft.rest.log().map(|w| &mut w.sets),
         );
         // The rigid rows' warm start of the next (sub)step: those the coupled solve answered.
         s.rigid_warm.clear();

@@ -264,6 +264,7 @@ fn two_hands_lift_and_hold_one_box() {
     let k_t = 8.0 * g_star * h.law.patch(squeeze).radius;
     let a_end = lift_end_deceleration(0.05, 1.0);
     let mindlin = 0.2 * a_end / (4.0 * k_t);
+    println!("two hands, 200 g box lifted 5 cm, held 2 s: {m:?}");
     println!(
         "two hands: hold drift {:.4e} m, Mindlin m a / (4 k_t) {mindlin:.4e} m ({:+.2} %; k_t \
          {k_t:.1} N/m, the last step's deceleration {a_end:.4} m/s^2), law {:.3e}",

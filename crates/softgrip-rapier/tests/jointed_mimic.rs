@@ -70,10 +70,63 @@ fn multibody_mimic_jaws_settle_with_converged_pgs() {
         "the coupling is {} m off",
         m.mimic_error
     );
+    // NOT still (issue 23 item 4 asks < 1 um/s): rapier's soft table contact against the
+    // plugin's hard table rows ([`mimic_jaws_hold_the_box_still_on_a_stiff_table`], where it
+    // is). Bounded at what it does (session 21): up to 1.37e-3 m/s from the poses, 19.2 um from
+    // the pose at step 200.
+    assert!(m.speed_hold < 2e-3, "speed {} m/s", m.speed_hold);
+    assert!(m.drift_hold < 3e-5, "drift {} m", m.drift_hold);
     // Bounded at what it does: 1.8e-3 off the law at the geometry's compression (2.96e-2,
     // then 2.2e-2, before session 20), not yet understood (the single prismatic jaw is 1.5e-5 off; the contact's own compression is
     // the law's, the box's pose against the pads' centres is not).
     assert!(m.worst < 0.04, "{}", m.worst);
+}
+
+/// Issue 23 item 4 ("nothing rattles, nothing drifts"): why the box squeezed by the mimic jaws
+/// of [`multibody_mimic_jaws_settle_with_converged_pgs`] still moves 13-16 um from step to step
+/// (session 21). Not the plugin's rows alone, not the split step's gravity (session 20), not a
+/// period-2 ringing (the heights wander: -11.5..-22.7 um below the box's rest): rapier's own
+/// table contact is a spring (`static_contact_softness`, 60 Hz with damping ratio 10: the box
+/// alone rests 69 um deep in it) that rapier solves pass by pass, while the plugin's coupled
+/// solve takes the table as hard rows and applies the pads' share of the box's weight (70-90 %)
+/// as one impulse before rapier's passes: in the first passes the box rises before the table
+/// lets go of it, the stick's (or the spring's) next correction pulls it back, and the two
+/// position references (the pads' anchors, the table's soft contact) hand the box between them
+/// (per-substep trace, session 21: rapier's table impulse 8.6e-5..1.6e-4 N s a substep against
+/// the weight's 1.3e-4, the pads' vertical impulse -6e-5..+4.4e-5 N s). With the table's
+/// contact stiff (1000 Hz) the same jaws, box and plugin hold the box still with either
+/// friction: this test. With rapier's default table, NOT fixed (the squeezed box moves up to
+/// 14.8 um a step with the rigid stick, 16.4 um with the spring, whose pads then differ
+/// 5.6e-3; see `SPRING_DEFAULT_STATUS.md`, 20).
+// Measured (`-- --nocapture`, session 21; spring / rigid stick): speed from the poses 4.1e-8 /
+// 5.4e-8 m/s, drift over the last 40 steps 0.024 / 0.033 um, height step to step < 1 nm, pads
+// differ 8.0e-6 / 5.8e-6 (the default table: 5.6e-3 / 6.8e-5).
+#[test]
+fn mimic_jaws_hold_the_box_still_on_a_stiff_table() {
+    for spring in [true, false] {
+        let m = mimic_jaws_with(64, spring, false, Some(1000.0));
+        let name = if spring {
+            "friction spring"
+        } else {
+            "rigid stick"
+        };
+        assert!(
+            m.forces[0] > 5.0 && m.forces[0] < 6.0,
+            "{name}: {:?}",
+            m.forces
+        );
+        // Issue 23 item 4's bound: still, < 1 um/s, and no drift (< 1 um) over the last 40
+        // steps.
+        assert!(m.speed_hold < 1e-6, "{name}: speed {} m/s", m.speed_hold);
+        assert!(m.drift_hold < 1e-6, "{name}: drift {} m", m.drift_hold);
+        assert!(m.balance < 1e-4, "{name}: pads differ {}", m.balance);
+        assert!(
+            m.effort_error < 1e-4,
+            "{name}: motor vs J^T F {}",
+            m.effort_error
+        );
+        assert!(m.mimic_error < 1e-8, "{name}: coupling {} m", m.mimic_error);
+    }
 }
 
 /// Issue 23 ("nothing rattles, nothing drifts"): a box resting on rapier's table, pressed 1 mm
@@ -89,7 +142,7 @@ fn multibody_mimic_jaws_settle_with_converged_pgs() {
 // over the last 40 steps (before: 0.01635 m/s, 0.105 um).
 #[test]
 fn a_pressed_box_on_the_table_leaves_split_steps_at_rest() {
-    let m = mimic_jaws_with(64, false, true);
+    let m = mimic_jaws_with(64, false, true, None);
     let (vy, rattle, lead_in) = m.pressed.unwrap();
     println!(
         "pressed box: stored |v_y| <= {vy:.2e} m/s (lead-in {lead_in:.5} m/s), height step to \
@@ -117,6 +170,12 @@ struct Mimic {
     max_substeps_hold: u32,
     /// `|q_right + q_left|` \[m\].
     mimic_error: f64,
+    /// The squeezed box's largest speed over the last 40 steps, from its poses (translation
+    /// plus rotation at its corners, per step) \[m/s\].
+    speed_hold: f64,
+    /// The squeezed box's largest displacement over the last 40 steps from its pose at their
+    /// start (translation plus rotation at its corners) \[m\].
+    drift_hold: f64,
     /// With a pressed box ([`mimic_jaws_with`]): its largest `|v_y|` at a step's end over the
     /// last 40 steps \[m/s\], its largest change of height from one step to the next over them
     /// \[m\], and the least split step's gravity lead-in `g (dt - h) / (2N)` \[m/s\].
@@ -125,16 +184,26 @@ struct Mimic {
 
 /// The mimic-coupled jaws squeezing the box for 240 steps at `pgs` PGS iterations.
 fn mimic_jaws(pgs: usize) -> Mimic {
-    mimic_jaws_with(pgs, false, false)
+    mimic_jaws_with(pgs, false, false, None)
 }
 
 /// [`mimic_jaws`] with the friction as Mindlin's tangential spring (`spring`) or the rigid
 /// stick; with `press`, a second box on the table 10 cm away, pressed 1 mm from above by a
 /// fingertip on a kinematic body (lowered over the first 60 steps, then held): the jaws' motor
-/// splits every step of the world, the pressed box's too.
-fn mimic_jaws_with(pgs: usize, spring: bool, press: bool) -> Mimic {
+/// splits every step of the world, the pressed box's too. `table_hz`: rapier's contacts with
+/// a fixed body (the table) at that natural frequency \[Hz\]
+/// (`IntegrationParameters::static_contact_softness`; rapier's default 60 Hz, damping ratio
+/// 10).
+fn mimic_jaws_with(pgs: usize, spring: bool, press: bool, table_hz: Option<f32>) -> Mimic {
     let (mut world, box_body, box_col) = table_and_box(pgs, 0.0);
     world.soft.set_friction_spring(spring);
+    if let Some(hz) = table_hz {
+        world
+            .physics
+            .integration_parameters
+            .static_contact_softness
+            .natural_frequency = hz;
+    }
     let pressed = press.then(|| {
         let b = world.physics.bodies.insert(
             RigidBodyBuilder::dynamic()
@@ -222,6 +291,12 @@ fn mimic_jaws_with(pgs: usize, spring: bool, press: bool) -> Mimic {
     // one step to the next [m] over the last 40 steps (printed).
     let (mut box_vy, mut box_rattle) = (0.0f64, 0.0f64);
     let mut y_prev = 0.0f64;
+    // The squeezed box's largest speed from its poses (translation plus rotation at its
+    // corners, per step) and its largest displacement from its pose at step 200, over the
+    // last 40 steps [m/s, m].
+    let (mut speed_hold, mut drift_hold) = (0.0f64, 0.0f64);
+    let mut pose_prev = *world.physics.bodies[box_body].position();
+    let mut pose_200 = pose_prev;
     for i in 0..240 {
         if let Some((_, tip_body, top)) = pressed {
             let y = top + 0.0005 - 0.0015 * ((i + 1) as f32 / 60.0).min(1.0);
@@ -251,6 +326,23 @@ fn mimic_jaws_with(pgs: usize, spring: bool, press: bool) -> Mimic {
             box_rattle = box_rattle.max((y - y_prev).abs());
         }
         y_prev = y;
+        let pose = *rb.position();
+        let moved = |from: &Pose| {
+            (pose.translation - from.translation).length() as f64
+                + HALF as f64
+                    * (pose.rotation * from.rotation.inverse())
+                        .to_axis_angle()
+                        .1
+                        .abs() as f64
+        };
+        if i == 200 {
+            pose_200 = pose;
+        }
+        if i > 200 {
+            speed_hold = speed_hold.max(moved(&pose_prev) / dt);
+            drift_hold = drift_hold.max(moved(&pose_200));
+        }
+        pose_prev = pose;
     }
     let p = &world.physics;
     let rb = &p.bodies[box_body];
@@ -296,9 +388,11 @@ fn mimic_jaws_with(pgs: usize, spring: bool, press: bool) -> Mimic {
          {worst:.2e}, pads differ {balance:.2e}, motor {effort:.4} N vs J^T F {:.4} N \
          ({effort_error:.2e}), substeps in the hold <= {max_substeps_hold}, coupling off by \
          {mimic_error:.2e} m; box's stored |v_y| <= {box_vy:.2e} m/s, height step to step \
-         <= {:.3} um",
+         <= {:.3} um, speed from the poses <= {speed_hold:.3e} m/s, drift from step 200 <= \
+         {:.3} um",
         -generalised,
-        box_rattle * 1e6
+        box_rattle * 1e6,
+        drift_hold * 1e6
     );
     Mimic {
         forces,
@@ -307,6 +401,8 @@ fn mimic_jaws_with(pgs: usize, spring: bool, press: bool) -> Mimic {
         effort_error,
         max_substeps_hold,
         mimic_error,
+        speed_hold,
+        drift_hold,
         pressed: pressed.map(|_| (pressed_vy, pressed_rattle, lead_in)),
     }
 }

@@ -120,6 +120,9 @@ struct Measured {
     /// Largest displacement of a box over the hold, from its position at the hold's start
     /// (the drift) \[m\].
     drift_hold: f64,
+    /// Largest displacement of a box over the hold's second half, from its position at the
+    /// hold's middle (a drift that goes on once the first half has settled) \[m\].
+    drift_late: f64,
 }
 
 /// Drives the tip `depth` \[m\] into the top box at 10 mm/s, holds it for `hold` steps (the
@@ -147,8 +150,10 @@ fn press(p: &mut Press, depth: f64, hold: usize) -> Measured {
         speed: 0.0,
         speed_hold: 0.0,
         drift_hold: 0.0,
+        drift_late: 0.0,
     };
     let mut hold0 = box0.clone();
+    let mut mid = box0.clone();
     let steps_in = (travel / (0.01 * dt)).ceil() as usize;
     let total = 2 * steps_in + hold;
     for i in 0..total {
@@ -159,12 +164,13 @@ fn press(p: &mut Press, depth: f64, hold: usize) -> Measured {
         };
         p.world.physics.bodies[p.tip_body].set_next_kinematic_translation(start + p.dir * s as f32);
         p.world.step();
-        for ((((b, _), b0), prev), h0) in p
+        for (((((b, _), b0), prev), h0), m0) in p
             .boxes
             .iter()
             .zip(&box0)
             .zip(last.iter_mut())
             .zip(hold0.iter_mut())
+            .zip(mid.iter_mut())
         {
             let rb = &p.world.physics.bodies[*b];
             let d = (rb.translation() - *b0).length() as f64;
@@ -184,6 +190,12 @@ fn press(p: &mut Press, depth: f64, hold: usize) -> Measured {
             }
             if i >= steps_in && i < steps_in + hold {
                 m.drift_hold = m.drift_hold.max((pose.translation - *h0).length() as f64);
+            }
+            if i == steps_in + hold / 2 {
+                *m0 = pose.translation;
+            }
+            if i > steps_in + hold / 2 && i < steps_in + hold {
+                m.drift_late = m.drift_late.max((pose.translation - *m0).length() as f64);
             }
             assert!(d.is_finite() && v.is_finite(), "step {i}: {d} {v}");
             m.moved = m.moved.max(d);
@@ -286,13 +298,16 @@ fn tip_presses_a_stack_of_three_boxes() {
         // Measured (free / flat): worst 9.9e-6 / 1.1e-5, 54.5 / 70.2 N, moved 97 um, speed
         // 0.57 mm/s at most (on contact), 0.70 / 0.78 um/s in the hold's second half; over the
         // hold the top box sinks 19 um, in its first half: rapier's stacked contacts settle
-        // under the press (two boxes: 3.8 um).
+        // under the press (two boxes: 3.8 um). Session 21, the spring default: 0.81 / 0.80
+        // um/s in the hold's second half, 0.12 / 0.13 um over it (the drift that goes on once
+        // the first half has settled; bound 0.5 um).
         assert!(m.worst < 2e-5, "{backing:?}: {m:?}");
         assert!(m.force > 40.0, "{backing:?}: {m:?}");
         assert!(m.moved < 2e-4, "{backing:?}: {m:?}");
         assert!(m.speed < 1e-3, "{backing:?}: {m:?}");
         assert!(m.speed_hold < 1e-6, "{backing:?}: {m:?}");
         assert!(m.drift_hold < 4e-5, "{backing:?}: {m:?}");
+        assert!(m.drift_late < 5e-7, "{backing:?}: {m:?}");
     }
 }
 
@@ -301,8 +316,21 @@ fn tip_presses_a_stack_of_three_boxes() {
 /// (`src/rigid.rs`, `Scalar::prox`), the least-impulse answer let the wall's friction carry
 /// part of the weight rapier carries on the table anyway: the box rattled at ~1.4 cm/s (its
 /// centre moved by up to 0.32 mm) and the force was 0.56 % off the law.
-// Measured (`-- --nocapture`): worst 8.1e-5, 60.69 N, moved 0.22 mm (the approach: the box
-// slides until it meets the wall), 1.4 cm/s at most (then), 2.0e-7 m/s in the hold.
+///
+/// With the default friction (Mindlin's tangential spring since session 19), issue 23 item 4's
+/// bounds: the force within 0.1 % of the law over the hold, the box still (< 1 um/s over the
+/// hold's second half) and not drifting (< 1 um over the hold, < 0.1 um over its second
+/// half); along the wall the tip carries less than the box's weight. The rigid stick keeps
+/// the bounds set for it: [`rigid_stick_presses_a_box_against_a_wall`]. Before rapier's part
+/// of the table's normal impulses was split per pair of bodies (`rigid::pair_scales`), the
+/// spring's run left the box spinning at up to 7.6 rad/s for rapier to stop, the spring held
+/// each jump that made (8.3 N along the wall), the box moved at 11 mm/s in the hold and was
+/// thrown when the tip withdrew (66 mm, 1.4 m/s). (This was
+/// `friction_spring_presses_a_box_against_a_wall` until the spring became the default: the
+/// same run.)
+// Measured (`-- --nocapture`, session 21, the spring default): worst 3.1e-6, 59.76 N,
+// friction 0.0115 N, moved 8.8 um, 1.7 mm/s at most (the approach), 1.2e-8 m/s in the hold's
+// second half, drift 0.57 um over the hold (its first steps), 2.1e-9 m over its second half.
 #[test]
 fn tip_presses_a_box_against_a_wall() {
     let mut p = scene(1, true, Backing::Free);
@@ -310,34 +338,29 @@ fn tip_presses_a_box_against_a_wall() {
     println!("free tip, box against a wall, 2 mm: {m:?}");
     assert!(m.worst < 1e-3, "{m:?}");
     assert!(m.force > 50.0, "{m:?}");
+    assert!(m.moved < 5e-5, "{m:?}");
+    assert!(m.speed < 5e-3, "{m:?}");
+    // Issue 23's bound is 1 um/s; the spring's run has held 1e-7 since session 19.
+    assert!(m.speed_hold < 1e-7, "{m:?}");
+    assert!(m.drift_hold < 1e-6, "{m:?}");
+    assert!(m.drift_late < 1e-7, "{m:?}");
+    let weight = (2.0 * HALF as f64).powi(3) * DENSITY as f64 * 9.81;
+    assert!(m.friction < weight, "{m:?} (weight {weight} N)");
+}
+
+/// [`tip_presses_a_box_against_a_wall`] with the rigid stick (`set_friction_spring(false)`,
+/// the default before session 19), at the bounds set for it.
+// Measured (session 14): worst 8.1e-5, 60.69 N, moved 0.22 mm (the approach: the box slides
+// until it meets the wall), 1.4 cm/s at most (then), 2.0e-7 m/s in the hold.
+#[test]
+fn rigid_stick_presses_a_box_against_a_wall() {
+    let mut p = scene(1, true, Backing::Free);
+    p.world.soft.set_friction_spring(false);
+    let m = press(&mut p, 0.002, 120);
+    println!("free tip, rigid stick, box against a wall, 2 mm: {m:?}");
+    assert!(m.worst < 1e-3, "{m:?}");
+    assert!(m.force > 50.0, "{m:?}");
     assert!(m.moved < 5e-4, "{m:?}");
     assert!(m.speed < 0.02, "{m:?}");
     assert!(m.speed_hold < 1e-6, "{m:?}");
-}
-
-/// The box pressed against the wall with static friction as Mindlin's tangential spring
-/// (`SoftContacts::set_friction_spring`): the same bands as the hard stick's (force within
-/// 0.1 % of the law, still in the hold) and more. Before rapier's part of the table's
-/// normal impulses was split per pair of bodies (`rigid::pair_scales`), the plugin's impulses
-/// left the box spinning at up to 7.6 rad/s for rapier to stop, the spring held each jump
-/// that made (8.3 N along the wall), the box moved at 11 mm/s in the hold and was thrown when
-/// the tip withdrew (66 mm, 1.4 m/s).
-// Measured (`-- --nocapture`): worst 3.5e-6, 59.76 N, friction 0.025 N, moved 9.1 um, speed
-// 1.8 mm/s at most (the approach), 5.7e-9 m/s in the hold.
-#[test]
-fn friction_spring_presses_a_box_against_a_wall() {
-    let mut p = scene(1, true, Backing::Free);
-    p.world.soft.set_friction_spring(true);
-    let m = press(&mut p, 0.002, 120);
-    println!("free tip, friction spring, box against a wall, 2 mm: {m:?}");
-    assert!(m.worst < 1e-3, "{m:?}");
-    assert!(m.force > 50.0, "{m:?}");
-    assert!(m.moved < 5e-5, "{m:?}");
-    assert!(m.speed < 5e-3, "{m:?}");
-    assert!(m.speed_hold < 1e-7, "{m:?}");
-    assert!(m.drift_hold < 1e-6, "{m:?}");
-    // Along the wall the tip carries at most the box's weight (4 g: 0.039 N); a stretch locked
-    // in by rapier's jumps carried 8.3 N.
-    let weight = (2.0 * HALF as f64).powi(3) * DENSITY as f64 * 9.81;
-    assert!(m.friction < weight, "{m:?} (weight {weight} N)");
 }

@@ -488,6 +488,14 @@ fn hand_descent(depth: f64, box_away: bool) -> Down {
 /// rule reads only normal quantities, so the spring moves it through the trajectory alone.
 /// With the grasp's re-close after the squeeze (`control/grasp.rs`, `keep_force`): 7869
 /// substeps (debug), pads at most 1034 N, held 35.4 / 2.1 / 1.2 N, 2446 degenerate solves.
+///
+/// Session 21, the spring default landed on main with session 20's split-step gravity
+/// give-back (`bodies::SplitLag`) under it: 10 920 substeps (bit for bit in debug and release;
+/// none at the cap), links at most 0.51 m/s, pads at most 57.8 N, held 31.9 / 4.7 / 0.9 N,
+/// 2347 degenerate solves, 536 evaluations past a wall. The 7869 above was measured on the
+/// spring branch before the give-back fix merged; this is the cost of the run as it is, the
+/// bound a regression of 10 % over it (the cap count stays the check that no step is
+/// unbounded).
 #[test]
 fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.02, false);
@@ -497,7 +505,7 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     assert!(d.pad_force < 2000.0, "{d:?}: pad force");
     assert!(d.table_force < 2e5, "{d:?}: table force");
     assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
-    assert!(d.substeps < 9000, "{d:?}: substeps (7911 measured)");
+    assert!(d.substeps < 12_000, "{d:?}: substeps (10 920 measured)");
     assert!(d.past_wall > 0, "{d:?}: no pad was driven past its wall");
 }
 

@@ -12,6 +12,7 @@ pub(crate) mod neo_hookean;
 pub(crate) mod nh_table;
 pub(crate) mod tabulated;
 pub(crate) mod tatara;
+pub(crate) mod thin_layer;
 
 pub(crate) use crate::normalised::NormalisedLaw;
 pub(crate) use hertz::{hertz, scale_by_chi};

@@ -28,7 +28,8 @@ impl Step<'_> {
                     continue;
                 };
                 let r = tip.fingertip.radius();
-                bodies::wake_touched(&mut self.physics.bodies, g, r, gravity, dt, &mut woken);
+                let log = self.soft.rest.log().map(|w| &mut w.wakes);
+                bodies::wake_touched(&mut self.physics.bodies, g, r, gravity, dt, &mut woken, log);
             }
             self.soft.counters.woken += woken.len() as u64;
             // The woken bodies' held fingertips: their contacts join the list, and the next
