@@ -743,7 +743,8 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// takes as many (310-469 a step over steps 128-130).
 ///
 /// Session 22 (release, first run on the base of sessions 20-21's changes; session 22's own
-/// change does not touch it: no group diverges, `group_diverged` 0): pads at most 86 N, links
+/// change does not touch it: no group diverges, `group_diverged` 0, and the base e136d89
+/// gives the same figures): pads at most 86 N, links
 /// at most 3.25 m/s, 392 N from the table, 2144 substeps, none at the cap, 80 degenerate
 /// solves, every bound met but the hold's: the pads end it at 9.05 / 4.24 / 4.82 N against
 /// 10 N (the grasp's own force is 2 N; the box 0.07 mm from its start). Which change since
