@@ -145,6 +145,9 @@ pub struct SoftContacts {
     pub(crate) counters: SoftCounters,
     pub(crate) accuracy: SoftAccuracy,
     pub(crate) geoms: Vec<Geom>,
+    /// Each contact's gap and normal velocity at the start of the last step
+    /// (`step::split`'s approach check for links of jointed bodies).
+    pub(crate) gaps: FastMap<(ColliderHandle, ColliderHandle), crate::step::GapMemory>,
     /// The step's buffers, boxed: a step takes them out and puts them back, which moved the
     /// whole struct twice and built and dropped a default one every step unboxed (`None` only
     /// while a step holds them, or after a step that panicked).
@@ -186,6 +189,7 @@ impl Default for SoftContacts {
             counters: Default::default(),
             accuracy: Default::default(),
             geoms: Default::default(),
+            gaps: Default::default(),
             scratch: Some(Box::default()),
             fault: None,
             time: 0.0,

@@ -55,6 +55,14 @@ pub struct SoftCounters {
     pub group_passes: u64,
     /// Group solves that used every pass allowed (256) without settling, total.
     pub group_unsettled: u64,
+    /// Group solves whose outer passes diverged (their largest normal impulse grew past 1000
+    /// times the larger of the first pass's and the group's impulse scale: a wedge of rows past
+    /// their law's wall locked by friction, where each pass's normals answer the friction of
+    /// the last), total. Such a group is answered by its normals solved exactly without
+    /// friction, then friction within those normals' Coulomb disks, not fed back (`solve.rs`,
+    /// `solve_group`). Not an error; before session 22 the passes went on and a pad of the
+    /// three-finger hand driven into the table read 1.9e38 N (issue 25).
+    pub group_diverged: u64,
     /// Rows of coupled solves (rapier's contacts in them, and soft rows) along which their
     /// bodies cannot move (mobility below `f32::EPSILON` of the bodies' at that point: a
     /// prismatic finger's vertical on a table), solved as immobile (no impulse), total. Not an
@@ -164,6 +172,7 @@ impl SoftCounters {
             group_solves,
             group_passes,
             group_unsettled,
+            group_diverged,
             immobile_rows,
             locked_link_contacts,
             jointed_free,

@@ -195,6 +195,18 @@ pub(crate) fn check_impulses(
         if !j.is_finite() {
             return Err(at.diverged(contact(i), Quantity::ContactImpulse, j, f64::MAX));
         }
+        // The solve's own prediction of the contact's end normal velocity: a multibody or
+        // jointed link takes only the joint-space part of its load (`multibody::project_net`),
+        // so its body's velocity below can stay small under an absurd answer (issue 25: pads
+        // at 1.9e38 N predicting 1e28 m/s while the links moved at 0.06 m/s).
+        if !within(row.vn_end, MAX_LINEAR_SPEED) {
+            return Err(at.diverged(
+                contact(i),
+                Quantity::ContactVelocity,
+                row.vn_end,
+                MAX_LINEAR_SPEED,
+            ));
+        }
     }
     for &h in touched {
         if let Some(rb) = bodies.get(h) {

@@ -353,8 +353,9 @@ struct GroupWork {
 struct GroupScratch {
     /// Each row's normal, tangential and torsional-over-arm impulses after the previous pass.
     previous: Vec<[f64; 5]>,
-    /// Group solves, their outer passes, and those that used every pass allowed.
-    stats: [u64; 3],
+    /// Group solves, their outer passes, those that used every pass allowed, and those whose
+    /// passes diverged (answered without the friction fed back, [`solve_group`]).
+    stats: [u64; 4],
     /// The normal solve's system ([`solve_normal`]).
     normal: NormalSystem,
 }
@@ -368,7 +369,7 @@ impl SolveScratch {
 
     /// Solves of soft groups of two or more rows on a dynamic body without rigid supports
     /// ([`solve_group`]), their outer passes, and those that used every pass allowed, total.
-    pub(crate) fn group_stats(&self) -> [u64; 3] {
+    pub(crate) fn group_stats(&self) -> [u64; 4] {
         self.work.group_solve.stats
     }
 
@@ -791,9 +792,57 @@ fn solve_group_saturating(
     }
 }
 
+/// How far a group's largest normal impulse may grow over its outer passes, past the larger
+/// of its first pass's and its impulse scale ([`group_scale`]), before the passes are taken as
+/// diverging ([`solve_group`]). The alternation of the normals' exact solve and the friction
+/// sweeps is a fixed-point iteration; where rigid rows (past their law's wall,
+/// `step::rigid_past_wall`: `h D w` about 1e13) form a wedge that friction locks, each rigid
+/// row answers the tangential velocity its neighbour's friction leaves along its normal with the
+/// impulse that cancels it, and the loop's gain passes 1. Measured (the three-finger hand's
+/// pads pressing each other driven 40 mm into the table, issue 25, step 102): a pad squeezed
+/// between the two others' pads, both rows past their walls and both at their Coulomb limit,
+/// grew 1.61 times a pass from 57 N s at pass 12 to 1e51 N s at the pass cap; the motors'
+/// saturation then re-solved from that answer and settled at 3e36 N s, the pads read 1.9e38 N
+/// and their predicted end velocities 1e28 m/s. A converging group moves its impulses by less
+/// than a factor 2 over its passes (the shipped scenes' groups: GROUP_CONVERGED's contraction).
+const DIVERGED_FACTOR: f64 = 1000.0;
+
+/// The impulse scale of a soft group \[N s\]: per row, the impulse that stops its normal
+/// velocity alone (`|v0| / w_ii`, `w_ii` its own mobility) plus its law's impulse over the step
+/// `h F`, divided for a row past its wall by its implicit reach `1 + h D w_ii` (the coupled
+/// solve's `rigid::impulse_bound` for soft rows).
+fn group_scale(bodies: &[BodyState], rows: &[Row], h: f64) -> f64 {
+    let mut sum = 0.0;
+    for r in rows {
+        let w = pair_mobility(bodies, r, &r.n, r, &r.n);
+        if w > 0.0 {
+            sum += normal_velocity(bodies, r).abs() / w;
+        }
+        let reach = if r.past_wall {
+            1.0 + h * (r.theta * r.stiffness * h + r.damping) * w.max(0.0)
+        } else {
+            1.0
+        };
+        sum += h * r.force.abs() / reach;
+    }
+    sum
+}
+
+/// The largest normal impulse of `rows` \[N s\].
+fn largest_normal(rows: &[Row]) -> f64 {
+    rows.iter().fold(0.0f64, |a, r| a.max(r.jn))
+}
+
 /// Solves one independent group of rows (see [`solve`]); `bound` sizes the active-set loop
 /// (the total number of rows, as in the all-rows solve). Returns false if the normal system
 /// was not finite (the group's impulses are then zero and its bodies restored).
+///
+/// Where its outer passes diverge (the largest normal impulse past [`DIVERGED_FACTOR`] times
+/// the larger of the first pass's and [`group_scale`]: a friction-locked wedge of rigid rows),
+/// the group is answered by one pass from no friction: the normals' exact solve without
+/// friction (an LCP of `I + h D W`, a P-matrix: one bounded answer), then the friction sweeps
+/// within those normals' Coulomb disks, not fed back into the normals (what [`solve_single`]
+/// does for a lone contact). Counted in the third of `scratch.diverged`'s counts.
 fn solve_group(
     bodies: &mut [BodyState],
     base: &[BodyState],
@@ -818,9 +867,16 @@ fn solve_group(
     scratch.normal.built = false;
     let reuse = !(rows.iter().flat_map(|r| [r.a, r.b]).flatten()).any(|i| bodies[i].link.is_some());
     let mut passes = 0;
+    // The divergence check's reference (`DIVERGED_FACTOR`): the group's scale, raised to the
+    // first pass's largest normal impulse.
+    let mut reference = 0.0;
+    let mut diverged = false;
     for pass in 0..outer {
         passes = pass + 1;
         restore(bodies, base, rows);
+        if pass == 0 && any_dynamic {
+            reference = group_scale(bodies, rows, h);
+        }
         for r in rows.iter() {
             apply_linear(bodies, r, &r.jt);
             apply_torque(bodies, r, r.jtw);
@@ -845,14 +901,25 @@ fn solve_group(
         for _ in 0..FRICTION_SWEEPS {
             friction_sweep(bodies, rows, h);
         }
+        let largest = largest_normal(rows);
+        if pass == 0 {
+            reference = reference.max(largest);
+        } else if !(largest <= DIVERGED_FACTOR * reference) {
+            diverged = true;
+            break;
+        }
         if settled(rows, &mut scratch.previous, pass) {
             break;
         }
     }
+    if diverged {
+        ok = frictionless_then_friction(bodies, base, rows, h, bound, &mut scratch.normal);
+        scratch.stats[3] += 1;
+    }
     if any_dynamic {
         scratch.stats[0] += 1;
         scratch.stats[1] += passes as u64;
-        scratch.stats[2] += u64::from(ok && passes == outer);
+        scratch.stats[2] += u64::from(ok && !diverged && passes == outer);
     }
     if !ok {
         restore(bodies, base, rows);
@@ -866,6 +933,37 @@ fn solve_group(
         r.vn_end = normal_velocity(bodies, r);
     }
     ok
+}
+
+/// [`solve_group`]'s answer where its outer passes diverged: from `base`, the normals solved
+/// exactly without friction, then [`FRICTION_SWEEPS`] friction sweeps within their Coulomb
+/// disks, the normals kept. Returns false if the normal system was not finite. `sys`: the
+/// normal solve's buffers, its system rebuilt here.
+fn frictionless_then_friction(
+    bodies: &mut [BodyState],
+    base: &[BodyState],
+    rows: &mut [Row],
+    h: f64,
+    bound: usize,
+    sys: &mut NormalSystem,
+) -> bool {
+    restore(bodies, base, rows);
+    for r in rows.iter_mut() {
+        r.jt = Vector3::zeros();
+        r.jtw = 0.0;
+        r.sliding = false;
+    }
+    sys.built = false;
+    if !solve_normal(bodies, rows, h, bound, sys) {
+        return false;
+    }
+    for r in rows.iter() {
+        apply_linear(bodies, r, &(r.n * r.jn));
+    }
+    for _ in 0..FRICTION_SWEEPS {
+        friction_sweep(bodies, rows, h);
+    }
+    true
 }
 
 /// Whether a group's outer passes have converged: after the second pass or later, no row's

@@ -59,6 +59,8 @@ mod onset;
 mod split;
 mod wake;
 
+pub(crate) use split::GapMemory;
+
 impl SoftContacts {
     /// Advances `world` by `world.integration_parameters.dt` with the soft contacts: the law's
     /// impulses on the fingertips' bodies, then rapier's pipeline (once, or once per substep

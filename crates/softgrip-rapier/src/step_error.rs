@@ -79,6 +79,11 @@ pub enum Quantity {
     /// torsional) \[N s or N m s\]: must be finite (the velocities it gives the bodies are
     /// then checked against their bounds).
     ContactImpulse,
+    /// A soft contact's end normal velocity as the soft solve's answer predicts it \[m/s\]
+    /// (bound [`MAX_LINEAR_SPEED`]): checked before rapier's pipeline takes the answer, since a
+    /// multibody or jointed link takes only the joint-space part of its load and its body's
+    /// own velocity can stay small under an absurd answer.
+    ContactVelocity,
 }
 
 impl Quantity {
@@ -92,6 +97,7 @@ impl Quantity {
             Self::JointPosition => "joint position [rad or m]",
             Self::JointVelocity => "joint velocity [rad/s or m/s]",
             Self::ContactImpulse => "soft contact impulse [N s]",
+            Self::ContactVelocity => "soft contact's predicted normal velocity [m/s]",
         }
     }
 }

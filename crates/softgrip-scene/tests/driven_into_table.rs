@@ -67,11 +67,18 @@ struct Down {
     cap_hits: u64,
     /// Contact evaluations past the law's wall, solved as rigid (`SoftCounters::past_wall`).
     past_wall: u64,
+    /// Group solves whose outer passes diverged (`SoftCounters::group_diverged`).
+    diverged: u64,
 }
 
 /// Runs `scene` to its end checking each step that every link's pose and velocity and every
 /// soft force are finite.
 fn run_down(scene: &Scene, object: &str) -> Down {
+    run_down_for(scene, object, scene.steps())
+}
+
+/// [`run_down`] over the first `steps` steps of `scene`.
+fn run_down_for(scene: &Scene, object: &str, steps: u64) -> Down {
     let mut run = PlainRun::new(scene);
     let h = run.handles.robots[0].1.clone();
     let table = run.handles.body("table").unwrap();
@@ -87,7 +94,7 @@ fn run_down(scene: &Scene, object: &str) -> Down {
     let y0 = run.world.physics.bodies[obj].translation().y as f64;
     let dt = scene.file().dt;
     let mut out = Down::default();
-    for step in 0..scene.steps() {
+    for step in 0..steps {
         if let Err(e) = run.try_step() {
             panic!("step {step}: {e} ({out:?})");
         }
@@ -137,6 +144,7 @@ fn run_down(scene: &Scene, object: &str) -> Down {
     out.substeps = c.substeps_total;
     out.cap_hits = c.substep_cap_hits;
     out.past_wall = c.past_wall;
+    out.diverged = c.group_diverged;
     eprintln!("{out:?}");
     out
 }
@@ -529,8 +537,32 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// where a pad at 2.5 N under a 55 N push asks them by either criterion), links at most 0.19
 /// m/s, pads at most 47 N, rapier's table contacts at most 432 N on the links, 1167
 /// degenerate solves.
+///
+/// Session 21: an open contact on a jointed link counts its approach no faster than its gap's
+/// realised closing over the last step plus its stored velocity's change (`softgrip_rapier`'s
+/// `step/split.rs`, `realised_approach`): 7569 substeps, none at the cap (the same run without
+/// it, on the same base: 107 292, 31 steps at the cap from step 209 on), links at most 0.11 m/s, 669 N from the table, 1052
+/// degenerate solves, 298 evaluations past a wall. Both runs are bit for bit the same through
+/// step 108, and in both two pads driven past their walls read 8.6e37 and 1.9e38 N at step
+/// 103: rigid past-wall rows whose answer predicts end normal velocities of 1e28-1e29 m/s
+/// (softgrip-rapier README, Limits (a'), session 21).
+///
+/// Session 22: that answer was the degenerate fallback's soft group solve (`solve.rs`,
+/// `solve_group`): one finger's link pressed by the two other fingers' pads, both rows past
+/// their walls and both at their Coulomb limit, a wedge friction locks, whose normal/friction passes grew
+/// 1.61 times a pass (57 N s at pass 12, 1e51 N s at the cap of 256); the motors' saturation
+/// then re-solved from that answer and settled at 3e36 N s. Such passes are now found diverging
+/// (`SoftCounters::group_diverged`) and the group answered by its frictionless normals with
+/// friction on top, and a contact whose predicted end velocity passes 1e6 m/s is a typed
+/// `StepError`. Measured (release): the run ends finite with no pad above 515 N, but fails two
+/// bounds: a pad at 514.6 N in step 102 (one substep of two at 1029 N: two pads past their
+/// walls squeezing one distal link from opposite sides, normals 177 degrees apart, the same in the
+/// session 21 run, where step 103's 1e38 N hid it) and 14 290 substeps (none at the cap; the
+/// trajectory differs from step 103 on, and steps 167-206 take 100-1456 substeps each with
+/// the pads at 0-0.3 N); links at most 0.105 m/s, 652 N from the table, 1397 degenerate
+/// solves, 283 evaluations past a wall.
 #[test]
-#[ignore = "fails its bounds since the barrier past x_max: session 18 (contacts past their wall rigid): pad force 522 N > 450 N, 95 284 substeps (20 at the cap), links at most 0.30 m/s, 430 N from the table; the substeps are approach estimates of pads 7 mm apart whose jammed links' stored velocities read 1.8-2.3 m/s, an impact estimated past the wall; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its pad and substep bounds: session 22 (diverging group passes answered without friction fed back): finite, links at most 0.105 m/s, 652 N from the table, none at the cap, but a pad at 514.6 N > 450 N in step 102 (two pads past their walls squeezing a distal link from opposite sides, as in session 21's run) and 14 290 substeps > 12 000; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
     assert!(d.held > 30, "{d:?}");
@@ -540,6 +572,31 @@ fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     assert!(d.table_force < 750.0, "{d:?}: table force");
     assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
     assert!(d.substeps < 12_000, "{d:?}: substeps (10408 measured)");
+}
+
+/// The first 110 steps of [`three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite`]
+/// (its descent to 3 mm past the fingers' meeting with the table): at step 103 one finger's
+/// link is pressed by the two other fingers' pads, both past their walls and both at their
+/// Coulomb limit, a wedge friction locks, and the soft group solve's normal/friction passes
+/// diverge (1.61 times a pass). Before session 22 they ran on to 1e51 N s and two pads read
+/// 8.6e37 and 1.9e38 N; now the group is answered by its frictionless normals with friction on
+/// top (`SoftCounters::group_diverged`). Measured: one diverged group solve, pads at most
+/// 514.6 N (step 102, before it: two pads past their walls squeezing a distal link from
+/// opposite sides), links at most 0.105 m/s.
+#[test]
+fn pads_pressing_descent_through_its_friction_locked_wedge_stays_bounded() {
+    let text = descending_text(
+        "three_finger_hand_box",
+        "lift = { distance = 0.05, speed = 0.05, acceleration = 0.5 }",
+        0.04,
+    )
+    .replace("position = [0.0, 0.02, 0.0]", "position = [0.5, 0.02, 0.0]");
+    let scene = Scene::parse(&text, "down.toml", &repo().join("scenes/robots")).unwrap();
+    let d = run_down_for(&scene, "box", 110);
+    assert_eq!(d.diverged, 1, "{d:?}: the wedge's passes");
+    assert!(d.pad_force < 530.0, "{d:?}: pad force (514.6 N measured)");
+    assert!(d.link_speed < 0.12, "{d:?}: a link flung");
+    assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
 }
 
 /// The scene text of [`hand_dragged_into_a_wall`]: the shipped box grasp with its lift turned
@@ -625,8 +682,12 @@ fn dragged_without_pads(wall: bool, impulse: bool) -> Result<f32, (u64, String)>
 /// (each a temporary change). Nor is it a nearly locked row: after steps 46-49 every manifold
 /// point of rapier's on a link either is dropped as locked (mobility 0 to 6e-13 of its links',
 /// on the proximal links against the wall) or has at least 3e-3 of its links' mobility.
+///
+/// Session 22: with the predicted contact velocity checked after the soft solve
+/// (`Quantity::ContactVelocity`), the run fails earlier in the same step 51, before rapier's
+/// pipeline: `f0_pad on wall`'s answer predicts -1.25e8 m/s (release). Not investigated.
 #[test]
-#[ignore = "diverges at step 51 (StepError::Diverged, hand/f1_proximal at 3.0e19 m/s on main 339fe95) inside rapier's pipeline, at most 9 N of plugin force; without any fingertip the multibody hand diverges too (step 113) and the impulse-jointed one does not (session 18): rapier 0.36.1's multibody under a kinematic palm jamming its links into a wall; softgrip-rapier README, Limits, Still open (b)"]
+#[ignore = "session 22: fails at step 51 with a typed StepError (f0_pad on the wall: the soft answer predicts -1.25e8 m/s, Quantity::ContactVelocity, before rapier's pipeline); before: diverges at step 51 (StepError::Diverged, hand/f1_proximal at 3.0e19 m/s on main 339fe95) inside rapier's pipeline, at most 9 N of plugin force; without any fingertip the multibody hand diverges too (step 113) and the impulse-jointed one does not (session 18): rapier 0.36.1's multibody under a kinematic palm jamming its links into a wall; softgrip-rapier README, Limits, Still open (b)"]
 fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
     let d = hand_dragged_into_a_wall(0.04);
     assert!(d.held > 30, "{d:?}");
@@ -680,8 +741,16 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// substeps are the release's too: 1724 in steps 0-131, 36 512 in steps 132-239 (310-490 a
 /// step) where the pads rest at 10-36 N (x = 0.18-0.36); the release without the correction
 /// takes as many (310-469 a step over steps 128-130).
+///
+/// Session 22 (release, first run on the base of sessions 20-21's changes; session 22's own
+/// change does not touch it: no group diverges, `group_diverged` 0, and the base e136d89
+/// gives the same figures): pads at most 86 N, links
+/// at most 3.25 m/s, 392 N from the table, 2144 substeps, none at the cap, 80 degenerate
+/// solves, every bound met but the hold's: the pads end it at 9.05 / 4.24 / 4.82 N against
+/// 10 N (the grasp's own force is 2 N; the box 0.07 mm from its start). Which change since
+/// session 19 removed the 648 N release was not bisected.
 #[test]
-#[ignore = "fails its bounds with the barrier past x_max: pads 648 N > 320 N, 38 236 substeps > 13 500 (session 17 and 18 alike, bit for bit), links at most 3.97 m/s; no pad passes its wall at a substep's start; session 19: the 648 N is in the release (palm still, motors opening, the pads' compressions growing from x 0.67-0.71 to 0.88: rapier's position correction lifting links sunk 9.7 mm into the table by folding them into the box; gone with the corrective velocity at 0) and 36 512 of the substeps are after it; the hold reads at most 284 N; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its hold check: session 22 (on the base of sessions 20-21's changes): pads at most 86 N, links at most 3.25 m/s, 392 N from the table, 2144 substeps, none at the cap, but the pads end the hold at 9.05 / 4.24 / 4.82 N < 10 N; before (sessions 17-19): pads 648 N > 320 N in the release, 38 236 substeps > 13 500; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",

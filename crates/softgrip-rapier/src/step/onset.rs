@@ -57,10 +57,11 @@ impl Step<'_> {
                 self.soft.counters.coupled_passes = passes;
                 self.soft.counters.coupled_unsettled = unsettled;
                 self.soft.counters.coupled_degenerate = degenerate;
-                let [solves, passes, unsettled] = s.solve.group_stats();
+                let [solves, passes, unsettled, diverged] = s.solve.group_stats();
                 self.soft.counters.group_solves = solves;
                 self.soft.counters.group_passes = passes;
                 self.soft.counters.group_unsettled = unsettled;
+                self.soft.counters.group_diverged = diverged;
                 break;
             }
         }
