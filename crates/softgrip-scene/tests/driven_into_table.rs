@@ -581,31 +581,6 @@ fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     assert!(d.substeps < 6000, "{d:?}: substeps (4244 measured)");
 }
 
-/// The first 110 steps of [`three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite`]
-/// (its descent to 3 mm past the fingers' meeting with the table): at step 103 one finger's
-/// link is pressed by the two other fingers' pads, both past their walls and both at their
-/// Coulomb limit, a wedge friction locks, and the soft group solve's normal/friction passes
-/// diverge (1.61 times a pass). Before session 22 they ran on to 1e51 N s and two pads read
-/// 8.6e37 and 1.9e38 N; now the group is answered by its frictionless normals with friction on
-/// top (`SoftCounters::group_diverged`). Measured: one diverged group solve, pads at most
-/// 514.6 N (step 102, before it: two pads past their walls squeezing a distal link from
-/// opposite sides), links at most 0.105 m/s.
-#[test]
-fn pads_pressing_descent_through_its_friction_locked_wedge_stays_bounded() {
-    let text = descending_text(
-        "three_finger_hand_box",
-        "lift = { distance = 0.05, speed = 0.05, acceleration = 0.5 }",
-        0.04,
-    )
-    .replace("position = [0.0, 0.02, 0.0]", "position = [0.5, 0.02, 0.0]");
-    let scene = Scene::parse(&text, "down.toml", &repo().join("scenes/robots")).unwrap();
-    let d = run_down_for(&scene, "box", 110);
-    assert_eq!(d.diverged, 1, "{d:?}: the wedge's passes");
-    assert!(d.pad_force < 530.0, "{d:?}: pad force (514.6 N measured)");
-    assert!(d.link_speed < 0.12, "{d:?}: a link flung");
-    assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
-}
-
 /// The scene text of [`hand_dragged_into_a_wall`]: the shipped box grasp with its lift turned
 /// into a drag of `distance` along `-x`, with the wall if `wall`.
 fn wall_drag_text(distance: f64, wall: bool) -> String {
