@@ -125,9 +125,9 @@ def cases():
     # session 23 (issue 24 item 5, run under /work/fe-scratch/runs/deep-s23/): skins squeezed
     # against the core, on full-integration elements (`S23_DEEP`, role "deep": CAX8, to
     # delta/t = 1): the CAX8R skin of t/R 0.4 at nu 0.48 diverges at x = 0.28 (delta/t 0.7),
-    # the CAX8 one converges further. Role "deep" exports to core/force_nu{NU}_t{T}_cax8.csv
+    # the CAX8 one converges further. Role "deep" exports to core/cax8/force_nu{NU}_t{T}.csv
     # (the CAX8R file keeps its meaning); "deep-conv" is its mesh check (R/30, the recipe's
-    # coarser mesh), written to core/convergence_cax8.csv
+    # coarser mesh), written to core/cax8/convergence.csv
     c += [(g, nu, t, h, role) for (g, nu, t, h), (role, _) in S23_DEEP.items()]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
@@ -463,16 +463,17 @@ def cmd_run(a):
 def fname(geometry, nu, t, kind="force", x=None, cp="plane", k=0.0, element="CAX8R"):
     """tests/data/fe/<geometry>/force_nu{NU}[_t{T}].csv for the plane,
     tests/data/fe/<counterpart>/<geometry>/force_nu{NU}[_k{K}].csv for the others; a body of
-    other elements than the campaign's CAX8R ends in _{element} (session 23: _cax8)."""
+    other elements than the campaign's CAX8R goes to a subfolder named by them (session 23:
+    core/cax8/, out of every glob of core/*.csv)."""
     s = f"{kind}_nu{nu:g}" + (f"_t{t:g}" if geometry == "core" else "")
     if cp in ("ball", "cylinder"):
         s += f"_k{k:g}"
     if x is not None:
         s += f"_d{x:g}"
-    if element != "CAX8R":
-        s += "_" + element.lower()
     if cp != "plane":
         return os.path.join(OUT, cp, geometry, s + ".csv")
+    if element != "CAX8R":
+        return os.path.join(OUT, geometry, element.lower(), s + ".csv")
     return os.path.join(OUT, geometry, s + ".csv")
 
 
@@ -775,15 +776,14 @@ def cmd_export(a):
         rows, worst = force_reldiff(
             base, other, lambda b, r, d: f"{nu:g},{t:g},{hb:g},{h:g},{r['x']:g},{b['F']:.6g},"
                                          f"{r['F']:.6g},{d:.3f},{b['a']:.5g},{r['a']:.5g}")
-        # the CAX8 checks have a file of their own: their key (nu, t, R/h, R/h) is a CAX8R
-        # check's too
+        # the CAX8 checks have a file of their own (core/cax8/convergence.csv): their key
+        # (nu, t, R/h, R/h) is a CAX8R check's too
         checks.setdefault(g + ("_cax8" if role == "deep-conv" else ""), {})[(nu, t, hb, h)] = \
             (prov, rows)
         print(f"convergence {g} nu={nu:g} t={t:g}: max |F_h{hb:g} - F_h{h:g}| / F = {worst:.3f} %")
     for g, new in checks.items():
         g, _, el = g.partition("_")
-        write_convergence(os.path.join(OUT, g, "convergence" + (f"_{el}" if el else "") + ".csv"),
-                          new)
+        write_convergence(os.path.join(OUT, g, el, "convergence.csv"), new)
     for cp, new in curved.items():
         write_curved_checks(os.path.join(OUT, cp, "convergence.csv"), new)
     print(f"loader table: {fe_table.write()}")
@@ -926,6 +926,7 @@ def write_convergence(path, new):
     kept (their runs need not be in this --runs directory)."""
     checks = read_convergence(path)
     checks.update(new)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:
         for key in sorted(checks):
             f.write(checks[key][0] + "\n")
