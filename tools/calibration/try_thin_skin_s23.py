@@ -121,16 +121,27 @@ def as_curve(nu, t, x, F, name):
                 reach=x[-1], held=True, name=name)
 
 
-def variants(modes, runs):
-    """Refit the adopted form and its variants on session 21's 20 curves with the CAX8 deep
-    curve of nu 0.48 t/R 0.4 in place of the CAX8R one (to the law's x_max, 0.32, where the
-    CAX8R curve stops at 0.28); the thin CAX8 skins stay blind (in no fit)."""
+def training(runs, fit_thin):
+    """Session 21's sets with the CAX8 deep curve of nu 0.48 t/R 0.4 in place of the CAX8R one
+    (to the law's x_max, 0.32, where the CAX8R curve stops at 0.28) and, with `fit_thin`, the
+    CAX8 skin of nu 0.48 t/R 0.1 (increments <= 0.001) in place of session 20's CAX8R fit skin
+    (<= 0.005; 1.69 % stiffer at x = 0.04). The other CAX8 skins stay blind (in no fit)."""
     train, new, held, blind, _ = s21.sets()
     deep = {(nu, t): as_curve(nu, t, x, F, where) for nu, t, h, x, F, where in deep_curves(runs)}
-    if (0.48, 0.4) in deep:
-        train = [c for c in train if (c["nu"], c["tau"]) != (0.48, 0.4)] + [deep[0.48, 0.4]]
+    into = [(0.48, 0.4)] + ([(0.48, 0.1)] if fit_thin else [])
+    for k in into:
+        if k in deep:
+            was = [c for c in train if (c["nu"], c["tau"]) == k]
+            train = [c for c in train if (c["nu"], c["tau"]) != k] + [deep[k]]
+            new = [deep[k] if c in was else c for c in new]
+    dblind = [c for k, c in deep.items() if k not in into]
+    return train, new, held, blind, dblind
+
+
+def variants(modes, runs, fit_thin=False):
+    """Refit the adopted form and its variants on `training`'s curves."""
+    train, new, held, blind, dblind = training(runs, fit_thin)
     old = [c for c in train if c not in new]
-    dblind = [c for k, c in deep.items() if k != (0.48, 0.4)]
     print("| variant | constant | fitted | the 14 (CAX8 0.48/0.4) | its x 0.29-0.32 | thin fit "
           "skins | held out t/R >= 0.1 | blind t/R <= 0.08 | deep CAX8 thin (blind) |")
     print("|---|---|---|---|---|---|---|---|---|")
@@ -138,7 +149,7 @@ def variants(modes, runs):
         f.chi_core = form(mode)
         p0 = list(s21.ADOPTED) + ([{"F": 0.3}.get(mode, 0.0)] if mode else [])
         p = s21.ADOPTED if mode == "adopted" else f.fit(train, p0)
-        d = deep.get((0.48, 0.4))
+        d = next((c for c in train if (c["nu"], c["tau"]) == (0.48, 0.4)), None)
         tail = "-"
         if d is not None:
             sel = d["x"] > 0.285
@@ -151,14 +162,10 @@ def variants(modes, runs):
             print("    deep blind " + s21.line(c, p))
 
 
-def per_curve(modes, runs):
+def per_curve(modes, runs, fit_thin=False):
     """Each curve's worst |F/F_FE - 1| [%] and where, per variant (fitted as in `variants`)."""
-    train, new, held, blind, _ = s21.sets()
-    deep = {(nu, t): as_curve(nu, t, x, F, where) for nu, t, h, x, F, where in deep_curves(runs)}
-    if (0.48, 0.4) in deep:
-        train = [c for c in train if (c["nu"], c["tau"]) != (0.48, 0.4)] + [deep[0.48, 0.4]]
-    sets = (("fit", train), ("held", held), ("blind", blind),
-            ("deep blind", [c for k, c in deep.items() if k != (0.48, 0.4)]))
+    train, new, held, blind, dblind = training(runs, fit_thin)
+    sets = (("fit", train), ("held", held), ("blind", blind), ("deep blind", dblind))
     res = {}
     for mode in modes:
         f.chi_core = form(mode)
@@ -179,12 +186,14 @@ def main():
     ap.add_argument("--var", nargs="*", help="refit these variants (adopted = no refit, "
                     "\"\" = the adopted form refitted, I, J, F: see form)")
     ap.add_argument("--curves", nargs="*", help="per curve, these variants (as --var)")
+    ap.add_argument("--fit-thin", action="store_true", help="the CAX8 nu 0.48 t/R 0.1 skin as "
+                    "fit data in place of session 20's CAX8R one (see `training`)")
     a = ap.parse_args()
     if a.curves is not None:
-        per_curve(a.curves, a.runs)
+        per_curve(a.curves, a.runs, a.fit_thin)
         return 0
     if a.var is not None:
-        variants(a.var, a.runs)
+        variants(a.var, a.runs, a.fit_thin)
         return 0
     f.chi_core = s21.form("")
     p = s21.ADOPTED
