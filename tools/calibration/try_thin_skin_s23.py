@@ -212,6 +212,7 @@ def main():
                 print(f"  CAX8 vs the committed CAX8R curve (reach {xr[-1]:g}), {len(d)} common "
                       f"x >= 0.01: max |dF|/F {abs(w[1]):.3f} % at x = {w[0]:g}; last common "
                       f"x = {d[-1][0]:g}: {d[-1][1]:+.3f} %")
+                print("  CAX8 / CAX8R - 1 [%]: " + " ".join(f"{xi:g}:{v:+.3f}" for xi, v in d))
         keep = x >= 0.01 - 1e-9
         xs, Fs = x[keep], F[keep]
         chi_fe = Fs / e_star(nu) / (4 / 3 * xs ** 1.5)
