@@ -144,7 +144,10 @@ S21_DT = {("core", 0.48, 0.08, 80): 0.0005, ("core", 0.4, 0.06, 100): 0.001,
 # stopped at delta/t 0.33-0.41 (t/R 0.1 on R/60, 0.08 on R/80, 0.06 on R/100), with session
 # 21's small increments
 S23_DEEP = {("core", 0.48, 0.4, 40): ("deep", None), ("core", 0.48, 0.4, 30): ("deep-conv", None),
-            ("core", 0.48, 0.1, 60): ("deep", 0.001), ("core", 0.48, 0.08, 80): ("deep", 0.0005)}
+            ("core", 0.48, 0.1, 60): ("deep", 0.001), ("core", 0.48, 0.08, 80): ("deep", 0.0005),
+            # then the worst held-out skin of t/R >= 0.1 (3.53 %, at its CAX8R end x = 0.18,
+            # delta/t 0.72), past its end: blind for the deep-squeeze variants
+            ("core", 0.46, 0.25, 40): ("deep", None)}
 DEEP_ROLES = ("deep", "deep-conv")
 DEEP_ELEMENT = "CAX8"
 
