@@ -439,14 +439,17 @@ fn core_at_the_deep_end_of_the_cax8_skin_is_what_the_readme_states() {
 /// t/R 0.08 (R/80, <= 0.0005) to x = 0.04 (delta/t 0.5; the CAX8R run with the same increments,
 /// `core/force_nu0.48_t0.08.csv`, stopped at 0.0325 and agrees within 0.047 %). Seen
 /// (`tools/calibration/try_thin_skin_s23.py`): the law too soft, by 3.72 % at t/R 0.1's end
-/// (x = 0.06) and by 2.67 % at t/R 0.08's first point (x = 0.01): past the 2 % target.
+/// (x = 0.06) and by 2.67 % at t/R 0.08's first point (x = 0.01): past the 2 % target. And
+/// the worst held-out skin of t/R >= 0.1, nu 0.46 t/R 0.25, on CAX8 one step past its CAX8R
+/// end (x = 0.19, delta/t 0.76; the CAX8R curve 0.18, within 0.06 % of it for x 0.02-0.18):
+/// 4.77 % too soft there (3.54 % at 0.18).
 /// Tolerances: seen + 0.1 % above, 0.25 % below, the place and the sign.
 #[test]
 fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
-    let nu = 0.48;
     let skins = [
         (
             include_str!("../../../tests/data/fe/core/cax8/force_nu0.48_t0.1.csv"),
+            0.48,
             0.1,
             0.06,
             3.72,
@@ -454,13 +457,22 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
         ),
         (
             include_str!("../../../tests/data/fe/core/cax8/force_nu0.48_t0.08.csv"),
+            0.48,
             0.08,
             0.04,
             2.67,
             0.01,
         ),
+        (
+            include_str!("../../../tests/data/fe/core/cax8/force_nu0.46_t0.25.csv"),
+            0.46,
+            0.25,
+            0.19,
+            4.77,
+            0.19,
+        ),
     ];
-    for (csv, t, reach, pct, at) in skins {
+    for (csv, nu, t, reach, pct, at) in skins {
         let data = cax8(csv, nu);
         assert!((data.last().expect("points").0 - reach).abs() < 1e-9);
         let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
