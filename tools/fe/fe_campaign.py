@@ -122,6 +122,13 @@ def cases():
     # stopped from outside at x = 0.0335 before it wrote meta.json; session 22 wrote it from this
     # case (the deck regenerates byte-identical) with a STOPPED note, and exported it
     c += [(g, nu, t, h, "heldout") for g, nu, t, h in S21_DT]
+    # session 23 (issue 24 item 5, run under /work/fe-scratch/runs/deep-s23/): skins squeezed
+    # against the core, on full-integration elements (`S23_DEEP`, role "deep": CAX8, to
+    # delta/t = 1): the CAX8R skin of t/R 0.4 at nu 0.48 diverges at x = 0.28 (delta/t 0.7),
+    # the CAX8 one converges further. Role "deep" exports to core/cax8/force_nu{NU}_t{T}.csv
+    # (the CAX8R file keeps its meaning); "deep-conv" is its mesh check (R/30, the recipe's
+    # coarser mesh), written to core/cax8/convergence.csv
+    c += [(g, nu, t, h, role) for (g, nu, t, h), (role, _) in S23_DEEP.items()]
     return [e + ("plane", 0.0) for e in c] + curved_cases()
 
 
@@ -129,6 +136,20 @@ def cases():
 S21_DT = {("core", 0.48, 0.08, 80): 0.0005, ("core", 0.4, 0.06, 100): 0.001,
           ("core", 0.48, 0.06, 100): 0.0005, ("core", 0.45, 0.07, 90): 0.0005,
           ("core", 0.35, 0.06, 100): 0.001}
+
+
+# session 23's deep skins on CAX8: (geometry, nu, t/R, R/h) -> (role, max increment in x beyond
+# x = 0.1, or None for the campaign's core increments: <= 0.005 to x = 0.1, 0.01 beyond)
+# first the skin of t/R 0.4 and its mesh check; then thin skins at nu 0.48, whose CAX8R runs
+# stopped at delta/t 0.33-0.41 (t/R 0.1 on R/60, 0.08 on R/80, 0.06 on R/100), with session
+# 21's small increments
+S23_DEEP = {("core", 0.48, 0.4, 40): ("deep", None), ("core", 0.48, 0.4, 30): ("deep-conv", None),
+            ("core", 0.48, 0.1, 60): ("deep", 0.001), ("core", 0.48, 0.08, 80): ("deep", 0.0005),
+            # then the worst held-out skin of t/R >= 0.1 (3.53 %, at its CAX8R end x = 0.18,
+            # delta/t 0.72), past its end: blind for the deep-squeeze variants
+            ("core", 0.46, 0.25, 40): ("deep", None)}
+DEEP_ROLES = ("deep", "deep-conv")
+DEEP_ELEMENT = "CAX8"
 
 
 def curved_cases():
@@ -301,6 +322,8 @@ def cases_3d():
 def make(geometry, nu, t, h, role="main", cp="plane", k=0.0):
     if cp != "plane" or role in ("check3d", "axes"):
         return make_curved(geometry, nu, t, h, role, cp, k)
+    if role in DEEP_ROLES:
+        return make_deep(geometry, nu, t, h)
     if role == "smoke":  # exactly what smoke.sh runs
         return fe_run.make_case(geometry, nu, t, h, 0.3, dt_small=0.005)
     # free only validates the pipeline against the reference (to x = 0.5, nu = 0.3 is cut at
@@ -330,6 +353,23 @@ def make(geometry, nu, t, h, role="main", cp="plane", k=0.0):
         case.tp = 0.005
         return case
     return fe_run.make_case(geometry, nu, t, h, tend, dt_small=dt_small, late_dt=late_dt)
+
+
+def make_deep(geometry, nu, t, h):
+    """Session 23's deep skins (`S23_DEEP`): CAX8 (full integration), to delta/t = 1 (x = t/R;
+    every run stops before), output every 0.01 in x (every 0.0025 for t/R < 0.15, whose
+    squeeze is over within a few hundredths of x), the campaign's core increments or
+    S23_DEEP's."""
+    _, dt = S23_DEEP[geometry, nu, t, h]
+    if dt is None:
+        case = fe_run.make_case(geometry, nu, t, h, t, dt_small=0.005, late_dt=0.01,
+                                element=DEEP_ELEMENT)
+    else:
+        case = fe_run.make_case(geometry, nu, t, h, t, dt_small=dt, late_dt=dt,
+                                element=DEEP_ELEMENT)
+    if t < 0.15:
+        case.tp = 0.0025
+    return case
 
 
 def make_curved(geometry, nu, t, h, role, cp, k):
@@ -423,9 +463,11 @@ def cmd_run(a):
         t.join()
 
 
-def fname(geometry, nu, t, kind="force", x=None, cp="plane", k=0.0):
+def fname(geometry, nu, t, kind="force", x=None, cp="plane", k=0.0, element="CAX8R"):
     """tests/data/fe/<geometry>/force_nu{NU}[_t{T}].csv for the plane,
-    tests/data/fe/<counterpart>/<geometry>/force_nu{NU}[_k{K}].csv for the others."""
+    tests/data/fe/<counterpart>/<geometry>/force_nu{NU}[_k{K}].csv for the others; a body of
+    other elements than the campaign's CAX8R goes to a subfolder named by them (session 23:
+    core/cax8/, out of every glob of core/*.csv)."""
     s = f"{kind}_nu{nu:g}" + (f"_t{t:g}" if geometry == "core" else "")
     if cp in ("ball", "cylinder"):
         s += f"_k{k:g}"
@@ -433,6 +475,8 @@ def fname(geometry, nu, t, kind="force", x=None, cp="plane", k=0.0):
         s += f"_d{x:g}"
     if cp != "plane":
         return os.path.join(OUT, cp, geometry, s + ".csv")
+    if element != "CAX8R":
+        return os.path.join(OUT, geometry, element.lower(), s + ".csv")
     return os.path.join(OUT, geometry, s + ".csv")
 
 
@@ -468,7 +512,9 @@ def mesh_words(meta):
             s += (f", R/{c['ridge'] * c['n']:g} along the ridge line growing by "
                   f"{c['g_ridge']:g} per mm away from it")
         return s + f" ({n} elements)"
-    return f"CAX8R, element edge R/{1 / c['h']:.0f} at the contact surface ({n} elements)"
+    el = c.get("element", "CAX8R")  # the default's words as every earlier export's
+    el = el if el == "CAX8R" else f"{el} (full integration: the campaign's CAX8R is reduced)"
+    return f"{el}, element edge R/{1 / c['h']:.0f} at the contact surface ({n} elements)"
 
 
 def against(meta):
@@ -680,6 +726,15 @@ def cmd_export(a):
                 print(f"axes {cp} k={k:g} {g} nu={nu:g} R/{h:g}: {os.path.relpath(path, REPO)}, "
                       f"reached x = {res['reached']:g}: {res['why']}")
             continue
+        if role == "deep":
+            res = load(a.runs, g, nu, t, h, role, cp, k)
+            if res is not None and len(res["rows"]) >= MIN_ROWS:
+                path = fname(g, nu, t, cp=cp, k=k, element=DEEP_ELEMENT)
+                write_force(path, res)
+                done[(g, nu, t, cp, k, role)] = (h, res)
+                print(f"deep {g} nu={nu:g} t={t:g} {DEEP_ELEMENT}: {os.path.relpath(path, REPO)}, "
+                      f"reached x = {res['reached']:g}: {res['why']}")
+            continue
         if role not in ("main", "reach", "heldout"):
             continue
         res = load(a.runs, g, nu, t, h, role, cp, k)
@@ -705,12 +760,13 @@ def cmd_export(a):
                 curved.setdefault("cylinder", {})[key] = (prov, rows)
                 print(f"3D vs axisymmetric {g} nu={nu:g}: max |dF| / F = {worst:.3f} %")
             continue
-        if role not in ("conv", "conv-reach", "smoke", "facets"):
+        if role not in ("conv", "conv-reach", "smoke", "facets", "deep-conv"):
             continue
         other = load(a.runs, g, nu, t, h, role, cp, k)
-        if other is None or (g, nu, t, cp, k) not in done:
+        key = (g, nu, t, cp, k) + (("deep",) if role == "deep-conv" else ())
+        if other is None or key not in done:
             continue
-        hb, base = done[(g, nu, t, cp, k)]
+        hb, base = done[key]
         if cp != "plane":
             key, prov, rows, worst = curved_check(g, nu, k, hb, base, h, other, role)
             curved.setdefault(cp, {})[key] = (prov, rows)
@@ -723,10 +779,14 @@ def cmd_export(a):
         rows, worst = force_reldiff(
             base, other, lambda b, r, d: f"{nu:g},{t:g},{hb:g},{h:g},{r['x']:g},{b['F']:.6g},"
                                          f"{r['F']:.6g},{d:.3f},{b['a']:.5g},{r['a']:.5g}")
-        checks.setdefault(g, {})[(nu, t, hb, h)] = (prov, rows)
+        # the CAX8 checks have a file of their own (core/cax8/convergence.csv): their key
+        # (nu, t, R/h, R/h) is a CAX8R check's too
+        checks.setdefault(g + ("_cax8" if role == "deep-conv" else ""), {})[(nu, t, hb, h)] = \
+            (prov, rows)
         print(f"convergence {g} nu={nu:g} t={t:g}: max |F_h{hb:g} - F_h{h:g}| / F = {worst:.3f} %")
     for g, new in checks.items():
-        write_convergence(os.path.join(OUT, g, "convergence.csv"), new)
+        g, _, el = g.partition("_")
+        write_convergence(os.path.join(OUT, g, el, "convergence.csv"), new)
     for cp, new in curved.items():
         write_curved_checks(os.path.join(OUT, cp, "convergence.csv"), new)
     print(f"loader table: {fe_table.write()}")
@@ -869,6 +929,7 @@ def write_convergence(path, new):
     kept (their runs need not be in this --runs directory)."""
     checks = read_convergence(path)
     checks.update(new)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:
         for key in sorted(checks):
             f.write(checks[key][0] + "\n")

@@ -32,6 +32,10 @@ from fe_deck import (neo_hooke, write_contact, write_master_elements, write_mate
 
 R = 1.0  # mm
 GEOMETRIES = ("free", "flat", "core")
+# the body's element: CAX8R (8-node quadratic, reduced integration, 2x2 points: the campaign's
+# default since session 1) or CAX8 (full integration, 3x3 points; session 23: a skin squeezed
+# against the core converges further with it, see README "Where runs stop")
+ELEMENTS = ("CAX8R", "CAX8")
 
 
 @dataclass
@@ -54,6 +58,11 @@ class Case:
     counterpart: str = "plane"  # plane | ball (axisymmetric); see fe_counterpart
     k: float = 0.0  # counterpart radius over R (ball)
     facet_sag: float = SAG_MAX  # largest faceting sag of a curved counterpart [mm]
+    element: str = "CAX8R"  # the body's element type, one of ELEMENTS
+
+    def __post_init__(self):
+        if self.element not in ELEMENTS:
+            raise ValueError(f"element {self.element!r} is not one of {ELEMENTS}")
 
     @property
     def cp(self) -> Counterpart:
@@ -64,7 +73,9 @@ class Case:
         s = f"{self.cp.tag}{self.geometry}_nu{self.nu:g}"
         if self.geometry == "core":
             s += f"_t{self.t:g}"
-        return s + f"_h{1 / self.h:.0f}"
+        s += f"_h{1 / self.h:.0f}"
+        # the default element keeps every earlier run's name (its run directory)
+        return s if self.element == "CAX8R" else s + "_" + self.element.lower()
 
     @property
     def tend(self) -> float:
@@ -174,7 +185,7 @@ def deck(case: Case, path: str) -> dict:
     w = o.append
     w("*HEADING")
     w(f"softgrip FE {case.name}: geometry={case.geometry} nu={case.nu} t/R={case.t} mu={case.mu} "
-      f"C10={c10:.8g} D1={d1:.8g} h={case.h:.5g} kpen={case.kpen:g} CAX8R gmsh {gmsh_version}"
+      f"C10={c10:.8g} D1={d1:.8g} h={case.h:.5g} kpen={case.kpen:g} {case.element} gmsh {gmsh_version}"
       + (f" counterpart={case.counterpart} k={case.k:g}" if case.counterpart != "plane" else ""))
     w("*NODE, NSET=NBODY")
     for i, (x, y) in enumerate(X):
@@ -182,7 +193,7 @@ def deck(case: Case, path: str) -> dict:
     w("*NODE, NSET=NPLATE")
     for i, (x, y, z) in enumerate(pn):
         w(f"{base + i + 1}, {x:.10g}, {y:.10g}, {z:.10g}")
-    w("*ELEMENT, TYPE=CAX8R, ELSET=EBODY")
+    w(f"*ELEMENT, TYPE={case.element}, ELSET=EBODY")
     for k, c in enumerate(E):
         w(f"{k + 1}, " + ", ".join(str(int(v)) for v in c))
     write_master_elements(w, master, base, ELSETS)

@@ -3,6 +3,7 @@
 
 usage: fe_run.py GEOMETRY --nu NU [--t T] [--h 60] [--tend 0.75] [--dt-small 0.0025] [--dir DIR]
                  [--timeout S] [--counterpart plane|ball|cylinder|edge --k R2/R] [--dim 2|3]
+                 [--element CAX8R|CAX8]
   GEOMETRY free | flat | core; --h is R / element size at the contact (60 = fine, 30 = coarse).
   --counterpart: what the fingertip is pressed on: plane (the default) or a rigid ball of radius
   k R (axisymmetric), a rigid cylinder of radius k R or a right-angle edge (3D quarter models,
@@ -41,19 +42,22 @@ def ccx_version():
 
 
 def make_case(geometry, nu, t=0.0, h=60, tend=0.75, dt_small=0.0025, late_dt=0.01,
-              counterpart="plane", k=0.0, dim=2):
+              counterpart="plane", k=0.0, dim=2, element="CAX8R"):
     """Load steps: increments <= dt_small to x = 0.1 (the contact front crosses a face every few
     increments there; coarser increments leave a jitter of up to 0.5 % in force), <= 2 dt_small
-    to 0.2, <= late_dt beyond (0.005 for nearly incompressible material)."""
+    to 0.2, <= late_dt beyond (0.005 for nearly incompressible material). `element`: the
+    axisymmetric body's element type (fe_model.ELEMENTS; the 3D models have C3D10 only)."""
     steps = [(0.1, dt_small), (0.2, min(2 * dt_small, late_dt)), (tend, late_dt)]
     steps = [s for s in steps if s[0] < tend] + [(tend, [d for x, d in steps if x >= tend][0])]
     if dim == 3 or counterpart in ("cylinder", "edge"):
+        if element != "CAX8R":
+            raise ValueError(f"the 3D models have C3D10 elements only, not {element}")
         if geometry not in fe_model3d.GEOMETRIES:
             raise ValueError(f"3D models are {fe_model3d.GEOMETRIES}, not {geometry}")
         return fe_model3d.Case3D(geometry=geometry, nu=nu, t=t, counterpart=counterpart, k=k,
                                  n=h, steps=steps)
     return fe_model.Case(geometry=geometry, nu=nu, t=t, h=1.0 / h, steps=steps,
-                         counterpart=counterpart, k=k)
+                         counterpart=counterpart, k=k, element=element)
 
 
 def run_case(case, rundir, timeout=3000):
@@ -134,9 +138,11 @@ def main():
     ap.add_argument("--counterpart", choices=["plane", "ball", "cylinder", "edge"],
                     default="plane")
     ap.add_argument("--k", type=float, default=0.0, help="ball or cylinder radius / R")
+    ap.add_argument("--element", choices=fe_model.ELEMENTS, default="CAX8R",
+                    help="the axisymmetric body's element (CAX8R reduced, CAX8 full integration)")
     a = ap.parse_args()
     case = make_case(a.geometry, a.nu, a.t, a.h, a.tend, a.dt_small, counterpart=a.counterpart,
-                     k=a.k, dim=a.dim)
+                     k=a.k, dim=a.dim, element=a.element)
     d = a.dir or f"/tmp/softgrip-fe/{case.name}"
     meta = run_case(case, d, a.timeout)
     res = analyse(d)

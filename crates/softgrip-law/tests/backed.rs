@@ -385,6 +385,111 @@ fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
     }
 }
 
+/// `(x, f)` of a CAX8 force file of `tests/data/fe/core/cax8/` (the columns of `core/`'s force
+/// files after one `# provenance:` line), normalised as `fe`'s.
+fn cax8(csv: &str, nu: f64) -> Vec<(f64, f64)> {
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    assert_eq!(
+        lines.next().and_then(|h| h.split(',').nth(1)),
+        Some("force_N")
+    );
+    lines
+        .map(|l| {
+            let mut v = l.split(',').map(|c| c.parse::<f64>().expect("a number"));
+            let x = v.next().expect("x");
+            let force_n = v.next().expect("force");
+            (x, force_n / softgrip_fe::effective_modulus_mpa(nu))
+        })
+        .collect()
+}
+
+/// Session 23: the skin of t/R 0.4 at nu 0.48 on CAX8 elements (`tests/data/fe/core/cax8/`,
+/// tools/fe/README.md "The skin squeezed against the core, on CAX8"), whose FE converges to
+/// x = 0.34 (delta/t 0.85) where the CAX8R run of `core/force_nu0.48_t0.4.csv` stops at 0.28.
+/// softgrip-fe does not embed it (it ends past the law's x_max, 0.8 t/R = 0.32); read here.
+/// Seen (`tools/calibration/try_thin_skin_s23.py`): within 0.96 % to x = 0.28, as on the CAX8R
+/// curve (0.86 %), then too soft, by 3.07 % at x_max (delta/t 0.8): the deep end of a nearly
+/// incompressible skin, which no FE constrained before. Tolerances: seen + 0.1 %, and the sign.
+#[test]
+fn core_at_the_deep_end_of_the_cax8_skin_is_what_the_readme_states() {
+    let (nu, t) = (0.48, 0.4);
+    let data = cax8(
+        include_str!("../../../tests/data/fe/core/cax8/force_nu0.48_t0.4.csv"),
+        nu,
+    );
+    assert!((data.last().expect("points").0 - 0.34).abs() < 1e-9);
+    let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
+    assert!((core.x_max() - 0.32).abs() < 1e-12);
+    let (w, x) = worst(&core, &data, 0.28);
+    eprintln!("to x = 0.28: {:.2} % at x = {x}", w * 100.0);
+    assert!(w * 100.0 < 0.96 + 0.1, "{:.2} % at x = {x}", w * 100.0);
+    let (w, x) = worst(&core, &data, core.x_max());
+    eprintln!("to x_max: {:.2} % at x = {x}", w * 100.0);
+    assert!((x - 0.32).abs() < 1e-9 && w * 100.0 < 3.07 + 0.1 && w * 100.0 > 3.07 - 0.25);
+    let at = |x: f64| data.iter().find(|p| (p.0 - x).abs() < 1e-9).expect("x").1;
+    assert!(
+        core.response(0.32).force < at(0.32),
+        "too soft there, not too stiff"
+    );
+}
+
+/// Session 23: thin skins at nu 0.48 on CAX8 (`tests/data/fe/core/cax8/`), blind (no constant
+/// of the law saw them): t/R 0.1 (R/60, increments <= 0.001) to x = 0.06 (delta/t 0.6; session
+/// 20's CAX8R run with increments <= 0.005 stopped at 0.04 and is 1.69 % stiffer there) and
+/// t/R 0.08 (R/80, <= 0.0005) to x = 0.04 (delta/t 0.5; the CAX8R run with the same increments,
+/// `core/force_nu0.48_t0.08.csv`, stopped at 0.0325 and agrees within 0.047 %). Seen
+/// (`tools/calibration/try_thin_skin_s23.py`): the law too soft, by 3.72 % at t/R 0.1's end
+/// (x = 0.06) and by 2.67 % at t/R 0.08's first point (x = 0.01): past the 2 % target. And
+/// the worst held-out skin of t/R >= 0.1, nu 0.46 t/R 0.25, on CAX8 one step past its CAX8R
+/// end (x = 0.19, delta/t 0.76; the CAX8R curve 0.18, within 0.06 % of it for x 0.02-0.18):
+/// 4.77 % too soft there (3.54 % at 0.18).
+/// Tolerances: seen + 0.1 % above, 0.25 % below, the place and the sign.
+#[test]
+fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
+    let skins = [
+        (
+            include_str!("../../../tests/data/fe/core/cax8/force_nu0.48_t0.1.csv"),
+            0.48,
+            0.1,
+            0.06,
+            3.72,
+            0.06,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/cax8/force_nu0.48_t0.08.csv"),
+            0.48,
+            0.08,
+            0.04,
+            2.67,
+            0.01,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/cax8/force_nu0.46_t0.25.csv"),
+            0.46,
+            0.25,
+            0.19,
+            4.77,
+            0.19,
+        ),
+    ];
+    for (csv, nu, t, reach, pct, at) in skins {
+        let data = cax8(csv, nu);
+        assert!((data.last().expect("points").0 - reach).abs() < 1e-9);
+        let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
+        assert!(core.x_max() >= reach, "inside the law's range");
+        let (w, x) = worst(&core, &data, core.x_max());
+        eprintln!("t/R {t}: {:.2} % at x = {x}", w * 100.0);
+        assert!((x - at).abs() < 1e-9, "t/R {t}: worst at x = {x}");
+        assert!(
+            w * 100.0 < pct + 0.1 && w * 100.0 > pct - 0.25,
+            "t/R {t}: {:.2} % (seen {pct} %)",
+            w * 100.0
+        );
+        let f = data.iter().find(|p| (p.0 - at).abs() < 1e-9).expect("x").1;
+        assert!(core.response(at).force < f, "t/R {t}: too soft there");
+    }
+}
+
 /// Issue 24 item 5: the core's validity reaches the FE's. Every committed FE core curve (the 14
 /// fitted, the 18 held out with session 20's two t/R 0.08 skins, session 15's five, and session
 /// 20's five t/R 0.05-0.1 fit-data skins) lies inside the law's range to its
