@@ -44,36 +44,49 @@ impl<'a> SoftHooks<'a> {
         Self { soft, links, user }
     }
 
-    fn is_soft_pair(&self, a: ColliderHandle, b: ColliderHandle) -> bool {
-        self.soft.contains_key(&a) || self.soft.contains_key(&b)
+    /// What each collider of a pair is to the plugin: `None` not a fingertip, `Some(None)` a
+    /// free fingertip, `Some(Some(facing))` a backed one (one map look-up per collider; the
+    /// hooks run for every pair of every rapier step).
+    fn kinds(&self, a: ColliderHandle, b: ColliderHandle) -> [Tip<'_>; 2] {
+        [self.soft.get(&a), self.soft.get(&b)]
     }
+}
 
-    /// A pair that rapier's solver handles where it is behind a backed fingertip's face:
-    /// at least one backed fingertip, and no free one (a free fingertip is soft all round).
-    fn is_rigid_capable(&self, a: ColliderHandle, b: ColliderHandle) -> bool {
-        let backed = |h| matches!(self.soft.get(&h), Some(Some(_)));
-        let free = |h| matches!(self.soft.get(&h), Some(None));
-        (backed(a) || backed(b)) && !free(a) && !free(b)
-    }
+/// A collider as [`SoftHooks::kinds`] sees it.
+type Tip<'a> = Option<&'a Option<Vector3<f64>>>;
 
-    /// The world facing of backed fingertip `h` (its collider's rotation applied to it).
-    fn facing(&self, colliders: &ColliderSet, h: ColliderHandle) -> Option<Vector3<f64>> {
-        let f = self.soft.get(&h)?.as_ref()?;
-        let co = colliders.get(h)?;
-        let local = rapier3d::prelude::Vector::new(f.x as f32, f.y as f32, f.z as f32);
-        Some(to_f64(co.position().rotation * local))
-    }
+/// Whether a pair has a fingertip.
+fn is_soft_pair([a, b]: [Tip<'_>; 2]) -> bool {
+    a.is_some() || b.is_some()
+}
+
+/// A pair that rapier's solver handles where it is behind a backed fingertip's face: at least
+/// one backed fingertip, and no free one (a free fingertip is soft all round).
+fn is_rigid_capable([a, b]: [Tip<'_>; 2]) -> bool {
+    let backed = |k: Tip<'_>| matches!(k, Some(Some(_)));
+    let free = |k: Tip<'_>| matches!(k, Some(None));
+    (backed(a) || backed(b)) && !free(a) && !free(b)
+}
+
+/// The world facing of backed fingertip `h` (`kind` its [`SoftHooks::kinds`]; its collider's
+/// rotation applied to it).
+fn facing(colliders: &ColliderSet, h: ColliderHandle, kind: Tip<'_>) -> Option<Vector3<f64>> {
+    let f = kind?.as_ref()?;
+    let co = colliders.get(h)?;
+    let local = rapier3d::prelude::Vector::new(f.x as f32, f.y as f32, f.z as f32);
+    Some(to_f64(co.position().rotation * local))
 }
 
 impl PhysicsHooks for SoftHooks<'_> {
     /// A pair with a fingertip: rapier's solver ignores it (the plugin applies the law's
     /// impulses itself). Any other pair: the user's answer.
     fn filter_contact_pair(&self, ctx: &PairFilterContext) -> Option<SolverFlags> {
-        if self.is_rigid_capable(ctx.collider1, ctx.collider2) {
+        let kinds = self.kinds(ctx.collider1, ctx.collider2);
+        if is_rigid_capable(kinds) {
             // Behind a backed fingertip's face: rapier's rigid contact (the solver contacts on
             // the pole side are dropped by `modify_solver_contacts`).
             Some(SolverFlags::COMPUTE_RIGID_IMPULSES)
-        } else if self.is_soft_pair(ctx.collider1, ctx.collider2) {
+        } else if is_soft_pair(kinds) {
             Some(SolverFlags::empty())
         } else {
             self.user.filter_contact_pair(ctx)
@@ -83,7 +96,7 @@ impl PhysicsHooks for SoftHooks<'_> {
     /// A pair with a fingertip: no intersection (fingertips are never sensors of rapier's).
     /// Any other pair: the user's answer.
     fn filter_intersection_pair(&self, ctx: &PairFilterContext) -> bool {
-        if self.is_soft_pair(ctx.collider1, ctx.collider2) {
+        if is_soft_pair(self.kinds(ctx.collider1, ctx.collider2)) {
             false
         } else {
             self.user.filter_intersection_pair(ctx)
@@ -99,22 +112,23 @@ impl PhysicsHooks for SoftHooks<'_> {
     /// against a body that cannot yield are dropped first (`link_contacts`).
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
         let (c1, c2) = (ctx.collider1, ctx.collider2);
-        if !self.is_soft_pair(c1, c2) {
+        let kinds = self.kinds(c1, c2);
+        if !is_soft_pair(kinds) {
             self.links.filter(ctx);
             if self.links.user_asked(ctx) {
                 self.user.modify_solver_contacts(ctx);
             }
             return;
         }
-        let side = |h: ColliderHandle| {
+        let side = |h: ColliderHandle, kind: Tip<'_>| {
             let centre = ctx
                 .colliders
                 .get(h)
                 .map(|c| to_f64(c.position().translation));
-            self.facing(ctx.colliders, h).zip(centre)
+            facing(ctx.colliders, h, kind).zip(centre)
         };
-        let (s1, s2) = (side(c1), side(c2));
-        let rigid_capable = self.is_rigid_capable(c1, c2);
+        let (s1, s2) = (side(c1, kinds[0]), side(c2, kinds[1]));
+        let rigid_capable = is_rigid_capable(kinds);
         let Some(rigid) = ctx.rigid_mut() else {
             return;
         };

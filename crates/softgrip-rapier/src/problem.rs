@@ -154,13 +154,15 @@ pub(crate) fn pair_mobility(
             };
             if x == y && bodies[x].link.is_none() {
                 m += si * sk * bodies[x].mobility(&ri.p, di, &rk.p, dk);
-            } else if let Some(w) = mobility::pair(
-                bodies,
-                x,
-                (di, &(ri.p - bodies[x].com).cross(di)),
-                y,
-                (dk, &(rk.p - bodies[y].com).cross(dk)),
-            ) {
+            } else if mobility::same_multibody(bodies, x, y)
+                && let Some(w) = mobility::pair(
+                    bodies,
+                    x,
+                    (di, &(ri.p - bodies[x].com).cross(di)),
+                    y,
+                    (dk, &(rk.p - bodies[y].com).cross(dk)),
+                )
+            {
                 m += si * sk * w;
             }
         }

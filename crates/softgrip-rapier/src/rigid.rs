@@ -139,6 +139,23 @@ struct Scalar {
     /// `velocity` and `apply` skip it (session 20, `sweep sweeps/throughput.toml`: see the
     /// crate README's profile).
     fixed: [Option<f64>; 2],
+    /// What each side (a, b) is to [`Scalar::velocity`] and [`Scalar::apply`] (set by
+    /// `set_response` with `fixed`): read once per row, not per side and body per call.
+    reach: [Reach; 2],
+}
+
+/// A side of a scalar row as the solve's passes see it (fixed over a solve).
+#[derive(Debug, Clone, Copy, Default)]
+enum Reach {
+    /// No body on this side.
+    #[default]
+    Absent,
+    /// A body no impulse moves: its velocity term \[m/s or rad/s\] (`Scalar::fixed`).
+    Fixed(f64),
+    /// A body with mass, not a link: index into the body table.
+    Free(usize),
+    /// A multibody or jointed link: index into the body table.
+    Link(usize),
 }
 
 impl Scalar {
@@ -165,6 +182,7 @@ impl Scalar {
             spring: 0.0,
             response: Default::default(),
             fixed: [None; 2],
+            reach: Default::default(),
         }
     }
 
@@ -185,6 +203,12 @@ impl Scalar {
                 let (s, b) = ([1.0, -1.0][k], &bodies[i]);
                 s * (self.lin.dot(&b.v) + ang.dot(&b.w))
             });
+            self.reach[k] = match (i, self.fixed[k]) {
+                (_, Some(u)) => Reach::Fixed(u),
+                (Some(i), None) if bodies[i].link.is_some() => Reach::Link(i),
+                (Some(i), None) => Reach::Free(i),
+                (None, None) => Reach::Absent,
+            };
         }
     }
 
@@ -223,16 +247,16 @@ impl Scalar {
     #[inline(always)]
     fn velocity(&self, bodies: &[BodyState]) -> f64 {
         let mut v = 0.0;
-        for (k, (i, s)) in [(self.a, 1.0), (self.b, -1.0)].into_iter().enumerate() {
-            if let Some(u) = self.fixed[k] {
-                v += u;
-            } else if let Some(i) = i {
-                let (lin, ang) = if s > 0.0 {
-                    (self.lin, self.ang_a)
-                } else {
-                    (self.lin, self.ang_b)
-                };
-                v += s * (lin.dot(&bodies[i].v) + ang.dot(&bodies[i].w));
+        for (reach, s, ang) in [
+            (self.reach[0], 1.0, &self.ang_a),
+            (self.reach[1], -1.0, &self.ang_b),
+        ] {
+            match reach {
+                Reach::Fixed(u) => v += u,
+                Reach::Free(i) | Reach::Link(i) => {
+                    v += s * (self.lin.dot(&bodies[i].v) + ang.dot(&bodies[i].w));
+                }
+                Reach::Absent => {}
             }
         }
         v
@@ -242,18 +266,20 @@ impl Scalar {
     /// impulse moves: `fixed`).
     #[inline(always)]
     fn apply(&self, bodies: &mut [BodyState], j: f64) {
-        for (i, s, ang, (dv, dw), fixed) in [
-            (self.a, 1.0, self.ang_a, self.response[0], self.fixed[0]),
-            (self.b, -1.0, self.ang_b, self.response[1], self.fixed[1]),
+        for (reach, s, ang, (dv, dw)) in [
+            (self.reach[0], 1.0, &self.ang_a, &self.response[0]),
+            (self.reach[1], -1.0, &self.ang_b, &self.response[1]),
         ] {
-            if let Some(i) = i.filter(|_| fixed.is_none()) {
-                if bodies[i].link.is_some() {
-                    mobility::apply(bodies, i, &(self.lin * (s * j)), &(ang * (s * j)));
-                    continue;
+            match reach {
+                Reach::Free(i) => {
+                    let b = &mut bodies[i];
+                    b.v += dv * (s * j);
+                    b.w += dw * (s * j);
                 }
-                let b = &mut bodies[i];
-                b.v += dv * (s * j);
-                b.w += dw * (s * j);
+                Reach::Link(i) => {
+                    mobility::apply(bodies, i, &(self.lin * (s * j)), &(ang * (s * j)));
+                }
+                Reach::Fixed(_) | Reach::Absent => {}
             }
         }
     }
@@ -537,6 +563,7 @@ fn push_soft(bodies: &[BodyState], r: &Row, h: f64, out: &mut Vec<Scalar>) {
                 spring: 0.0,
                 response: Default::default(),
                 fixed: [None; 2],
+                reach: Default::default(),
             });
         }
     }
@@ -632,6 +659,7 @@ fn solve_scalars(
         previous,
         previous_lu,
         pair_inv,
+        items,
         zero,
         cache,
         sides,
@@ -647,13 +675,13 @@ fn solve_scalars(
     *immobile_count += zeroed;
     let bound = impulse_bound(bodies, rows, &cache.mob, h);
     pair_inverses(rows, &cache.mob, pair_inv);
+    sweep_items(rows, &cache.mob, pair_inv, items);
     j.clear();
     j.resize(m, 0.0);
     start_rows(bodies, rows, warm, &cache.mob, j);
     slid.clear();
     slid.resize(m, false);
-    lu.clear();
-    lu.extend((0..m).filter(|&i| in_lu(rows, i, j, slid)));
+    lu_rows(rows, j, slid, lu);
     state.clear();
     state.resize(m, State::Active);
     previous.clone_from(j);
@@ -661,12 +689,11 @@ fn solve_scalars(
     for pass in 0..OUTER {
         lu_pass(bodies, rows, j, lu, h, state, cache)?;
         for _ in 0..SWEEPS {
-            sweep(bodies, rows, &cache.mob, pair_inv, j)?;
+            sweep(bodies, rows, items, j)?;
         }
         mark_slid(rows, lu, j, slid);
         previous_lu.clone_from(lu);
-        lu.clear();
-        lu.extend((0..m).filter(|&i| in_lu(rows, i, j, slid)));
+        lu_rows(rows, j, slid, lu);
         // Converged: the same rows in the LU and no impulse moved by more than CONVERGED of the
         // largest since the last pass (`moved_within`).
         if lu == previous_lu && moved_within(j, previous) {
@@ -692,6 +719,8 @@ struct Buffers {
     previous: Vec<f64>,
     /// The friction pairs' inverse mobility ([`pair_inverses`]).
     pair_inv: Vec<Option<Matrix2<f64>>>,
+    /// What the sweeps solve, in row order ([`sweep_items`]).
+    items: Vec<Item>,
     /// The rows found immobile ([`immobile`]).
     zero: Vec<bool>,
     /// The LU passes' matrices and buffers.
@@ -766,6 +795,7 @@ fn start_rows(
 /// impulses `j`; `slid` marks the friction rows that slid out of it for good. A rigid friction
 /// pair is solved with the normals where the soft contacts carry most of its normal's load,
 /// and stays in the sweeps for good once it slid out of the LU (the set does not cycle).
+#[inline(always)]
 fn in_lu(rows: &[Scalar], i: usize, j: &[f64], slid: &[bool]) -> bool {
     match rows[i].kind {
         Kind::SoftNormal { .. } | Kind::HardNormal => true,
@@ -780,6 +810,16 @@ fn in_lu(rows: &[Scalar], i: usize, j: &[f64], slid: &[bool]) -> bool {
         // reconcile by `C / (W + C)` a pass.
         Kind::Tangent { .. } => rows[i].spring > 0.0 && !slid[i],
         _ => false,
+    }
+}
+
+/// The rows [`in_lu`] puts in the coming pass's LU, in order, into `lu`.
+fn lu_rows(rows: &[Scalar], j: &[f64], slid: &[bool], lu: &mut Vec<usize>) {
+    lu.clear();
+    for i in 0..rows.len() {
+        if in_lu(rows, i, j, slid) {
+            lu.push(i);
+        }
     }
 }
 
@@ -1009,22 +1049,46 @@ fn pair_inverse(k: &Matrix2<f64>) -> Option<Matrix2<f64>> {
     }
 }
 
-/// One sweep of the friction pairs and torsions (see [`solve_scalars`]).
-///
-/// A compliant row (a fingertip's friction) is solved here as the hard equation `v(end) =
-/// target` under-relaxed by `1 / (1 + compliance)`, where the LU solves the compliant one
-/// (`+ compliance w (j - prox)`): against a box the table holds, its impulse moves by the same
-/// amount every pass, and [`OUTER`] is what bounds it (crate README, Limits, session 12: made
-/// consistent, the solve converges to an answer the wall box fails).
-fn sweep(
-    bodies: &mut [BodyState],
+/// A friction pair or a torsion of the sweeps ([`sweep`]), with what the sweeps read of it
+/// that is fixed over a solve (the mobility and the rows' coefficients).
+#[derive(Debug, Clone, Copy)]
+enum Item {
+    /// The tangential rows `i` and `other` (`i < other`) of normal row `normal`, in the disk
+    /// `mu (j_normal - base)`; `k_inv`: the pair's inverse mobility ([`pair_inverses`]);
+    /// `spring`: each row's friction spring compliance `C` \[1/kg\] where it acts (a spring row
+    /// that moves), else `None`.
+    Pair {
+        i: usize,
+        other: usize,
+        normal: usize,
+        mu: f64,
+        base: f64,
+        k_inv: Matrix2<f64>,
+        spring: [Option<f64>; 2],
+    },
+    /// The torsion row `i` of normal row `normal`, limited by `arm j_normal`; `kt` its own
+    /// mobility with its compliance (> 0: a torsion that does not move is left out).
+    Torsion {
+        i: usize,
+        normal: usize,
+        arm: f64,
+        kt: f64,
+    },
+}
+
+/// The sweeps' work list of `rows` (mobility `mob`, pairs' inverses `pair_inv`) into `out`,
+/// in row order: each friction pair with an inverse, at its first row, and each torsion that
+/// moves. The same decisions [`sweep`] made row by row, made once per solve (session 23: the
+/// per-row `match` and the spring tests were a tenth of a sweep's instructions).
+fn sweep_items(
     rows: &[Scalar],
     mob: &DMatrix<f64>,
     pair_inv: &[Option<Matrix2<f64>>],
-    j: &mut [f64],
-) -> Option<()> {
-    for i in 0..rows.len() {
-        match rows[i].kind {
+    out: &mut Vec<Item>,
+) {
+    out.clear();
+    for (i, r) in rows.iter().enumerate() {
+        match r.kind {
             Kind::Tangent {
                 normal,
                 other,
@@ -1032,13 +1096,58 @@ fn sweep(
                 base,
             } if other > i => {
                 let Some(k_inv) = pair_inv[i] else { continue };
+                let spring = |k: usize| {
+                    let s = &rows[k];
+                    (s.spring > 0.0 && mob[(k, k)] > 0.0).then_some(s.spring)
+                };
+                out.push(Item::Pair {
+                    i,
+                    other,
+                    normal,
+                    mu,
+                    base,
+                    k_inv,
+                    spring: [spring(i), spring(other)],
+                });
+            }
+            Kind::Torsion { normal, arm } => {
+                let kt = mob[(i, i)] * (1.0 + r.compliance);
+                if kt > 0.0 {
+                    out.push(Item::Torsion { i, normal, arm, kt });
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// One sweep of the friction pairs and torsions `items` ([`sweep_items`]; see
+/// [`solve_scalars`]).
+///
+/// A compliant row (a fingertip's friction) is solved here as the hard equation `v(end) =
+/// target` under-relaxed by `1 / (1 + compliance)`, where the LU solves the compliant one
+/// (`+ compliance w (j - prox)`): against a box the table holds, its impulse moves by the same
+/// amount every pass, and [`OUTER`] is what bounds it (crate README, Limits, session 12: made
+/// consistent, the solve converges to an answer the wall box fails).
+fn sweep(bodies: &mut [BodyState], rows: &[Scalar], items: &[Item], j: &mut [f64]) -> Option<()> {
+    for item in items {
+        match *item {
+            Item::Pair {
+                i,
+                other,
+                normal,
+                mu,
+                base,
+                k_inv,
+                spring,
+            } => {
                 let (x, y) = (&rows[i], &rows[other]);
                 // A fingertip's friction spring: `v(end) + C j = target` (`Scalar::spring`).
                 let mut err =
                     Vector2::new(x.velocity(bodies) - x.target, y.velocity(bodies) - y.target);
-                for (d, r, s) in [(0, i, x), (1, other, y)] {
-                    if s.spring > 0.0 && mob[(r, r)] > 0.0 {
-                        err[d] += s.spring * j[r];
+                for (d, r) in [(0, i), (1, other)] {
+                    if let Some(c) = spring[d] {
+                        err[d] += c * j[r];
                     }
                 }
                 let old = Vector2::new(j[i], j[other]);
@@ -1058,12 +1167,8 @@ fn sweep(
                 j[i] = new.x;
                 j[other] = new.y;
             }
-            Kind::Torsion { normal, arm } => {
+            Item::Torsion { i, normal, arm, kt } => {
                 let r = &rows[i];
-                let kt = mob[(i, i)] * (1.0 + r.compliance);
-                if !(kt > 0.0) {
-                    continue;
-                }
                 let limit = arm * j[normal].max(0.0);
                 let new = (j[i] - r.velocity(bodies) / kt).clamp(-limit, limit);
                 if !new.is_finite() {
@@ -1072,7 +1177,6 @@ fn sweep(
                 r.apply(bodies, new - j[i]);
                 j[i] = new;
             }
-            _ => {}
         }
     }
     Some(())
