@@ -770,7 +770,7 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// others, and the run then lost the box (pads at most 530 N, 4.6 / 4.7 / 497 N at the end of
 /// the hold, the box 19.6 mm higher).
 #[test]
-#[ignore = "fails its hold check: pads at most 117.6 N, 12 907 substeps, none at the cap, but the pads end the hold at 14.1 / 1.3 / 0 N (the box 17.6 mm lower): a pad let go; session 23: the degenerate fallback's implicit law reads the impulse-jointed links' stored separation (0.10-0.18 m/s while the compressions grow) as opening the contacts and answers 0 N, the grasp closes on and drives the pads past their walls; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its hold check: pads at most 117.6 N, 12 907 substeps, none at the cap, but the pads end the hold at 14.1 / 1.3 / 0 N (the box 17.6 mm higher: `object_drop` -0.0176 m; session 22 read it as lower): a pad let go; session 23: the degenerate fallback's implicit law reads the impulse-jointed links' stored separation (0.10-0.18 m/s while the compressions grow) as opening the contacts and answers 0 N, the grasp closes on and drives the pads past their walls; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
