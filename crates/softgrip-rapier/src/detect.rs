@@ -13,8 +13,9 @@ use nalgebra::Vector3;
 use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query;
 use rapier3d::prelude::{
-    BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, InteractionGroups, IslandManager,
-    NarrowPhase, QueryFilter, QueryPipeline, RigidBody, RigidBodyHandle, RigidBodySet, Vector,
+    BroadPhaseBvh, Collider, ColliderHandle, ColliderSet, ImpulseJointSet, InteractionGroups,
+    IslandManager, MultibodyJointSet, NarrowPhase, QueryFilter, QueryPipeline, RigidBody,
+    RigidBodyHandle, RigidBodySet, Vector,
 };
 
 use crate::boundary::{raw, to_f64};
@@ -80,6 +81,35 @@ pub(crate) struct Scene<'a> {
     pub gravity: f32,
     /// The largest registered fingertip radius \[m\] (`disturbed`).
     pub max_radius: f32,
+    /// rapier's impulse joints and multibodies: a pair of bodies rapier's narrow phase
+    /// filters for their joints is not a soft contact either (`joint_filtered`).
+    pub impulse_joints: &'a ImpulseJointSet,
+    pub multibody_joints: &'a MultibodyJointSet,
+}
+
+/// Whether rapier's narrow phase filters every contact between bodies `a` and `b` for the
+/// joints that hold them (rapier3d 0.36.1 `geometry/narrow_phase/pair_update.rs`): an impulse
+/// joint between them with its contacts disabled (`GenericJoint::contacts_enabled`), two links
+/// of one multibody whose self-contacts are off (`Multibody::self_contacts_enabled`: a robot's
+/// `self_contacts = false`), or two links joined by a multibody joint with its contacts
+/// disabled (a URDF joint's two links, `rapier3d-urdf`'s default). A fingertip's pairs never
+/// reach that filter (its collision groups are `none()`), so the plugin applies it: a pad on a
+/// finger's link does not press the links its robot keeps from colliding with that link.
+pub(crate) fn joint_filtered(scene: &Scene<'_>, a: RigidBodyHandle, b: RigidBodyHandle) -> bool {
+    if (scene.impulse_joints.joints_between(a, b)).any(|(_, j)| !j.data.contacts_enabled) {
+        return true;
+    }
+    let mb = scene.multibody_joints;
+    let (Some(la), Some(lb)) = (mb.rigid_body_link(a), mb.rigid_body_link(b)) else {
+        return false;
+    };
+    if la.multibody != lb.multibody {
+        return false;
+    }
+    if (mb.get_multibody(la.multibody)).is_some_and(|m| !m.self_contacts_enabled()) {
+        return true;
+    }
+    (mb.joint_between(a, b)).is_some_and(|(_, _, link)| !link.joint.data.contacts_enabled)
 }
 
 /// Finds the soft contacts of every fingertip (`scene.tip_order`; `tips` tells the soft
@@ -351,6 +381,11 @@ impl<'a> Tip<'a> {
         }
         let other_body = other_co.parent();
         if self.body.is_some() && self.body == other_body {
+            return None;
+        }
+        if let (Some(a), Some(b)) = (self.body, other_body)
+            && joint_filtered(scene, a, b)
+        {
             return None;
         }
         // A fingertip's own collision groups are `none()` (moved into its record).

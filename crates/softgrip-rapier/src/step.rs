@@ -220,6 +220,8 @@ impl Step<'_> {
             tip_order: &soft.tip_order,
             gravity: self.physics.gravity.length(),
             max_radius: soft.max_radius,
+            impulse_joints: &self.physics.impulse_joints,
+            multibody_joints: &self.physics.multibody_joints,
         };
         detect::detect(
             &scene,

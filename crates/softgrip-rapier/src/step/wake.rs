@@ -63,6 +63,8 @@ impl Step<'_> {
             tip_order: &soft.tip_order,
             gravity: self.physics.gravity.length(),
             max_radius: soft.max_radius,
+            impulse_joints: &self.physics.impulse_joints,
+            multibody_joints: &self.physics.multibody_joints,
         };
         let mut any = false;
         for &body in woken {
