@@ -16,7 +16,11 @@ Result (CORE_FORM.md "Thin skins: session 23"): the law is within 0.96 % of the 
 nu 0.48 t/R 0.4 to x = 0.28 and 3.07 % too soft at its x_max 0.32 (delta/t 0.8). Variant K (the
 confined skin's deviatoric stiffening at every nu, one constant) takes the deep-end misses (the
 14 with the CAX8 curve 2.52 %, held out t/R >= 0.1 3.08 %, the CAX8 curve 1.98 %) but not the
-thin skins' small-x pattern (blind t/R <= 0.08: 3.80 %, today 3.76 %): not adopted. Blind for
+thin skins' small-x pattern (blind t/R <= 0.08: 3.80 %, today 3.76 %): not adopted in session
+23. Session 24 adopted K (the Rust law's CORE and CORE_DEVIATORIC are the constants `--var K`
+prints; through the counterpart maps it takes the core on cylinders within 3 %: CORE_FORM.md
+"Session 24"). `ADOPTED` below stays session 21's constants: "adopted" in this script's tables
+means session 21's law. Blind for
 the variants (run after them): nu 0.46 t/R 0.25 on CAX8 to x = 0.19, the law -4.77 % there, K
 within 2.18 % (+2.18 at x = 0.01; 1.34 % past x = 0.02).
 

@@ -12,9 +12,10 @@ use crate::error::{Error, Result};
 /// documented accuracy (5.3e-8 in force); below it the table drifted from the form (the
 /// session-7 form: 2e-7 at 0.01, 6e-6 at 0.001, 2e-3 at 1e-4) and below about 1e-8 the force
 /// turned negative (t/R = 1e-22 was accepted and let a fingertip fall through the floor). FE
-/// skins go down to t/R 0.05: since session 21 (the thin-layer floor) the force is within 3.46 %
-/// of the fitted t/R 0.05-0.1 skins and 3.76 % of the four blind ones (t/R 0.06-0.08; the session-20
-/// law was up to 16.2 % too soft there; softgrip-law README, *Thin skins*). A thinner skin needs
+/// skins go down to t/R 0.05: since session 24 (the thin-layer floor of session 21 and the
+/// squeezed skin's deviatoric stiffening) the force is within 3.32 % of the fitted t/R 0.05-0.1
+/// skins and 3.80 % of the seven blind ones (t/R 0.06-0.08; the session-20 law was up to 16.2 %
+/// too soft there; softgrip-law README, *Thin skins*). A thinner skin needs
 /// a measured (`tabulated`) curve.
 pub const MIN_CORE_THICKNESS_RATIO: f64 = 0.05;
 

@@ -72,20 +72,20 @@ fn flat_calibrated_is_within_1_percent_of_its_fe_at_every_nu() {
 #[test]
 fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // nu and t/R between the fitted ones (tools/fe/fe_campaign.py role "heldout"), each to
-    // its FE reach. Seen: flat 0.35: 1.66 %, flat 0.45: 0.54 %. Core since session 21 (the
-    // thin-layer floor, seven constants refitted with session 20's t/R 0.05-0.1 skins; the
-    // session-20 law's value in brackets): (0.45, 0.5) 1.63 [2.24], (0.35, 0.7) 0.48 [1.39],
-    // (0.4, 0.3) 2.40 [1.05], (0.49, 0.3) 2.01 [2.17]; the second set (0.46, 0.25) 3.53
-    // [1.80], (0.33, 0.25) 1.24 [2.37], (0.42, 0.55) 1.66 [1.88], (0.36, 0.2) 2.88 [2.31],
-    // (0.44, 0.8) 1.09 [1.23], (0.495, 0.35) 1.78 [1.76]; the third (0.47, 0.15) 2.05 [1.86],
-    // (0.42, 0.25) 2.92 [1.62]; the fourth, thinner than any fitted before session 21: (0.38,
-    // 0.12) 2.51 [4.02], (0.46, 0.1) 1.64 [2.56], (0.32, 0.14) 1.21 [3.73], (0.49, 0.12) 3.40
-    // [2.49]; session 15's (0.48, 0.3) 1.18 [1.46], (0.35, 0.3) 0.82 [2.07], (0.45, 0.35)
-    // 1.88 [1.86], (0.49, 0.25) 1.83 [2.11], (0.47, 0.25) 1.86 [1.67]; session 20's blind t/R
-    // 0.08: (0.4, 0.08) 3.30 [3.77], (0.3, 0.08) 2.25 [10.16]; session 20's thin skins (fit
-    // data of session 21's refit): (0.3, 0.05) 3.46 [16.17], (0.4, 0.05) 3.26 [10.86], (0.3,
-    // 0.1) 1.87 [8.72], (0.48, 0.1) 3.18 [3.50], (0.4, 0.1) 3.06 [4.02]. The 2 % target is
-    // missed on nine (crate README *Thin skins*). Each tolerance: seen + 0.1 %.
+    // its FE reach. Seen: flat 0.35: 1.66 %, flat 0.45: 0.54 %. Core since session 24 (the
+    // squeezed skin's deviatoric stiffening, eight constants refitted; session 21's law's value
+    // in brackets): (0.45, 0.5) 2.39 [1.63], (0.35, 0.7) 0.45 [0.48], (0.4, 0.3) 1.37 [2.40],
+    // (0.49, 0.3) 2.67 [2.01]; the second set (0.46, 0.25) 1.34 [3.53], (0.33, 0.25) 1.44
+    // [1.24], (0.42, 0.55) 2.05 [1.66], (0.36, 0.2) 2.26 [2.88], (0.44, 0.8) 0.95 [1.09],
+    // (0.495, 0.35) 1.22 [1.78]; the third (0.47, 0.15) 2.27 [2.05], (0.42, 0.25) 1.98 [2.92];
+    // the fourth: (0.38, 0.12) 2.33 [2.51], (0.46, 0.1) 1.62 [1.64], (0.32, 0.14) 1.53 [1.21],
+    // (0.49, 0.12) 3.08 [3.40]; session 15's (0.48, 0.3) 1.24 [1.18], (0.35, 0.3) 0.53 [0.82],
+    // (0.45, 0.35) 1.31 [1.88], (0.49, 0.25) 1.95 [1.83], (0.47, 0.25) 1.00 [1.86]; session
+    // 20's blind t/R 0.08: (0.4, 0.08) 3.10 [3.30], (0.3, 0.08) 2.07 [2.25]; session 20's thin
+    // skins (fit data since session 21): (0.3, 0.05) 3.32 [3.46], (0.4, 0.05) 3.18 [3.26],
+    // (0.3, 0.1) 1.70 [1.87], (0.48, 0.1) 2.84 [3.18], (0.4, 0.1) 2.83 [3.06]. The 2 % target
+    // is missed on sixteen of the 33 core files, as with session 21's law (crate README *Thin
+    // skins*). Each tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -93,61 +93,61 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.45_t0.5.csv",
             0.45,
             Backing::Core { thickness: 0.5 },
-            0.0173,
+            0.0249,
         ),
         (
             "core/force_nu0.35_t0.7.csv",
             0.35,
             Backing::Core { thickness: 0.7 },
-            0.0058,
+            0.0055,
         ),
         (
             "core/force_nu0.4_t0.3.csv",
             0.4,
             Backing::Core { thickness: 0.3 },
-            0.0250,
+            0.0147,
         ),
         (
             "core/force_nu0.49_t0.3.csv",
             0.49,
             Backing::Core { thickness: 0.3 },
-            0.0211,
+            0.0277,
         ),
         (
             "core/force_nu0.46_t0.25.csv",
             0.46,
             Backing::Core { thickness: 0.25 },
-            0.0363,
+            0.0144,
         ),
         (
             "core/force_nu0.33_t0.25.csv",
             0.33,
             Backing::Core { thickness: 0.25 },
-            0.0134,
+            0.0154,
         ),
         (
             "core/force_nu0.42_t0.55.csv",
             0.42,
             Backing::Core { thickness: 0.55 },
-            0.0176,
+            0.0215,
         ),
         (
             "core/force_nu0.36_t0.2.csv",
             0.36,
             Backing::Core { thickness: 0.2 },
-            0.0298,
+            0.0236,
         ),
         (
             "core/force_nu0.44_t0.8.csv",
             0.44,
             Backing::Core { thickness: 0.8 },
-            0.0119,
+            0.0105,
         ),
         (
             "core/force_nu0.495_t0.35.csv",
             0.495,
             Backing::Core { thickness: 0.35 },
-            0.0188,
+            0.0132,
         ),
         // The third set (session 11, run after every constant was fixed): a skin thinner than
         // any fitted (t/R 0.15, to its FE's end 0.08) and one between them.
@@ -155,13 +155,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.47_t0.15.csv",
             0.47,
             Backing::Core { thickness: 0.15 },
-            0.0215,
+            0.0237,
         ),
         (
             "core/force_nu0.42_t0.25.csv",
             0.42,
             Backing::Core { thickness: 0.25 },
-            0.0302,
+            0.0208,
         ),
         // The fourth set (session 13, run after every constant was fixed): skins thinner than
         // any fitted, each to its FE's end, on finer meshes (R/75 and R/60).
@@ -169,25 +169,25 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.38_t0.12.csv",
             0.38,
             Backing::Core { thickness: 0.12 },
-            0.0261,
+            0.0243,
         ),
         (
             "core/force_nu0.46_t0.1.csv",
             0.46,
             Backing::Core { thickness: 0.1 },
-            0.0174,
+            0.0172,
         ),
         (
             "core/force_nu0.32_t0.14.csv",
             0.32,
             Backing::Core { thickness: 0.14 },
-            0.0131,
+            0.0163,
         ),
         (
             "core/force_nu0.49_t0.12.csv",
             0.49,
             Backing::Core { thickness: 0.12 },
-            0.0350,
+            0.0318,
         ),
         // Session 15: fit data for the next refit between the fitted t/R 0.2 and 0.4 (made
         // after the constants; the refit tried was not adopted, crate README *Thin skins*).
@@ -195,32 +195,32 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.48_t0.3.csv",
             0.48,
             Backing::Core { thickness: 0.3 },
-            0.0128,
+            0.0134,
         ),
         (
             "core/force_nu0.35_t0.3.csv",
             0.35,
             Backing::Core { thickness: 0.3 },
-            0.0092,
+            0.0063,
         ),
         (
             "core/force_nu0.45_t0.35.csv",
             0.45,
             Backing::Core { thickness: 0.35 },
-            0.0198,
+            0.0141,
         ),
         (
             "core/force_nu0.49_t0.25.csv",
             0.49,
             Backing::Core { thickness: 0.25 },
-            0.0193,
+            0.0205,
         ),
         // Session 15, blind (run after every constant tried that session was fixed).
         (
             "core/force_nu0.47_t0.25.csv",
             0.47,
             Backing::Core { thickness: 0.25 },
-            0.0196,
+            0.0110,
         ),
         // Session 20, blind (run after the session's thin-layer variants were fixed), thinner
         // than any run before: (0.4, 0.08) 3.77 % (at its end x = 0.04, delta/t 0.5, -; +3.47 %
@@ -233,13 +233,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.4_t0.08.csv",
             0.4,
             Backing::Core { thickness: 0.08 },
-            0.0340,
+            0.0320,
         ),
         (
             "core/force_nu0.3_t0.08.csv",
             0.3,
             Backing::Core { thickness: 0.08 },
-            0.0235,
+            0.0217,
         ),
         // Session 20, second part: fit data for the thin-layer floor (not fitted: the law was
         // not refitted; CORE_FORM.md "Thin skins: session 20, fit data at t/R 0.05-0.1"),
@@ -249,25 +249,25 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.3_t0.05.csv",
             0.3,
             Backing::Core { thickness: 0.05 },
-            0.0356,
+            0.0342,
         ),
         (
             "core/force_nu0.4_t0.05.csv",
             0.4,
             Backing::Core { thickness: 0.05 },
-            0.0336,
+            0.0328,
         ),
         (
             "core/force_nu0.3_t0.1.csv",
             0.3,
             Backing::Core { thickness: 0.1 },
-            0.0197,
+            0.0180,
         ),
         (
             "core/force_nu0.48_t0.1.csv",
             0.48,
             Backing::Core { thickness: 0.1 },
-            0.0328,
+            0.0294,
         ),
         // Session 21, blind (run after the thin-layer floor's constants were fixed; smaller
         // increments, `fe_campaign.py` S21_DT): (0.48, 0.08) on R/80 2.71 % (x = 0.01, too
@@ -275,45 +275,49 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
         // 0.0325), (0.4, 0.06) on R/100 3.75 % (x = 0.01, too stiff, falling to +1.94 % at its
         // end x = 0.03; session 20's law 6.99 %, too soft at the end), (0.48, 0.06) on R/100
         // 1.47 % (x = 0.01, too soft; to x = 0.02; session 20's law 5.38 %, too soft at its end).
+        // Session 24's law: 2.35 %, 3.80 % (the one blind skin it makes worse, at x = 0.01) and
+        // 1.18 %.
         (
             "core/force_nu0.48_t0.08.csv",
             0.48,
             Backing::Core { thickness: 0.08 },
-            0.0281,
+            0.0245,
         ),
         (
             "core/force_nu0.4_t0.06.csv",
             0.4,
             Backing::Core { thickness: 0.06 },
-            0.0385,
+            0.0390,
         ),
         (
             "core/force_nu0.48_t0.06.csv",
             0.48,
             Backing::Core { thickness: 0.06 },
-            0.0157,
+            0.0128,
         ),
         // ... and (0.45, 0.07) on R/90 3.76 % (x = 0.0175, too stiff, +2.3 to +3.8 % along
-        // it; session 20's law 2.94 %: on this blind skin the thin-layer floor is worse).
+        // it; session 20's law 2.94 %: on this blind skin the thin-layer floor is worse;
+        // session 24's law 3.58 %).
         (
             "core/force_nu0.45_t0.07.csv",
             0.45,
             Backing::Core { thickness: 0.07 },
-            0.0386,
+            0.0368,
         ),
         // Session 21's fifth blind skin, exported in session 22: (0.35, 0.06) on R/100 1.97 %
-        // (x = 0.03, its end: too stiff, +0.5 to +2.0 % along it; session 20's law 9.14 %).
+        // (x = 0.03, its end: too stiff, +0.5 to +2.0 % along it; session 20's law 9.14 %;
+        // session 24's law 1.53 %).
         (
             "core/force_nu0.35_t0.06.csv",
             0.35,
             Backing::Core { thickness: 0.06 },
-            0.0210,
+            0.0163,
         ),
         (
             "core/force_nu0.4_t0.1.csv",
             0.4,
             Backing::Core { thickness: 0.1 },
-            0.0316,
+            0.0293,
         ),
     ];
     // Every file is printed before any is asserted (one run shows them all).
@@ -343,26 +347,29 @@ fn flat_is_stiffer_than_the_free_sphere_as_the_issue_measured() {
 
 #[test]
 fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
-    // Fitted on these 14 curves and session 20's six t/R 0.05-0.1 skins (session 21,
-    // tools/calibration/try_thin_skin_s21.py: seven constants). Seen, to x_max
+    // Fitted on these 14 curves (with the CAX8 run of nu 0.48, t/R 0.4 in place of its CAX8R
+    // one here) and session 20's six t/R 0.05-0.1 skins (session 24,
+    // tools/calibration/try_thin_skin_s23.py --var K: eight constants; session 21's law in
+    // brackets: 1.65, 2.98, 2.20, 2.09; 2.66, 1.41, 0.86, 1.04; 2.17, 1.58, 2.38; 0.87, 1.94,
+    // 1.75). Seen, to x_max
     // = min(flat's, 0.8 t/R) (each FE curve's reach: delta/t 0.45-0.8), the largest
     // |F/F_FE - 1| in %; each tolerance is the seen value plus 0.1 % above, 0.25 % below (a
     // changed constant or term breaks it).
     let seen = [
-        (0.3, 0.2, 1.65),
-        (0.4, 0.2, 2.98),
-        (0.48, 0.2, 2.20),
-        (0.499, 0.2, 2.09),
-        (0.3, 0.4, 2.66),
-        (0.4, 0.4, 1.41),
-        (0.48, 0.4, 0.86),
-        (0.499, 0.4, 1.04),
-        (0.3, 0.6, 2.17),
-        (0.48, 0.6, 1.58),
-        (0.499, 0.6, 2.38),
-        (0.3, 0.8, 0.87),
-        (0.48, 0.8, 1.94),
-        (0.499, 0.8, 1.75),
+        (0.3, 0.2, 2.52),
+        (0.4, 0.2, 1.83),
+        (0.48, 0.2, 1.26),
+        (0.499, 0.2, 2.16),
+        (0.3, 0.4, 2.42),
+        (0.4, 0.4, 1.85),
+        (0.48, 0.4, 1.55),
+        (0.499, 0.4, 1.36),
+        (0.3, 0.6, 1.80),
+        (0.48, 0.6, 1.20),
+        (0.499, 0.6, 2.17),
+        (0.3, 0.8, 0.74),
+        (0.48, 0.8, 1.78),
+        (0.499, 0.8, 1.69),
     ];
     for (nu, t, pct) in seen {
         let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
@@ -407,9 +414,14 @@ fn cax8(csv: &str, nu: f64) -> Vec<(f64, f64)> {
 /// tools/fe/README.md "The skin squeezed against the core, on CAX8"), whose FE converges to
 /// x = 0.34 (delta/t 0.85) where the CAX8R run of `core/force_nu0.48_t0.4.csv` stops at 0.28.
 /// softgrip-fe does not embed it (it ends past the law's x_max, 0.8 t/R = 0.32); read here.
-/// Seen (`tools/calibration/try_thin_skin_s23.py`): within 0.96 % to x = 0.28, as on the CAX8R
-/// curve (0.86 %), then too soft, by 3.07 % at x_max (delta/t 0.8): the deep end of a nearly
-/// incompressible skin, which no FE constrained before. Tolerances: seen + 0.1 %, and the sign.
+/// Seen (`tools/calibration/try_thin_skin_s23.py`): session 23's law within 0.96 % to x =
+/// 0.28, as on the CAX8R curve (0.86 %), then too soft, by 3.07 % at x_max (delta/t 0.8): the
+/// deep end of a nearly incompressible skin, which no FE constrained before. Session 24's law
+/// (the squeezed skin's deviatoric stiffening, fitted with this curve): within 1.58 % to x =
+/// 0.28 (at x = 0.15, as on the CAX8R curve: 1.55 % at 0.13) and 1.98 % at x_max, too stiff
+/// there (+0.08 / +0.49 / +1.08 / +1.98 % at x 0.29-0.32; past x_max the form is +3.40 % and
+/// +5.70 % at 0.33 and 0.34: the range is not extended). Tolerances: seen + 0.1 % above,
+/// 0.25 % below, and the sign.
 #[test]
 fn core_at_the_deep_end_of_the_cax8_skin_is_what_the_readme_states() {
     let (nu, t) = (0.48, 0.4);
@@ -422,14 +434,18 @@ fn core_at_the_deep_end_of_the_cax8_skin_is_what_the_readme_states() {
     assert!((core.x_max() - 0.32).abs() < 1e-12);
     let (w, x) = worst(&core, &data, 0.28);
     eprintln!("to x = 0.28: {:.2} % at x = {x}", w * 100.0);
-    assert!(w * 100.0 < 0.96 + 0.1, "{:.2} % at x = {x}", w * 100.0);
+    assert!(
+        w * 100.0 < 1.58 + 0.1 && w * 100.0 > 1.58 - 0.25,
+        "{:.2} % at x = {x}",
+        w * 100.0
+    );
     let (w, x) = worst(&core, &data, core.x_max());
     eprintln!("to x_max: {:.2} % at x = {x}", w * 100.0);
-    assert!((x - 0.32).abs() < 1e-9 && w * 100.0 < 3.07 + 0.1 && w * 100.0 > 3.07 - 0.25);
+    assert!((x - 0.32).abs() < 1e-9 && w * 100.0 < 1.98 + 0.1 && w * 100.0 > 1.98 - 0.25);
     let at = |x: f64| data.iter().find(|p| (p.0 - x).abs() < 1e-9).expect("x").1;
     assert!(
-        core.response(0.32).force < at(0.32),
-        "too soft there, not too stiff"
+        core.response(0.32).force > at(0.32),
+        "too stiff there, not too soft"
     );
 }
 
@@ -438,11 +454,13 @@ fn core_at_the_deep_end_of_the_cax8_skin_is_what_the_readme_states() {
 /// 20's CAX8R run with increments <= 0.005 stopped at 0.04 and is 1.69 % stiffer there) and
 /// t/R 0.08 (R/80, <= 0.0005) to x = 0.04 (delta/t 0.5; the CAX8R run with the same increments,
 /// `core/force_nu0.48_t0.08.csv`, stopped at 0.0325 and agrees within 0.047 %). Seen
-/// (`tools/calibration/try_thin_skin_s23.py`): the law too soft, by 3.72 % at t/R 0.1's end
-/// (x = 0.06) and by 2.67 % at t/R 0.08's first point (x = 0.01): past the 2 % target. And
-/// the worst held-out skin of t/R >= 0.1, nu 0.46 t/R 0.25, on CAX8 one step past its CAX8R
-/// end (x = 0.19, delta/t 0.76; the CAX8R curve 0.18, within 0.06 % of it for x 0.02-0.18):
-/// 4.77 % too soft there (3.54 % at 0.18).
+/// (`tools/calibration/try_thin_skin_s23.py`): session 23's law too soft, by 3.72 % at t/R
+/// 0.1's end (x = 0.06) and by 2.67 % at t/R 0.08's first point (x = 0.01): past the 2 %
+/// target. And the worst held-out skin of t/R >= 0.1, nu 0.46 t/R 0.25, on CAX8 one step past
+/// its CAX8R end (x = 0.19, delta/t 0.76; the CAX8R curve 0.18, within 0.06 % of it for x
+/// 0.02-0.18): 4.77 % too soft there (3.54 % at 0.18). Session 24's law (blind to all three):
+/// 2.90 % too soft at t/R 0.1's end, 2.31 % too soft at t/R 0.08's first point, and on t/R
+/// 0.25 2.18 % too stiff at x = 0.01 (within 1.35 % from x = 0.02; -0.91 % at 0.19).
 /// Tolerances: seen + 0.1 % above, 0.25 % below, the place and the sign.
 #[test]
 fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
@@ -452,27 +470,30 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
             0.48,
             0.1,
             0.06,
-            3.72,
+            2.90,
             0.06,
+            true,
         ),
         (
             include_str!("../../../tests/data/fe/core/cax8/force_nu0.48_t0.08.csv"),
             0.48,
             0.08,
             0.04,
-            2.67,
+            2.31,
             0.01,
+            true,
         ),
         (
             include_str!("../../../tests/data/fe/core/cax8/force_nu0.46_t0.25.csv"),
             0.46,
             0.25,
             0.19,
-            4.77,
-            0.19,
+            2.18,
+            0.01,
+            false,
         ),
     ];
-    for (csv, nu, t, reach, pct, at) in skins {
+    for (csv, nu, t, reach, pct, at, soft) in skins {
         let data = cax8(csv, nu);
         assert!((data.last().expect("points").0 - reach).abs() < 1e-9);
         let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
@@ -486,7 +507,7 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
             w * 100.0
         );
         let f = data.iter().find(|p| (p.0 - at).abs() < 1e-9).expect("x").1;
-        assert!(core.response(at).force < f, "t/R {t}: too soft there");
+        assert_eq!(core.response(at).force < f, soft, "t/R {t}: the sign there");
     }
 }
 

@@ -49,48 +49,48 @@ fn curves() -> impl Iterator<Item = &'static FeFile> {
 /// before session 17).
 fn stated_force_error(path: &str) -> f64 {
     let pct = match path {
-        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.21, // 2.42, 2.42, 2.35, 2.43; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.50
-        "ball/core/force_nu0.48_t0.3_k3.csv" => 2.90, // 3.74, 3.83, 2.60, 2.62; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.49
-        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.49, // 1.44, 1.44, 1.48, 1.42; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.43
+        "ball/core/force_nu0.48_t0.3_k1.csv" => 2.27, // 2.42, 2.42, 2.35, 2.43; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.50; session 24 (the squeezed skin's deviatoric stiffening): was 2.21
+        "ball/core/force_nu0.48_t0.3_k3.csv" => 1.92, // 3.74, 3.83, 2.60, 2.62; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.49; session 24 (the squeezed skin's deviatoric stiffening): was 2.90
+        "ball/core/force_nu0.48_t0.4_k2.csv" => 1.49, // 1.44, 1.44, 1.48, 1.42; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.43; session 24 (the squeezed skin's deviatoric stiffening): was 1.49
         // Session 15-16's miss (4.65 / 4.19 % too soft at its end, x = 0.38, delta/t 0.76).
-        "ball/core/force_nu0.48_t0.5_k1.csv" => 2.07, // 3.26, 3.19, 4.65, 4.19; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.67
-        "ball/core/force_nu0.48_t0.5_k3.csv" => 1.76, // 2.73, 2.82, 1.20, 1.26; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.53
+        "ball/core/force_nu0.48_t0.5_k1.csv" => 2.94, // 3.26, 3.19, 4.65, 4.19; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.67; session 24 (the squeezed skin's deviatoric stiffening): was 2.07
+        "ball/core/force_nu0.48_t0.5_k3.csv" => 2.70, // 2.73, 2.82, 1.20, 1.26; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.53; session 24 (the squeezed skin's deviatoric stiffening): was 1.76
         // Session 13, held out of the constant (the confined skin's form was chosen with them
         // in view): the first cores on a ball away from nu = 0.48, at their FE's ends 3.35 %,
         // 10.38 % and 6.57 % too soft with session 12's map (delta/t 0.77, 0.8, 0.77).
-        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 1.67, // -, 0.98, 0.79, 0.70; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.03
-        "ball/core/force_nu0.33_t0.45_k3.csv" => 1.17, // -, 1.07, 2.20, 2.35; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.50
-        "ball/core/force_nu0.36_t0.3_k1.csv" => 2.50, // -, 1.66, 1.85, 1.99; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.04
+        "ball/core/force_nu0.4_t0.35_k1.5.csv" => 1.17, // -, 0.98, 0.79, 0.70; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.03; session 24 (the squeezed skin's deviatoric stiffening): was 1.67
+        "ball/core/force_nu0.33_t0.45_k3.csv" => 1.14, // -, 1.07, 2.20, 2.35; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.50; session 24 (the squeezed skin's deviatoric stiffening): was 1.17
+        "ball/core/force_nu0.36_t0.3_k1.csv" => 2.37, // -, 1.66, 1.85, 1.99; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.04; session 24 (the squeezed skin's deviatoric stiffening): was 2.50
         // Session 14, the confined skin's constant fitted on it (14.02 % too soft at its end,
         // x = 0.32, delta/t 0.8, with session 12's map).
-        "ball/core/force_nu0.3_t0.4_k2.csv" => 2.08, // -, 0.95, 2.28, 2.32; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.32
+        "ball/core/force_nu0.3_t0.4_k2.csv" => 2.37, // -, 0.95, 2.28, 2.32; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.32; session 24 (the squeezed skin's deviatoric stiffening): was 2.08
         // Session 14, blind (run after w was first fitted): nu 0.4, t/R 0.5 on 3R (1.29 %
         // without the confined skin), and nu 0.3, t/R 0.5 on R (9.23 % too soft at its end
         // without it).
-        "ball/core/force_nu0.4_t0.5_k3.csv" => 1.58, // -, 2.22, 1.94, 1.87; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.27
-        "ball/core/force_nu0.3_t0.5_k1.csv" => 2.54, // -, 2.39, 1.38, 1.63; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.32
+        "ball/core/force_nu0.4_t0.5_k3.csv" => 2.11, // -, 2.22, 1.94, 1.87; session 21 (the thin-layer floor's refit, `w` 0.026): was 1.27; session 24 (the squeezed skin's deviatoric stiffening): was 1.58
+        "ball/core/force_nu0.3_t0.5_k1.csv" => 2.74, // -, 2.39, 1.38, 1.63; session 21 (the thin-layer floor's refit, `w` 0.026): was 2.32; session 24 (the squeezed skin's deviatoric stiffening): was 2.54
         // Session 16, blind (`fe_campaign.py`'s `held16`): nu 0.47, t/R 0.5 on 0.7 R, 5.67 %
         // with session 14's map, 5.00 % too soft at its end (x = 0.37, delta/t 0.74) with
         // session 16's; the wrapped cap was chosen with it (and the miss above) in view.
-        "ball/core/force_nu0.47_t0.5_k0.7.csv" => 2.01, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.71
+        "ball/core/force_nu0.47_t0.5_k0.7.csv" => 2.50, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.71; session 24 (the squeezed skin's deviatoric stiffening): was 2.01
         // ... and nu 0.49, t/R 0.45 on 1.5 R (session 14's map: 1.93 %, session 16's 1.71 %).
-        "ball/core/force_nu0.49_t0.45_k1.5.csv" => 1.65, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.33
+        "ball/core/force_nu0.49_t0.45_k1.5.csv" => 1.60, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.33; session 24 (the squeezed skin's deviatoric stiffening): was 1.65
         // Session 17, blind to the wrapped cap (`fe_campaign.py`'s session-17 cases, run before
         // it was chosen, looked at after it was committed): nu 0.46, t/R 0.55 on 0.6 R (session
         // 16's law 4.06 %, too soft at its end, x = 0.40, delta/t 0.73) ...
-        "ball/core/force_nu0.46_t0.55_k0.6.csv" => 2.04, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.77
+        "ball/core/force_nu0.46_t0.55_k0.6.csv" => 1.98, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.77; session 24 (the squeezed skin's deviatoric stiffening): was 2.04
         // ... nu 0.49, t/R 0.4 on 0.8 R (1.76 %; the FE diverged at x = 0.24, delta/t 0.6) ...
-        "ball/core/force_nu0.49_t0.4_k0.8.csv" => 2.45, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.97
+        "ball/core/force_nu0.49_t0.4_k0.8.csv" => 2.41, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.97; session 24 (the squeezed skin's deviatoric stiffening): was 2.45
         // ... and two thick skins on larger balls, too stiff at depth with session 16's law
         // and with the wrapped cap alone (3.04 / 3.44 % at delta/t 0.8; 5.53 / 5.61 % at 0.75):
         // the continuation of chi_flat was chosen on them (not blind to it).
-        "ball/core/force_nu0.43_t0.6_k2.csv" => 2.21, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.37
-        "ball/core/force_nu0.48_t0.65_k4.csv" => 2.39, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.58
+        "ball/core/force_nu0.43_t0.6_k2.csv" => 1.68, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.37; session 24 (the squeezed skin's deviatoric stiffening): was 2.21
+        "ball/core/force_nu0.48_t0.65_k4.csv" => 2.04, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.58; session 24 (the squeezed skin's deviatoric stiffening): was 2.39
         // Session 17, blind to the continuation (launched before it was fixed, looked at after
         // it was committed): nu 0.45, t/R 0.6 on 3R (session 16's law 4.29 %, too stiff at
         // delta/t 0.8) and nu 0.42, t/R 0.5 on 1.5 R (1.47 %).
-        "ball/core/force_nu0.45_t0.6_k3.csv" => 1.97, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.15
-        "ball/core/force_nu0.42_t0.5_k1.5.csv" => 0.99, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.20
+        "ball/core/force_nu0.45_t0.6_k3.csv" => 1.35, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.15; session 24 (the squeezed skin's deviatoric stiffening): was 1.97
+        "ball/core/force_nu0.42_t0.5_k1.5.csv" => 1.66, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.20; session 24 (the squeezed skin's deviatoric stiffening): was 0.99
         // A curve that landed after: the issue's target.
         _ => 2.8,
     };
@@ -254,14 +254,17 @@ fn stated_force_error_3d(path: &str) -> f64 {
         // delta/t 0.65): the issue's 3 % just met.
         // Session 22: the ellipse's thin-layer factor (CORE_FORM.md, "Cylinders: session 22";
         // not adopted) takes it to 1.00 %, t/R 0.5 on R 2.21 -> 1.36 %, but 3R 3.29 -> 3.80 %.
-        "cylinder/core/force_nu0.48_t0.4_k1.csv" => 3.56, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.99
+        // Session 24 (the plane form's deviatoric stiffening of the squeezed skin, fitted on
+        // plane curves only: blind here): +2.44 % at x = 0.25, 3R -2.68 % at 0.32; with the
+        // ellipse's factor too, 1.07 % and 3.20 % (CORE_FORM.md, "Session 24").
+        "cylinder/core/force_nu0.48_t0.4_k1.csv" => 2.44, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.99; session 24 (the squeezed skin's deviatoric stiffening): was 3.56
         // Too soft by up to 1.88 % at x = 0.1, then within 0.7 % to x = 0.29, then too soft
         // again at the law's x_max (0.32, short of the FE's end 0.34): the issue's 3 % met.
-        "cylinder/core/force_nu0.48_t0.4_k3.csv" => 3.29, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.92
+        "cylinder/core/force_nu0.48_t0.4_k3.csv" => 2.68, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 2.92; session 24 (the squeezed skin's deviatoric stiffening): was 3.29
         // t/R 0.5 on R (to x = 0.36, delta/t 0.72): within 0.6 % to x = 0.23, +1.98 % at 0.32.
-        "cylinder/core/force_nu0.48_t0.5_k1.csv" => 2.21, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.98
+        "cylinder/core/force_nu0.48_t0.5_k1.csv" => 1.19, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.98; session 24 (the squeezed skin's deviatoric stiffening): was 2.21
         // ... and on 3R (to x = 0.37): too soft by up to 1.51 % at x = 0.15.
-        "cylinder/core/force_nu0.48_t0.5_k3.csv" => 1.39, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.51
+        "cylinder/core/force_nu0.48_t0.5_k3.csv" => 2.04, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.51; session 24 (the squeezed skin's deviatoric stiffening): was 1.39
         // The edge (session 18, issue 24 item 2's 10 %), through the core's own form since
         // session 18's `core_map` edge (the plane core law at the edge's patch argument rho_H
         // x, rho_H = h^2 = 0.204, times the bonded pad's edge squeeze excess at the squeeze the
@@ -270,27 +273,27 @@ fn stated_force_error_3d(path: &str) -> f64 {
         // map over the core's plane curve): +25.49 % at x = 0.13 (t/R 0.4) and +13.45 % at
         // x = 0.09 (t/R 0.5), the core stiffening the narrow patch as much as on a plane.
         // t/R 0.4 (to x = 0.21): -3.90 % at x = 0.01, +4.03 % at 0.06, -1.90 % at its end.
-        "edge/core/force_nu0.48_t0.4.csv" => 4.15, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 4.03
+        "edge/core/force_nu0.48_t0.4.csv" => 4.16, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 4.03; session 24 (the squeezed skin's deviatoric stiffening): was 4.15
         // t/R 0.5 (to x = 0.35): -3.89 % at x = 0.01 (the 3D mesh's first point, +2 % stiff
         // against the axisymmetric FE on the plane), +3.62 % at 0.06, -2.20 % at 0.30.
-        "edge/core/force_nu0.48_t0.5.csv" => 3.88, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 3.89
+        "edge/core/force_nu0.48_t0.5.csv" => 3.88, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 3.89; session 24 (the squeezed skin's deviatoric stiffening): was 3.88
         // Blind for that form (run after it was merged, end of session 18, nu 0.4 t/R 0.45, to
         // x = 0.19 where the 3D FE diverged): too soft by 8.03 % at its last point. Session 19
         // (the edge's form at the edge FE's nu 0.48 for every skin, `core_map`, the edge's
         // Poisson ratio; chosen with this curve in view): -3.98 % at x = 0.01 (the 3D mesh's
         // first point), +2.9 % at 0.06, -3.1 % at its end.
-        "edge/core/force_nu0.4_t0.45.csv" => 3.98, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 3.98
+        "edge/core/force_nu0.4_t0.45.csv" => 3.97, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 3.98; session 24 (the squeezed skin's deviatoric stiffening): was 3.98
         // The other three blind cases of that batch (session 19; run with the law of session
         // 18, no constant or form changed for them). A cylinder of 2R (an R2/R in no core
         // data) at nu 0.42, t/R 0.45, to x = 0.36 where the 3D FE diverged: -1.37 % at x =
         // 0.01, too soft by up to 1.54 % at 0.13, +1.20 % at 0.27, -0.89 % at the end; the
         // issue's 3 % met.
-        "cylinder/core/force_nu0.42_t0.45_k2.csv" => 1.32, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.54
+        "cylinder/core/force_nu0.42_t0.45_k2.csv" => 1.74, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 1.54; session 24 (the squeezed skin's deviatoric stiffening): was 1.32
         // The edge at nu 0.45, t/R 0.6 (to x = 0.33, diverged): -4.06 % at x = 0.01 (the 3D
         // mesh's first point, as on the nu 0.48 curves), +2.60 % at 0.06, -3.82 % at its end;
         // the issue's 10 % met. Session 19 (the edge at nu 0.48, as above): -3.82 % at x =
         // 0.01, +3.2 % at 0.06, -1.5 % at its end.
-        "edge/core/force_nu0.45_t0.6.csv" => 3.81, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 3.82
+        "edge/core/force_nu0.45_t0.6.csv" => 3.81, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 3.82; session 24 (the squeezed skin's deviatoric stiffening): was 3.81
         // The edge at nu 0.3, t/R 0.5 (to x = 0.17, diverged): missed the issue's 10 %. Too
         // soft everywhere, -0.74 % at x = 0.03 growing steadily to -5.64 % at 0.10 and
         // -11.56 % at the FE's last point. At x = 0.17 the blind edges read -0.94 % (nu 0.45,
@@ -301,7 +304,7 @@ fn stated_force_error_3d(path: &str) -> f64 {
         // force per E* does not depend on nu, `core_map`, the edge's Poisson ratio; chosen with
         // this curve in view, no longer blind): -3.55 % at x = 0.01, +2.3 % at 0.03, -3.3 % at
         // its end (the FE's compressible skin stiffer than the law there); the issue's 10 % met.
-        "edge/core/force_nu0.3_t0.5.csv" => 3.54, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 3.55
+        "edge/core/force_nu0.3_t0.5.csv" => 3.54, // session 21 (the thin-layer floor's refit, `w` 0.026); before: 3.55; session 24 (the squeezed skin's deviatoric stiffening): was 3.54
         other => panic!("{other}: no stated error (run with --nocapture and state it)"),
     };
     (pct + 0.2) / 100.0

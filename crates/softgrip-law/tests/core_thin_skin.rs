@@ -45,10 +45,15 @@ fn core_thickness_1e_22_made_the_force_negative_and_is_refused() {
 /// At the boundary and just above it, over nu in [0.3, 0.5] every 0.005: over the validity
 /// range (2000 points) the force is finite, > 0 and increasing, the stiffness finite and > 0,
 /// the energy increasing, the contact radius finite and > 0; and the force lies between
-/// Hertz's and 100x Hertz's (20x at t/R = 0.05, nu 0.45, x_max) (a thin bonded skin is stiffer than Hertz, never softer).
+/// Hertz's and 120x Hertz's (20x at t/R = 0.05, nu 0.45, x_max) (a thin bonded skin is stiffer than Hertz, never softer).
+/// The largest is at nu 0.5, t/R 0.05, x_max (delta/t 0.8): 106.9x since session 24's
+/// deviatoric stiffening of the squeezed skin (below 100x before; the bound was 100x then).
+/// Matthewson's incompressible thin layer alone, on the unsqueezed skin, is `(3 pi/8)(a_H/t)^3`
+/// = 75x there, and the squeeze to 0.2 t stiffens it further, so 107x is not unphysical.
 #[test]
 fn thinnest_accepted_core_is_finite_positive_and_monotone_over_nu() {
     let mut checked = 0;
+    let mut top = (0.0, String::new());
     for tau in [
         MIN_CORE_THICKNESS_RATIO,
         MIN_CORE_THICKNESS_RATIO * 1.001,
@@ -69,11 +74,15 @@ fn thinnest_accepted_core_is_finite_positive_and_monotone_over_nu() {
                 assert!(s.stiffness.is_finite() && s.stiffness > 0.0, "{at}");
                 assert!(s.energy.is_finite() && s.energy > e0, "{at}");
                 assert!(s.patch.radius.is_finite() && s.patch.radius > 0.0, "{at}");
-                assert!(s.force >= hertz && s.force <= 100.0 * hertz, "{at}");
+                if s.force / hertz > top.0 {
+                    top = (s.force / hertz, at.clone());
+                }
+                assert!(s.force >= hertz && s.force <= 120.0 * hertz, "{at}");
                 (f0, e0) = (s.force, s.energy);
                 checked += 1;
             }
         }
     }
+    eprintln!("largest F/F_Hertz {:.2}: {}", top.0, top.1);
     assert_eq!(checked, 4 * 41 * 2000);
 }
