@@ -164,6 +164,9 @@ pub struct SoftContacts {
     pub(crate) any_tactile: bool,
     /// The resting fast path's memo of the last step (`step::memo`).
     pub(crate) rest: crate::step::memo::RestMemo,
+    /// The clearing of the empty awake island rapier 0.36.1 can leave behind
+    /// (`step::stale_island`).
+    pub(crate) stale_island: crate::step::stale_island::StaleIsland,
 }
 
 /// The fingertips' colliders as rapier's hooks see them: each with its facing in its
@@ -196,6 +199,7 @@ impl Default for SoftContacts {
             max_radius: 0.0,
             any_tactile: false,
             rest: Default::default(),
+            stale_island: Default::default(),
         }
     }
 }

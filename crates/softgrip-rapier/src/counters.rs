@@ -110,6 +110,13 @@ pub struct SoftCounters {
     /// replayed"). A replayed step adds the counts of the step it replays (`contacts_evaluated`
     /// included: the same contacts, reused bit for bit), not its times.
     pub replayed_steps: u64,
+    /// Pipeline steps that carried a collider-less body through rapier's awake island to clear
+    /// it, total: after a step that put every awake body to sleep in several chunks, rapier
+    /// 0.36.1 leaves its awake island empty but set and enters its solver on no body every
+    /// later step (crate README, "Where a resting step's time goes"); one such step after each
+    /// time the world falls wholly asleep. Not counted by a step the resting fast path replays
+    /// unless it carries the body itself.
+    pub awake_islands_cleared: u64,
     /// Time spent in soft contact detection.
     pub detect_time: Duration,
     /// Time spent in the contact stage of the substeps: the rows of every substep after the

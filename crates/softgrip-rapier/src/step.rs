@@ -57,6 +57,7 @@ use onset::update_blend;
 pub(crate) mod memo;
 mod onset;
 mod split;
+pub(crate) mod stale_island;
 mod wake;
 
 pub(crate) use split::GapMemory;
@@ -133,6 +134,11 @@ impl SoftContacts {
             }
             .run()
         });
+        if r.is_err() {
+            // A panic inside rapier's pipeline step may have left the carrier in the set.
+            let stale = &mut self.stale_island;
+            let _ = guard::catch(at.step, at.time, || stale.remove_carrier(world));
+        }
         self.hook_view = soft;
         let dropped = links.take_dropped();
         self.counters.locked_link_contacts += dropped;
@@ -188,6 +194,7 @@ impl Step<'_> {
         let w = &mut *self.physics;
         let mut p = w.integration_parameters;
         p.dt = h as f32;
+        self.soft.stale_island.before_step(w);
         w.physics_pipeline.step(
             w.gravity,
             &p,
@@ -203,6 +210,9 @@ impl Step<'_> {
             self.hooks,
             self.events,
         );
+        if self.soft.stale_island.after_step(w) {
+            self.soft.counters.awake_islands_cleared += 1;
+        }
         self.soft.counters.pipeline_time += t.elapsed();
     }
 
