@@ -10,7 +10,12 @@ Prints
      stiffer penalty), beside the error on the committed curve at the same x;
   3. the factor g on the law's layer excess that would make the law exact at x = 0.01, 0.02,
      0.04 (chi_FE = chi_flat + g * excess * (1 + squeeze) * coupling), per skin of t/R <= 0.3,
-     sorted by nu: where the form's nu dependence misses (CORE_FORM.md "Thin skins: session 24").
+     sorted by nu: where the form's nu dependence misses (CORE_FORM.md "Thin skins: session 24");
+  4. per committed core curve, the penalty's bias estimated from its own columns: the skin sinks
+     into the plane by `max_copen_over_delta` of delta, so the force is low by about
+     n * max_copen_over_delta, n = d ln F / d ln delta (at x = 0.01 and its largest); the 10x
+     penalty checks measured 0.39-0.40 % where this reads 0.40-0.44 % (nu 0.3, 0.4) and
+     1.11 % where it reads 0.73 % (nu 0.48 t/R 0.06): a lower bound near incompressibility.
 
 usage: PY tools/calibration/try_thin_skin_s24.py [--runs DIR]
        (PY: /work/main/target/fe-venv/bin/python; --runs default /work/fe-scratch/s24-skin)
@@ -105,6 +110,19 @@ def main():
                 rows.append((c["nu"], c["tau"], x0, np.sqrt(x0) / c["tau"], 100 * (g - 1), tag))
     for nu, t, x, at, g, tag in sorted(rows):
         print(f"nu {nu:<5g} t/R {t:<5g} x {x:<5g} a_H/t {at:4.2f}  g - 1 = {g:+6.2f} %  ({tag})")
+    print("\n## 4. the penalty's bias estimated, n * max_copen_over_delta [%]")
+    import glob
+    for p in sorted(glob.glob(os.path.join(f.DATA, "force_nu*_t*.csv")) +
+                    glob.glob(os.path.join(f.DATA, "cax8", "force_nu*_t*.csv"))):
+        c = np.genfromtxt(p, delimiter=",", names=True, skip_header=1)
+        x, F, cop = c["delta_over_R"], c["force_N"], c["max_copen_over_delta"]
+        n = np.gradient(np.log(F), np.log(x))
+        est = 100 * n * cop
+        i = np.where(np.abs(x - 0.01) < 1e-9)[0]
+        j = int(np.argmax(est))
+        at1 = f"{est[i[0]]:.2f} % (n {n[i[0]]:.2f})" if len(i) else "-"
+        print(f"{os.path.relpath(p, f.DATA):28s} x 0.01: {at1}; largest {est[j]:.2f} % at "
+              f"x = {x[j]:g}")
     return 0
 
 

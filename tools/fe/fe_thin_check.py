@@ -24,9 +24,13 @@ import fe_run  # noqa: E402
 DATA = os.path.join(HERE, "..", "..", "tests", "data", "fe", "core")
 
 # name -> (nu, t/R, R/h, max increment in x, end x, output every, penalty MPa/mm, element)
-# The committed runs: nu 0.4 t/R 0.06 R/100, increments <= 0.001, output 0.0025 (session 21,
-# blind); nu 0.3 t/R 0.05 R/120, <= 0.0025, output 0.005 (session 20, fit);
-# nu 0.48 t/R 0.06 R/100 <= 0.0005 (session 21, blind); nu 0.45 t/R 0.07 R/90 <= 0.0005.
+# The committed runs they check: nu 0.4 t/R 0.06 R/100, increments <= 0.001 (session 21, blind;
+# the law +3.80 % at x 0.01); nu 0.3 t/R 0.05 R/120, <= 0.0025, output every 0.005 (session 20,
+# fit; -3.32 % at x 0.01); nu 0.45 t/R 0.07 R/90, <= 0.0005 (session 21, blind; +3.58 % at
+# 0.0175); nu 0.49 t/R 0.12 R/60, <= 0.005, output every 0.01 (held out; -3.08 % at 0.01);
+# nu 0.48 t/R 0.06 R/100, <= 0.0005 (session 21, blind). A finer mesh (R/h), smaller
+# increments (the R/120 twin of nu 0.3 separates the two) or a stiffer penalty (k1e6, k1e7:
+# the campaign's is 1e5 MPa/mm), each to x = 0.0125-0.03 (CORE_FORM.md "Thin skins: session 24")
 CASES = {
     "nu0.4_t0.06_h150_dt0.0005": (0.4, 0.06, 150, 0.0005, 0.015, 0.0025, 1e5, "CAX8R"),
     "nu0.3_t0.05_h180_dt0.0005": (0.3, 0.05, 180, 0.0005, 0.015, 0.0025, 1e5, "CAX8R"),
@@ -36,6 +40,9 @@ CASES = {
     "nu0.49_t0.12_h90_dt0.001": (0.49, 0.12, 90, 0.001, 0.03, 0.005, 1e5, "CAX8R"),
     "nu0.3_t0.05_h120_dt0.0005_k1e6": (0.3, 0.05, 120, 0.0005, 0.0125, 0.0025, 1e6, "CAX8R"),
     "nu0.48_t0.06_h100_dt0.0005_k1e6": (0.48, 0.06, 100, 0.0005, 0.0125, 0.0025, 1e6, "CAX8R"),
+    "nu0.45_t0.07_h180_dt0.0005": (0.45, 0.07, 180, 0.0005, 0.02, 0.0025, 1e5, "CAX8R"),
+    "nu0.49_t0.12_h60_dt0.005_k1e6": (0.49, 0.12, 60, 0.005, 0.03, 0.01, 1e6, "CAX8R"),
+    "nu0.48_t0.06_h100_dt0.0005_k1e7": (0.48, 0.06, 100, 0.0005, 0.0125, 0.0025, 1e7, "CAX8R"),
 }
 
 
