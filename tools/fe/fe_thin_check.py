@@ -6,7 +6,7 @@ Short runs (to x ~ 0.015-0.03) of a committed thin skin (tests/data/fe/core/forc
 with a finer mesh, smaller load increments and/or a stiffer contact penalty, each compared
 point by point with the committed curve: 100 (F_check / F_committed - 1) %.
 
-usage: PY tools/fe/fe_thin_check.py [--runs DIR] [--only NAME ...] [--list]
+usage: PY tools/fe/fe_thin_check.py [--runs DIR] [--only NAME ...] [--list] [--report] [--export]
        (PY: target/fe-venv/bin/python; one ccx at a time, under `nice`; DIR default
        /work/fe-scratch/s24-skin). A run directory that holds meta.json is not run again.
 """
@@ -147,7 +147,8 @@ def report(name, rundir):
             print(f"   {x:<8g} {r['F']:<13.6g} {ref[x]:<17.6g} {100 * (r['F'] / ref[x] - 1):+7.3f}"
                   f"   {r.get('copen', float('nan')):.4g}")
         else:
-            print(f"   {x:<8g} {r['F']:<13.6g} {'-':<17} {'':7}   {r.get('copen', float('nan')):.4g}")
+            print(f"   {x:<8g} {r['F']:<13.6g} {'-':<17} {'':7}"
+                  f"   {r.get('copen', float('nan')):.4g}")
 
 
 def main():
