@@ -14,8 +14,9 @@ Prints
   4. per committed core curve, the penalty's bias estimated from its own columns: the skin sinks
      into the plane by `max_copen_over_delta` of delta, so the force is low by about
      n * max_copen_over_delta, n = d ln F / d ln delta (at x = 0.01 and its largest); the 10x
-     penalty checks measured 0.39-0.40 % where this reads 0.40-0.44 % (nu 0.3, 0.4) and
-     1.11 % where it reads 0.73 % (nu 0.48 t/R 0.06): a lower bound near incompressibility.
+     penalty checks measured 0.39-0.40 % where this reads 0.40-0.44 % (nu 0.3, 0.4), 1.11 %
+     where it reads 0.73 % (nu 0.48 t/R 0.06), and at most 0.073 % on the thick CAX8 skin of
+     nu 0.48 t/R 0.4 where it reads 0.11-0.48 %: a guide on thin skins only.
 
 usage: PY tools/calibration/try_thin_skin_s24.py [--runs DIR]
        (PY: /work/main/target/fe-venv/bin/python; --runs default /work/fe-scratch/s24-skin)
@@ -84,7 +85,7 @@ def main():
             print(f"{name}: not run")
             continue
         rows = [r for r in fe_run.analyse(d)["rows"] if r["x"] >= 0.01 - 1e-9]
-        ref = fe_thin_check.committed(nu, t)
+        ref = fe_thin_check.committed(nu, t, el)
         es = 2 * (1 + nu) / (1 - nu ** 2)
         out = []
         for r in rows:

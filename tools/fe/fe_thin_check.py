@@ -43,21 +43,29 @@ CASES = {
     "nu0.45_t0.07_h180_dt0.0005": (0.45, 0.07, 180, 0.0005, 0.02, 0.0025, 1e5, "CAX8R"),
     "nu0.49_t0.12_h60_dt0.005_k1e6": (0.49, 0.12, 60, 0.005, 0.03, 0.01, 1e6, "CAX8R"),
     "nu0.48_t0.06_h100_dt0.0005_k1e7": (0.48, 0.06, 100, 0.0005, 0.0125, 0.0025, 1e7, "CAX8R"),
+    # a thick skin at its deep end (the CAX8 curve of session 23, core/cax8/), penalty only
+    "nu0.48_t0.4_h40_cax8_k1e6": (0.48, 0.4, 40, 0.005, 0.34, 0.01, 1e6, "CAX8"),
 }
 
 
 def case_of(name):
     nu, t, h, dt, tend, tp, kpen, el = CASES[name]
-    case = fe_run.make_case("core", nu, t, h, tend, dt_small=dt, late_dt=dt, element=el)
+    late = 0.01 if el == "CAX8" else dt  # the CAX8 deep curve: <= 0.005 to x = 0.1, 0.01 on
+    case = fe_run.make_case("core", nu, t, h, tend, dt_small=dt, late_dt=late, element=el)
     case.tp = tp
     case.kpen = kpen
     return case
 
 
-def committed_h(nu, t):
+def path_of(nu, t, el="CAX8R"):
+    """The committed curve a check compares with (CAX8: session 23's core/cax8/)."""
+    return os.path.join(DATA, *(["cax8"] if el == "CAX8" else []), f"force_nu{nu:g}_t{t:g}.csv")
+
+
+def committed_h(nu, t, el="CAX8R"):
     """R/h of the committed curve, from its provenance line."""
     import re
-    line = open(os.path.join(DATA, f"force_nu{nu:g}_t{t:g}.csv")).readline()
+    line = open(path_of(nu, t, el)).readline()
     return float(re.search(r"element edge R/(\d+)", line).group(1))
 
 
@@ -80,9 +88,8 @@ def export(names, runs):
         nu, t, h, dt, tend, tp, kpen, el = CASES[n]
         res = fe_run.analyse(d)
         res["dir"], res["role"] = d, "conv"
-        hb = committed_h(nu, t)
-        a = np.genfromtxt(os.path.join(DATA, f"force_nu{nu:g}_t{t:g}.csv"), delimiter=",",
-                          names=True, skip_header=1)
+        hb = committed_h(nu, t, el)
+        a = np.genfromtxt(path_of(nu, t, el), delimiter=",", names=True, skip_header=1)
         base = {"rows": [dict(x=float(x), F=float(F), a=float(r)) for x, F, r in
                          zip(a["delta_over_R"], a["force_N"], a["contact_radius_mm"])]}
         other = dict(res, rows=[dict(r, x=round(r["x"], 6)) for r in res["rows"]])
@@ -128,16 +135,15 @@ def export(names, runs):
                     fh.write(ln + "\n")
 
 
-def committed(nu, t):
-    path = os.path.join(DATA, f"force_nu{nu:g}_t{t:g}.csv")
-    a = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+def committed(nu, t, el="CAX8R"):
+    a = np.genfromtxt(path_of(nu, t, el), delimiter=",", names=True, skip_header=1)
     return dict(zip(np.round(np.atleast_1d(a["delta_over_R"]), 6), np.atleast_1d(a["force_N"])))
 
 
 def report(name, rundir):
     nu, t, h, dt, tend, tp, kpen, el = CASES[name]
     res = fe_run.analyse(rundir)
-    ref = committed(nu, t)
+    ref = committed(nu, t, el)
     print(f"== {name}: {res['meta']['mesh']} wall {res['meta']['wall_s']} s; reached "
           f"x = {res['reached']:g}: {res['why']}")
     print("   x        F_check [N]   F_committed [N]   diff %    copen/delta")
