@@ -28,8 +28,9 @@
 //! then, scaled by the step ratio: [`warm_start`]; a new contact at 0), else from zero: block
 //! Gauss-Seidel, [`OUTER`] times: a dense LU of the
 //! normals (on their active set) and of the rigid friction pairs that stick and whose normal
-//! load comes mostly from the soft contacts, then [`SWEEPS`] sweeps of the friction pairs and
-//! torsions, each in closed form on its own mobility and clamped. Rows that compete for one
+//! load comes mostly from the soft contacts, then up to [`SWEEPS`] sweeps of the friction pairs
+//! and torsions, each in closed form on its own mobility and clamped (the sweeps stop once one
+//! moves no impulse by more than [`CONVERGED`] of the largest). Rows that compete for one
 //! degree of freedom (the table's normal and a pressing fingertip's normal; a wall's friction
 //! and a fingertip's) are solved together by the LU, which alternating sweeps would take tens
 //! of iterations to do. A rigid pair that slides leaves the LU for good (the set must not
@@ -80,7 +81,7 @@ const SOFT_FRICTION_COMPLIANCE: f64 = 1e-2;
 
 /// Outer iterations (normals, then friction) of one coupled solve.
 const OUTER: usize = 32;
-/// Friction sweeps per outer iteration.
+/// Most friction sweeps per outer iteration (fewer once a sweep settles: [`solve_scalars`]).
 const SWEEPS: usize = 4;
 /// Relative change of the impulses between outer passes below which the solve stops early
 /// (the tests hold the soft force to the law within 1e-5).
@@ -636,8 +637,9 @@ fn push_friction_pair(
 ///
 /// Block Gauss-Seidel, [`OUTER`] times: a dense LU of the normals (soft and hard, on their
 /// active set) and of the rigid friction pairs that stick and carry mostly soft load, the
-/// other rows held at their impulses; then [`SWEEPS`] sweeps of the friction pairs and
-/// torsions, each in closed form on its own mobility and clamped to its disk or limit. The
+/// other rows held at their impulses; then up to [`SWEEPS`] sweeps of the friction pairs and
+/// torsions, each in closed form on its own mobility and clamped to its disk or limit, until
+/// one moves no impulse by more than [`CONVERGED`] of the largest ([`settled`]). The
 /// fingertips' friction stays in the sweeps (its targets carry a kinematic tip's noise).
 #[allow(clippy::too_many_arguments)]
 fn solve_scalars(
@@ -688,8 +690,14 @@ fn solve_scalars(
     *passes = OUTER + 1;
     for pass in 0..OUTER {
         lu_pass(bodies, rows, j, lu, h, state, cache)?;
+        // The sweeps stop once one moves no impulse by more than CONVERGED of the largest, the
+        // outer passes' own stop (session 24: 1.7 sweeps a pass, not 4, in `softgrip sweep
+        // sweeps/throughput.toml`; the answers move within that stop, so not bit for bit).
         for _ in 0..SWEEPS {
-            sweep(bodies, rows, items, j)?;
+            let moved = sweep(bodies, rows, items, j)?;
+            if settled(moved, j) {
+                break;
+            }
         }
         mark_slid(rows, lu, j, slid);
         previous_lu.clone_from(lu);
@@ -845,11 +853,17 @@ fn mark_slid(rows: &[Scalar], lu: &[usize], j: &[f64], slid: &mut [bool]) {
 /// (each pass is a dense LU: the default scene's groups without friction cycling settle in 2
 /// passes; 124 -> 71 ms for `softgrip run`).
 fn moved_within(j: &[f64], previous: &[f64]) -> bool {
-    let scale = j.iter().fold(0.0f64, |a, v| a.max(v.abs()));
     let moved = j
         .iter()
         .zip(previous)
         .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+    settled(moved, j)
+}
+
+/// Whether a change of at most `moved` \[N s\] to the impulses `j` is within [`CONVERGED`] of
+/// the largest of them.
+fn settled(moved: f64, j: &[f64]) -> bool {
+    let scale = j.iter().fold(0.0f64, |a, v| a.max(v.abs()));
     moved <= CONVERGED * scale
 }
 
@@ -1122,14 +1136,16 @@ fn sweep_items(
 }
 
 /// One sweep of the friction pairs and torsions `items` ([`sweep_items`]; see
-/// [`solve_scalars`]).
+/// [`solve_scalars`]): the largest change it made to an impulse \[N s\], `None` if one was not
+/// finite.
 ///
 /// A compliant row (a fingertip's friction) is solved here as the hard equation `v(end) =
 /// target` under-relaxed by `1 / (1 + compliance)`, where the LU solves the compliant one
 /// (`+ compliance w (j - prox)`): against a box the table holds, its impulse moves by the same
 /// amount every pass, and [`OUTER`] is what bounds it (crate README, Limits, session 12: made
 /// consistent, the solve converges to an answer the wall box fails).
-fn sweep(bodies: &mut [BodyState], rows: &[Scalar], items: &[Item], j: &mut [f64]) -> Option<()> {
+fn sweep(bodies: &mut [BodyState], rows: &[Scalar], items: &[Item], j: &mut [f64]) -> Option<f64> {
+    let mut moved = 0.0f64;
     for item in items {
         match *item {
             Item::Pair {
@@ -1162,8 +1178,10 @@ fn sweep(bodies: &mut [BodyState], rows: &[Scalar], items: &[Item], j: &mut [f64
                 if !(new.x.is_finite() && new.y.is_finite()) {
                     return None;
                 }
-                x.apply(bodies, new.x - old.x);
-                y.apply(bodies, new.y - old.y);
+                let change = new - old;
+                x.apply(bodies, change.x);
+                y.apply(bodies, change.y);
+                moved = moved.max(change.x.abs()).max(change.y.abs());
                 j[i] = new.x;
                 j[other] = new.y;
             }
@@ -1174,12 +1192,14 @@ fn sweep(bodies: &mut [BodyState], rows: &[Scalar], items: &[Item], j: &mut [f64
                 if !new.is_finite() {
                     return None;
                 }
-                r.apply(bodies, new - j[i]);
+                let change = new - j[i];
+                r.apply(bodies, change);
+                moved = moved.max(change.abs());
                 j[i] = new;
             }
         }
     }
-    Some(())
+    Some(moved)
 }
 
 /// Whether `v` is surely within the disk of radius `limit`, `|v| <= limit`, decided without
