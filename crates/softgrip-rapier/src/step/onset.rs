@@ -149,7 +149,7 @@ fn onset(row: &mut Row, model: &Model, delta0: f64, w: f64, h: f64, capped: bool
 /// row (`theta = 1`, no damping, the law's stiffness at the wall) whose end separation
 /// velocity is `e(v) v`, `v` the approach speed the first solve predicted (no force on the
 /// row) and `e(v) = max(0, 1 - (2/3) alpha v)` the fingertip's own Hunt-Crossley restitution
-/// at that speed (`alpha` from its restitution, [`Model::alpha`]): the body leaves no faster
+/// at that speed (`alpha` from its restitution, `Model::alpha`): the body leaves no faster
 /// than it came, and the contact ends within the substep. Returns whether the row changed.
 fn impact(row: &mut Row, model: &Model, delta_end: f64, h: f64) -> bool {
     let v_in = if row.lin > 0.0 {
