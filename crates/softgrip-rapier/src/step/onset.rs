@@ -46,7 +46,13 @@ impl Step<'_> {
                 .zip(s.geom.iter().zip(&s.mobility))
             {
                 let delta0 = compression_from_signed_distance(self.soft.geoms[gi].dist);
-                again |= onset(row, model, delta0, w, h, capped);
+                again |= if row.past_wall {
+                    false
+                } else if delta0 > 0.0 {
+                    capped && wall_stop(row, model, delta0, h)
+                } else {
+                    onset(row, model, delta0, w, h, capped)
+                };
             }
             if !again || pass + 1 == MAX_ONSET_PASSES {
                 self.soft.counters.non_finite += failed;
@@ -96,13 +102,9 @@ const MAX_ONSET_PASSES: usize = 12;
 /// (the default fingertip dropped 0.5 mm at dt = 1/60 s rebounded to 13 times its height, a
 /// stiff 1 mm tip dropped 10 cm at dt = 1/30 s to 317 m). Resolved (`θ = 0`, a fine substep)
 /// it changes nothing. Returns whether the row was linearised anew (the solve must run again).
+/// Called for a row not yet made hard (`past_wall` false) that does not touch at the start;
+/// a touching one goes to [`wall_stop`] instead.
 fn onset(row: &mut Row, model: &Model, delta0: f64, w: f64, h: f64, capped: bool) -> bool {
-    if row.past_wall {
-        return false;
-    }
-    if delta0 > 0.0 {
-        return capped && wall_stop(row, model, delta0, h);
-    }
     let d = if row.lin > 0.0 {
         delta0 - row.theta * h * row.vn_end
     } else {
@@ -159,14 +161,23 @@ fn impact(row: &mut Row, model: &Model, delta_end: f64, h: f64) -> bool {
     };
     let v_in = v_in.max(0.0);
     let e = (1.0 - 2.0 / 3.0 * model.alpha * v_in).clamp(0.0, 1.0);
+    // `delta_end` lies past the wall here (`onset` checked), so the stiffness is the wall's.
+    hard_row(row, model, delta_end, |k| k * h * e * v_in)
+}
+
+/// Makes `row` hard for the rest of the (sub)step ([`impact`], [`wall_stop`]): implicit
+/// (`theta = 1`), undamped, with the law's stiffness `k` at its wall, linearised at
+/// `delta_end` \[m\] and with the force `force(k)` \[N\] (`k h v`: the solved end
+/// separation velocity is `v`). Returns true (the row changed).
+fn hard_row(row: &mut Row, model: &Model, delta_end: f64, force: impl Fn(f64) -> f64) -> bool {
     let wall = model.law.x_wall() * model.law.params().radius();
-    let at = model.law.response(wall.min(delta_end));
+    let k = model.law.response(wall).stiffness;
     row.lin = delta_end;
     row.past_wall = true;
     row.theta = 1.0;
     row.damping = 0.0;
-    row.stiffness = at.stiffness;
-    row.force = at.stiffness * h * e * v_in;
+    row.stiffness = k;
+    row.force = force(k);
     true
 }
 
@@ -187,14 +198,7 @@ fn wall_stop(row: &mut Row, model: &Model, delta0: f64, h: f64) -> bool {
         return false;
     }
     let v_end = -((WALL_STOP * wall - delta0) / h).max(0.0);
-    let at = model.law.response(wall);
-    row.lin = delta_end;
-    row.past_wall = true;
-    row.theta = 1.0;
-    row.damping = 0.0;
-    row.stiffness = at.stiffness;
-    row.force = at.stiffness * h * v_end;
-    true
+    hard_row(row, model, delta_end, |k| k * h * v_end)
 }
 
 /// The share of its wall a contact is stopped at by [`wall_stop`].
