@@ -571,7 +571,11 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             w * 100.0
         );
         let f = data.iter().find(|p| (p.0 - at).abs() < 1e-9).expect("x").1;
-        assert_eq!(core.response(at).force < f, soft, "nu {nu} t/R {t}: the sign");
+        assert_eq!(
+            core.response(at).force < f,
+            soft,
+            "nu {nu} t/R {t}: the sign"
+        );
     }
 }
 
