@@ -546,6 +546,17 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.045,
             true,
         ),
+        // nu 0.49 t/R 0.12 (held out): -3.70 % at x = 0.015 (the committed
+        // curve, to x = 0.05: -3.08 % at 0.01)
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.49_t0.12.csv"),
+            0.49,
+            0.12,
+            0.055,
+            3.70,
+            0.015,
+            true,
+        ),
         // nu 0.4 t/R 0.06 (blind): +3.48 % at x = 0.01 (the committed
         // curve, to x = 0.03: +3.80 % at 0.01)
         (
