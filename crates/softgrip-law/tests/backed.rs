@@ -557,6 +557,17 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.015,
             true,
         ),
+        // nu 0.4 t/R 0.05 (fit data): +3.02 % at x = 0.01 (the committed
+        // curve, to x = 0.025: +3.18 % at 0.01)
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.05.csv"),
+            0.4,
+            0.05,
+            0.03,
+            3.02,
+            0.01,
+            false,
+        ),
         // nu 0.4 t/R 0.06 (blind): +3.48 % at x = 0.01 (the committed
         // curve, to x = 0.03: +3.80 % at 0.01)
         (
