@@ -535,6 +535,28 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.01,
             true,
         ),
+        // nu 0.3 t/R 0.1 (fit data): -3.15 % at x = 0.075 (the committed
+        // curve, to x = 0.07: -1.70 % at 0.02)
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.1.csv"),
+            0.3,
+            0.1,
+            0.075,
+            3.15,
+            0.075,
+            true,
+        ),
+        // nu 0.45 t/R 0.07 (blind): +2.36 % at x = 0.015 (the committed
+        // curve, to x = 0.0275: +3.58 % at 0.0175)
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.45_t0.07.csv"),
+            0.45,
+            0.07,
+            0.0325,
+            2.36,
+            0.015,
+            false,
+        ),
         // nu 0.48 t/R 0.1 (fit data): -4.04 % at x = 0.045 (the committed
         // curve, to x = 0.04: -2.84 % at 0.01)
         (
