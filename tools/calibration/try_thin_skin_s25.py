@@ -25,7 +25,7 @@ CORE, CORE_DEVIATORIC: s23.form("K")); K is that form refitted.
   P   the law's thin-layer floor with its p-norm power fitted (session 20b's F)
   B   the floor is Matthewson's thin layer with the patch widened by a fringe beta t
       (u -> u + beta, beta fitted; B5: 0.5 fixed; U: the fringe grows as u^2/(1 + u^2));
-      `--fringe` measures the beta the FE wants (0.45-0.65 at nu >= 0.38)
+      `--fringe` measures the beta the FE wants (0.40-0.67 at nu >= 0.38)
   G   the floor on chi itself (thin layer against the whole law, chi_flat included), not on
       the excess over 1
   H   the floor's layer at the skin's mean depth t h (the series' depth) instead of t
@@ -34,7 +34,7 @@ CORE, CORE_DEVIATORIC: s23.form("K")); K is that form refitted.
   S   the layer seen at the patch's mean thinned depth t (1 - c_s s) (S5: c_s = 0.5)
 
 usage: PY tools/calibration/try_thin_skin_s25.py [--new] [--runs DIR] [--var MODE ...]
-       [--curves MODE ...] [--probe]
+       [--curves MODE ...] [--fringe]
        (PY: /work/main/target/fe-venv/bin/python)
 """
 import argparse
@@ -168,12 +168,6 @@ def p0_of(mode):
     return (list(LAW) + [0.0] * sum(k in mode for k in "CO") + ([4.0] if "P" in mode else [])
             + ([0.5] if "B" in mode and "B5" not in mode else [])
             + ([0.5] if "S" in mode and "S5" not in mode else []))
-
-
-def report(mode, p, groups):
-    f.chi_core = form(mode)
-    cells = [b.worst(p, cs) for _, cs in groups]
-    return cells
 
 
 def fringe(groups):
