@@ -557,6 +557,17 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.015,
             false,
         ),
+        // nu 0.48 t/R 0.06 (blind): -5.89 % at x = 0.025 (the committed
+        // curve, to x = 0.02: -1.18 % at 0.01)
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.06.csv"),
+            0.48,
+            0.06,
+            0.025,
+            5.89,
+            0.025,
+            true,
+        ),
         // nu 0.48 t/R 0.1 (fit data): -4.04 % at x = 0.045 (the committed
         // curve, to x = 0.04: -2.84 % at 0.01)
         (
@@ -599,6 +610,17 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.035,
             3.48,
             0.01,
+            false,
+        ),
+        // nu 0.4 t/R 0.1 (fit data): +2.84 % at x = 0.025 (the committed
+        // curve, to x = 0.06: +2.83 % at 0.02)
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.1.csv"),
+            0.4,
+            0.1,
+            0.065,
+            2.84,
+            0.025,
             false,
         ),
     ];
