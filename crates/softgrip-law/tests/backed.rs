@@ -568,6 +568,17 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.025,
             true,
         ),
+        // nu 0.48 t/R 0.08 (blind): -5.75 % at x = 0.0375 (the committed
+        // curve, to x = 0.0325: -2.35 % at 0.01)
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.08.csv"),
+            0.48,
+            0.08,
+            0.0375,
+            5.75,
+            0.0375,
+            true,
+        ),
         // nu 0.48 t/R 0.1 (fit data): -4.04 % at x = 0.045 (the committed
         // curve, to x = 0.04: -2.84 % at 0.01)
         (
