@@ -546,6 +546,17 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.01,
             true,
         ),
+        // nu 0.3 t/R 0.08 (blind): -2.35 % at x = 0.0125 (the committed
+        // curve, to x = 0.05: -2.07 % at 0.02)
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.08.csv"),
+            0.3,
+            0.08,
+            0.055,
+            2.35,
+            0.0125,
+            true,
+        ),
         // nu 0.3 t/R 0.1 (fit data): -3.15 % at x = 0.075 (the committed
         // curve, to x = 0.07: -1.70 % at 0.02)
         (
