@@ -46,6 +46,13 @@ pub(crate) struct Series {
 }
 
 impl Model {
+    /// The Hunt-Crossley restitution at approach speed `v` \[m/s\], `v >= 0`:
+    /// `e(v) = 1 - (2/3) alpha v`, clamped to \[0, 1\] (at most the body's speed back, never
+    /// a negative one).
+    pub(crate) fn restitution(&self, v: f64) -> f64 {
+        (1.0 - 2.0 / 3.0 * self.alpha * v).clamp(0.0, 1.0)
+    }
+
     pub(crate) fn of_tip(tip: &SoftFingertip) -> Self {
         Self {
             law: tip.law().clone(),

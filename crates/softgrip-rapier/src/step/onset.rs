@@ -175,7 +175,7 @@ fn impact(row: &mut Row, model: &Model, delta_end: f64, h: f64) -> bool {
         -row.vn_end.min(0.0)
     };
     let v_in = v_in.max(0.0);
-    let e = (1.0 - 2.0 / 3.0 * model.alpha * v_in).clamp(0.0, 1.0);
+    let e = model.restitution(v_in);
     // `delta_end` lies past the wall here (`onset` checked), so the stiffness is the wall's.
     hard_row(row, model, delta_end, |k| k * h * e * v_in)
 }
@@ -231,7 +231,7 @@ fn short_impact(
     if std::f64::consts::PI * hi / v > h {
         return false;
     }
-    let e = (1.0 - 2.0 / 3.0 * model.alpha * v).clamp(0.0, 1.0);
+    let e = model.restitution(v);
     let g = push.max(0.0);
     if g > 0.0 && 2.0 * e * v / g <= h {
         // The rebound would be back within the substep (or there is none, e(v) = 0): the
