@@ -25,7 +25,10 @@ Result (CORE_FORM.md "Thin skins: session 26"): every refit takes the thin fit a
 from 6.21 / 5.89 % to 3.1-3.8 %, and every one is worse than the law on the held-out set (the
 thick nu 0.49 t/R 0.3 at its deep end, 3.8-4.2 % against 3.70 %): none adopted.
 
-usage: PY tools/calibration/try_thin_skin_s26.py [--var MODE ...] [--curves MODE ...]
+With --deep (`deep`, issue 24 item 5's step past x_max = 0.8 t/R): the law and two relieved
+deep stiffenings (V1, V2, `form_v`) on the deep CAX8 skins to the FE's reach.
+
+usage: PY tools/calibration/try_thin_skin_s26.py [--var MODE ...] [--curves MODE ...] [--deep]
        (PY: /work/main/target/fe-venv/bin/python)
 """
 import argparse
@@ -186,12 +189,69 @@ def p0_of(mode):
     return s25.p0_of(core) + ([0.5] if "Tc" in mode else [])
 
 
+def form_v(mode):
+    """V1 / V2 (step past 0.8 t/R): the confined skin's stiffening D(s) relieved at depth, one
+    constant c fitted: V1 the stretch floored, lam -> sqrt(lam^2 + c^2); V2 the squeeze seen as
+    s / (1 + |c| s). (The skin over the pole is no oedometer once the patch is not much wider
+    than the skin: it escapes sideways.)"""
+    base = s25.form("K")
+    orig = f.confined
+
+    def chi(p, x, nu, tau):
+        c = p[-1]
+
+        def relieved(s):
+            lam = 1 - s
+            le = np.sqrt(lam * lam + c * c) if mode == "V1" else 1 - s / (1 + abs(c) * s)
+            return 2 / 3 * le ** (-5 / 3) * (1 + le) - 4 / 3
+        f.confined = relieved
+        try:
+            return base(p[:-1], x, nu, tau)
+        finally:
+            f.confined = orig
+    return chi
+
+
+def deep():
+    """The law and V1 / V2 (refitted) on the deep CAX8 skins of t/R >= 0.2
+    (tests/data/fe/core/cax8/) to the FE's reach, past x_max = 0.8 t/R included: signed
+    error [%] against delta/t from 0.75."""
+    import glob
+    import re
+    train, thin, held, blind, dblind = sets()
+    curves = []
+    for path in sorted(glob.glob(os.path.join(f.DATA, "cax8", "force_nu*_t*.csv"))):
+        nu, t = map(float, re.findall(r"nu([\d.]+)_t([\d.]+)\.csv", path)[0])
+        if t >= 0.2:
+            d = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+            curves.append((nu, t, d["delta_over_R"], d["force_N"]))
+    for name, chi, p in [("law", s25.form("K"), LAW)] + [
+            (m, form_v(m), None) for m in ("V1", "V2")]:
+        f.chi_core = chi
+        if p is None:
+            p = f.fit(train, list(LAW) + [0.1 if name == "V1" else 0.3])
+        cc = "" if name == "law" else f" (c = {p[-1]:.4f})"
+        print(f"{name}{cc}: fitted {b.worst(p, train)}, held out "
+              f"{b.worst(p, held)}, blind {b.worst(p, blind)}, deep CAX8 to x_max "
+              f"{b.worst(p, dblind)}")
+        for nu, t, x, force in curves:
+            es = 2 * (1 + nu) / (1 - nu ** 2)
+            e = 100 * (chi(p, x, nu, t) * es * 4 / 3 * x ** 1.5 / force - 1)
+            sel = x >= 0.75 * t - 1e-9
+            print(f"    ({nu:g}, {t:g}, reach delta/t {x[-1] / t:.3f}) delta/t:% " + " ".join(
+                f"{xx / t:.3f}:{v:+.2f}" for xx, v in zip(x[sel], e[sel])))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--var", nargs="*")
     ap.add_argument("--curves", nargs="*")
+    ap.add_argument("--deep", action="store_true", help="the deep CAX8 skins past x_max (`deep`)")
     a = ap.parse_args()
+    if a.deep:
+        deep()
+        return 0
     train, thin, held, blind, dblind = sets()
     old = [c for c in train if c not in thin]
     groups = (("fitted", train), ("the 14", old), ("thin fit", thin), ("held out", held),
