@@ -147,7 +147,12 @@ S23_DEEP = {("core", 0.48, 0.4, 40): ("deep", None), ("core", 0.48, 0.4, 30): ("
             ("core", 0.48, 0.1, 60): ("deep", 0.001), ("core", 0.48, 0.08, 80): ("deep", 0.0005),
             # then the worst held-out skin of t/R >= 0.1 (3.53 %, at its CAX8R end x = 0.18,
             # delta/t 0.72), past its end: blind for the deep-squeeze variants
-            ("core", 0.46, 0.25, 40): ("deep", None)}
+            ("core", 0.46, 0.25, 40): ("deep", None),
+            # session 26 (issue 24 item 5, step 3: x_max past 0.8 t/R): the same deep run at
+            # the other nu of the t/R 0.3-0.5 skins whose CAX8R runs stop at 0.75-0.8 t/R;
+            # blind for the deep-squeeze form (run under /work/fe-scratch/s26-skin/)
+            ("core", 0.4, 0.4, 40): ("deep", None), ("core", 0.3, 0.4, 40): ("deep", None),
+            ("core", 0.45, 0.5, 40): ("deep", None), ("core", 0.49, 0.3, 40): ("deep", None)}
 DEEP_ROLES = ("deep", "deep-conv")
 DEEP_ELEMENT = "CAX8"
 

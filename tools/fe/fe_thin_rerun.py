@@ -120,7 +120,15 @@ def export(names, runs):
                 "blind": "blind for the core law (its committed twin is; no fit may see it)"}
         prov = prov[:prov.index("held out of every fit")] if "held out of every fit" in prov \
             else prov[:prov.index("regenerate:")]
-        prov += (f"session 25's re-run of tests/data/fe/core/force_nu{nu:g}_t{t:g}.csv with "
+        twin = f"force_nu{nu:g}_t{t:g}.csv"
+        if os.path.exists(os.path.join(DATA, twin)):
+            rerun = f"session 25's re-run of tests/data/fe/core/{twin}"
+        else:  # nu 0.48 t/R 0.05: session 20's R/120 run stopped at x = 0.015 (three rows)
+            rerun = (f"session 25's re-run of a skin with no committed curve (session 20's "
+                     f"R/120 run, penalty 1e5, stopped at x = {reach:g}: too few rows to export)")
+            what = {k: v.replace("its committed CAX8R twin, penalty 1e5, is", "its R/120 run was")
+                    for k, v in what.items()}
+        prov += (f"{rerun} with "
                  f"penalty {KPEN:g} MPa/mm (the campaign's 1e5 leaves thin skins 0.4-1.6 % soft: "
                  f"penalty.csv) and ~9 elements through the skin; {what[role]}; regenerate: "
                  f"PY=$(bash tools/fe/setup.sh); $PY tools/fe/fe_thin_rerun.py --runs DIR "
