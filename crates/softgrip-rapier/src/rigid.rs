@@ -346,10 +346,12 @@ fn built_mobility(bodies: &[BodyState], x: &Scalar, y: &Scalar) -> f64 {
 /// returns whether a row moves a multibody or jointed link.
 ///
 /// Where no row moves a multibody or jointed link, the same products in the same order, each
-/// row's moved sides gathered once into `sides` (body, sign and angular Jacobian of the sides
-/// `built_mobility` visits, and of every row the side it takes on each body): the same bits
-/// without `built_mobility`'s per-pair look-ups, which were 3.8 % of a sweep trial's CPU
-/// samples (the whole matrix, session 20). With a link, `built_mobility` itself.
+/// row's moved sides gathered once into `sides` (body, sign, Jacobian and response of the
+/// sides `built_mobility` visits, and of every row the side it takes on each body): the same
+/// bits without `built_mobility`'s per-pair look-ups, which were 3.8 % of a sweep trial's CPU
+/// samples (the whole matrix, session 20), nor the rows' own fields (session 26: 16.2 k
+/// instructions a call in the default grasp -> see the crate README). With a link,
+/// `built_mobility` itself.
 ///
 /// `prior`: the mobility of the last `k` rows, `k x k`, as this function computed it for
 /// the same rows on the same bodies (the coupled solve's rigid rows, solved alone first),
@@ -361,7 +363,7 @@ fn fill_mobility(
     rows: &[Scalar],
     mob: &mut DMatrix<f64>,
     prior: Option<&DMatrix<f64>>,
-    sides: &mut Vec<[Option<Side>; 2]>,
+    sides: &mut Vec<Sides>,
 ) -> bool {
     let m = rows.len();
     if mob.shape() != (m, m) {
@@ -387,18 +389,27 @@ fn fill_mobility(
         }
         return true;
     }
-    // `x.on(i)` of each moved side `i` of each row `x`: a first.
+    // `x.on(i)` of each moved side `i` of each row `x` (a first), with its response.
     sides.clear();
     sides.extend(rows.iter().map(|x| {
-        moved(x).map(|i| {
-            i.map(|i| {
-                if x.a == Some(i) {
-                    (i, 1.0, x.ang_a)
-                } else {
-                    (i, -1.0, x.ang_b)
-                }
-            })
-        })
+        let mut out = Sides::default();
+        for i in moved(x).into_iter().flatten() {
+            let (sign, k, ang) = if x.a == Some(i) {
+                (1.0, 0, x.ang_a)
+            } else {
+                (-1.0, 1, x.ang_b)
+            };
+            out.side[out.n] = Side {
+                body: i,
+                sign,
+                lin: x.lin,
+                ang,
+                dv: x.response[k].0,
+                dw: x.response[k].1,
+            };
+            out.n += 1;
+        }
+        out
     }));
     let (k, prior) = match prior {
         Some(p) if p.nrows() <= m && p.shape() == (p.nrows(), p.nrows()) => {
@@ -408,17 +419,10 @@ fn fill_mobility(
     };
     let off = m - k;
     for c in 0..m {
-        let y = &rows[c];
-        // `built_mobility`'s side of `y` on body `i` (a first): its sign and response.
-        let side = |i: usize| {
-            if y.a == Some(i) {
-                Some((1.0, &y.response[0]))
-            } else if y.b == Some(i) {
-                Some((-1.0, &y.response[1]))
-            } else {
-                None
-            }
-        };
+        // `built_mobility`'s side of row `c` on a body: a first. A body that a row's side
+        // moves is moved by every row's side on it (no impulse moves a fixed, kinematic or
+        // sleeping body: `Scalar::fixed`), so the moved sides are all it can be.
+        let ys = &sides[c];
         let column = &mut out[c * m..(c + 1) * m];
         let computed = if c >= off {
             column[off..].copy_from_slice(&prior[(c - off) * k..(c - off + 1) * k]);
@@ -426,13 +430,18 @@ fn fill_mobility(
         } else {
             m
         };
-        for (r, w_out) in column[..computed].iter_mut().enumerate() {
-            let x = &rows[r];
+        for (xs, w_out) in sides[..computed].iter().zip(column[..computed].iter_mut()) {
             let mut w = 0.0;
-            for &(i, sx, ax) in sides[r].iter().flatten() {
-                if let Some((sy, (rl, ra))) = side(i) {
-                    w += sx * sy * (x.lin.dot(rl) + ax.dot(ra));
-                }
+            for x in &xs.side[..xs.n] {
+                // (An unused side's body is `usize::MAX`: no body's.)
+                let y = if ys.side[0].body == x.body {
+                    &ys.side[0]
+                } else if ys.side[1].body == x.body {
+                    &ys.side[1]
+                } else {
+                    continue;
+                };
+                w += x.sign * y.sign * (x.lin.dot(&y.dv) + x.ang.dot(&y.dw));
             }
             *w_out = w;
         }
@@ -734,7 +743,7 @@ struct Buffers {
     /// The LU passes' matrices and buffers.
     cache: LuCache,
     /// Each row's moved sides ([`fill_mobility`]).
-    sides: Vec<[Option<Side>; 2]>,
+    sides: Vec<Sides>,
     /// `cache.mob` is [`fill_mobility`]'s matrix of the last solve's rows as computed without
     /// a multibody or jointed link, no row zeroed by [`immobile`].
     pure: bool,
@@ -742,9 +751,42 @@ struct Buffers {
     u0: Vec<(f64, f64)>,
 }
 
-/// A side of a row that an impulse moves ([`fill_mobility`]): its body, its sign (1 on body
-/// a, -1 on b) and its angular Jacobian.
-type Side = (usize, f64, Vector3<f64>);
+/// The sides of a row that an impulse moves ([`fill_mobility`]): the first `n` of `side`, in
+/// the row's order (a, then b).
+#[derive(Debug, Clone, Copy, Default)]
+struct Sides {
+    n: usize,
+    side: [Side; 2],
+}
+
+/// A side of a row that an impulse moves ([`Sides`]).
+#[derive(Debug, Clone, Copy)]
+struct Side {
+    /// The body (index into the body table).
+    body: usize,
+    /// 1 on the row's body a, -1 on b.
+    sign: f64,
+    /// The row's linear Jacobian and its angular one on this body.
+    lin: Vector3<f64>,
+    ang: Vector3<f64>,
+    /// The body's velocity change (linear, angular) per unit impulse on it (`Scalar::response`).
+    dv: Vector3<f64>,
+    dw: Vector3<f64>,
+}
+
+impl Default for Side {
+    /// An unused side: on no body (`usize::MAX`).
+    fn default() -> Self {
+        Self {
+            body: usize::MAX,
+            sign: 0.0,
+            lin: Vector3::zeros(),
+            ang: Vector3::zeros(),
+            dv: Vector3::zeros(),
+            dw: Vector3::zeros(),
+        }
+    }
+}
 
 /// The friction pairs' inverse 2 x 2 mobility (by the pair's first row; `None` elsewhere), from
 /// the rows' mutual mobility `mob`, into `out`.
