@@ -139,6 +139,7 @@ pub(crate) fn rel_vel(bodies: &[BodyState], r: &Row) -> Vector3<f64> {
 }
 
 /// Relative mobility between directions of rows i and k (sum over the bodies they share).
+#[inline]
 pub(crate) fn pair_mobility(
     bodies: &[BodyState],
     ri: &Row,
@@ -146,21 +147,39 @@ pub(crate) fn pair_mobility(
     rk: &Row,
     dk: &Vector3<f64>,
 ) -> f64 {
+    mobility_between(bodies, (ri.a, ri.b, &ri.p), di, (rk.a, rk.b, &rk.p), dk)
+}
+
+/// A row's two bodies (table indices, `None`: fixed) and its contact point (world) \[m\].
+pub(crate) type RowEnds<'a> = (Option<usize>, Option<usize>, &'a Vector3<f64>);
+
+/// Relative mobility \[1/kg\] between direction `di` of the row with ends `i` and direction
+/// `dk` of the row with ends `k` (sum over the bodies they share): the relative velocity
+/// change along `di` at `i`'s point from a unit impulse along `dk` at `k`'s point (a soft
+/// row's and a rigid row's alike, [`pair_mobility`]).
+#[inline]
+pub(crate) fn mobility_between(
+    bodies: &[BodyState],
+    (ia, ib, ip): RowEnds<'_>,
+    di: &Vector3<f64>,
+    (ka, kb, kp): RowEnds<'_>,
+    dk: &Vector3<f64>,
+) -> f64 {
     let mut m = 0.0;
-    for (bi, si) in [(ri.a, 1.0), (ri.b, -1.0)] {
-        for (bk, sk) in [(rk.a, 1.0), (rk.b, -1.0)] {
+    for (bi, si) in [(ia, 1.0), (ib, -1.0)] {
+        for (bk, sk) in [(ka, 1.0), (kb, -1.0)] {
             let (Some(x), Some(y)) = (bi, bk) else {
                 continue;
             };
             if x == y && bodies[x].link.is_none() {
-                m += si * sk * bodies[x].mobility(&ri.p, di, &rk.p, dk);
+                m += si * sk * bodies[x].mobility(ip, di, kp, dk);
             } else if mobility::same_multibody(bodies, x, y)
                 && let Some(w) = mobility::pair(
                     bodies,
                     x,
-                    (di, &(ri.p - bodies[x].com).cross(di)),
+                    (di, &(ip - bodies[x].com).cross(di)),
                     y,
-                    (dk, &(rk.p - bodies[y].com).cross(dk)),
+                    (dk, &(kp - bodies[y].com).cross(dk)),
                 )
             {
                 m += si * sk * w;

@@ -511,6 +511,14 @@ fn hand_descent(depth: f64, box_away: bool) -> Down {
 /// steps 53-59, once the distal links meet the table (step 51), and end the hold at 14.4 / 0 /
 /// 0 N, the box 19.4 mm higher (the impulse-jointed hand's test below asks every pad above
 /// 10 N; softgrip-rapier README, Limits (a'), session 25).
+///
+/// Session 26: the substep rule counts rapier's rows on the pads' own links closing on the
+/// table or the box (`softgrip_rapier`'s `step/split.rs`, `jam_velocity`), and the grasp
+/// survives the links meeting the table: 4.55 / 5.21 / 4.63 N at the end of the hold, the box
+/// 0.60 mm from its start, 7192 substeps (none at the cap), links at most 0.31 m/s, pads at
+/// most 20.0 N, 1464 N from the table, 1843 degenerate solves, 77 evaluations past a wall
+/// (release). The hold is now checked ([`assert_hold`]), and the substep bound is 10 % over
+/// the measured count.
 #[test]
 fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.02, false);
@@ -520,8 +528,32 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     assert!(d.pad_force < 2000.0, "{d:?}: pad force");
     assert!(d.table_force < 2e5, "{d:?}: table force");
     assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
-    assert!(d.substeps < 12_000, "{d:?}: substeps (10 920 measured)");
+    assert!(d.substeps < 8000, "{d:?}: substeps (7192 measured)");
     assert!(d.past_wall > 0, "{d:?}: no pad was driven past its wall");
+    assert_hold(&d);
+}
+
+/// The least force \[N\] a pad of the three-finger hand's box grasp must read at the end of
+/// the hold of a descent into the table: half the grasp's own 2 N a pad
+/// (`scenes/robots/three_finger_hand_box.toml`, `force = 2.0`). The box rests on the table
+/// through the hold, so the pads carry none of its weight and the grasp's motors hold them at
+/// about their own 2 N; the jam can load them more, but a pad below half its grasp force has
+/// let go (the lost grasps of session 25 read 0-1.3 N on some pad).
+const HELD_PAD_FORCE: f64 = 1.0;
+
+/// The box's largest height change \[m\] over the descent and hold: it rests on the table under
+/// the grasp (the lost grasps of session 25 left it 15.8-19.4 mm higher, squeezed up out of
+/// the pads).
+const HELD_BOX_MOVE: f64 = 2e-3;
+
+/// The box descents' hold: every pad at least [`HELD_PAD_FORCE`], the box within
+/// [`HELD_BOX_MOVE`] of its start.
+fn assert_hold(d: &Down) {
+    assert!(
+        d.pads_held.len() == 3 && d.pads_held.iter().all(|f| *f > HELD_PAD_FORCE),
+        "{d:?}: a pad let go"
+    );
+    assert!(d.object_drop.abs() < HELD_BOX_MOVE, "{d:?}: the box moved");
 }
 
 /// The three-finger hand closed on nothing (its box 0.5 m away: the pads press each other at
@@ -705,7 +737,7 @@ fn dragged_without_pads(wall: bool, impulse: bool) -> Result<f32, (u64, String)>
 /// acts in capped substeps only) changes nothing, bit for bit: rapier's pipeline carries the
 /// pads past their walls, not the soft solve. Not fixed: plain rapier diverges here too.
 #[test]
-#[ignore = "fails at step 51 with a typed StepError (session 25, on 66d394c: f0_pad on hand/f1_proximal predicting 6.3e27 m/s; session 23: f1_pad on hand/palm, a finger already flung at 4.4e4 m/s inside that step); the soft pads, driven past their walls by the wall jam, let fingers 1 and 2 slip off the box into their joint limits where rapier's multibody diverges; plain rapier with rigid pads lasts to step 119 (without pads 113), so softgrip fails earlier; softgrip-rapier README, Limits, Still open (b)"]
+#[ignore = "fails at step 51 with a typed StepError (session 26: f0_pad on box predicting 3.3e8 m/s; session 25, on 66d394c: f0_pad on hand/f1_proximal predicting 6.3e27 m/s; session 23: f1_pad on hand/palm, a finger already flung at 4.4e4 m/s inside that step); the soft pads, driven past their walls by the wall jam, let fingers 1 and 2 slip off the box into their joint limits where rapier's multibody diverges; plain rapier with rigid pads lasts to step 119 (without pads 113), so softgrip fails earlier; softgrip-rapier README, Limits, Still open (b)"]
 fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
     let d = hand_dragged_into_a_wall(0.04);
     assert!(d.held > 30, "{d:?}");
@@ -817,8 +849,20 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// grasp's own force (2.3 / 3.1 / 2.8 N at the end of the hold, the box 0.07 mm from its
 /// start, links at most 0.33 m/s, pads at most 21.2 N), within every bound here but the
 /// hold's 10 N and the substeps (42 188, 150-270 a step): the unsplit steps lose it.
+///
+/// Session 26: the substep rule counts rapier's rows on a pad's own links closing on the
+/// table or the box (`softgrip_rapier`'s `step/split.rs`, `jam_velocity`), splitting steps
+/// 48-61 into 14-152 substeps, and the grasp holds: 2.46 / 9.90 / 9.54 N at the end of the
+/// hold, the box 0.32 mm from its start, links at most 0.09 m/s, pads at most 15.5 N, 451 N
+/// from the table, none past a wall (release). The hold bound is now the grasp's own
+/// ([`assert_hold`]: every pad above half its 2 N, the box within 2 mm), which this run
+/// meets; it fails only its substeps: 46 594 (none at the cap), 120-200 a step in the hold
+/// and about 300 in the release, asked by the impact criterion on pads sitting still whose
+/// links' stored velocities read 0.14-0.77 m/s (softgrip-rapier README, Limits (a),
+/// (a') session 26), with 8244 degenerate solves. 182 s in release with the multibody test:
+/// too slow for the dev profile even once it passes.
 #[test]
-#[ignore = "fails its hold check (session 25, on 66d394c): pads at most 95.1 N, 8444 substeps, none at the cap, 2197 degenerate solves, but the pads end the hold at 0.92 / 1.32 / 0.80 N (the box 15.8 mm higher): the grasp is lost in steps 47-48, before the first degenerate solve, when the distal links first touch the table in an unsplit step (pads x 0.10 -> 0.64-0.72, then off the box); the multibody hand also loses its grasp there and ends its hold at 14.4 / 0 / 0 N; a compliant retry of the degenerate solves (session 24's suggestion) does not hold either; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored`"]
+#[ignore = "fails its substep bound (session 26): the grasp now holds (2.46 / 9.90 / 9.54 N at the end of the hold, the box 0.32 mm from its start, 451 N from the table, pads at most 15.5 N) but 46 594 substeps against 13 500 (120-200 a step in the hold, about 300 in the release, the impact criterion reading the impulse-jointed links' stored velocities), 8244 degenerate solves; over 2 minutes in release, too slow for the dev profile; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored impulse_jointed`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
@@ -833,7 +877,7 @@ fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_fi
     assert!(d.link_speed < 6.0, "{d:?}: a link flung");
     assert!(d.pad_force < 320.0, "{d:?}: pad force");
     assert!(d.table_force < 500.0, "{d:?}: table force");
-    assert!(d.pads_held.iter().all(|f| *f > 10.0), "{d:?}: a pad let go");
+    assert_hold(&d);
     assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
     assert!(d.substeps < 13_500, "{d:?}: substeps (11861 measured)");
 }

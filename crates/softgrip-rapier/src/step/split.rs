@@ -9,7 +9,7 @@ use crate::boundary::{to_f32, to_f64};
 use crate::contacts::Scratch;
 use crate::detect::compression_from_signed_distance;
 use crate::mobility::BodyState;
-use crate::problem::{self, Row};
+use crate::problem::{self, RigidRow, Row};
 use crate::substep;
 
 impl Step<'_> {
@@ -92,6 +92,7 @@ impl Step<'_> {
             let mut vn = problem::normal_velocity(table, row);
             let w = problem::normal_mobility(table, row);
             let mut k_drive = 1;
+            let mut k_jam = 1;
             // The external load pressing the contact (acceleration into it over the mobility).
             let push = (-problem::normal_external_acceleration(table, row)).max(0.0) / w;
             if delta > 0.0 {
@@ -111,11 +112,22 @@ impl Step<'_> {
                 let a = problem::normal_external_acceleration(table, row).abs();
                 let known = a * dt + drive.abs() / k_drive as f64;
                 vn = passive.signum() * (passive.abs() - known).max(0.0);
+                let jam = jam_velocity(table, row, &scratch.rigid);
+                k_jam = drive_substeps(jam, delta, model.radius, dt);
+                if k_jam > 1 {
+                    // As a far push's count (`far_below_push`): no more than the contact's
+                    // phase at the stiffness an impact of that speed reaches needs.
+                    let law = &model.law;
+                    let impact =
+                        substep::substeps_for(law, model.radius, delta, -jam, w, 0.0, dt, theta);
+                    k_jam = k_jam.min(impact);
+                }
             } else if on_jointed_link(table, row) {
                 vn = realised_approach(vn, &now, last.as_ref(), table, row);
             }
             let k = substep::substeps_for(&model.law, model.radius, delta, vn, w, push, dt, theta)
-                .max(k_drive);
+                .max(k_drive)
+                .max(k_jam);
             n = n.max(k);
         }
         // Forget the contacts not seen in this step.
@@ -192,6 +204,66 @@ fn realised_approach(
     } else {
         vn
     }
+}
+
+/// The normal velocity change \[m/s\] that rapier's rows on a soft contact's own assembly
+/// (`rigid`, `Step::prepare_rigid`) impose on the contact (`row`, its fingertip on a link of a
+/// jointed body) within the coming step: a link of the fingertip's multibody or
+/// impulse-jointed assembly closing on a body outside it (the table, the box) is stopped there
+/// by rapier's contact, and that stop reaches the fingertip through the joints. Its size is
+/// the stopping impulse's effect, `|W_pr / W_rr| |v_r|` (`v_r` the rigid row's closing normal
+/// velocity, `W_rr` its mobility, `W_pr` the cross mobility between the two rows), the
+/// largest over the assembly's closing rows; 0 for a fingertip not on a link.
+///
+/// The step counts it as it counts the motors' push ([`drive_substeps`]: its run over a
+/// substep within [`DRIVE_RUN_FRACTION`] of the compression), and no more than an impact of
+/// that speed needs (`substep::substeps_for`, as [`far_below_push`] bounds a far push): by
+/// its run alone, the multibody hand's pads barely touching (x = 0.015) asked 500-1183
+/// substeps a step.
+///
+/// Why: unsplit, the step in which the impulse-jointed three-finger hand's distal links first
+/// met the table under its kinematic palm took the pads from x = 0.10 to 0.64-0.72 and off
+/// the box (softgrip-rapier README, Limits (a')); no soft contact of that step asked a split,
+/// since the jam is rapier's row, not theirs. A link at rest on a fixed body (not closing)
+/// asks nothing; nor does a contact between two links of one assembly (pads pressing each
+/// other), which the jam moves on both sides.
+fn jam_velocity(table: &[BodyState], row: &Row, rigid: &[RigidRow]) -> f64 {
+    let Some(host) = row.a.and_then(|i| table[i].link.as_deref()).map(|l| l.host) else {
+        return 0.0;
+    };
+    let mine = |i: usize| table[i].link.as_deref().is_some_and(|l| l.host == host);
+    if row.b.is_some_and(mine) {
+        // Two fingertips of one hand pressing each other: the jam moves both sides.
+        return 0.0;
+    }
+    let mut dv = 0.0f64;
+    for r in rigid {
+        // A row of the assembly's link on something outside it (rows between its own links
+        // are its joints' business).
+        if mine(r.a) == r.b.is_some_and(mine) {
+            continue;
+        }
+        let at = |i: Option<usize>| {
+            problem::body(table, i)
+                .map(|b| b.vel_at(&r.p))
+                .unwrap_or_default()
+        };
+        let vr = (at(Some(r.a)) - at(r.b)).dot(&r.n);
+        if !(vr < 0.0) {
+            continue;
+        }
+        let ends = (Some(r.a), r.b, &r.p);
+        let w_rr = problem::mobility_between(table, ends, &r.n, ends, &r.n);
+        if !(w_rr > 0.0) {
+            continue;
+        }
+        let w_pr = problem::mobility_between(table, (row.a, row.b, &row.p), &row.n, ends, &r.n);
+        let change = (w_pr / w_rr * vr).abs();
+        if change.is_finite() {
+            dv = dv.max(change);
+        }
+    }
+    dv
 }
 
 /// The largest fraction of a touching contact's compression (`max(delta, 1e-3 R)`) that its
