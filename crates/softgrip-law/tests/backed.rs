@@ -410,6 +410,44 @@ fn cax8(csv: &str, nu: f64) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// One FE skin curve a test pins the calibrated core law on: its CSV text (`cax8`), nu, t/R,
+/// the x its FE reached, the law's worst |miss| \[%\] seen to `x_max`, the x where it is, and
+/// whether the law is softer than the FE there.
+type Skin = (&'static str, f64, f64, f64, f64, f64, bool);
+
+/// Pins the law's worst miss on each of `skins` to `x_max`: where it is (exactly), how large
+/// (within -0.25 / +0.1 of a percentage point of what was seen) and its sign; with `inside`,
+/// every curve also ends inside the law's range.
+fn pin_skins(skins: &[Skin], inside: bool) {
+    for &(csv, nu, t, reach, pct, at, soft) in skins {
+        let data = cax8(csv, nu);
+        assert!((data.last().expect("points").0 - reach).abs() < 1e-9);
+        let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
+        assert!(
+            !inside || core.x_max() >= reach,
+            "nu {nu} t/R {t}: inside the law's range"
+        );
+        let (w, x) = worst(&core, &data, core.x_max());
+        eprintln!(
+            "nu {nu} t/R {t}: {:.2} % at x = {x} (x_max {})",
+            w * 100.0,
+            core.x_max()
+        );
+        assert!((x - at).abs() < 1e-9, "nu {nu} t/R {t}: worst at x = {x}");
+        assert!(
+            w * 100.0 < pct + 0.1 && w * 100.0 > pct - 0.25,
+            "nu {nu} t/R {t}: {:.2} % (seen {pct} %)",
+            w * 100.0
+        );
+        let f = data.iter().find(|p| (p.0 - at).abs() < 1e-9).expect("x").1;
+        assert_eq!(
+            core.response(at).force < f,
+            soft,
+            "nu {nu} t/R {t}: the sign"
+        );
+    }
+}
+
 /// Session 23: the skin of t/R 0.4 at nu 0.48 on CAX8 elements (`tests/data/fe/core/cax8/`,
 /// tools/fe/README.md "The skin squeezed against the core, on CAX8"), whose FE converges to
 /// x = 0.34 (delta/t 0.85) where the CAX8R run of `core/force_nu0.48_t0.4.csv` stops at 0.28.
@@ -504,29 +542,7 @@ fn core_on_the_deep_cax8_skins_at_other_nu_is_what_the_readme_states() {
             false,
         ),
     ];
-    for (csv, nu, t, reach, pct, at, soft) in skins {
-        let data = cax8(csv, nu);
-        assert!((data.last().expect("points").0 - reach).abs() < 1e-9);
-        let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
-        let (w, x) = worst(&core, &data, core.x_max());
-        eprintln!(
-            "nu {nu} t/R {t}: {:.2} % at x = {x} (x_max {})",
-            w * 100.0,
-            core.x_max()
-        );
-        assert!((x - at).abs() < 1e-9, "nu {nu} t/R {t}: worst at x = {x}");
-        assert!(
-            w * 100.0 < pct + 0.1 && w * 100.0 > pct - 0.25,
-            "nu {nu} t/R {t}: {:.2} % (seen {pct} %)",
-            w * 100.0
-        );
-        let f = data.iter().find(|p| (p.0 - at).abs() < 1e-9).expect("x").1;
-        assert_eq!(
-            core.response(at).force < f,
-            soft,
-            "nu {nu} t/R {t}: the sign"
-        );
-    }
+    pin_skins(&skins, false);
 }
 
 /// Session 23: thin skins at nu 0.48 on CAX8 (`tests/data/fe/core/cax8/`), blind (no constant
@@ -573,22 +589,7 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
             false,
         ),
     ];
-    for (csv, nu, t, reach, pct, at, soft) in skins {
-        let data = cax8(csv, nu);
-        assert!((data.last().expect("points").0 - reach).abs() < 1e-9);
-        let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
-        assert!(core.x_max() >= reach, "inside the law's range");
-        let (w, x) = worst(&core, &data, core.x_max());
-        eprintln!("t/R {t}: {:.2} % at x = {x}", w * 100.0);
-        assert!((x - at).abs() < 1e-9, "t/R {t}: worst at x = {x}");
-        assert!(
-            w * 100.0 < pct + 0.1 && w * 100.0 > pct - 0.25,
-            "t/R {t}: {:.2} % (seen {pct} %)",
-            w * 100.0
-        );
-        let f = data.iter().find(|p| (p.0 - at).abs() < 1e-9).expect("x").1;
-        assert_eq!(core.response(at).force < f, soft, "t/R {t}: the sign there");
-    }
+    pin_skins(&skins, true);
 }
 
 /// Session 25: thin skins re-run with the contact penalty 10x stiffer (1e6 MPa/mm) and about
@@ -794,25 +795,7 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             true,
         ),
     ];
-    for (csv, nu, t, reach, pct, at, soft) in skins {
-        let data = cax8(csv, nu);
-        assert!((data.last().expect("points").0 - reach).abs() < 1e-9);
-        let core = law(Level::Calibrated, nu, Backing::Core { thickness: t });
-        let (w, x) = worst(&core, &data, core.x_max());
-        eprintln!("nu {nu} t/R {t}: {:.2} % at x = {x}", w * 100.0);
-        assert!((x - at).abs() < 1e-9, "nu {nu} t/R {t}: worst at x = {x}");
-        assert!(
-            w * 100.0 < pct + 0.1 && w * 100.0 > pct - 0.25,
-            "nu {nu} t/R {t}: {:.2} % (seen {pct} %)",
-            w * 100.0
-        );
-        let f = data.iter().find(|p| (p.0 - at).abs() < 1e-9).expect("x").1;
-        assert_eq!(
-            core.response(at).force < f,
-            soft,
-            "nu {nu} t/R {t}: the sign"
-        );
-    }
+    pin_skins(&skins, false);
 }
 
 /// Issue 24 item 5: the core's validity reaches the FE's. Every committed FE core curve (the 14
