@@ -129,13 +129,14 @@ pub(crate) fn body(bodies: &[BodyState], i: Option<usize>) -> Option<&BodyState>
 
 /// Relative velocity of a row's bodies at its contact point (fingertip - other, world) [m/s].
 pub(crate) fn rel_vel(bodies: &[BodyState], r: &Row) -> Vector3<f64> {
-    let va = body(bodies, r.a)
-        .map(|b| b.vel_at(&r.p))
-        .unwrap_or_default();
-    let vb = body(bodies, r.b)
-        .map(|b| b.vel_at(&r.p))
-        .unwrap_or_default();
-    va - vb
+    rel_vel_between(bodies, (r.a, r.b, &r.p))
+}
+
+/// Relative velocity \[m/s\] of a row's two bodies at its point (`ends`: body a - body b,
+/// world; a fixed side moves at 0): a soft row's ([`rel_vel`]) and a rigid row's alike.
+pub(crate) fn rel_vel_between(bodies: &[BodyState], (a, b, p): RowEnds<'_>) -> Vector3<f64> {
+    let at = |i| body(bodies, i).map(|b| b.vel_at(p)).unwrap_or_default();
+    at(a) - at(b)
 }
 
 /// Relative mobility between directions of rows i and k (sum over the bodies they share).

@@ -243,16 +243,11 @@ fn jam_velocity(table: &[BodyState], row: &Row, rigid: &[RigidRow]) -> f64 {
         if mine(r.a) == r.b.is_some_and(mine) {
             continue;
         }
-        let at = |i: Option<usize>| {
-            problem::body(table, i)
-                .map(|b| b.vel_at(&r.p))
-                .unwrap_or_default()
-        };
-        let vr = (at(Some(r.a)) - at(r.b)).dot(&r.n);
+        let ends = (Some(r.a), r.b, &r.p);
+        let vr = problem::rel_vel_between(table, ends).dot(&r.n);
         if !(vr < 0.0) {
             continue;
         }
-        let ends = (Some(r.a), r.b, &r.p);
         let w_rr = problem::mobility_between(table, ends, &r.n, ends, &r.n);
         if !(w_rr > 0.0) {
             continue;
