@@ -81,7 +81,13 @@ is a free-boundary BVP per point (the law's table takes ~1600 form evaluations p
 construction), its counterparts (balls, cylinders, edges) are unchecked, and 2 % is not
 reached (CORE_FORM.md "Thin skins: session 27").
 
-usage: PY tools/calibration/try_thin_skin_s27.py [--var MODE ...] [--curves MODE ...] [--radius]
+--curves MODE ...: per curve, each mode's signed worst error and where. --check: coarse_check on
+the L forms (slow). --small-x: LCF:P at x <= 0.015 against the patch (`small_x`). --radius: the
+law's contact radius on the seventeen k1e6 thin skins, x >= 0.02 (`radius_table`; the numbers
+`radius_pressure`'s `thin_skin_radius_is_what_the_readme_states` pins).
+
+usage: PY tools/calibration/try_thin_skin_s27.py [--var MODE ...] [--curves MODE ...] [--check]
+       [--radius] [--small-x]
        (PY: /work/main/target/fe-venv/bin/python)
 """
 import argparse
@@ -301,6 +307,26 @@ def coarse_check(p):
             f"grid steps where chi rises with t/R: {rising}")
 
 
+def small_x(mode="LCF:P"):
+    """`mode` refitted, its signed error at x <= 0.015 on every skin of t/R <= 0.3, with the
+    patch over the skin u = a_H/t and over the thin layer's crossover length a_H/lambda."""
+    train, thin, held, blind, dblind = s26.sets()
+    f.chi_core = form(mode)
+    p = f.fit(train, p0_of(mode))
+    for tag, cs in (("fit", train), ("held", held), ("blind", blind)):
+        for c in sorted(cs, key=lambda c: (c["nu"], c["tau"])):
+            if c["tau"] > 0.3:
+                continue
+            nu_ = min(c["nu"], 0.4999)
+            lam = c["tau"] * np.sqrt(2 * (1 - nu_) / (1 - 2 * nu_) / 3)
+            sel = c["x"] <= 0.0151
+            e = 100 * (f.chi_core(p, c["x"], c["nu"], c["tau"]) / c["chi"] - 1)
+            for xx, ee in zip(c["x"][sel], e[sel]):
+                print(f"{tag:5s} nu {c['nu']:<5g} t/R {c['tau']:<5g} x {xx:<7g} "
+                      f"u {np.sqrt(xx) / c['tau']:.2f} a_H/lambda {np.sqrt(xx) / lam:.2f} "
+                      f"{ee:+.2f} %")
+
+
 def radius_table():
     """The law's contact radius (fit_core.radius, backed.rs) against the k1e6 thin skins'
     column plus half an element (0.485 R/N: fe_post's radius is the last node in contact; the
@@ -333,10 +359,14 @@ def main():
     ap.add_argument("--var", nargs="*")
     ap.add_argument("--curves", nargs="*")
     ap.add_argument("--radius", action="store_true")
+    ap.add_argument("--small-x", action="store_true", help="LCF:P at x <= 0.015 (`small_x`)")
     ap.add_argument("--check", action="store_true", help="coarse_check on the L forms (slow)")
     a = ap.parse_args()
     if a.radius:
         radius_table()
+        return 0
+    if a.small_x:
+        small_x()
         return 0
     train, thin, held, blind, dblind = s26.sets()
     old = [c for c in train if c not in thin]
