@@ -48,7 +48,10 @@ and blind sets printed after):
   LCFD   ... and the oedometer's secant (the law's own squeeze carries that: double counted)
   LF     thinned, on a flat core (no curvature)
   LCF:P  LCF with the floor's p-norm power fitted (s25's P)
-  LCF:B  LCF with Matthewson's patch widened by the fringe beta t (s25's B; beta fitted)
+  LCF:B  LCF with Matthewson's patch widened by the fringe beta t (s25's B; beta fitted; B5:
+         0.5, the fringe session 25 measured: 9.6 % fitted)
+  X...   the series written out (`form_x`), its second order's crossover: XCF:LP the law's
+         (= LCF:P), XCF:QP 1/(1 + E)^2, XCF:SP 1/(1 + E^2), XCF Matthewson's psi(a_core/lambda)
 
 Result (`$PY tools/calibration/try_thin_skin_s27.py --var law F WC LC LCF LCF:P LCF:B LCFD`; max
 |F/F_FE - 1| [%], worst curve; s26.sets(): 20 fitted = the 14 + six thin, 21 held out, 7
@@ -215,6 +218,8 @@ def form(mode):
     """The law (s25.form) with its floor at finite strain (module docs)."""
     if mode.startswith("L"):
         return form_l(mode)
+    if mode.startswith("X"):
+        return form_x(mode)
     base_mode = "K"
     if "B" in mode:
         base_mode += "B"
@@ -272,7 +277,53 @@ def form_l(mode):
     return chi
 
 
+def form_x(mode):
+    """X<floor>[:P]: the law's form with the series' second-order crossover `1/(1 + eps u^2)`
+    replaced by Matthewson's flat punch's flow share psi(z) at the patch the series sees, z =
+    a_core/lambda (lambda = t sqrt(M/(3 mu)), the law's own wide radius; session 25's M took
+    a_H); the floor the BVP's (`layer_factor` mode <floor>, e.g. XCF) or Matthewson's (X)."""
+    bm, _, extra = mode[1:].partition(":")
+
+    def chi(p, x, nu, tau):
+        e0, l0, l1, k0, k1, m, lc, cd = p[:8]
+        power = abs(p[8]) if "P" in extra else 4.0
+        eps = f.eps_of(nu)
+        nu_ = min(nu, 0.4999)
+        root = np.sqrt(3 * (1 - 2 * nu_) / (2 * (1 - nu_)))  # sqrt(3 mu/M)
+        fl = f.chi_flat(x, nu)
+        a_flat, a_core = f.radius(x, nu, tau)
+        h = 1 + tau * tau / (1 - tau)
+        t1 = f.dimitriadis_d1(nu) / 3 * np.sqrt(x) / (tau * h)
+        wid = a_core / a_flat - 1
+        a_core = a_flat * (1 + t1 * wid / np.sqrt(t1 * t1 + wid * wid + 1e-300))
+        d1, e = f.dimitriadis_d1(nu), e0 * np.exp(-m * eps)
+
+        def layer(v, big_e):
+            if "Q" in extra:  # diagnostics of the crossover's breadth (module docs)
+                cut = 1 / (1 + big_e) ** 2
+            elif "S" in extra:
+                cut = 1 / (1 + big_e * big_e)
+            elif "L" in extra:  # the law's
+                cut = 1 / (1 + big_e)
+            else:
+                cut = s25.psi(v * h * root)
+            return v * (d1 + e * v * cut)
+        excess = (layer(a_core / (tau * h), eps * x / tau ** 2)
+                  - layer(a_flat / h, eps * x))
+        limit = s20.thin_limit(x, nu, tau)
+        if bm:
+            limit = limit * layer_factor(x, nu, tau, bm)
+        limit = np.clip(limit - 1, 0, None)
+        excess = (np.abs(excess) ** power + limit ** power) ** (1 / power)
+        s = x / tau
+        squeeze = (l0 + l1 * eps) * s + (lc * eps / (1 + 4 * eps / 3) + cd) * f.confined(s)
+        return fl + excess * (1 + squeeze) * np.exp(-(k0 + k1 * eps) * (fl - 1))
+    return chi
+
+
 def p0_of(mode):
+    if mode.startswith("X"):
+        return list(LAW) + ([4.0] if "P" in mode.partition(":")[2] else [])
     if mode.startswith("L"):
         extra = mode.partition(":")[2]
         return s25.p0_of("K" + extra if extra != "P" else "P")
@@ -398,7 +449,7 @@ def main():
         for mode in a.var:
             use(mode)
             p = fits[mode]
-            chk = (coarse_check(p) if a.check else "-") if mode.startswith("L") else f.check(p)
+            chk = (coarse_check(p) if a.check else "-") if mode[0] in "LX" else f.check(p)
             print(f"| {mode} | " + " | ".join(b.worst(p, cs) for _, cs in groups) +
                   f" | {chk} |", flush=True)
             print("    constants " + " ".join(f"{v:.6f}" for v in p))
