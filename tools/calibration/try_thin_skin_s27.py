@@ -79,10 +79,10 @@ squeeze is nil: nu 0.3 t/R 0.05 -3.28 %, nu 0.4 t/R 0.05 / 0.06 +3.24 / +3.29 %,
 `--curves law LCF:P`: of 55 curves 32 better, 13 worse by more than 0.1 % (blind (0.3, 0.08)
 2.35 -> 3.23, held out (0.35, 0.7) 0.45 -> 2.35, (0.45, 0.35) 1.31 -> 1.88, blind (0.35, 0.06)
 0.46 -> 1.27, the rest by 0.1-0.33), 30 within 2 % against 25. `--check` (coarse_check): chi
->= 1, F increasing, chi_core = chi_flat at t/R 0.999, no rise with t/R. Not ported: the layer
-is a free-boundary BVP per point (the law's table takes ~1600 form evaluations per
-construction), its counterparts (balls, cylinders, edges) are unchecked, and 2 % is not
-reached (CORE_FORM.md "Thin skins: session 27").
+>= 1, F increasing, chi_core = chi_flat at t/R 0.999, no rise with t/R. Not adopted: ported to
+measure it (side branch s27-skin-port), the core on counterparts gets worse (balls 2.94 ->
+3.24 %, cylinders 2.68 -> 3.79 %, edge 4.16 -> 4.22 %), a core law costs ~85 ms to build (15x),
+and 2 % is not reached (CORE_FORM.md "Thin skins: session 27").
 
 --curves MODE ...: per curve, each mode's signed worst error and where. --check: coarse_check on
 the L forms (slow). --small-x: LCF:P at x <= 0.015 against the patch (`small_x`). --radius: the
