@@ -99,7 +99,6 @@ import re
 import sys
 
 import numpy as np
-from scipy.special import i0e, i1e
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
