@@ -816,3 +816,184 @@ fn radius_and_shape_have_their_limits_for_every_skin() {
         }
     }
 }
+
+/// `(x, a/R, N)` of a thin skin's force file of `tests/data/fe/core/k1e6/` (R = 1 mm, so the
+/// `contact_radius_mm` column is a/R; `N` of the mesh `R/N` its provenance line names).
+fn k1e6(csv: &str) -> (Vec<(f64, f64)>, f64) {
+    let mut lines = csv.lines();
+    let head = lines.next().expect("provenance");
+    let i = head.find("element edge R/").expect("the mesh") + "element edge R/".len();
+    let n: String = head[i..].chars().take_while(char::is_ascii_digit).collect();
+    let n: f64 = n.parse().expect("N");
+    let names: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let col = |name: &str| names.iter().position(|c| *c == name).expect(name);
+    let (ix, ia) = (col("delta_over_R"), col("contact_radius_mm"));
+    let rows = lines
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|c| c.parse().expect("a number")).collect();
+            (v[ix], v[ia])
+        })
+        .collect();
+    (rows, n)
+}
+
+/// Issue 24 item 5 (session 27): the thin skins' contact radius, x >= 0.02 (no radius test
+/// reached below x = 0.1 before). The seventeen re-runs of `tests/data/fe/core/k1e6/` (t/R
+/// 0.05-0.14, nu 0.3-0.49; ~9 CAX8R elements through the skin, R/65-R/180 at the surface) go
+/// to x = 0.02-0.105: a patch of 8-27 elements, whose radius column moves in node steps of
+/// 2-8 % of the radius (0.97 R/N a face), too coarse for `Smooth` (x >= 0.05). What is
+/// readable is the mean over the points: the law's `a / (a_lin + 0.485 R/N) - 1` (the lag of
+/// `LAG_TIMES_N`) averaged over 0.02 <= x <= min(reach, x_max), and each point about that mean
+/// within the column's steps. Seen (`tools/calibration/try_thin_skin_s27.py --radius`, the
+/// same numbers): the law too narrow at nu 0.3 t/R 0.05 (-5.02 %: its a/a_H 1.30 where the
+/// FE's is 1.37) and wide by 1.8-3.1 % at nu >= 0.45; every point within its skin's mean
+/// +- 1.22 element faces. The issue's 3 % is met by 15 of 17 (missed: nu 0.3 t/R 0.05, -5.02 %;
+/// nu 0.46 t/R 0.1, +3.11 %). Tolerances: each mean within 0.3 points of what was seen, every
+/// point within 1.3 faces of its mean.
+#[test]
+fn thin_skin_radius_is_what_the_readme_states() {
+    // (file, nu, t/R, seen mean [%])
+    let skins: [(&str, f64, f64, f64); 17] = [
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.05.csv"),
+            0.3,
+            0.05,
+            -5.02,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.08.csv"),
+            0.3,
+            0.08,
+            -1.64,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.1.csv"),
+            0.3,
+            0.1,
+            -0.87,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.32_t0.14.csv"),
+            0.32,
+            0.14,
+            1.42,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.35_t0.06.csv"),
+            0.35,
+            0.06,
+            -1.72,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.38_t0.12.csv"),
+            0.38,
+            0.12,
+            1.94,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.05.csv"),
+            0.4,
+            0.05,
+            -0.71,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.06.csv"),
+            0.4,
+            0.06,
+            0.04,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.08.csv"),
+            0.4,
+            0.08,
+            1.69,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.1.csv"),
+            0.4,
+            0.1,
+            2.35,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.45_t0.07.csv"),
+            0.45,
+            0.07,
+            2.23,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.46_t0.1.csv"),
+            0.46,
+            0.1,
+            3.11,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.05.csv"),
+            0.48,
+            0.05,
+            2.36,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.06.csv"),
+            0.48,
+            0.06,
+            2.35,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.08.csv"),
+            0.48,
+            0.08,
+            2.32,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.1.csv"),
+            0.48,
+            0.1,
+            1.79,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.49_t0.12.csv"),
+            0.49,
+            0.12,
+            2.84,
+        ),
+    ];
+    let mut within_3 = 0;
+    for (csv, nu, t, seen) in skins {
+        let (rows, n) = k1e6(csv);
+        let l = law(nu, Backing::Core { thickness: t });
+        let face = 0.97 / n;
+        let errs: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|p| p.0 >= 0.02 - 1e-9 && p.0 <= l.x_max() + 1e-9)
+            .map(|&(x, a)| {
+                let a_fe = a + LAG_TIMES_N / n;
+                (
+                    100.0 * (l.patch(x).radius / a_fe - 1.0),
+                    100.0 * face / a_fe,
+                )
+            })
+            .collect();
+        assert!(!errs.is_empty(), "nu {nu} t/R {t}: points at x >= 0.02");
+        let mean = errs.iter().map(|e| e.0).sum::<f64>() / errs.len() as f64;
+        let spread = errs
+            .iter()
+            .map(|e| (e.0 - mean).abs() / e.1)
+            .fold(0.0_f64, f64::max);
+        println!(
+            "nu {nu} t/R {t} (R/{n}, {} points): mean {mean:+.2} %, each within {spread:.2} faces",
+            errs.len()
+        );
+        assert!(
+            (mean - seen).abs() < 0.3,
+            "nu {nu} t/R {t}: mean {mean:+.2} % (seen {seen:+.2} %)"
+        );
+        assert!(
+            spread < 1.3,
+            "nu {nu} t/R {t}: a point {spread:.2} faces off"
+        );
+        if mean.abs() < 3.0 {
+            within_3 += 1;
+        }
+    }
+    assert_eq!(within_3, 15, "the issue's 3 %: 15 of 17 skins");
+}
