@@ -549,7 +549,11 @@ def main():
         if a.check_form:
             import fit_core as f
             f.chi_core = form_k(a.check_form) if a.check_form[0] == "K" else form_e(a.check_form)
-            print(a.check_form, f.check(fits[a.check_form]))
+            if "L" in a.check_form or "F" in a.check_form:  # a film solve per point: coarse grid
+                import try_thin_skin_s27 as s27
+                print(a.check_form, "(coarse)", s27.coarse_check(fits[a.check_form]))
+            else:
+                print(a.check_form, f.check(fits[a.check_form]))
     if a.check:
         check()
     if a.table:
