@@ -42,6 +42,7 @@ Modes:
   --decompose    the thin skins' FE over the exact layer at x 0.01, 0.02 against theory's
                  finite-x factors (`decompose`)
   --small-x      the FE over the exact layer at every x <= 0.02 (`small_x`)
+  --cax8         the deep CAX8 skins against their k1e6 CAX8R twins (`cax8_twins`)
   --var MODE ... the exact layer as the law's skeleton, refitted on the fitted set (`form_e`;
                  'law' today's law), max |F/F_FE - 1| per set; --curves: per curve
 
@@ -58,7 +59,7 @@ fitted / held out / blind, on session 27's LCF:P (KL) 2.55 / 2.66 / 2.28 % (law 
 2.90): not better on every set, not ported.
 
 usage: PY tools/calibration/thin_layer_exact_s27.py [--check] [--table] [--fe] [--curvature]
-       [--decompose] [--small-x] [--var MODE ... [--curves] [--check-form MODE]]
+       [--decompose] [--small-x] [--cax8] [--var MODE ... [--curves] [--check-form MODE]]
        (PY: /work/main/target/fe-venv/bin/python)
 """
 import argparse
@@ -347,6 +348,24 @@ def small_x():
               " ".join(f"{xx:g}:{v:+.2f}" for xx, v in zip(x[sel], r)))
 
 
+def cax8_twins():
+    """The deep CAX8 skins (penalty 1e5) against their k1e6 CAX8R twins at the same x:
+    F_CAX8/F_k1e6 - 1 [%]."""
+    core = os.path.join(HERE, "..", "..", "tests", "data", "fe", "core")
+    for path in sorted(glob.glob(os.path.join(core, "cax8", "force_nu*_t*.csv"))):
+        twin = os.path.join(core, "k1e6", os.path.basename(path))
+        if not os.path.exists(twin):
+            continue
+        a = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+        b = np.genfromtxt(twin, delimiter=",", names=True, skip_header=1)
+        cells = []
+        for x, force in zip(a["delta_over_R"], a["force_N"]):
+            i = np.where(np.abs(b["delta_over_R"] - x) < 1e-9)[0]
+            if len(i):
+                cells.append(f"{x:g}:{100 * (force / b['force_N'][i[0]] - 1):+.2f}")
+        print(os.path.basename(path), " ".join(cells))
+
+
 def curvature():
     """The core's curvature: session 27's thin-layer BVP (small strain) on the core's sphere
     (film t + r^2 t/(2 R (R - t))) over the flat film, at x = 0.01, 0.02."""
@@ -539,7 +558,10 @@ def main():
     ap.add_argument("--check-form", help="fit_core.check on one --var form (slow)")
     ap.add_argument("--decompose", action="store_true")
     ap.add_argument("--small-x", action="store_true", help="FE over exact at x <= 0.02")
+    ap.add_argument("--cax8", action="store_true", help="deep CAX8 skins against k1e6 twins")
     a = ap.parse_args()
+    if a.cax8:
+        cax8_twins()
     if a.small_x:
         small_x()
     if a.decompose:
