@@ -861,8 +861,17 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// links' stored velocities read 0.14-0.77 m/s (softgrip-rapier README, Limits (a),
 /// (a') session 26), with 8244 degenerate solves. 182 s in release with the multibody test:
 /// too slow for the dev profile even once it passes.
+///
+/// Session 27 (release, temporary prints, no behaviour change): the velocity the impact
+/// criterion reads is not the links' stored velocity (the thumb pad's, from rapier's stored
+/// velocities, reads -0.0003 to +0.0009 m/s in the hold, and the links' pose differences
+/// agree with it), but the plugin's `passive` velocity of an impulse-jointed member, which
+/// keeps the joint motors' push (their free run: -0.115 to -0.279 m/s in the hold, up to
+/// +0.83 m/s in the release); a multibody's leaves it out. Taking it out here as well (branch
+/// `s27-joint-passive-not-kept`) loses the box at the end of the descent (15 830 substeps).
+/// softgrip-rapier README, Limits (a') session 27.
 #[test]
-#[ignore = "fails its substep bound (session 26): the grasp now holds (2.46 / 9.90 / 9.54 N at the end of the hold, the box 0.32 mm from its start, 451 N from the table, pads at most 15.5 N) but 46 594 substeps against 13 500 (120-200 a step in the hold, about 300 in the release, the impact criterion reading the impulse-jointed links' stored velocities), 8244 degenerate solves; over 2 minutes in release, too slow for the dev profile; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored impulse_jointed`"]
+#[ignore = "fails its substep bound (sessions 26-27): the grasp holds (2.46 / 9.90 / 9.54 N at the end of the hold, the box 0.32 mm from its start, 451 N from the table, pads at most 15.5 N) but 46 594 substeps against 13 500 (119-275 a step in the hold, 280-307 in the release: the impact criterion reading the impulse-jointed members' free velocity with their motors' push in, not their stored velocities), 8244 degenerate solves; about 200 s of CPU in release, too slow for the dev profile; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored impulse_jointed`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
