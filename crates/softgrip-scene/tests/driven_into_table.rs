@@ -55,6 +55,9 @@ struct Down {
     pads_held: Vec<f64>,
     /// The object's height over its start at the end of the hold \[m\].
     object_drop: f64,
+    /// The largest `|object_drop|` of any step in the hold \[m\]: a box flung out of the
+    /// grasp can fall back onto the table at its start and be grasped again by the end.
+    object_moved: f64,
     /// Steps in the hold.
     held: usize,
     /// rapier's link contacts dropped as locked (`SoftCounters::locked_link_contacts`).
@@ -132,6 +135,7 @@ fn run_down_for(scene: &Scene, object: &str, steps: u64) -> Down {
         if run.control.controllers()[0].phase() == Some(Phase::Hold) {
             out.held += 1;
             out.object_drop = y0 - w.bodies[obj].translation().y as f64;
+            out.object_moved = out.object_moved.max(out.object_drop.abs());
             out.pads_held = (pads.iter())
                 .map(|&p| run.world.soft.contacts_of(p).map(|c| c.normal_force).sum())
                 .collect();
@@ -518,7 +522,9 @@ fn hand_descent(depth: f64, box_away: bool) -> Down {
 /// 0.60 mm from its start, 7192 substeps (none at the cap), links at most 0.31 m/s, pads at
 /// most 20.0 N, 1464 N from the table, 1843 degenerate solves, 77 evaluations past a wall
 /// (release). The hold is now checked ([`assert_hold`]), and the substep bound is 10 % over
-/// the measured count.
+/// the measured count. Session 27: the hold is checked at every step of it, not only its end
+/// (the box at most 1.83 mm from its start over the hold; release, the same run bit for
+/// bit).
 #[test]
 fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.02, false);
@@ -541,19 +547,24 @@ fn three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
 /// let go (the lost grasps of session 25 read 0-1.3 N on some pad).
 const HELD_PAD_FORCE: f64 = 1.0;
 
-/// The box's largest height change \[m\] over the descent and hold: it rests on the table under
-/// the grasp (the lost grasps of session 25 left it 15.8-19.4 mm higher, squeezed up out of
-/// the pads).
+/// The box's largest height change \[m\] over the hold: it rests on the table under the grasp
+/// (the lost grasps of session 25 left it 15.8-19.4 mm higher, squeezed up out of the pads;
+/// in session 27's trials a box flung 33-48 mm out of the grasp fell back onto the table at
+/// its start and was grasped again by the end of the hold, so every step of the hold counts).
 const HELD_BOX_MOVE: f64 = 2e-3;
 
-/// The box descents' hold: every pad at least [`HELD_PAD_FORCE`], the box within
-/// [`HELD_BOX_MOVE`] of its start.
+/// The box descents' hold: every pad at least [`HELD_PAD_FORCE`] at its end, the box within
+/// [`HELD_BOX_MOVE`] of its start at every step of it.
 fn assert_hold(d: &Down) {
     assert!(
         d.pads_held.len() == 3 && d.pads_held.iter().all(|f| *f > HELD_PAD_FORCE),
         "{d:?}: a pad let go"
     );
     assert!(d.object_drop.abs() < HELD_BOX_MOVE, "{d:?}: the box moved");
+    assert!(
+        d.object_moved < HELD_BOX_MOVE,
+        "{d:?}: the box left the grasp in the hold"
+    );
 }
 
 /// The three-finger hand closed on nothing (its box 0.5 m away: the pads press each other at
@@ -861,8 +872,17 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// links' stored velocities read 0.14-0.77 m/s (softgrip-rapier README, Limits (a),
 /// (a') session 26), with 8244 degenerate solves. 182 s in release with the multibody test:
 /// too slow for the dev profile even once it passes.
+///
+/// Session 27 (release, temporary prints, no behaviour change): the velocity the impact
+/// criterion reads is not the links' stored velocity (the thumb pad's, from rapier's stored
+/// velocities, reads -0.0003 to +0.0009 m/s in the hold, and the links' pose differences
+/// agree with it), but the plugin's `passive` velocity of an impulse-jointed member, which
+/// keeps the joint motors' push (their free run: -0.115 to -0.279 m/s in the hold, up to
+/// +0.83 m/s in the release); a multibody's leaves it out. Taking it out here as well (branch
+/// `s27-joint-passive-not-kept`) loses the box at the end of the descent (15 830 substeps).
+/// softgrip-rapier README, Limits (a') session 27.
 #[test]
-#[ignore = "fails its substep bound (session 26): the grasp now holds (2.46 / 9.90 / 9.54 N at the end of the hold, the box 0.32 mm from its start, 451 N from the table, pads at most 15.5 N) but 46 594 substeps against 13 500 (120-200 a step in the hold, about 300 in the release, the impact criterion reading the impulse-jointed links' stored velocities), 8244 degenerate solves; over 2 minutes in release, too slow for the dev profile; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored impulse_jointed`"]
+#[ignore = "fails its substep bound (sessions 26-27): the grasp holds (2.46 / 9.90 / 9.54 N at the end of the hold, the box 0.32 mm from its start, 451 N from the table, pads at most 15.5 N) but 46 594 substeps against 13 500 (119-275 a step in the hold, 280-307 in the release: the impact criterion reading the impulse-jointed members' free velocity with their motors' push in, not their stored velocities), 8244 degenerate solves; about 200 s of CPU in release, too slow for the dev profile; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored impulse_jointed`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
