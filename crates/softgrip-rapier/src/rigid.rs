@@ -26,7 +26,8 @@
 //! **The solve** (`solve_scalars`), started where the fingertips' friction is a spring and no
 //! body is a link from the previous (sub)step's answer (each row at its contact's impulse
 //! then, scaled by the step ratio: [`warm_start`]; a new contact at 0), else from zero: block
-//! Gauss-Seidel, [`OUTER`] times: a dense LU of the
+//! Gauss-Seidel, [`OUTER`] times (its slow tail extrapolated where no body is a link:
+//! [`extrapolate`]): a dense LU of the
 //! normals (on their active set) and of the rigid friction pairs that stick and whose normal
 //! load comes mostly from the soft contacts, then up to [`SWEEPS`] sweeps of the friction pairs
 //! and torsions, each in closed form on its own mobility and clamped (the sweeps stop once one
@@ -650,6 +651,9 @@ fn push_friction_pair(
 /// torsions, each in closed form on its own mobility and clamped to its disk or limit, until
 /// one moves no impulse by more than [`CONVERGED`] of the largest ([`settled`]). The
 /// fingertips' friction stays in the sweeps (its targets carry a kinematic tip's noise).
+/// Where no row moves a multibody or jointed link, the passes' geometric tail is summed
+/// ([`extrapolate`]) and a solve whose LU holds every moving row stops after a pass the
+/// sweeps did not move ([`all_in_lu`]).
 #[allow(clippy::too_many_arguments)]
 fn solve_scalars(
     bodies: &mut [BodyState],
@@ -661,6 +665,7 @@ fn solve_scalars(
     immobile_count: &mut u64,
     buffers: &mut Buffers,
     prior: Option<&DMatrix<f64>>,
+    fast: bool,
 ) -> Option<f64> {
     let m = rows.len();
     let Buffers {
@@ -675,6 +680,7 @@ fn solve_scalars(
         cache,
         sides,
         pure,
+        tail,
         ..
     } = buffers;
     cache.reset();
@@ -697,29 +703,112 @@ fn solve_scalars(
     state.resize(m, State::Active);
     previous.clone_from(j);
     *passes = OUTER + 1;
+    // The last plain pass's change, for the extrapolation (`extrapolate`; empty where the set
+    // of LU rows changed or the pass extrapolated).
+    tail.clear();
+    // The shortcuts of session 27 (`extrapolate`, `all_in_lu`) only where no row moves a
+    // multibody or jointed link (`fast`, for the whole group: `solve_coupled`): there the
+    // solves decide the path of a hand jammed into the table (session 24), and with them the
+    // pads-pressing descent took 15 616 substeps against main's 5 715 (`softgrip-scene`'s
+    // `driven_into_table`, bound 6 000).
+    let fast = fast && !links;
     for pass in 0..OUTER {
         lu_pass(bodies, rows, j, lu, h, state, cache)?;
         // The sweeps stop once one moves no impulse by more than CONVERGED of the largest, the
         // outer passes' own stop (session 24: 1.7 sweeps a pass, not 4, in `softgrip sweep
         // sweeps/throughput.toml`; the answers move within that stop, so not bit for bit).
-        for _ in 0..SWEEPS {
+        // Whether the first sweep moved no impulse by more than CONVERGED of the largest.
+        let mut kept = false;
+        for k in 0..SWEEPS {
             let moved = sweep(bodies, rows, items, j)?;
             if settled(moved, j) {
+                kept = k == 0;
                 break;
             }
         }
         mark_slid(rows, lu, j, slid);
         previous_lu.clone_from(lu);
         lu_rows(rows, j, slid, lu);
+        // Every row that moves solved by the LU, whose answer the sweeps kept: the next pass
+        // would solve the same system from the same impulses (session 27: the rigid rows'
+        // solve alone, all twelve rows of the default grasp's box in the LU, took a second
+        // pass that only confirmed the first; one LU pass and a sweep of 12 rows saved).
+        if fast && kept && lu == previous_lu && all_in_lu(&cache.mob, lu) {
+            *passes = pass + 1;
+            break;
+        }
         // Converged: the same rows in the LU and no impulse moved by more than CONVERGED of the
         // largest since the last pass (`moved_within`).
         if lu == previous_lu && moved_within(j, previous) {
             *passes = pass + 1;
             break;
         }
+        if fast && lu == previous_lu {
+            extrapolate(bodies, rows, j, previous, tail);
+        } else {
+            tail.clear();
+        }
         previous.copy_from_slice(j);
     }
     Some(bound)
+}
+
+/// Largest ratio (in size) of two successive passes' changes that [`extrapolate`] takes as
+/// the geometric tail of one slow mode.
+const TAIL_RATIO: f64 = 0.5;
+
+/// Largest part of a pass's change, relative to it, that may lie off the last pass's
+/// direction for [`extrapolate`] to take the two as one mode.
+const TAIL_FIT: f64 = 0.05;
+
+/// The outer passes' tail, extrapolated: where this pass's change `d = j - previous` is the
+/// last plain pass's `last` times a ratio `r` (least squares, the rest within [`TAIL_FIT`] of
+/// `d`; `|r|` below [`TAIL_RATIO`]), every impulse moves on by `r / (1 - r)` of `d` (applied
+/// to `bodies`): the sum of the geometric tail. Leaves this pass's change in `last` where it
+/// did not extrapolate (the next pass may extrapolate from it), else empties it (the next
+/// change is not the tail's).
+///
+/// Why: in the default grasp the table's four normals trade their load along the one
+/// direction that leaves the box's net force and torque as they are (two diagonal corners
+/// against the other two), with the corners' friction, clamped on its disk in the sweeps
+/// while the LU solves the normals: each pass changes it by -0.23 times the last (session
+/// 27; session 26: 4.79 passes a coupled solve, the last three or four of them that tail).
+fn extrapolate(
+    bodies: &mut [BodyState],
+    rows: &[Scalar],
+    j: &mut [f64],
+    previous: &[f64],
+    last: &mut Vec<f64>,
+) {
+    let fit = (last.len() == j.len()).then(|| {
+        let (mut dl, mut ll, mut dd) = (0.0, 0.0, 0.0);
+        for ((x, y), l) in j.iter().zip(previous).zip(last.iter()) {
+            let d = x - y;
+            dl += d * l;
+            ll += l * l;
+            dd += d * d;
+        }
+        let r = dl / ll;
+        // |d - r l|^2 = |d|^2 - r (d . l) at the least-squares r.
+        (r, (dd - r * dl).max(0.0) <= TAIL_FIT * TAIL_FIT * dd)
+    });
+    match fit {
+        Some((r, true)) if r.abs() < TAIL_RATIO && r != 0.0 => {
+            let f = r / (1.0 - r);
+            for (i, row) in rows.iter().enumerate() {
+                let d = (j[i] - previous[i]) * f;
+                if d != 0.0 {
+                    row.apply(bodies, d);
+                    j[i] += d;
+                }
+            }
+            last.clear();
+        }
+        _ => {
+            last.clear();
+            last.extend(j.iter().zip(previous).map(|(x, y)| x - y));
+        }
+    }
 }
 
 /// [`solve_scalars`]'s buffers, kept between solves.
@@ -734,6 +823,8 @@ struct Buffers {
     previous_lu: Vec<usize>,
     /// The impulses after the previous pass.
     previous: Vec<f64>,
+    /// The last plain outer pass's change of the impulses ([`extrapolate`]).
+    tail: Vec<f64>,
     /// The friction pairs' inverse mobility ([`pair_inverses`]).
     pair_inv: Vec<Option<Matrix2<f64>>>,
     /// What the sweeps solve, in row order ([`sweep_items`]).
@@ -889,6 +980,20 @@ fn mark_slid(rows: &[Scalar], lu: &[usize], j: &[f64], slid: &mut [bool]) {
             }
         }
     }
+}
+
+/// Whether every row that moves (a nonzero own mobility in `mob`) is in the LU's rows `lu`
+/// (ascending).
+fn all_in_lu(mob: &DMatrix<f64>, lu: &[usize]) -> bool {
+    let mut next = lu.iter().peekable();
+    (0..mob.nrows()).all(|i| {
+        if next.peek() == Some(&&i) {
+            next.next();
+            true
+        } else {
+            !row_moves(mob, i)
+        }
+    })
 }
 
 /// Whether no impulse of `j` moved by more than [`CONVERGED`] of the largest since `previous`
@@ -1491,12 +1596,23 @@ pub(crate) fn solve_coupled(
     // warm start carries on from step to step; measured (session 19), the 1 kg box of
     // `tests/large_step.rs` then slipped 0.21 mm in the grip (bound 10 um).
     let warmed = soft.iter().any(|r| r.k_t > 0.0);
+    // Decided for the group, both solves alike: with the rigid rows' solve alone taking its
+    // shortcut and the whole group's not (a pad on a link pressing a box on the table), the
+    // box of `tests/jointed_mimic.rs`'s friction-spring jaws moved at 0.86 mm/s in the hold
+    // (bound 1 um/s; session 27).
+    let fast = !soft
+        .iter()
+        .flat_map(|r| [r.a, r.b])
+        .chain(rigid.iter().flat_map(|r| [Some(r.a), r.b]))
+        .flatten()
+        .any(|i| bodies[i].link.is_some());
     let mut stage = Stage {
         h,
         warmed,
         first: &mut first,
         warm: &mut warm,
         passes: &mut passes,
+        fast,
     };
     let solved = stage.solve(bodies, &[], rigid, &[], 0, scratch).is_some();
     bodies.clone_from_slice(&base);
@@ -1549,6 +1665,9 @@ struct Stage<'a> {
     warm: &'a mut Vec<Option<f64>>,
     /// Outer passes of the last solve.
     passes: &'a mut usize,
+    /// Whether the solves may take session 27's shortcuts ([`solve_scalars`]): no body of the
+    /// group (soft and rigid rows) is a multibody or jointed link.
+    fast: bool,
 }
 
 impl Stage<'_> {
@@ -1600,6 +1719,7 @@ impl Stage<'_> {
             degenerate,
             buffers,
             prior,
+            self.fast,
         )
     }
 }
@@ -1755,6 +1875,7 @@ fn solve_saturating(
     degenerate_count: &mut u64,
     buffers: &mut Buffers,
     prior: Option<&DMatrix<f64>>,
+    fast: bool,
 ) -> Option<()> {
     let links = rows
         .iter()
@@ -1788,6 +1909,7 @@ fn solve_saturating(
             &mut immobile,
             buffers,
             prior,
+            fast,
         ) else {
             buffers.u0 = u0;
             return None;
