@@ -34,6 +34,12 @@ Modes:
               at x = 0.0025, 0.005, 0.01
   --table     F_shell/F_flat over (nu, t/R, a/t) at small x
 
+Result (CORE_FORM.md "Thin skins: the shell on its core at small strain, session 27"): the
+shell (radial reading) is the FE's small-strain limit within 1 %: the thin k1e6 skins' FE/shell
+- 1 is linear in s = delta/t over x 0.0025-0.01 with intercepts -0.99..+0.42 % (the squeeze's
+slope 3-52 %/unit s, falling with nu); the thick skins at x 0.01 to t/R 0.5 within -1.08..+1.79 %;
+past t/R 0.55 the full shell's far field is not the FE's hemisphere clamped on its equator.
+
 usage: PY tools/calibration/shell_on_core_s27.py [--check] [--fe] [--table]
        (PY: /work/main/target/fe-venv/bin/python)
 """
