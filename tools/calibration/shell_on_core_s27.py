@@ -189,6 +189,13 @@ def check():
                 flat = 2 * flat_l(k * tau, nu) / (es * k)
                 cells.append(f"t/R {tau:g} (n {n}) {compliance(n, nu, tau)[0][0] / flat - 1:+.2e}")
             print(f"  nu {nu} k t {kt:g}: " + "; ".join(cells))
+    print("\nContact: the flat limit, shell over the flat layer at a_H/t = 1 as t/R -> 0 (radial):")
+    import thin_layer_exact_s27 as tl
+    for nu in (0.3, 0.49):
+        fl = tl.chi_exact(1.0, nu)[0]
+        print(f"  nu {nu}: " + " ".join(
+            f"t/R {tau:g}: {100 * (chi_at(tau * tau, nu, tau, 'radial')[0] / fl - 1):+.3f} %"
+            for tau in (0.05, 0.02, 0.01)))
     print("\nContact: convergence of chi in the number of degrees (nmax) and the basis (K):")
     for nu, tau, x in ((0.3, 0.05, 0.0025), (0.49, 0.12, 0.01), (0.48, 0.4, 0.0025)):
         for nmax, k in ((2000, 6), (4000, 6), (4000, 10), (8000, 10)):
