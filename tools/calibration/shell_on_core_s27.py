@@ -171,7 +171,8 @@ def check():
             row = [compliance(n, nu, tau)[0][0] / sol - 1 for tau in (0.9, 0.99, 0.999)]
             print(f"  nu {nu} n {n}: solid w_p {sol:.6f}; shell/solid - 1 at t/R 0.9/0.99/0.999: "
                   + " ".join(f"{v:+.2e}" for v in row))
-    print("\nSolid sphere at large n against the half-space 2/(E* k), k = n + 1/2 (E* = 2/(1 - nu)):")
+    print("\nSolid sphere at large n against the half-space 2/(E* k), k = n + 1/2 "
+          "(E* = 2/(1 - nu)):")
     for nu in (0.3, 0.49):
         es = 2 / (1 - nu)
         print(f"  nu {nu}: " + " ".join(
@@ -307,13 +308,15 @@ def fe_rows(xs=(0.0025, 0.005, 0.0075, 0.01)):
 
 def fe_table():
     print("chi = F/F_Hertz; shell = this script ('radial' reading unless said); flat = the flat "
-          "layer (thin_layer_exact_s27.chi_exact); law = today's law (thin_layer_exact_s27.law_chi)")
+          "layer (thin_layer_exact_s27.chi_exact); law = today's law "
+          "(thin_layer_exact_s27.law_chi)")
     print("| skin | x | a_H/t | FE | shell (radial) | shell/flat - 1 | FE/shell - 1 | "
           "FE/shell vertical - 1 | FE/shell two plates - 1 | FE/flat - 1 | law/shell - 1 | "
           "law/FE - 1 |")
     print("|---" * 12 + "|")
     rows = fe_rows()
-    print("\nThe thin skins' FE over the shell against the squeeze s = delta/t = x/(t/R) at x 0.0025"
+    print("\nThe thin skins' FE over the shell against the squeeze s = delta/t = x/(t/R) at "
+          "x 0.0025"
           " - 0.01: FE/shell - 1 = c0 + c1 s (least squares) [%]; c0 = the small-strain miss")
     print("| skin | c0 | c1 | max |fit - data| |")
     print("|---|---|---|---|")
@@ -343,7 +346,8 @@ def table(nus=(0.3, 0.4, 0.45, 0.48, 0.49, 0.499), taus=(0.05, 0.1, 0.2, 0.4, 0.
                 if x > xmax:
                     cells.append("-")
                     continue
-                cells.append(f"{100 * (chi_at(x, nu, tau, 'radial')[0] / tl.chi_exact(u, nu)[0] - 1):+.2f}")
+                ratio = chi_at(x, nu, tau, "radial")[0] / tl.chi_exact(u, nu)[0]
+                cells.append(f"{100 * (ratio - 1):+.2f}")
             print(f"| {nu}, {tau} | " + " | ".join(cells) + " |", flush=True)
 
 
