@@ -21,6 +21,11 @@ Forms (refitted on the FITTED set only, s26.sets(), as thin_layer_exact_s27's `-
            chi = chi_flat + (chi_law - chi_flat) (chi_skel - 1)/(skel_law - 1)
   KSL  the same on session 27's LCF:P (the finite-strain film floor; nine constants)
   KS5  KS with tau in chi_skel capped at 0.5 (the shell's far field past t/R 0.5 is not the FE's)
+  KT   the ratio taken at the skin's own tau: the shell's excess over the depth-R flat layer,
+       chi_skel(u, nu, tau) - chi_lin(sqrt(x), nu) (clipped at 0), over the law's own excess at
+       (x, tau) with its squeeze and coupling set to 0 (the law's mean depth and hemisphere
+       subtraction are then not counted twice); KT5: tau capped at 0.5 in chi_skel
+  KSF, KSLF  controls, not the brief's form: KS / KSL with K's fade (tau0 fitted)
 
 usage: PY tools/calibration/try_shell_skeleton_s27.py [--table] [--show]
            [--var MODE ... [--curves] [--check-form MODE]]
@@ -113,9 +118,19 @@ def form_ks(mode):
         q = p[:k]
         fl = f.chi_flat(x, nu)
         u = np.sqrt(x) / tau
-        skel = skel_law(q, (u * t_s) ** 2, nu, t_s)
         ts = min(tau, 0.5) if "5" in mode else tau
-        ratio = (chi_skel(u, nu, ts) - 1) / (skel - 1)
+        if "T" in mode:  # the law's own small-strain skeleton at this tau (squeeze, coupling 0)
+            import thin_layer_exact_s27 as tl
+            q0 = np.array(q, dtype=float)
+            q0[[1, 2, 3, 4, 6, 7]] = 0.0
+            raw = skel_law(q0, x, nu, tau) - fl
+            shell = chi_skel(u, nu, ts) - tl.chi_lin(np.sqrt(x), nu)
+            ratio = np.clip(shell, 0, None) / raw
+        else:
+            skel = skel_law(q, (u * t_s) ** 2, nu, t_s)
+            ratio = (chi_skel(u, nu, ts) - 1) / (skel - 1)
+        if "F" in mode:  # control: K's fade w = 1/(1 + (tau/tau0)^2), tau0 fitted
+            ratio = 1 + (ratio - 1) / (1 + (tau / p[k]) ** 2)
         return fl + (law(q, x, nu, tau) - fl) * ratio
     return chi
 
@@ -140,7 +155,8 @@ def fit_table(modes, curves_too=False):
             p = s25.LAW
         else:
             f.chi_core = form_ks(mode)
-            p = f.fit(train, list(s25.LAW) + ([3.61] if "L" in mode else []))
+            p = f.fit(train, list(s25.LAW) + ([3.61] if "L" in mode else []) +
+                      ([0.1] if "F" in mode else []))
         fits[mode] = p
         print(f"| {mode} | " + " | ".join(b.worst(p, cs) for _, cs in groups) + " |", flush=True)
         print("    constants " + " ".join(f"{v:.6f}" for v in p) +
