@@ -25,7 +25,16 @@ Forms (refitted on the FITTED set only, s26.sets(), as thin_layer_exact_s27's `-
        chi_skel(u, nu, tau) - chi_lin(sqrt(x), nu) (clipped at 0), over the law's own excess at
        (x, tau) with its squeeze and coupling set to 0 (the law's mean depth and hemisphere
        subtraction are then not counted twice); KT5: tau capped at 0.5 in chi_skel
+  KSH  KS with the law's skeleton taken at its own mean depth (u/h, h = 1 + tau^2/(1 - tau))
   KSF, KSLF  controls, not the brief's form: KS / KSL with K's fade (tau0 fitted)
+
+Result (CORE_FORM.md "Thin skins: the shell skeleton refit, session 27"): g is -0.05..-1.25
+(nu 0.3-0.499, u 0.1-4); KS (no fade) is worse than the law on every set but blind (fitted /
+the 14 / held out / blind / deep CAX8 7.42 / 7.42 / 13.21 / 5.69 / 10.44 %, law 6.21 / 2.52 /
+3.70 / 5.89 / 2.90) and fails the form check (F not increasing): it takes the thin skins'
+small-x nu pattern out (x 0.01: -0.58..+2.66 %, law -3.42..+3.48) but makes every thick skin
+soft at x 0.01 (-3.24..-0.16 %), the core's curvature counted twice against the law's own
+stand-ins. Not adopted.
 
 usage: PY tools/calibration/try_shell_skeleton_s27.py [--table] [--show]
            [--var MODE ... [--curves] [--check-form MODE]]
@@ -127,7 +136,10 @@ def form_ks(mode):
             shell = chi_skel(u, nu, ts) - tl.chi_lin(np.sqrt(x), nu)
             ratio = np.clip(shell, 0, None) / raw
         else:
-            skel = skel_law(q, (u * t_s) ** 2, nu, t_s)
+            # H: the law's skeleton at its own mean depth t h (u/h), the curvature stand-in
+            # its skin layer carries (s25: h = 1 + tau^2/(1 - tau)), so tau g is not counted twice
+            uh = u / (1 + tau * tau / (1 - tau)) if "H" in mode else u
+            skel = skel_law(q, (uh * t_s) ** 2, nu, t_s)
             ratio = (chi_skel(u, nu, ts) - 1) / (skel - 1)
         if "F" in mode:  # control: K's fade w = 1/(1 + (tau/tau0)^2), tau0 fitted
             ratio = 1 + (ratio - 1) / (1 + (tau / p[k]) ** 2)
