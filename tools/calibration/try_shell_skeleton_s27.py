@@ -24,7 +24,8 @@ Forms (refitted on the FITTED set only, s26.sets(), as thin_layer_exact_s27's `-
   KT   the ratio taken at the skin's own tau: the shell's excess over the depth-R flat layer,
        chi_skel(u, nu, tau) - chi_lin(sqrt(x), nu) (clipped at 0), over the law's own excess at
        (x, tau) with its squeeze and coupling set to 0 (the law's mean depth and hemisphere
-       subtraction are then not counted twice); KT5: tau capped at 0.5 in chi_skel
+       subtraction are then not counted twice); KT5: tau capped at 0.5 in chi_skel; KTL5: KT5
+       on LCF:P (its raw skeleton s25's P)
   KSH  KS with the law's skeleton taken at its own mean depth (u/h, h = 1 + tau^2/(1 - tau))
   KSF, KSLF  controls, not the brief's form: KS / KSL with K's fade (tau0 fitted)
 
