@@ -120,6 +120,11 @@ pub(crate) struct Row {
     /// Its impulses of the previous (sub)step (`None`: a new contact), the coupled solve's
     /// start.
     pub warm: Option<Warm>,
+    /// The normal's effective mobility given the rigid rows that held in its coupled solve
+    /// (`rigid::solve_coupled`: rapier's active normals and sticking friction pairs, a Schur
+    /// complement of the rows' mutual mobility) \[1/kg\]; `None` where the contact was not
+    /// solved coupled, no rigid row held, or a body of its group is a jointed link.
+    pub supported_mobility: Option<f64>,
 }
 
 /// The body at index `i` of the body table (`None`: fixed, no body).

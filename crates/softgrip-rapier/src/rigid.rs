@@ -1643,6 +1643,14 @@ pub(crate) fn solve_coupled(
             stats[1] += passes.min(OUTER) as u64;
             stats[2] += u64::from(passes > OUTER);
             write_soft(bodies, soft, stage.first, &buffers[1].j);
+            supported_mobility(
+                bodies,
+                soft,
+                &scalars[..],
+                stage.first,
+                &buffers[1],
+                stage.fast,
+            );
             write_rigid(soft, rigid, &scalars[..], &buffers[1].j, rest, h);
             Coupled::Solved
         }
@@ -1723,6 +1731,128 @@ impl Stage<'_> {
         )
     }
 }
+
+/// Writes each soft row's `supported_mobility` after the whole group's solve (`rows`, its
+/// scalar rows; `first`, each soft row's first scalar; `buffers`, the solve's answer): its
+/// normal's mobility given the rigid rows that held, `w_eff = W_cc - W_cS A_SS^-1 W_Sc` (the
+/// Schur complement of the rows' mutual mobility `W`), `S` rapier's normals with an impulse and
+/// their friction pairs that hold (the impulse stopping their points, from the velocities
+/// `bodies` after the solve, inside the whole disk `mu j_n`), `A_SS` their mobility with each
+/// row's compliance (the LU's) on its diagonal \[1/kg\]. `None` where no friction pair held,
+/// where a body of the group is a jointed link (`fast` false: their groups keep the free
+/// mobility), for a fingertip on the hard stick (see inside) or where the block cannot be
+/// factored.
+///
+/// Why: the substep count resolves a touching contact's approach as an impact at its
+/// mobility (`substep::substeps_for`); a box the table's friction holds against a closing jaw
+/// took the free box's (session 27: the throughput sweep's squeeze split 490 steps 40 to 103
+/// ways, 20 219 of its 22 749 coupled solves, with the box moving at most 0.23 mm/s).
+fn supported_mobility(
+    bodies: &[BodyState],
+    soft: &mut [Row],
+    rows: &[Scalar],
+    first: &[usize],
+    buffers: &Buffers,
+    fast: bool,
+) {
+    for r in soft.iter_mut() {
+        r.supported_mobility = None;
+    }
+    if !fast {
+        return;
+    }
+    let Buffers { j, cache, .. } = buffers;
+    let mob = &cache.mob;
+    let m = rows.len();
+    if mob.nrows() != m || j.len() != m {
+        return;
+    }
+    let held_normal = |i: usize| matches!(rows[i].kind, Kind::HardNormal) && j[i] > 0.0;
+    // The candidates: rapier's normals with an impulse, and their friction.
+    let mut support: Vec<usize> = (0..m)
+        .filter(|&i| mob[(i, i)] > 0.0)
+        .filter(|&i| match rows[i].kind {
+            Kind::HardNormal => held_normal(i),
+            Kind::Tangent { normal, mu, .. } => held_normal(normal) && mu > 0.0,
+            _ => false,
+        })
+        .collect();
+    // A friction pair holds where the impulse that stops its point, with the normals that held,
+    // lies inside its whole disk `mu j_normal` (rapier's part of it included: the coupled rows
+    // carry only `mu (j_normal - base)`, rapier's friction the rest); one that would slide is
+    // dropped and the others judged again.
+    let mut chol = None;
+    for _ in 0..=SUPPORT_PASSES {
+        let n = support.len();
+        if n == 0 {
+            return;
+        }
+        let a = DMatrix::from_fn(n, n, |r, c| {
+            let w = mob[(support[r], support[c])];
+            if r == c {
+                w + rows[support[r]].compliance * w
+            } else {
+                w
+            }
+        });
+        let Some(c) = a.cholesky() else {
+            return;
+        };
+        let v = DVector::from_fn(n, |k, _| {
+            let s = &rows[support[k]];
+            s.velocity(bodies) - s.target
+        });
+        let dj = c.solve(&v);
+        let at = |i: usize| support.iter().position(|&k| k == i);
+        let after = |i: usize| j[i] - at(i).map_or(0.0, |k| dj[k]);
+        let slides = |i: usize| match rows[i].kind {
+            Kind::Tangent {
+                normal, other, mu, ..
+            } => {
+                let limit = mu * after(normal).max(0.0);
+                Vector2::new(after(i), after(other)).norm() >= limit * (1.0 - 1e-6)
+            }
+            _ => false,
+        };
+        let kept: Vec<usize> = support.iter().copied().filter(|&i| !slides(i)).collect();
+        if kept.len() == n {
+            chol = Some(c);
+            break;
+        }
+        support = kept;
+    }
+    let Some(chol) = chol else {
+        return;
+    };
+    if !support
+        .iter()
+        .any(|&i| matches!(rows[i].kind, Kind::Tangent { .. }))
+    {
+        // The normals alone: no hold across the surface.
+        return;
+    }
+    let n = support.len();
+    for (r, &f) in soft.iter_mut().zip(first) {
+        // Not for a fingertip on the hard stick (`Row::k_t` 0 with friction): its tip pressing
+        // a box against a wall at 10 mm/s, counted unsplit with the wall's hold, pushed the
+        // box off by 1.8 mm at 0.17 m/s (`tests/press_on_table.rs`'s
+        // `rigid_stick_presses_a_box_against_a_wall`, bound 0.5 mm; session 27).
+        let hard_stick = r.mu > 0.0 && !(r.k_t > 0.0);
+        if hard_stick || !matches!(rows[f].kind, Kind::SoftNormal { .. }) || !(mob[(f, f)] > 0.0) {
+            continue;
+        }
+        let b = DVector::from_fn(n, |k, _| mob[(support[k], f)]);
+        let x = chol.solve(&b);
+        let w_eff = (mob[(f, f)] - b.dot(&x)).max(0.0);
+        if w_eff.is_finite() {
+            r.supported_mobility = Some(w_eff);
+        }
+    }
+}
+
+/// Most passes of [`supported_mobility`]'s judgement of the friction pairs (each drops the
+/// pairs that would slide).
+const SUPPORT_PASSES: usize = 4;
 
 /// rapier's normal impulse of each rigid row (its friction goes with it: see `Kind::Tangent`)
 /// from the solve of the rigid rows alone, `rest` (per scalar row), into `rest_n`.

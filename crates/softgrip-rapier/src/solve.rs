@@ -1144,6 +1144,7 @@ mod tests {
             friction_mobility: None,
             lin: 0.0,
             warm: None,
+            supported_mobility: None,
         }
     }
 

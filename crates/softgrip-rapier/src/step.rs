@@ -821,6 +821,10 @@ impl Step<'_> {
                     h,
                 );
             }
+            // The last substep's supported mobility is the next step's (`substep_count`).
+            if let Some(m) = self.soft.gaps.get_mut(&key) {
+                m.supported = row.supported_mobility;
+            }
             let delta_end = compression_from_signed_distance(g.dist) - h * row.vn_end;
             let delta = compression_from_signed_distance(g.dist);
             readout::accumulate(&mut s.accums, key, row, model, delta, delta_end, h);
@@ -1029,6 +1033,7 @@ fn new_row(a: Option<usize>, b: Option<usize>, g: &Geom, mu: f64) -> Row {
         friction_mobility: None,
         lin: 0.0,
         warm: None,
+        supported_mobility: None,
     }
 }
 
