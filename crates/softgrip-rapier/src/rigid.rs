@@ -1740,8 +1740,10 @@ impl Stage<'_> {
 /// `bodies` after the solve, inside the whole disk `mu j_n`), `A_SS` their mobility with each
 /// row's compliance (the LU's) on its diagonal \[1/kg\]. `None` where no friction pair held,
 /// where a body of the group is a jointed link (`fast` false: their groups keep the free
-/// mobility), for a fingertip on the hard stick (see inside) or where the block cannot be
-/// factored.
+/// mobility) or where the block cannot be factored. (A fingertip on the hard stick was left
+/// out in session 27: its box pressed against a wall was pushed 1.8 mm off when a step was
+/// split after unsplit ones; the cause was the split step's carry, `bodies::unsplit_carry`,
+/// fixed in session 28.)
 ///
 /// Why: the substep count resolves a touching contact's approach as an impact at its
 /// mobility (`substep::substeps_for`); a box the table's friction holds against a closing jaw
@@ -1770,12 +1772,7 @@ fn supported_mobility(
         return;
     };
     for (r, &f) in soft.iter_mut().zip(first) {
-        // Not for a fingertip on the hard stick (`Row::k_t` 0 with friction): its tip pressing
-        // a box against a wall at 10 mm/s, counted unsplit with the wall's hold, pushed the
-        // box off by 1.8 mm at 0.17 m/s (`tests/press_on_table.rs`'s
-        // `rigid_stick_presses_a_box_against_a_wall`, bound 0.5 mm; session 27).
-        let hard_stick = r.mu > 0.0 && !(r.k_t > 0.0);
-        if hard_stick || !matches!(rows[f].kind, Kind::SoftNormal { .. }) || !(mob[(f, f)] > 0.0) {
+        if !matches!(rows[f].kind, Kind::SoftNormal { .. }) || !(mob[(f, f)] > 0.0) {
             continue;
         }
         let b = DVector::from_fn(support.len(), |k, _| mob[(support[k], f)]);
