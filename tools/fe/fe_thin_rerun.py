@@ -84,7 +84,10 @@ CASES = {case_name(nu, t): (nu, t, role, reach) for nu, t, role, reach in SKINS}
 # with penalty 1e6 and ~9 elements through the skin on full integration (CAX8) to delta/t = 1
 # (each diverges before): (nu, t/R, role, committed CAX8 reach x). Exported to
 # tests/data/fe/core/cax8/k1e6/ (out of every glob of cax8/*.csv until a judgement adopts them).
-DEEP = [(0.48, 0.08, "blind", 0.04), (0.48, 0.1, "blind", 0.06)]
+DEEP = [(0.48, 0.08, "blind", 0.04), (0.48, 0.1, "blind", 0.06),
+        # then two nearly incompressible thin skins with no CAX8 run (their CAX8R twins stop
+        # at delta/t 0.4-0.5): the deep squeeze past delta/t 0.5 at other t/R and nu
+        (0.49, 0.12, "held", 0.05), (0.45, 0.07, "blind", 0.0275)]
 DEEP_CASES = {case_name(nu, t) + "_cax8": (nu, t, role, reach) for nu, t, role, reach in DEEP}
 OUT_DEEP = os.path.join(DATA, "cax8", "k1e6")
 CASES.update(DEEP_CASES)
@@ -133,10 +136,17 @@ def export(names, runs):
             else prov[:prov.index("regenerate:")]
         deep = n in DEEP_CASES
         twin = ("cax8/" if deep else "") + f"force_nu{nu:g}_t{t:g}.csv"
-        if deep:
+        if deep and os.path.exists(os.path.join(DATA, twin)):
             what["blind"] = "blind for the core law (its committed penalty-1e5 twin is)"
             rerun = (f"session 28's re-run, on CAX8 to delta/t = 1, of "
                      f"tests/data/fe/core/{twin}")
+        elif deep:
+            what = {k: v.replace("its committed CAX8R twin, penalty 1e5, is",
+                                 "its CAX8R run is").replace("its committed twin is",
+                                                             "its CAX8R run is")
+                    for k, v in what.items()}
+            rerun = (f"session 28's deep run on CAX8 to delta/t = 1 of the skin of "
+                     f"tests/data/fe/core/k1e6/force_nu{nu:g}_t{t:g}.csv")
         elif os.path.exists(os.path.join(DATA, twin)):
             rerun = f"session 25's re-run of tests/data/fe/core/{twin}"
         else:  # nu 0.48 t/R 0.05: session 20's R/120 run stopped at x = 0.015 (three rows)
