@@ -97,7 +97,7 @@ def fmt(v):
 
 def rs_array(name, vals, doc, per=4):
     vals = list(vals)
-    lines = [f"/// {doc}", f"pub(super) const {name}: [f64; {len(vals)}] = ["]
+    lines = [f"/// {doc}", f"pub(super) static {name}: [f64; {len(vals)}] = ["]
     for i in range(0, len(vals), per):
         lines.append("    " + " ".join(fmt(v) + "," for v in vals[i:i + per]))
     lines.append("];")
@@ -152,7 +152,12 @@ def main():
         "//! `ln(chi_lin - 1)` sampled on a (nu, ln u) grid and interpolated by the bicubic B-spline",
         "//! through the samples (exported the same way). Evaluated in `super::shell`.",
         "",
-        "#![allow(clippy::unreadable_literal, clippy::excessive_precision)]",
+        "// Data, not code: knots that happen to be near ln 2 or sqrt 2 are the grid's values.",
+        "#![allow(",
+        "    clippy::unreadable_literal,",
+        "    clippy::excessive_precision,",
+        "    clippy::approx_constant",
+        ")]",
         "",
         rs_array("TAUS", s28.TAUS, "The t/R nodes of `G`."),
         "",
@@ -176,8 +181,11 @@ def main():
         out.append(rs_array(f"G{j}_C", c, f"`G` at t/R {s28.TAUS[j]}: B-spline coefficients, "
                                           f"row-major in (nu, ln u)."))
         out.append("")
-    out.append("/// Per t/R node: (knots in nu, knots in ln u, coefficients, the node's first and last u).")
-    out.append("pub(super) const G_NODES: [(&[f64], &[f64], &[f64], f64, f64); 8] = [")
+    out.append("/// One t/R node of `G`: knots in nu, knots in ln u, coefficients, the node's first and last u.")
+    out.append("pub(super) type GNode = (&'static [f64], &'static [f64], &'static [f64], f64, f64);")
+    out.append("")
+    out.append("/// Per t/R node, `GNode`.")
+    out.append("pub(super) static G_NODES: [GNode; 8] = [")
     for j, (tx, ty, c, lo, hi) in enumerate(g_parts):
         out.append(f"    (&G{j}_TX, &G{j}_TY, &G{j}_C, {fmt(lo)}, {fmt(hi)}),")
     out.append("];")
