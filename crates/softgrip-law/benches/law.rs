@@ -72,8 +72,9 @@ fn bench_levels(c: &mut Criterion) {
     for (name, backing) in [
         ("calibrated-flat", Backing::Flat),
         ("calibrated-core", Backing::Core { thickness: 0.004 }),
-        // t/R 0.1: the thin-skin form (session 28), tabulated like the rest.
-        ("calibrated-core-thin", Backing::Core { thickness: 0.001 }),
+        // t/R 0.12 (between the shell table's t/R nodes: all eight weighted): the thin-skin form
+        // (session 28), tabulated like the rest.
+        ("calibrated-core-thin", Backing::Core { thickness: 0.0012 }),
     ] {
         let backed = params.with_backing(backing).expect("valid backing");
         let law = ContactLaw::try_new(backed, Level::Calibrated).expect("level builds");
@@ -149,10 +150,10 @@ fn bench_levels(c: &mut Criterion) {
                 .x_max()
         })
     });
-    // The same for a thin skin (t/R 0.1), whose table evaluates the shell's (session 28).
+    // The same for a thin skin (t/R 0.12), whose table evaluates the shell's (session 28).
     let thin = ContactLaw::try_new(
         params
-            .with_backing(Backing::Core { thickness: 0.001 })
+            .with_backing(Backing::Core { thickness: 0.0012 })
             .expect("valid backing"),
         Level::Calibrated,
     )

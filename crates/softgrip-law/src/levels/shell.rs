@@ -33,10 +33,8 @@ mod table;
 fn basis(t: &[f64], x: f64) -> (usize, [f64; 4]) {
     let n = t.len();
     let x = x.clamp(t[3], t[n - 4]);
-    let mut l = 3;
-    while l < n - 5 && x >= t[l + 1] {
-        l += 1;
-    }
+    // The interior knots t[4..=n-5] at or below x (binary search: chi_lin's has 190 knots).
+    let l = 3 + t[4..n - 4].partition_point(|&k| k <= x);
     let mut h = [1.0, 0.0, 0.0, 0.0];
     for j in 1..=3 {
         let hh = h;
@@ -82,9 +80,9 @@ pub(crate) struct Shell {
     tau: f64,
     /// `ln(chi_lin - 1)` in `ln u`.
     lin: Curve,
-    /// Per t/R node: `G` in `ln u`, its first and last u, and its weight in the cubic across
-    /// the nodes at this t/R.
-    nodes: Vec<(Curve, f64, f64, f64)>,
+    /// Per t/R node whose weight in the cubic across the nodes at this t/R is not 0 (one at a
+    /// node's t/R): `G` in `ln u`, its first u, `ln` of its first and last u, and that weight.
+    nodes: Vec<(Curve, f64, [f64; 2], f64)>,
 }
 
 impl Shell {
@@ -105,13 +103,10 @@ impl Shell {
             .iter()
             .zip(table::BASIS[i])
             .map(|(&(tx, ty, c, lo, hi), [c0, c1, c2, c3])| {
-                (
-                    Curve::at(tx, ty, c, nu_g),
-                    lo,
-                    hi,
-                    ((c0 * d + c1) * d + c2) * d + c3,
-                )
+                (tx, ty, c, lo, hi, ((c0 * d + c1) * d + c2) * d + c3)
             })
+            .filter(|node| node.5 != 0.0)
+            .map(|(tx, ty, c, lo, hi, w)| (Curve::at(tx, ty, c, nu_g), lo, [lo.ln(), hi.ln()], w))
             .collect();
         Self { tau, lin, nodes }
     }
@@ -126,10 +121,13 @@ impl Shell {
 
     /// `G(nu, tau, u)`.
     pub(crate) fn g(&self, u: f64) -> f64 {
+        // ln u once (clamped per node in ln: the same as ln of u clamped); u <= 0 only in the
+        // slope stencil at x = 0, below every node's first u.
+        let ln_u = if u > 0.0 { u.ln() } else { f64::NEG_INFINITY };
         self.nodes
             .iter()
-            .map(|(curve, lo, hi, w)| {
-                let v = curve.eval(u.clamp(*lo, *hi).ln());
+            .map(|(curve, lo, [ln_lo, ln_hi], w)| {
+                let v = curve.eval(ln_u.clamp(*ln_lo, *ln_hi));
                 w * if u < *lo { v * u / lo } else { v }
             })
             .sum()
