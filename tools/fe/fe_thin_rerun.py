@@ -23,7 +23,7 @@ Exported to tests/data/fe/core/k1e6/force_nu{NU}_t{T}.csv (the committed format 
 provenance; a subfolder, out of every glob of core/*.csv, so the law's tests keep their data
 until a refit adopts these); `--compare` prints each against the committed curve.
 
-usage: PY tools/fe/fe_thin_rerun.py [--runs DIR] [--only NAME ...] [--list] [--export]
+usage: PY tools/fe/fe_thin_rerun.py [--runs DIR] [--deep] [--only NAME ...] [--list] [--export]
        [--compare] [-j 1|2]
        (PY: target/fe-venv/bin/python; ccx under `nice`; DIR default /work/fe-scratch/s25-skin).
        A run directory that holds meta.json is not run again; a case is claimed by creating
@@ -79,19 +79,31 @@ def case_name(nu, t):
 
 CASES = {case_name(nu, t): (nu, t, role, reach) for nu, t, role, reach in SKINS}
 
+# Session 27/28 (issue 24 item 5, `--deep`): the deep CAX8 skins of fe_campaign.S23_DEEP whose
+# reference is soft from the campaign's penalty 1e5 (up to 4.86 % at their deepest), re-run
+# with penalty 1e6 and ~9 elements through the skin on full integration (CAX8) to delta/t = 1
+# (each diverges before): (nu, t/R, role, committed CAX8 reach x). Exported to
+# tests/data/fe/core/cax8/k1e6/ (out of every glob of cax8/*.csv until a judgement adopts them).
+DEEP = [(0.48, 0.08, "blind", 0.04), (0.48, 0.1, "blind", 0.06)]
+DEEP_CASES = {case_name(nu, t) + "_cax8": (nu, t, role, reach) for nu, t, role, reach in DEEP}
+OUT_DEEP = os.path.join(DATA, "cax8", "k1e6")
+CASES.update(DEEP_CASES)
+
 
 def case_of(name):
     nu, t, role, reach = CASES[name]
     dt = 0.0005 if t <= 0.085 else 0.001
-    tend = round(min(t, reach + 0.005), 4)
-    case = fe_run.make_case("core", nu, t, mesh_n(t), tend, dt_small=dt, late_dt=dt)
+    deep = name in DEEP_CASES
+    tend = t if deep else round(min(t, reach + 0.005), 4)
+    case = fe_run.make_case("core", nu, t, mesh_n(t), tend, dt_small=dt, late_dt=dt,
+                            element="CAX8" if deep else "CAX8R")
     case.tp = 0.0025
     case.kpen = KPEN
     return case
 
 
-def committed(nu, t):
-    p = os.path.join(DATA, f"force_nu{nu:g}_t{t:g}.csv")
+def committed(nu, t, deep=False):
+    p = os.path.join(DATA, "cax8" if deep else "", f"force_nu{nu:g}_t{t:g}.csv")
     if not os.path.exists(p):
         return {}
     a = np.genfromtxt(p, delimiter=",", names=True, skip_header=1)
@@ -108,7 +120,6 @@ def analyse(name, runs):
 
 
 def export(names, runs):
-    os.makedirs(OUT, exist_ok=True)
     for n in names:
         res = analyse(n, runs)
         if res is None or len(res["rows"]) < 2:
@@ -120,8 +131,13 @@ def export(names, runs):
                 "blind": "blind for the core law (its committed twin is; no fit may see it)"}
         prov = prov[:prov.index("held out of every fit")] if "held out of every fit" in prov \
             else prov[:prov.index("regenerate:")]
-        twin = f"force_nu{nu:g}_t{t:g}.csv"
-        if os.path.exists(os.path.join(DATA, twin)):
+        deep = n in DEEP_CASES
+        twin = ("cax8/" if deep else "") + f"force_nu{nu:g}_t{t:g}.csv"
+        if deep:
+            what["blind"] = "blind for the core law (its committed penalty-1e5 twin is)"
+            rerun = (f"session 28's re-run, on CAX8 to delta/t = 1, of "
+                     f"tests/data/fe/core/{twin}")
+        elif os.path.exists(os.path.join(DATA, twin)):
             rerun = f"session 25's re-run of tests/data/fe/core/{twin}"
         else:  # nu 0.48 t/R 0.05: session 20's R/120 run stopped at x = 0.015 (three rows)
             rerun = (f"session 25's re-run of a skin with no committed curve (session 20's "
@@ -133,7 +149,9 @@ def export(names, runs):
                  f"penalty.csv) and ~9 elements through the skin; {what[role]}; regenerate: "
                  f"PY=$(bash tools/fe/setup.sh); $PY tools/fe/fe_thin_rerun.py --runs DIR "
                  f"--only {n} && $PY tools/fe/fe_thin_rerun.py --runs DIR --export --only {n}")
-        path = os.path.join(OUT, f"force_nu{nu:g}_t{t:g}.csv")
+        out = OUT_DEEP if deep else OUT
+        os.makedirs(out, exist_ok=True)
+        path = os.path.join(out, f"force_nu{nu:g}_t{t:g}.csv")
         with open(path, "w") as f:
             f.write(prov + "\n")
             f.write("delta_over_R,force_N,contact_radius_mm,min_element_J,V_over_V0,"
@@ -151,7 +169,7 @@ def compare(names, runs):
         if res is None:
             continue
         nu, t, role, reach = CASES[n]
-        ref = committed(nu, t)
+        ref = committed(nu, t, n in DEEP_CASES)
         print(f"== {n} ({role}): {res['meta']['mesh']['elements']} elements, "
               f"wall {res['meta']['wall_s']} s; reached x = {res['reached']:g}: {res['why']}")
         print("   x        F_new [N]     F_committed [N]   new/committed-1 %  copen/delta")
@@ -168,12 +186,14 @@ def main():
                                  formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--runs", default="/work/fe-scratch/s25-skin")
     ap.add_argument("--only", nargs="*")
+    ap.add_argument("--deep", action="store_true",
+                    help="the deep CAX8 skins (DEEP) instead of the thin CAX8R ones (SKINS)")
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--export", action="store_true")
     ap.add_argument("--compare", action="store_true")
     ap.add_argument("-j", type=int, default=1, choices=[1, 2])
     a = ap.parse_args()
-    names = a.only or list(CASES)
+    names = a.only or [n for n in CASES if (n in DEEP_CASES) == a.deep]
     if a.list:
         for n in names:
             c = case_of(n)
@@ -197,7 +217,7 @@ def main():
                 n = todo[0]
                 os.makedirs(os.path.join(a.runs, n))  # claim it
             print(f"start {n}", flush=True)
-            meta = fe_run.run_case(case_of(n), os.path.join(a.runs, n), timeout=5400)
+            meta = fe_run.run_case(case_of(n), os.path.join(a.runs, n), timeout=10800 if n in DEEP_CASES else 5400)
             print(f"done {n}: rc {meta['rc']}, {meta['wall_s']} s", flush=True)
 
     ts = [threading.Thread(target=worker) for _ in range(a.j)]

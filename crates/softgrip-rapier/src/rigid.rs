@@ -65,7 +65,7 @@
 //! F / m` (6 m/s for a 16 g box under 6 N at 60 Hz) is only partly cancelled per solver pass by
 //! rapier's soft contact constraint, and the box sank into the table and was thrown out.
 
-use nalgebra::{DMatrix, DVector, Dyn, LU, Matrix2, Vector2, Vector3, Vector6};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn, LU, Matrix2, Vector2, Vector3, Vector6};
 
 use crate::mobility::{self, BodyState};
 use crate::multibody;
@@ -1740,8 +1740,10 @@ impl Stage<'_> {
 /// `bodies` after the solve, inside the whole disk `mu j_n`), `A_SS` their mobility with each
 /// row's compliance (the LU's) on its diagonal \[1/kg\]. `None` where no friction pair held,
 /// where a body of the group is a jointed link (`fast` false: their groups keep the free
-/// mobility), for a fingertip on the hard stick (see inside) or where the block cannot be
-/// factored.
+/// mobility) or where the block cannot be factored. (A fingertip on the hard stick was left
+/// out in session 27: its box pressed against a wall was pushed 1.8 mm off when a step was
+/// split after unsplit ones; the cause was the split step's carry, `bodies::unsplit_carry`,
+/// fixed in session 28.)
 ///
 /// Why: the substep count resolves a touching contact's approach as an impact at its
 /// mobility (`substep::substeps_for`); a box the table's friction holds against a closing jaw
@@ -1763,13 +1765,44 @@ fn supported_mobility(
     }
     let Buffers { j, cache, .. } = buffers;
     let mob = &cache.mob;
-    let m = rows.len();
-    if mob.nrows() != m || j.len() != m {
+    if mob.nrows() != rows.len() || j.len() != rows.len() {
         return;
     }
+    let Some((support, chol)) = held_supports(bodies, rows, j, mob) else {
+        return;
+    };
+    for (r, &f) in soft.iter_mut().zip(first) {
+        if !matches!(rows[f].kind, Kind::SoftNormal { .. }) || !(mob[(f, f)] > 0.0) {
+            continue;
+        }
+        let b = DVector::from_fn(support.len(), |k, _| mob[(support[k], f)]);
+        let x = chol.solve(&b);
+        let w_eff = (mob[(f, f)] - b.dot(&x)).max(0.0);
+        if w_eff.is_finite() {
+            r.supported_mobility = Some(w_eff);
+        }
+    }
+}
+
+/// The rigid rows that held in the solve whose answer is `j` (rows `rows`, mutual mobility
+/// `mob` \[1/kg\], end velocities on `bodies`) and the Cholesky factor of their block `A_SS`
+/// (mobility with each row's compliance on its diagonal), for [`supported_mobility`]. `None`
+/// where no friction pair holds (the normals alone give no hold across the surface) or where
+/// the block cannot be factored.
+///
+/// The candidates are rapier's normals with an impulse and their friction pairs; a pair holds
+/// where the impulse that stops its point, with the normals that held, lies inside its whole
+/// disk `mu j_normal` (rapier's part of it included: the coupled rows carry only
+/// `mu (j_normal - base)`, rapier's friction the rest). One that would slide is dropped and the
+/// others judged again, at most [`SUPPORT_PASSES`] times.
+fn held_supports(
+    bodies: &[BodyState],
+    rows: &[Scalar],
+    j: &[f64],
+    mob: &DMatrix<f64>,
+) -> Option<(Vec<usize>, Cholesky<f64, Dyn>)> {
     let held_normal = |i: usize| matches!(rows[i].kind, Kind::HardNormal) && j[i] > 0.0;
-    // The candidates: rapier's normals with an impulse, and their friction.
-    let mut support: Vec<usize> = (0..m)
+    let mut support: Vec<usize> = (0..rows.len())
         .filter(|&i| mob[(i, i)] > 0.0)
         .filter(|&i| match rows[i].kind {
             Kind::HardNormal => held_normal(i),
@@ -1777,34 +1810,20 @@ fn supported_mobility(
             _ => false,
         })
         .collect();
-    // A friction pair holds where the impulse that stops its point, with the normals that held,
-    // lies inside its whole disk `mu j_normal` (rapier's part of it included: the coupled rows
-    // carry only `mu (j_normal - base)`, rapier's friction the rest); one that would slide is
-    // dropped and the others judged again.
-    let mut chol = None;
     for _ in 0..=SUPPORT_PASSES {
-        let n = support.len();
-        if n == 0 {
-            return;
+        if support.is_empty() {
+            return None;
         }
-        let a = DMatrix::from_fn(n, n, |r, c| {
-            let w = mob[(support[r], support[c])];
-            if r == c {
-                w + rows[support[r]].compliance * w
-            } else {
-                w
-            }
-        });
-        let Some(c) = a.cholesky() else {
-            return;
-        };
-        let v = DVector::from_fn(n, |k, _| {
+        let chol = support_block(rows, mob, &support).cholesky()?;
+        let v = DVector::from_fn(support.len(), |k, _| {
             let s = &rows[support[k]];
             s.velocity(bodies) - s.target
         });
-        let dj = c.solve(&v);
-        let at = |i: usize| support.iter().position(|&k| k == i);
-        let after = |i: usize| j[i] - at(i).map_or(0.0, |k| dj[k]);
+        let dj = chol.solve(&v);
+        let after = |i: usize| {
+            let k = support.iter().position(|&k| k == i);
+            j[i] - k.map_or(0.0, |k| dj[k])
+        };
         let slides = |i: usize| match rows[i].kind {
             Kind::Tangent {
                 normal, other, mu, ..
@@ -1815,39 +1834,29 @@ fn supported_mobility(
             _ => false,
         };
         let kept: Vec<usize> = support.iter().copied().filter(|&i| !slides(i)).collect();
-        if kept.len() == n {
-            chol = Some(c);
-            break;
+        if kept.len() == support.len() {
+            let friction = support
+                .iter()
+                .any(|&i| matches!(rows[i].kind, Kind::Tangent { .. }));
+            return friction.then_some((support, chol));
         }
         support = kept;
     }
-    let Some(chol) = chol else {
-        return;
-    };
-    if !support
-        .iter()
-        .any(|&i| matches!(rows[i].kind, Kind::Tangent { .. }))
-    {
-        // The normals alone: no hold across the surface.
-        return;
-    }
+    None
+}
+
+/// The mutual mobility of the rows `support` (indices into `rows`, matrix `mob` \[1/kg\]) with
+/// each row's compliance added on the diagonal (`w (1 + compliance)`, as the LU has it).
+fn support_block(rows: &[Scalar], mob: &DMatrix<f64>, support: &[usize]) -> DMatrix<f64> {
     let n = support.len();
-    for (r, &f) in soft.iter_mut().zip(first) {
-        // Not for a fingertip on the hard stick (`Row::k_t` 0 with friction): its tip pressing
-        // a box against a wall at 10 mm/s, counted unsplit with the wall's hold, pushed the
-        // box off by 1.8 mm at 0.17 m/s (`tests/press_on_table.rs`'s
-        // `rigid_stick_presses_a_box_against_a_wall`, bound 0.5 mm; session 27).
-        let hard_stick = r.mu > 0.0 && !(r.k_t > 0.0);
-        if hard_stick || !matches!(rows[f].kind, Kind::SoftNormal { .. }) || !(mob[(f, f)] > 0.0) {
-            continue;
+    DMatrix::from_fn(n, n, |r, c| {
+        let w = mob[(support[r], support[c])];
+        if r == c {
+            w + rows[support[r]].compliance * w
+        } else {
+            w
         }
-        let b = DVector::from_fn(n, |k, _| mob[(support[k], f)]);
-        let x = chol.solve(&b);
-        let w_eff = (mob[(f, f)] - b.dot(&x)).max(0.0);
-        if w_eff.is_finite() {
-            r.supported_mobility = Some(w_eff);
-        }
-    }
+    })
 }
 
 /// Most passes of [`supported_mobility`]'s judgement of the friction pairs (each drops the
