@@ -72,6 +72,9 @@ fn bench_levels(c: &mut Criterion) {
     for (name, backing) in [
         ("calibrated-flat", Backing::Flat),
         ("calibrated-core", Backing::Core { thickness: 0.004 }),
+        // t/R 0.12 (between the shell table's t/R nodes: all eight weighted): the thin-skin form
+        // (session 28), tabulated like the rest.
+        ("calibrated-core-thin", Backing::Core { thickness: 0.0012 }),
     ] {
         let backed = params.with_backing(backing).expect("valid backing");
         let law = ContactLaw::try_new(backed, Level::Calibrated).expect("level builds");
@@ -143,6 +146,21 @@ fn bench_levels(c: &mut Criterion) {
     bind.bench_function("calibrated-core-ball", |b| {
         b.iter(|| {
             core.with_counterpart(black_box(ball))
+                .expect("binds")
+                .x_max()
+        })
+    });
+    // The same for a thin skin (t/R 0.12), whose table evaluates the shell's (session 28).
+    let thin = ContactLaw::try_new(
+        params
+            .with_backing(Backing::Core { thickness: 0.0012 })
+            .expect("valid backing"),
+        Level::Calibrated,
+    )
+    .expect("level builds");
+    bind.bench_function("calibrated-core-thin-ball", |b| {
+        b.iter(|| {
+            thin.with_counterpart(black_box(ball))
                 .expect("binds")
                 .x_max()
         })

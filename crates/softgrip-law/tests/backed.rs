@@ -85,7 +85,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // skins (fit data since session 21): (0.3, 0.05) 3.32 [3.46], (0.4, 0.05) 3.18 [3.26],
     // (0.3, 0.1) 1.70 [1.87], (0.48, 0.1) 2.84 [3.18], (0.4, 0.1) 2.83 [3.06]. The 2 % target
     // is missed on sixteen of the 33 core files, as with session 21's law (crate README *Thin
-    // skins*). Each tolerance: seen + 0.1 %.
+    // skins*). Since session 28 (the thin-skin form SFB0030 below t/R 0.3; the tolerances of
+    // the files of t/R < 0.3 are its): (0.46, 0.25) 1.85, (0.33, 0.25) 0.96, (0.36, 0.2) 1.05,
+    // (0.47, 0.15) 2.84, (0.42, 0.25) 2.20, (0.38, 0.12) 0.56, (0.46, 0.1) 1.47, (0.32, 0.14)
+    // 0.95, (0.49, 0.12) 0.94, (0.49, 0.25) 1.70, (0.47, 0.25) 0.95, (0.4, 0.08) 0.42, (0.3,
+    // 0.08) 0.60, (0.3, 0.05) 1.19, (0.4, 0.05) 2.11, (0.3, 0.1) 0.62, (0.48, 0.1) 0.77, (0.48,
+    // 0.08) 2.37, (0.4, 0.06) 2.43, (0.48, 0.06) 2.52, (0.45, 0.07) 1.24, (0.35, 0.06) 1.67,
+    // (0.4, 0.1) 0.34: the 2 % target missed on nine of the 33. Each tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -117,13 +123,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.46_t0.25.csv",
             0.46,
             Backing::Core { thickness: 0.25 },
-            0.0144,
+            0.0195,
         ),
         (
             "core/force_nu0.33_t0.25.csv",
             0.33,
             Backing::Core { thickness: 0.25 },
-            0.0154,
+            0.0106,
         ),
         (
             "core/force_nu0.42_t0.55.csv",
@@ -135,7 +141,7 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.36_t0.2.csv",
             0.36,
             Backing::Core { thickness: 0.2 },
-            0.0236,
+            0.0115,
         ),
         (
             "core/force_nu0.44_t0.8.csv",
@@ -155,13 +161,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.47_t0.15.csv",
             0.47,
             Backing::Core { thickness: 0.15 },
-            0.0237,
+            0.0294,
         ),
         (
             "core/force_nu0.42_t0.25.csv",
             0.42,
             Backing::Core { thickness: 0.25 },
-            0.0208,
+            0.0230,
         ),
         // The fourth set (session 13, run after every constant was fixed): skins thinner than
         // any fitted, each to its FE's end, on finer meshes (R/75 and R/60).
@@ -169,25 +175,25 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.38_t0.12.csv",
             0.38,
             Backing::Core { thickness: 0.12 },
-            0.0243,
+            0.0066,
         ),
         (
             "core/force_nu0.46_t0.1.csv",
             0.46,
             Backing::Core { thickness: 0.1 },
-            0.0172,
+            0.0157,
         ),
         (
             "core/force_nu0.32_t0.14.csv",
             0.32,
             Backing::Core { thickness: 0.14 },
-            0.0163,
+            0.0105,
         ),
         (
             "core/force_nu0.49_t0.12.csv",
             0.49,
             Backing::Core { thickness: 0.12 },
-            0.0318,
+            0.0104,
         ),
         // Session 15: fit data for the next refit between the fitted t/R 0.2 and 0.4 (made
         // after the constants; the refit tried was not adopted, crate README *Thin skins*).
@@ -213,14 +219,14 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.49_t0.25.csv",
             0.49,
             Backing::Core { thickness: 0.25 },
-            0.0205,
+            0.0180,
         ),
         // Session 15, blind (run after every constant tried that session was fixed).
         (
             "core/force_nu0.47_t0.25.csv",
             0.47,
             Backing::Core { thickness: 0.25 },
-            0.0110,
+            0.0105,
         ),
         // Session 20, blind (run after the session's thin-layer variants were fixed), thinner
         // than any run before: (0.4, 0.08) 3.77 % (at its end x = 0.04, delta/t 0.5, -; +3.47 %
@@ -233,13 +239,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.4_t0.08.csv",
             0.4,
             Backing::Core { thickness: 0.08 },
-            0.0320,
+            0.0052,
         ),
         (
             "core/force_nu0.3_t0.08.csv",
             0.3,
             Backing::Core { thickness: 0.08 },
-            0.0217,
+            0.0070,
         ),
         // Session 20, second part: fit data for the thin-layer floor (not fitted: the law was
         // not refitted; CORE_FORM.md "Thin skins: session 20, fit data at t/R 0.05-0.1"),
@@ -249,25 +255,25 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.3_t0.05.csv",
             0.3,
             Backing::Core { thickness: 0.05 },
-            0.0342,
+            0.0129,
         ),
         (
             "core/force_nu0.4_t0.05.csv",
             0.4,
             Backing::Core { thickness: 0.05 },
-            0.0328,
+            0.0221,
         ),
         (
             "core/force_nu0.3_t0.1.csv",
             0.3,
             Backing::Core { thickness: 0.1 },
-            0.0180,
+            0.0072,
         ),
         (
             "core/force_nu0.48_t0.1.csv",
             0.48,
             Backing::Core { thickness: 0.1 },
-            0.0294,
+            0.0087,
         ),
         // Session 21, blind (run after the thin-layer floor's constants were fixed; smaller
         // increments, `fe_campaign.py` S21_DT): (0.48, 0.08) on R/80 2.71 % (x = 0.01, too
@@ -281,19 +287,19 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.48_t0.08.csv",
             0.48,
             Backing::Core { thickness: 0.08 },
-            0.0245,
+            0.0247,
         ),
         (
             "core/force_nu0.4_t0.06.csv",
             0.4,
             Backing::Core { thickness: 0.06 },
-            0.0390,
+            0.0253,
         ),
         (
             "core/force_nu0.48_t0.06.csv",
             0.48,
             Backing::Core { thickness: 0.06 },
-            0.0128,
+            0.0262,
         ),
         // ... and (0.45, 0.07) on R/90 3.76 % (x = 0.0175, too stiff, +2.3 to +3.8 % along
         // it; session 20's law 2.94 %: on this blind skin the thin-layer floor is worse;
@@ -302,7 +308,7 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.45_t0.07.csv",
             0.45,
             Backing::Core { thickness: 0.07 },
-            0.0368,
+            0.0134,
         ),
         // Session 21's fifth blind skin, exported in session 22: (0.35, 0.06) on R/100 1.97 %
         // (x = 0.03, its end: too stiff, +0.5 to +2.0 % along it; session 20's law 9.14 %;
@@ -311,13 +317,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.35_t0.06.csv",
             0.35,
             Backing::Core { thickness: 0.06 },
-            0.0163,
+            0.0177,
         ),
         (
             "core/force_nu0.4_t0.1.csv",
             0.4,
             Backing::Core { thickness: 0.1 },
-            0.0293,
+            0.0044,
         ),
     ];
     // Every file is printed before any is asserted (one run shows them all).
@@ -351,15 +357,16 @@ fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
     // one here) and session 20's six t/R 0.05-0.1 skins (session 24,
     // tools/calibration/try_thin_skin_s23.py --var K: eight constants; session 21's law in
     // brackets: 1.65, 2.98, 2.20, 2.09; 2.66, 1.41, 0.86, 1.04; 2.17, 1.58, 2.38; 0.87, 1.94,
-    // 1.75). Seen, to x_max
+    // 1.75). Since session 28 t/R 0.2 takes the thin-skin form at weight 0.26 (session 24-27's
+    // law there: 2.52, 1.83, 1.26, 2.16); from t/R 0.3 the law is unchanged. Seen, to x_max
     // = min(flat's, 0.8 t/R) (each FE curve's reach: delta/t 0.45-0.8), the largest
     // |F/F_FE - 1| in %; each tolerance is the seen value plus 0.1 % above, 0.25 % below (a
     // changed constant or term breaks it).
     let seen = [
-        (0.3, 0.2, 2.52),
-        (0.4, 0.2, 1.83),
-        (0.48, 0.2, 1.26),
-        (0.499, 0.2, 2.16),
+        (0.3, 0.2, 1.56),
+        (0.4, 0.2, 1.79),
+        (0.48, 0.2, 1.85),
+        (0.499, 0.2, 2.29),
         (0.3, 0.4, 2.42),
         (0.4, 0.4, 1.85),
         (0.48, 0.4, 1.55),
@@ -557,6 +564,9 @@ fn core_on_the_deep_cax8_skins_at_other_nu_is_what_the_readme_states() {
 /// 0.02-0.18): 4.77 % too soft there (3.54 % at 0.18). Session 24's law (blind to all three):
 /// 2.90 % too soft at t/R 0.1's end, 2.31 % too soft at t/R 0.08's first point, and on t/R
 /// 0.25 2.18 % too stiff at x = 0.01 (within 1.35 % from x = 0.02; -0.91 % at 0.19).
+/// Session 28's law (the thin-skin form SFB0030, faded out by t/R 0.3; blind to all three but
+/// its fade's end, chosen after the deep set was seen): 1.23 % too soft at t/R 0.1's end,
+/// 2.36 % too stiff at t/R 0.08's x = 0.03, 2.13 % too stiff on t/R 0.25 at x = 0.01.
 /// Tolerances: seen + 0.1 % above, 0.25 % below, the place and the sign.
 #[test]
 fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
@@ -566,7 +576,7 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
             0.48,
             0.1,
             0.06,
-            2.90,
+            1.23,
             0.06,
             true,
         ),
@@ -575,16 +585,16 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
             0.48,
             0.08,
             0.04,
-            2.31,
-            0.01,
-            true,
+            2.36,
+            0.03,
+            false,
         ),
         (
             include_str!("../../../tests/data/fe/core/cax8/force_nu0.46_t0.25.csv"),
             0.46,
             0.25,
             0.19,
-            2.18,
+            2.13,
             0.01,
             false,
         ),
@@ -600,197 +610,200 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
 /// keeps its role (fit data, held out or blind); twelve since session 25, five since 26; the law was
 /// not refitted on them (no form tried in session 25 passed: tools/calibration/CORE_FORM.md
 /// "Thin skins: session 25"). Seen (`tools/calibration/try_thin_skin_s25.py --new --curves
-/// law`): the law's worst `|F/F_FE - 1|` to x_max, where, and its sign there. Tolerances: seen
-/// + 0.1 % above, 0.25 % below, the place and the sign.
+/// law`): the law's worst `|F/F_FE - 1|` to x_max, where, and its sign there. Since session 28
+/// (the thin-skin form SFB0030, `tools/calibration/try_shell_table_s28.py --var SFB0030
+/// --curves`, which prints the same numbers) the pinned values are its; each comment gives
+/// session 27's law's in parentheses, and the committed curves' numbers after it are session
+/// 27's law's. Tolerances: seen + 0.1 % above, 0.25 % below, the place and the sign.
 #[test]
 fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
     // (file, nu, t/R, FE reach, seen %, at x, law too soft there)
     let skins = [
-        // nu 0.35 t/R 0.06 (blind): +0.46 % at x = 0.0275 (the committed
+        // nu 0.35 t/R 0.06 (blind): +0.56 % at x = 0.03 (session 27's law +0.46 % at 0.0275; the committed
         // curve, to x = 0.03: +1.53 % at 0.03)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.35_t0.06.csv"),
             0.35,
             0.06,
             0.035,
-            0.46,
-            0.0275,
+            0.56,
+            0.03,
             false,
         ),
-        // nu 0.3 t/R 0.05 (fit data): -3.42 % at x = 0.01 (the committed
+        // nu 0.3 t/R 0.05 (fit data): -1.69 % at x = 0.03 (session 27's law -3.42 % at 0.01; the committed
         // curve, to x = 0.03: -3.32 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.05.csv"),
             0.3,
             0.05,
             0.035,
-            3.42,
-            0.01,
+            1.69,
+            0.03,
             true,
         ),
-        // nu 0.3 t/R 0.08 (blind): -2.35 % at x = 0.0125 (the committed
+        // nu 0.3 t/R 0.08 (blind): -0.70 % at x = 0.05 (session 27's law -2.35 % at 0.0125; the committed
         // curve, to x = 0.05: -2.07 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.08.csv"),
             0.3,
             0.08,
             0.055,
-            2.35,
-            0.0125,
+            0.70,
+            0.05,
             true,
         ),
-        // nu 0.3 t/R 0.1 (fit data): -3.15 % at x = 0.075 (the committed
+        // nu 0.3 t/R 0.1 (fit data): +0.86 % at x = 0.075 (session 27's law -3.15 % at 0.075; the committed
         // curve, to x = 0.07: -1.70 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.1.csv"),
             0.3,
             0.1,
             0.075,
-            3.15,
+            0.86,
             0.075,
-            true,
+            false,
         ),
-        // nu 0.45 t/R 0.07 (blind): +2.36 % at x = 0.015 (the committed
+        // nu 0.45 t/R 0.07 (blind): -1.94 % at x = 0.0325 (session 27's law +2.36 % at 0.015; the committed
         // curve, to x = 0.0275: +3.58 % at 0.0175)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.45_t0.07.csv"),
             0.45,
             0.07,
             0.0325,
-            2.36,
-            0.015,
-            false,
+            1.94,
+            0.0325,
+            true,
         ),
-        // nu 0.48 t/R 0.06 (blind): -5.89 % at x = 0.025 (the committed
+        // nu 0.48 t/R 0.06 (blind): -2.16 % at x = 0.025 (session 27's law -5.89 % at 0.025; the committed
         // curve, to x = 0.02: -1.18 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.06.csv"),
             0.48,
             0.06,
             0.025,
-            5.89,
+            2.16,
             0.025,
             true,
         ),
-        // nu 0.48 t/R 0.08 (blind): -5.75 % at x = 0.0375 (the committed
+        // nu 0.48 t/R 0.08 (blind): -2.88 % at x = 0.0375 (session 27's law -5.75 % at 0.0375; the committed
         // curve, to x = 0.0325: -2.35 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.08.csv"),
             0.48,
             0.08,
             0.0375,
-            5.75,
+            2.88,
             0.0375,
             true,
         ),
-        // nu 0.48 t/R 0.1 (fit data): -4.04 % at x = 0.045 (the committed
+        // nu 0.48 t/R 0.1 (fit data): -2.06 % at x = 0.045 (session 27's law -4.04 % at 0.045; the committed
         // curve, to x = 0.04: -2.84 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.1.csv"),
             0.48,
             0.1,
             0.045,
-            4.04,
+            2.06,
             0.045,
             true,
         ),
-        // nu 0.49 t/R 0.12 (held out): -3.70 % at x = 0.015 (the committed
+        // nu 0.49 t/R 0.12 (held out): -1.17 % at x = 0.0125 (session 27's law -3.70 % at 0.015; the committed
         // curve, to x = 0.05: -3.08 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.49_t0.12.csv"),
             0.49,
             0.12,
             0.055,
-            3.70,
-            0.015,
+            1.17,
+            0.0125,
             true,
         ),
-        // nu 0.4 t/R 0.05 (fit data): +3.02 % at x = 0.01 (the committed
+        // nu 0.4 t/R 0.05 (fit data): +2.03 % at x = 0.03 (session 27's law +3.02 % at 0.01; the committed
         // curve, to x = 0.025: +3.18 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.05.csv"),
             0.4,
             0.05,
             0.03,
-            3.02,
-            0.01,
+            2.03,
+            0.03,
             false,
         ),
-        // nu 0.4 t/R 0.06 (blind): +3.48 % at x = 0.01 (the committed
+        // nu 0.4 t/R 0.06 (blind): +1.21 % at x = 0.035 (session 27's law +3.48 % at 0.01; the committed
         // curve, to x = 0.03: +3.80 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.06.csv"),
             0.4,
             0.06,
             0.035,
-            3.48,
-            0.01,
+            1.21,
+            0.035,
             false,
         ),
-        // nu 0.4 t/R 0.1 (fit data): +2.84 % at x = 0.025 (the committed
+        // nu 0.4 t/R 0.1 (fit data): -0.51 % at x = 0.065 (session 27's law +2.84 % at 0.025; the committed
         // curve, to x = 0.06: +2.83 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.1.csv"),
             0.4,
             0.1,
             0.065,
-            2.84,
-            0.025,
-            false,
+            0.51,
+            0.065,
+            true,
         ),
         // Session 26: the last five re-runs.
-        // nu 0.4 t/R 0.08 (blind): +3.17 % at x = 0.0175 (the committed
+        // nu 0.4 t/R 0.08 (blind): +0.30 % at x = 0.0175 (session 27's law +3.17 % at 0.0175; the committed
         // curve, to x = 0.04: +3.10 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.08.csv"),
             0.4,
             0.08,
             0.045,
-            3.17,
+            0.30,
             0.0175,
             false,
         ),
-        // nu 0.46 t/R 0.1 (held out): -1.91 % at x = 0.045 (the committed
+        // nu 0.46 t/R 0.1 (held out): -2.63 % at x = 0.045 (session 27's law -1.91 % at 0.045; the committed
         // curve, to x = 0.04: +1.62 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.46_t0.1.csv"),
             0.46,
             0.1,
             0.045,
-            1.91,
+            2.63,
             0.045,
             true,
         ),
-        // nu 0.38 t/R 0.12 (held out): +2.33 % at x = 0.0275 (the committed
+        // nu 0.38 t/R 0.12 (held out): +0.57 % at x = 0.0275 (session 27's law +2.33 % at 0.0275; the committed
         // curve, to x = 0.08: +2.33 % at 0.03)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.38_t0.12.csv"),
             0.38,
             0.12,
             0.085,
-            2.33,
+            0.57,
             0.0275,
             false,
         ),
-        // nu 0.32 t/R 0.14 (held out): -2.69 % at x = 0.105 (the committed
+        // nu 0.32 t/R 0.14 (held out): +0.83 % at x = 0.105 (session 27's law -2.69 % at 0.105; the committed
         // curve, to x = 0.1: -1.53 % at 0.1)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.32_t0.14.csv"),
             0.32,
             0.14,
             0.105,
-            2.69,
+            0.83,
             0.105,
-            true,
+            false,
         ),
         // nu 0.48 t/R 0.05 (fit data; its only earlier run, R/120 with penalty
-        // 1e5, stopped at x = 0.015 and was never committed): -6.21 % at x = 0.02
+        // 1e5, stopped at x = 0.015 and was never committed): -1.98 % at x = 0.02 (session 27's law -6.21 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.05.csv"),
             0.48,
             0.05,
             0.02,
-            6.21,
+            1.98,
             0.02,
             true,
         ),

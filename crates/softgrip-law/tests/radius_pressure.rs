@@ -460,7 +460,10 @@ macro_rules! profiles {
 /// 14 core profiles raised in session 21, when the core's force changed: the thin-layer floor;
 /// of six in session 24, the squeezed skin's deviatoric stiffening: core nu 0.4 t/R 0.2 x 0.1,
 /// 0.45/0.5 x 0.3, 0.48/0.6 x 0.3, 0.499/0.6 x 0.3, 0.46/0.25 x 0.1 and 0.42/0.55 x 0.3, each
-/// set to its new seen value rounded up). Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
+/// set to its new seen value rounded up; of three in session 28, the thin-skin form below t/R
+/// 0.3: core nu 0.4 t/R 0.2 x 0.1 peak 1.5 -> 2.0 % (seen -2.00), 0.46/0.25 x 0.1 profile 6.1 ->
+/// 6.2 % (seen 6.15), 0.32/0.14 x 0.1 profile 8.4 -> 9.5 % (seen 9.50; with the FE's force 9.07,
+/// the shape's own miss); the other thin profiles moved within their columns). Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
 /// integrates to 1.076 F (every other one to 0.93-1.03 F): a contact-edge node entering contact
 /// carries a penalty spike (3.53 MPa at r = 0.661 mm, twice the centre's), which would be taken
 /// as FE's peak (`fit_radius_pressure.py` `usable` leaves it out of the fits for the same reason).
@@ -493,7 +496,7 @@ fn all_profiles() -> Vec<Profile> {
         "flat", 0.45, 0.0, 0.3, true, [0.029, 0.031], [0.032, 0.033];
         "core", 0.35, 0.7, 0.1, true, [0.019, 0.023], [0.019, 0.023];
         "core", 0.35, 0.7, 0.3, true, [0.020, 0.021], [0.017, 0.021];
-        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.015, 0.038];
+        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.020, 0.038];
         "core", 0.4, 0.4, 0.1, false, [0.030, 0.034], [0.053, 0.056];
         "core", 0.3, 0.2, 0.1, false, [0.018, 0.048], [0.034, 0.060];
         "core", 0.3, 0.4, 0.1, false, [0.012, 0.015], [0.030, 0.034];
@@ -516,7 +519,7 @@ fn all_profiles() -> Vec<Profile> {
         "core", 0.499, 0.8, 0.3, false, [0.016, 0.039], [0.025, 0.048];
         "core", 0.49, 0.3, 0.1, true, [0.047, 0.053], [0.053, 0.059];
         "core", 0.4, 0.3, 0.1, true, [0.054, 0.058], [0.057, 0.062];
-        "core", 0.46, 0.25, 0.1, true, [0.056, 0.063], [0.055, 0.061];
+        "core", 0.46, 0.25, 0.1, true, [0.056, 0.063], [0.055, 0.062];
         "core", 0.33, 0.25, 0.1, true, [0.028, 0.034], [0.021, 0.029];
         "core", 0.42, 0.55, 0.1, true, [0.020, 0.023], [0.034, 0.037];
         "core", 0.42, 0.55, 0.3, true, [0.042, 0.045], [0.056, 0.059];
@@ -533,7 +536,7 @@ fn all_profiles() -> Vec<Profile> {
         // 0.71, R/60; its profile integrates to 0.993 F). Seen: FE force -2.71 / 9.07 %, law
         // force -6.33 / 6.76 % (the law's force is 3.7 % low there): over the 5 % target, as the
         // three above (CORE_PRESSURE.md, session 13).
-        "core", 0.32, 0.14, 0.1, true, [0.030, 0.094], [0.066, 0.084];
+        "core", 0.32, 0.14, 0.1, true, [0.030, 0.094], [0.066, 0.095];
     )
     .into_iter()
     .collect()

@@ -10,6 +10,7 @@ pub(crate) mod incompressible;
 pub(crate) mod linear;
 pub(crate) mod neo_hookean;
 pub(crate) mod nh_table;
+pub(crate) mod shell;
 pub(crate) mod tabulated;
 pub(crate) mod tatara;
 pub(crate) mod thin_layer;
