@@ -552,6 +552,41 @@ fn core_on_the_deep_cax8_skins_at_other_nu_is_what_the_readme_states() {
     pin_skins(&skins, false);
 }
 
+/// Session 28: the two deep thin skins above re-run with penalty 1e6 and ~9 CAX8 elements
+/// through the skin (`tests/data/fe/core/cax8/k1e6/`, `tools/fe/fe_thin_rerun.py --deep`; the
+/// runs above, penalty 1e5, are soft by their penalty: 5.2 % at t/R 0.08's x = 0.04, 4.3 % at
+/// t/R 0.1's x = 0.06), which reach further: x = 0.05 (delta/t 0.625) and 0.07 (0.7), inside the
+/// law's range (0.8 t/R). Blind (no constant saw them). Seen: the law too soft at both ends,
+/// by 6.29 % (t/R 0.08, x = 0.05) and 8.19 % (t/R 0.1, x = 0.07): the deep squeeze of a thin,
+/// nearly incompressible skin is stiffer than the law's squeeze term, past the 2 % target
+/// (softgrip-law README, "Session 28: the deep thin skins' references were soft"). Pinned so
+/// that a refit that reaches them shows here. Tolerances: seen + 0.1 % above, 0.25 % below,
+/// the place and the sign.
+#[test]
+fn core_on_the_deep_thin_skins_with_penalty_1e6_is_what_the_readme_states() {
+    let skins = [
+        (
+            include_str!("../../../tests/data/fe/core/cax8/k1e6/force_nu0.48_t0.08.csv"),
+            0.48,
+            0.08,
+            0.05,
+            6.29,
+            0.05,
+            true,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/cax8/k1e6/force_nu0.48_t0.1.csv"),
+            0.48,
+            0.1,
+            0.07,
+            8.19,
+            0.07,
+            true,
+        ),
+    ];
+    pin_skins(&skins, true);
+}
+
 /// Session 23: thin skins at nu 0.48 on CAX8 (`tests/data/fe/core/cax8/`), blind (no constant
 /// of the law saw them): t/R 0.1 (R/60, increments <= 0.001) to x = 0.06 (delta/t 0.6; session
 /// 20's CAX8R run with increments <= 0.005 stopped at 0.04 and is 1.69 % stiffer there) and
