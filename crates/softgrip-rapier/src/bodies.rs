@@ -476,6 +476,14 @@ pub(crate) struct UnsplitCarry {
     pub a_ext: Vector3<f64>,
 }
 
+/// [`unsplit_carry`]'s per-body sums, kept between steps so that a step allocates nothing:
+/// the soft rows' linear impulse on each body \[N s\] and whether it is on a rigid row.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct CarrySums {
+    lin: Vec<Vector3<f64>>,
+    on_rigid: Vec<bool>,
+}
+
 /// The velocity changes of the dynamic bodies of `table` from the soft rows' impulses `rows`
 /// (as [`apply_impulses`] applied them), written to `carry`.
 ///
@@ -492,10 +500,14 @@ pub(crate) fn unsplit_carry(
     rows: &[Row],
     rigid: &[RigidRow],
     carry: &mut Vec<UnsplitCarry>,
+    sums: &mut CarrySums,
 ) {
     carry.clear();
-    let mut lin = vec![Vector3::zeros(); table.table.len()];
-    let mut on_rigid = vec![false; table.table.len()];
+    let (lin, on_rigid) = (&mut sums.lin, &mut sums.on_rigid);
+    lin.clear();
+    lin.resize(table.table.len(), Vector3::zeros());
+    on_rigid.clear();
+    on_rigid.resize(table.table.len(), false);
     for r in rigid {
         for bi in std::iter::once(r.a).chain(r.b) {
             on_rigid[bi] = true;
@@ -509,12 +521,12 @@ pub(crate) fn unsplit_carry(
             }
         }
     }
-    for (((b, lin), body), rigid) in table
+    for (((b, lin), body), &rigid) in table
         .table
         .iter()
-        .zip(&lin)
+        .zip(lin.iter())
         .zip(&table.handles)
-        .zip(on_rigid)
+        .zip(on_rigid.iter())
     {
         let dv = b.inv_m.component_mul(lin);
         if !rigid && b.inv_m != Vector3::zeros() && dv.iter().all(|v| v.is_finite()) {

@@ -101,6 +101,8 @@ pub(crate) struct Scratch {
     /// What the soft impulses did to each dynamic body in the last step when it was not split
     /// (`step::split`); empty after a split step.
     pub unsplit_carry: Vec<UnsplitCarry>,
+    /// `bodies::unsplit_carry`'s per-body sums (kept so that a step allocates nothing).
+    pub carry_sums: crate::bodies::CarrySums,
     /// The multibody links' user forces while the plugin's force is on them for one pipeline
     /// step (`multibody::apply_to_rapier`).
     pub link_forces: Vec<crate::multibody::SavedForce>,

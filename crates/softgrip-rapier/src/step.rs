@@ -804,7 +804,13 @@ impl Step<'_> {
             guard::check_impulses(&s.rows, contact, bodies, touched, at)?;
         }
         if fresh {
-            bodies::unsplit_carry(&s.body_table, &s.rows, &s.rigid, &mut s.unsplit_carry);
+            bodies::unsplit_carry(
+                &s.body_table,
+                &s.rows,
+                &s.rigid,
+                &mut s.unsplit_carry,
+                &mut s.carry_sums,
+            );
         }
         lap.lap(&mut self.soft.counters.apply_time);
         for ((row, model), gi) in s.rows.iter().zip(s.models.drain(..)).zip(&s.geom) {
