@@ -21,6 +21,7 @@ mod link_contacts;
 mod mobility;
 mod model;
 mod multibody;
+mod multibody_sweeps;
 mod presets;
 mod problem;
 mod readout;

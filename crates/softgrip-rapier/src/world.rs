@@ -59,6 +59,41 @@ impl SoftWorld {
         crate::jointed::sweeps_needed(&w.bodies, &ctx, body)
     }
 
+    /// The Gauss-Seidel sweeps per solver pass (`num_internal_pgs_iterations` plus the largest
+    /// `RigidBody::additional_pgs_iterations` of the island) at which rapier's sweeps over the
+    /// internal rows of the multibody that holds `body` (its joint motors and dof couplings, a
+    /// URDF `<mimic>`) converge as the soft solve requires (crate README, What one step does,
+    /// 9), at a (sub)step of `h` \[s\] (> 0; rapier's `num_solver_iterations` passes) and the
+    /// multibody's present pose: 1 where no two rows share inertia (a single prismatic jaw),
+    /// 17 for the suite's mimic-coupled jaws at 1/60 s (the largest over its step and substeps)
+    /// (`tests/jointed_mimic.rs`), 348 for a finger of the shipped three-finger hand. Give the
+    /// multibody's links `need - num_internal_pgs_iterations` with
+    /// `RigidBody::set_additional_pgs_iterations` where it is more than rapier's own. Reads
+    /// the multibody's mass at its present pose (`Multibody::dof_inverse_inertia`, which
+    /// runs its forward kinematics from its joint coordinates and factorises its mass matrix:
+    /// call it when setting a scene up, not between rapier's steps). `None` if `body` is not a
+    /// multibody link or the sweeps never converge.
+    pub fn multibody_sweeps_needed(&mut self, body: RigidBodyHandle, h: f64) -> Option<usize> {
+        if !(h > 0.0 && h.is_finite()) {
+            return None;
+        }
+        let w = &mut self.physics;
+        let id = *w.multibody_joints.rigid_body_link(body)?;
+        w.multibody_joints
+            .get_multibody_mut(id.multibody)?
+            .dof_inverse_inertia(&w.bodies);
+        let ctx = crate::multibody::LinkCtx {
+            multibodies: &w.multibody_joints,
+            impulse_joints: &w.impulse_joints,
+            h,
+            h_drift: h,
+            passes: w.integration_parameters.num_solver_iterations.max(1),
+            sweeps: w.integration_parameters.num_internal_pgs_iterations,
+            gravity: crate::boundary::to_f64(w.gravity),
+        };
+        crate::multibody_sweeps::sweeps_needed(&ctx, body)
+    }
+
     /// Registers `collider` as the soft fingertip `fingertip` (see [`SoftContacts::register`]).
     pub fn register(&mut self, collider: ColliderHandle, fingertip: SoftFingertip) -> Result<()> {
         self.soft.register(&mut self.physics, collider, fingertip)

@@ -19,30 +19,47 @@ use softgrip_rapier::SoftWorld;
 /// At rest each pad reads the law at its geometric compression, both the same force, and the
 /// left motor holds `J^T F` of both pads through the coupling (`2 F`).
 ///
-/// Not right yet at the suite's 2 PGS iterations: the jaws do not settle. Why (session 10):
-/// rapier solves the motor (a compliant row on the left dof) and the coupling (a hard row)
-/// by Gauss-Seidel in `num_internal_pgs_iterations` sweeps, while the plugin's mobility folds
-/// both in exactly (`multibody::couple`, a Schur complement: the converged answer). The
-/// right pad's force reaches the left motor only partly within 2 sweeps, so an unsplit step
-/// with 5.6 N on the pads throws both fingers 36 mm open where the plugin predicts 0.3 mm;
-/// the motor brings them back, the next contact is split (~460 substeps, 2.1 / 2.4 N), and
-/// the cycle repeats every 4 steps; the box creeps along z. At 8 sweeps the cycle is 2 steps
-/// (5.48 N unsplit, 3.8 N split, motor 19.4 N against `J^T F` 11.0 N); at 64 sweeps the hold
-/// settles, split only for the motor's push ([`multibody_mimic_jaws_settle_with_converged_pgs`]). The fix
-/// is a mobility that is rapier's PGS after its sweeps (or rapier's coupling carried as an
-/// exact elimination), not done. The shipped URDF gripper (a mimic finger at 2000 N/m)
-/// reaches 5.07 / 5.09 N against its 5 N, lifts and holds (softgrip-scene `robots`).
+/// At the suite's 2 PGS iterations with the jaws' links given the sweeps the plugin says rapier
+/// needs over their motor and coupling rows (`SoftWorld::multibody_sweeps_needed`: 17, the
+/// largest over the step and its substeps; the links get 15 more with
+/// `RigidBody::set_additional_pgs_iterations`, the rest of the world keeps its 2, as the scene
+/// layer does for a robot with a mimic joint): the hold settles as at 64 sweeps
+/// ([`multibody_mimic_jaws_settle_with_converged_pgs`]). Measured (session 29, `--nocapture`):
+/// 5.4839 / 5.4831 N, pads differ 1.37e-4, motor vs `J^T F` 2.15e-4, at most 4 substeps in the
+/// hold, the coupling 5.8e-11 m off, the box at 1.24e-7 m/s and 0.064 um of drift, 1.27e-2 off
+/// the law at the geometry's compression (the converged hold's 1.18e-2: see there).
+///
+/// Why the sweeps (session 10): rapier solves the motor (a compliant row on the left dof) and
+/// the coupling (a hard row) by Gauss-Seidel in its sweeps, from a zero impulse, while the
+/// plugin's mobility folds both in exactly (`multibody::couple`, a Schur complement: the
+/// converged answer). At 2 sweeps (the links not raised) the right pad's force reaches the
+/// left motor only partly, so an unsplit step with 5.6 N on the pads throws both fingers 36 mm
+/// open where the plugin predicts 0.3 mm; the motor brings them back, the next contact is split
+/// (~460 substeps, 2.1 / 2.4 N), and the cycle repeats every 4 steps; the box creeps along z.
+/// At 8 sweeps the cycle is 2 steps (5.48 N unsplit, 3.8 N split, motor 19.4 N against `J^T F`
+/// 11.0 N). `multibody_sweeps_needed` reads the rate of those sweeps (`joint_sweeps`, as for
+/// impulse joints) and asks for `rate^sweeps <= 1e-5`.
 #[test]
-#[ignore = "the mimic-coupled jaws do not settle at 2 PGS iterations (see the doc comment; crate README, Limits)"]
-fn multibody_mimic_jaws_squeeze_a_box() {
-    let m = mimic_jaws(PGS);
-    assert!(m.forces[0] > 1.0, "{:?}", m.forces);
-    assert!(m.worst < 5e-3, "{}", m.worst);
-    assert!(m.balance < 1e-3, "{}", m.balance);
-    assert!(m.effort_error < 1e-2, "{}", m.effort_error);
+fn multibody_mimic_jaws_squeeze_a_box_with_the_sweeps_they_need() {
+    let m = mimic_jaws_with(PGS, false, false, None, true);
+    assert_eq!(m.needed, Some(17), "the sweeps the jaws need");
+    assert!(m.forces[0] > 5.0 && m.forces[0] < 6.0, "{:?}", m.forces);
+    assert!(
+        (2..=8).contains(&m.max_substeps_hold),
+        "the hold's steps: {} substeps",
+        m.max_substeps_hold
+    );
+    assert!(m.balance < 1e-3, "pads differ {}", m.balance);
+    assert!(m.effort_error < 1e-3, "motor vs J^T F {}", m.effort_error);
+    assert!(m.mimic_error < 1e-8, "coupling {} m", m.mimic_error);
+    // Issue 23 item 4's bound: still, < 1 um/s, no drift (< 1 um) over the last 40 steps.
+    assert!(m.speed_hold < 1e-6, "speed {} m/s", m.speed_hold);
+    assert!(m.drift_hold < 1e-6, "drift {} m", m.drift_hold);
+    // As the converged hold (1.18e-2; bounded there at 0.04, not yet understood).
+    assert!(m.worst < 0.04, "{}", m.worst);
 }
 
-/// The mimic-coupled jaws of [`multibody_mimic_jaws_squeeze_a_box`] with rapier's PGS run to
+/// The mimic-coupled jaws of [`multibody_mimic_jaws_squeeze_a_box_with_the_sweeps_they_need`] with rapier's PGS run to
 /// convergence (64 sweeps), where the plugin's exact fold of the motor and the coupling is
 /// what rapier does: the hold's steps split only for the motor's push (5 substeps), the two
 /// pads equal (1.30e-4 since rapier's soft table rows, session 21; 6.8e-5 before them, 4.5e-4
@@ -106,7 +123,7 @@ fn multibody_mimic_jaws_settle_with_converged_pgs() {
 #[test]
 fn mimic_jaws_hold_the_box_still_on_a_stiff_table() {
     for spring in [true, false] {
-        let m = mimic_jaws_with(64, spring, false, Some(1000.0));
+        let m = mimic_jaws_with(64, spring, false, Some(1000.0), false);
         let name = if spring {
             "friction spring"
         } else {
@@ -144,7 +161,7 @@ fn mimic_jaws_hold_the_box_still_on_a_stiff_table() {
 // over the last 40 steps (before: 0.01635 m/s, 0.105 um).
 #[test]
 fn a_pressed_box_on_the_table_leaves_split_steps_at_rest() {
-    let m = mimic_jaws_with(64, false, true, None);
+    let m = mimic_jaws_with(64, false, true, None, false);
     let (vy, rattle, lead_in) = m.pressed.unwrap();
     println!(
         "pressed box: stored |v_y| <= {vy:.2e} m/s (lead-in {lead_in:.5} m/s), height step to \
@@ -182,11 +199,14 @@ struct Mimic {
     /// last 40 steps \[m/s\], its largest change of height from one step to the next over them
     /// \[m\], and the least split step's gravity lead-in `g (dt - h) / (2N)` \[m/s\].
     pressed: Option<(f64, f64, f64)>,
+    /// With `raise` ([`mimic_jaws_with`]): the sweeps per solver pass the jaws' links were
+    /// given (`SoftWorld::multibody_sweeps_needed`).
+    needed: Option<usize>,
 }
 
 /// The mimic-coupled jaws squeezing the box for 240 steps at `pgs` PGS iterations.
 fn mimic_jaws(pgs: usize) -> Mimic {
-    mimic_jaws_with(pgs, false, false, None)
+    mimic_jaws_with(pgs, false, false, None, false)
 }
 
 /// [`mimic_jaws`] with the friction as Mindlin's tangential spring (`spring`) or the rigid
@@ -195,8 +215,15 @@ fn mimic_jaws(pgs: usize) -> Mimic {
 /// splits every step of the world, the pressed box's too. `table_hz`: rapier's contacts with
 /// a fixed body (the table) at that natural frequency \[Hz\]
 /// (`IntegrationParameters::static_contact_softness`; rapier's default 60 Hz, damping ratio
-/// 10).
-fn mimic_jaws_with(pgs: usize, spring: bool, press: bool, table_hz: Option<f32>) -> Mimic {
+/// 10). With `raise`, the jaws' links get the sweeps `SoftWorld::multibody_sweeps_needed` asks
+/// for (the largest over the step and its substeps `dt / 2^k`, k <= 6).
+fn mimic_jaws_with(
+    pgs: usize,
+    spring: bool,
+    press: bool,
+    table_hz: Option<f32>,
+    raise: bool,
+) -> Mimic {
     let (mut world, box_body, box_col) = table_and_box(pgs, 0.0);
     world.soft.set_friction_spring(spring);
     if let Some(hz) = table_hz {
@@ -287,6 +314,18 @@ fn mimic_jaws_with(pgs: usize, spring: bool, press: bool, table_hz: Option<f32>)
             offset: 0.0,
         });
     }
+    // The sweeps rapier needs over the jaws' motor and coupling rows, at the step and its
+    // substeps (as the scene layer asks them for a robot), given to the jaws' links only.
+    let needed = raise.then(|| {
+        let need = (0..=6)
+            .filter_map(|k| world.multibody_sweeps_needed(fingers[0], dt / f64::from(1u32 << k)))
+            .max()
+            .expect("the jaws' sweeps converge");
+        for &b in &fingers {
+            world.physics.bodies[b].set_additional_pgs_iterations(need.saturating_sub(pgs));
+        }
+        need
+    });
     let law = &laws[0];
     let mut max_substeps_hold = 0;
     // The squeezed box's largest stored |v_y| at a step's end [m/s] and change of height from
@@ -386,7 +425,7 @@ fn mimic_jaws_with(pgs: usize, spring: bool, press: bool, table_hz: Option<f32>)
     let right = mb.link(links[1].id).unwrap();
     let mimic_error = (right.joint().coords()[0] as f64 + q).abs();
     println!(
-        "mimic jaws at {pgs} PGS iterations: forces {forces:?} N, worst |F/F_law - 1| \
+        "mimic jaws at {pgs} PGS iterations (links raised to {needed:?}): forces {forces:?} N, worst |F/F_law - 1| \
          {worst:.2e}, pads differ {balance:.2e}, motor {effort:.4} N vs J^T F {:.4} N \
          ({effort_error:.2e}), substeps in the hold <= {max_substeps_hold}, coupling off by \
          {mimic_error:.2e} m; box's stored |v_y| <= {box_vy:.2e} m/s, height step to step \
@@ -406,6 +445,7 @@ fn mimic_jaws_with(pgs: usize, spring: bool, press: bool, table_hz: Option<f32>)
         speed_hold,
         drift_hold,
         pressed: pressed.map(|_| (pressed_vy, pressed_rattle, lead_in)),
+        needed,
     }
 }
 
@@ -494,7 +534,7 @@ fn kinematic_multibody_root_moves_to_its_target() {
 // 1.59e-7 m/s, drift over the last 40 steps 0.091 um, worst 1.69e-2 off the law.
 #[test]
 fn friction_spring_mimic_jaws_hold_the_box_still_on_the_default_table() {
-    let m = mimic_jaws_with(64, true, false, None);
+    let m = mimic_jaws_with(64, true, false, None, false);
     println!(
         "friction spring, default table: forces {:?} N, worst {:.2e}, pads differ {:.2e}, \
          motor vs J^T F {:.2e}, substeps <= {}, coupling {:.2e} m, speed {:.3e} m/s, drift \

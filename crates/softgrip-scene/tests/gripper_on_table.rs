@@ -97,13 +97,15 @@ fn run_checked(scene: &Scene) -> Run {
 }
 
 /// 5 mm lower: the fingers' boxes on the table. The grasp runs as at the shipped height: at
-/// rest in the hold each pad's force is the law's at its compression within 0.5 %, the peak
+/// rest in the hold each pad's force is the law's at its compression within 0.01 %, the peak
 /// within 10 % of the grasp's 5 N, and the 200 g box is lifted 10 cm.
 #[test]
 fn gripper_whose_fingers_touch_the_table_grasps_without_blowing_up() {
     let r = run_checked(&lowered(0.005).unwrap());
     assert!(r.held_steps > 60, "held {} steps", r.held_steps);
-    assert!(r.law_err < 5e-3, "hold force {} off the law", r.law_err);
+    // 3.9e-6 since session 29 (the links given the sweeps rapier needs over the motor and the
+    // mimic coupling); 7.2e-4 at rapier's 1 sweep.
+    assert!(r.law_err < 1e-4, "hold force {} off the law", r.law_err);
     assert!(
         (r.peak_force - 5.0).abs() < 0.5,
         "peak force {} N",
