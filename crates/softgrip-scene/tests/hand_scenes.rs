@@ -686,3 +686,29 @@ fn an_underactuated_hand_holds_with_efforts_equal_to_jt_f() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Issue 25 item 8's 1 % on the shipped three-finger hand (no mimic joint, so rapier keeps its
+/// one Gauss-Seidel sweep over the six motor rows, which the soft solve folds in as converged;
+/// SCENES.md, "Multibody robots with a mimic joint"): at the end of each hold every joint's
+/// motor effort against `J^T F`. Measured (session 29): proximal joints 7.9e-3 to 8.5e-3, distal
+/// ones 1.5e-3 to 1.6e-3 (the proximal motors read high: rapier's sweep has not passed all of
+/// the distal load to them). Bounded at the issue's 1 %; with the sweeps the chains need (348,
+/// at 9.3x the step time) they would read about 1e-6.
+#[test]
+fn three_finger_hand_joint_efforts_equal_jt_f_within_1_percent() {
+    for object in ["ball", "box", "cylinder"] {
+        let path = repo().join(format!("scenes/robots/three_finger_hand_{object}.toml"));
+        let scene = Scene::from_file(&path).unwrap();
+        let (loads, shares) = hold_efforts(&scene);
+        assert!(shares.is_empty(), "no mimic joint");
+        assert_eq!(loads.len(), 6, "six joints");
+        for &(ref joint, effort, load, rel) in &loads {
+            println!("{object}: `{joint}` effort {effort:.5} vs J^T F {load:.5} ({rel:.2e})");
+            assert!(load.abs() > 0.03, "{object}: `{joint}` J^T F {load}");
+            assert!(
+                rel < 0.01,
+                "{object}: `{joint}` effort {effort} vs J^T F {load}"
+            );
+        }
+    }
+}
