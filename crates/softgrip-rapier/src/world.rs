@@ -65,8 +65,8 @@ impl SoftWorld {
     /// URDF `<mimic>`) converge as the soft solve requires (crate README, What one step does,
     /// 9), at a (sub)step of `h` \[s\] (> 0; rapier's `num_solver_iterations` passes) and the
     /// multibody's present pose: 1 where no two rows share inertia (a single prismatic jaw),
-    /// 17 for the suite's mimic-coupled jaws at 1/60 s (the largest over its step and substeps)
-    /// (`tests/jointed_mimic.rs`), 348 for a finger of the shipped three-finger hand. Give the
+    /// 17 for the suite's mimic-coupled jaws at 1/60 s (the largest over its step and its
+    /// substeps; `tests/jointed_mimic.rs`), 348 for the shipped three-finger hand. Give the
     /// multibody's links `need - num_internal_pgs_iterations` with
     /// `RigidBody::set_additional_pgs_iterations` where it is more than rapier's own. Reads
     /// the multibody's mass at its present pose (`Multibody::dof_inverse_inertia`, which
