@@ -53,7 +53,8 @@ pub struct SoftCounters {
     /// Outer passes (the normals by a dense LU, then friction sweeps) of those solves, total;
     /// each stops once its impulses move by less than 1e-6 of its largest normal impulse.
     pub group_passes: u64,
-    /// Group solves that used every pass allowed (256) without settling, total.
+    /// Group solves that used every pass allowed (256) without settling (nor answered as
+    /// sticking, `group_stuck`), total.
     pub group_unsettled: u64,
     /// Group solves whose outer passes diverged (their largest normal impulse grew past 1000
     /// times the larger of the first pass's and the group's impulse scale: a wedge of rows past
@@ -63,6 +64,10 @@ pub struct SoftCounters {
     /// `solve_group`). Not an error; before session 22 the passes went on and a pad of the
     /// three-finger hand driven into the table read 1.9e38 N (issue 25).
     pub group_diverged: u64,
+    /// Group solves answered by their fixed point solved directly, every contact sticking,
+    /// where the outer passes had not settled within 16 (`stick.rs`; the three-finger hand's
+    /// ball: its passes contract by 0.988 each), total. Not an error.
+    pub group_stuck: u64,
     /// Rows of coupled solves (rapier's contacts in them, and soft rows) along which their
     /// bodies cannot move (mobility below `f32::EPSILON` of the bodies' at that point: a
     /// prismatic finger's vertical on a table), solved as immobile (no impulse), total. Not an
@@ -180,6 +185,7 @@ impl SoftCounters {
             group_passes,
             group_unsettled,
             group_diverged,
+            group_stuck,
             immobile_rows,
             locked_link_contacts,
             jointed_free,

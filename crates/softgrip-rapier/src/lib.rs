@@ -32,6 +32,7 @@ mod series;
 mod solve;
 mod step;
 mod step_error;
+mod stick;
 mod substep;
 mod tactile;
 mod taxels;

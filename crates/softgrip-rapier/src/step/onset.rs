@@ -64,11 +64,12 @@ impl Step<'_> {
                 self.soft.counters.coupled_passes = passes;
                 self.soft.counters.coupled_unsettled = unsettled;
                 self.soft.counters.coupled_degenerate = degenerate;
-                let [solves, passes, unsettled, diverged] = s.solve.group_stats();
+                let [solves, passes, unsettled, diverged, stuck] = s.solve.group_stats();
                 self.soft.counters.group_solves = solves;
                 self.soft.counters.group_passes = passes;
                 self.soft.counters.group_unsettled = unsettled;
                 self.soft.counters.group_diverged = diverged;
+                self.soft.counters.group_stuck = stuck;
                 break;
             }
         }
