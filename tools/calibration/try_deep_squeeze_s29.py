@@ -38,10 +38,13 @@ Forms (`form(mode)`): SFB0030 (session 28's, faded into the law by t/R 0.3) with
        the fitted set (their role changed openly; nu 0.49 t/R 0.12 stays held out)
 
 `--deep` prints the law, SFB0030 and SFF against the three deep penalty-1e6 curves point by point;
+`--need` prints what the FE asks of the squeeze beyond SFB0030's on the thin and deep skins;
+`--committed` prints the law, SFB0030 and SFF on every committed core FE file (penalty 1e5);
 `--var MODE ...` refits and prints max |F/F_FE - 1| per set (s26.sets() plus the deep
 penalty-1e6 set; the deep CAX8 penalty-1e5 set holds the superseded twins of two of them).
 
-usage: PY tools/calibration/try_deep_squeeze_s29.py [--deep] [--var MODE ...] [--curves]
+usage: PY tools/calibration/try_deep_squeeze_s29.py [--deep] [--need] [--committed] [--var MODE ...]
+           [--curves] [--check-form MODE]
        (PY: /work/main/target/fe-venv/bin/python; run under nice -n 10)
 """
 import argparse
@@ -171,6 +174,52 @@ def deep_table():
                   " ".join(f"{n} {100 * rr[i]:+.2f}" for (n, _, _), rr in zip(chis, r)))
 
 
+def need():
+    """What the FE asks of the thin-skin form's squeeze beyond SFB0030's, on every thin skin
+    (t/R < 0.2) and the deep penalty-1e6 three: the shell form's own target `(chi_FE - (1 - w)
+    chi_law)/w`, over its excess and coupling, less SFB0030's `1 + squeeze`; printed as
+    `delta/t: need / psi(z) (Phi_c - 1) / D(s)` at six points per skin."""
+    l0, l1, k0, k1, lc, cd = SFB0030
+    law = s25.form("K")
+    train, thin, held, blind, dblind = s26.sets()
+    cs = [("deep", c) for c in deep_curves()] + \
+         [("thin", c) for c in train + held + blind if c["tau"] < 0.2]
+    for tag, c in sorted(cs, key=lambda t: (t[1]["nu"], t[1]["tau"])):
+        x, nu, tau = c["x"], c["nu"], c["tau"]
+        eps = f.eps_of(nu)
+        w = s28.weight(tau, "SFB0030")
+        target = (c["chi"] - (1 - w) * law(s25.LAW, x, nu, tau)) / w
+        fl = f.chi_flat(x, nu)
+        ex = s28.chi_shell(x, nu, tau) - s28.chi_hemi(x, nu, "F")
+        s = x / tau
+        sq = (l0 + l1 * eps) * s + (lc * eps / (1 + 4 * eps / 3) + cd) * f.confined(s)
+        nd = (target - fl) / (ex * np.exp(-(k0 + k1 * eps) * (fl - 1))) - 1 - sq
+        z = np.sqrt(3 * (1 - 2 * nu) / (2 * (1 - nu)) * x) / tau
+        film = s25.psi(z) * (phi_c(s, tau) - 1)
+        idx = np.unique(np.linspace(0, len(x) - 1, 6).astype(int))
+        print(f"{tag} ({nu:g}, {tau:g}) w {w:.2f}: " + " ".join(
+            f"{s[i]:.2f}: {nd[i]:+.3f}/{film[i]:+.3f}/{f.confined(s[i]):.2f}" for i in idx))
+
+
+def committed():
+    """The law, SFB0030 and SFF on every committed core FE file (tests/data/fe/core/force_*.csv,
+    the campaign's, penalty 1e5; `fit_core.load()`: x 0.01 to x_max): the worst signed miss per
+    file and how many files are past 2 %."""
+    forms = (("law", s25.form("K"), s25.LAW), ("SFB0030", s28.form("SFB0030"), SFB0030),
+             ("SFF", form("SFF"), SFF))
+    past = {k: 0 for k, _, _ in forms}
+    curves = sorted(f.load(), key=lambda c: (c["tau"], c["nu"]))
+    for c in curves:
+        cells = []
+        for name, chi, p in forms:
+            v, xi = signed(p, c, chi)
+            past[name] += abs(v) > 2
+            cells.append(f"{name} {v:+.2f} (x {xi:g})")
+        print(f"{c['name']}: " + " | ".join(cells))
+    print("files past 2 %: " + ", ".join(f"{k} {v}" for k, v in past.items()) +
+          f" of {len(curves)}")
+
+
 def fit_table(modes, curves_too=False):
     train, thin, held, blind, dblind = s26.sets()
     dk = deep_curves()
@@ -240,12 +289,18 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--deep", action="store_true", help="law and SFB0030 on the deep k1e6 runs")
+    ap.add_argument("--committed", action="store_true", help="law, SFB0030, SFF on core/*.csv")
+    ap.add_argument("--need", action="store_true", help="the squeeze the FE asks beyond SFB0030")
     ap.add_argument("--var", nargs="*", help="forms refitted ('law', 'SFB0030' = as on main)")
     ap.add_argument("--curves", action="store_true", help="with --var: per curve")
     ap.add_argument("--check-form", help="fit_core.check on one --var form")
     a = ap.parse_args()
     if a.deep:
         deep_table()
+    if a.committed:
+        committed()
+    if a.need:
+        need()
     if a.var:
         fits = fit_table(a.var, a.curves)
         if a.check_form:
