@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Writes the Rust tables of the core law's thin-skin form SFB0030 (session 28, issue 24 item 5)
-and the reference values its Rust test compares against.
+"""Writes the Rust tables of the core law's thin-skin form (session 28's SFB0030, since session 29
+SFF: SFB0030 with the squeezed film, `try_deep_squeeze_s29.py`; issue 24 item 5) and the
+reference values its Rust test compares against (the tables are the shell's, the same for both).
 
 The form (`try_shell_table_s28.py --var SFB0030`, the reference; CORE_FORM.md "Thin skins: the
 shell table as the skeleton, session 28") needs chi_shell(x, nu, tau) = chi_lin(u, nu) (1 + tau
@@ -24,7 +25,7 @@ G(nu, tau, u)), u = sqrt(x)/tau. Rust gets both factors as tables:
 
 Output: crates/softgrip-law/src/levels/shell_table.rs (the tables, with this provenance), and
 crates/softgrip-law/tests/data/shell_s28_reference.csv (Python's chi_shell, the law and the full
-SFB0030 chi at nu x t/R x x points; the Rust test `shell_table::tests` and `backed::tests`
+SFF chi at nu x t/R x x points; the Rust test `shell_table::tests` and `backed::tests`
 compare). Also prints the chi_lin table's interpolation error against Python at off-grid points.
 
 usage: nice -n 10 /work/main/target/fe-venv/bin/python tools/calibration/gen_shell_table_rs.py
@@ -43,16 +44,18 @@ sys.path.insert(0, os.path.join(HERE, "..", "fe"))
 
 import fit_core as f  # noqa: E402
 import thin_layer_exact_s27 as tl  # noqa: E402
+import try_deep_squeeze_s29 as s29  # noqa: E402
 import try_shell_table_s28 as s28  # noqa: E402
 import try_thin_skin_s25 as s25  # noqa: E402
 
 OUT_RS = os.path.join(ROOT, "crates", "softgrip-law", "src", "levels", "shell_table.rs")
 OUT_CSV = os.path.join(ROOT, "crates", "softgrip-law", "tests", "data", "shell_s28_reference.csv")
 
-# SFB0030's constants [l0, l1, k0, k1, lc, cd] (try_shell_table_s28.py --var SFB0030, refitted on
-# the FITTED set) as CORE_FORM.md prints them; the reference values use these six-digit numbers.
-P_SFB0030 = (0.467294, -0.708439, 0.589107, -2.213985, 0.295321, 0.001603)
-MODE = "SFB0030"
+# The thin-skin form's constants: since session 29 SFF's [l0, l1, k0, k1, lc, cf]
+# (try_deep_squeeze_s29.py --var PcTZ, refitted on the FITTED set; session 28's SFB0030 before it)
+# as CORE_FORM.md prints them; the reference values use these six-digit numbers.
+P_FORM = tuple(s29.SFF)
+MODE = "SFF"
 
 NU_N = 72  # chi_lin's Poisson ratios, 0.3 ... 0.5, uniform in ln(eps + EPS0)
 EPS0 = 1e-3
@@ -202,7 +205,7 @@ def main():
 
     # --- reference values ---
     law = s25.form("K")
-    chi = s28.form(MODE)
+    chi = s29.form(MODE)
     rows = []
     for nu in (0.3, 0.33, 0.37, 0.4, 0.43, 0.45, 0.47, 0.48, 0.49, 0.495, 0.499, 0.5):
         for tau in (0.05, 0.06, 0.08, 0.1, 0.12, 0.15, 0.18, 0.2, 0.23, 0.25, 0.28, 0.3):
@@ -211,13 +214,13 @@ def main():
                 x = x_max * k * k
                 cs_ = float(s28.chi_shell(np.array([x]), nu, tau)[0])
                 cl = float(np.squeeze(law(s25.LAW, np.array([x]), nu, tau)))
-                cf = float(np.squeeze(chi(P_SFB0030, np.array([x]), nu, tau)))
+                cf = float(np.squeeze(chi(P_FORM, np.array([x]), nu, tau)))
                 rows.append((nu, tau, x, cs_, cl, cf))
     os.makedirs(os.path.dirname(OUT_CSV), exist_ok=True)
     with open(OUT_CSV, "w") as fh:
         fh.write(f"# {cmd}: try_shell_table_s28.py chi_shell, the law (s25.form K, LAW) and "
-                 f"{MODE} with {list(P_SFB0030)}\n")
-        fh.write("nu,tau,x,chi_shell,chi_law,chi_sfb0030\n")
+                 f"{MODE} (try_deep_squeeze_s29.py) with {list(P_FORM)}\n")
+        fh.write("nu,tau,x,chi_shell,chi_law,chi_form\n")
         for r in rows:
             fh.write(",".join(repr(float(v)) for v in r) + "\n")
     print(f"wrote {OUT_CSV} ({len(rows)} rows) in {time.time() - t0:.0f} s")

@@ -91,7 +91,22 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
     // 0.95, (0.49, 0.12) 0.94, (0.49, 0.25) 1.70, (0.47, 0.25) 0.95, (0.4, 0.08) 0.42, (0.3,
     // 0.08) 0.60, (0.3, 0.05) 1.19, (0.4, 0.05) 2.11, (0.3, 0.1) 0.62, (0.48, 0.1) 0.77, (0.48,
     // 0.08) 2.37, (0.4, 0.06) 2.43, (0.48, 0.06) 2.52, (0.45, 0.07) 1.24, (0.35, 0.06) 1.67,
-    // (0.4, 0.1) 0.34: the 2 % target missed on nine of the 33. Each tolerance: seen + 0.1 %.
+    // (0.4, 0.1) 0.34: the 2 % target missed on nine of the 33. Since session 29 (the
+    // thin-skin form SFF: SFB0030 with the squeezed film; the tolerances of the files of t/R <
+    // 0.3 are its, `tools/calibration/try_deep_squeeze_s29.py --var SFF`): (0.46, 0.25) 1.67,
+    // (0.33, 0.25) 0.87, (0.36, 0.2) 0.65, (0.47, 0.15) 2.27, (0.42, 0.25) 2.13, (0.38, 0.12)
+    // 0.37, (0.46, 0.1) 1.61, (0.32, 0.14) 1.04, (0.49, 0.12) 1.46, (0.49, 0.25) 1.80, (0.47,
+    // 0.25) 0.92, (0.4, 0.08) 0.54, (0.3, 0.08) 1.03, (0.3, 0.05) 0.79, (0.4, 0.05) 1.75, (0.3,
+    // 0.1) 1.20, (0.48, 0.1) 1.35, (0.48, 0.08) 2.69, (0.4, 0.06) 2.25, (0.48, 0.06) 2.32, (0.45,
+    // 0.07) 1.12, (0.35, 0.06) 1.67, (0.4, 0.1) 0.48: the 2 % target missed on eight of the 33,
+    // worst 2.69 % (was 2.84). Ten tolerances are looser than session 28's, each by the new
+    // law's own number (a re-pin, not a slack): (0.46, 0.1), (0.32, 0.14), (0.49, 0.12), (0.49,
+    // 0.25), (0.4, 0.08), (0.3, 0.08), (0.3, 0.1), (0.48, 0.1), (0.48, 0.08), (0.4, 0.1), all
+    // but (0.48, 0.08) within 1.8 %. They are the campaign's penalty-1e5 runs, soft by the
+    // penalty (0.4-1.6 %, more as the squeeze grows: `core/penalty.csv`), and the film stiffens
+    // the deep squeeze they under-report; their penalty-1e6 re-runs (the `k1e6` tests below)
+    // are the references the form was judged on, and there it is better on every set's worst.
+    // Each tolerance: seen + 0.1 %.
     let cases = [
         ("flat/force_nu0.35.csv", 0.35, Backing::Flat, 0.02),
         ("flat/force_nu0.45.csv", 0.45, Backing::Flat, 0.01),
@@ -123,13 +138,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.46_t0.25.csv",
             0.46,
             Backing::Core { thickness: 0.25 },
-            0.0195,
+            0.0177,
         ),
         (
             "core/force_nu0.33_t0.25.csv",
             0.33,
             Backing::Core { thickness: 0.25 },
-            0.0106,
+            0.0097,
         ),
         (
             "core/force_nu0.42_t0.55.csv",
@@ -141,7 +156,7 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.36_t0.2.csv",
             0.36,
             Backing::Core { thickness: 0.2 },
-            0.0115,
+            0.0075,
         ),
         (
             "core/force_nu0.44_t0.8.csv",
@@ -161,13 +176,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.47_t0.15.csv",
             0.47,
             Backing::Core { thickness: 0.15 },
-            0.0294,
+            0.0237,
         ),
         (
             "core/force_nu0.42_t0.25.csv",
             0.42,
             Backing::Core { thickness: 0.25 },
-            0.0230,
+            0.0223,
         ),
         // The fourth set (session 13, run after every constant was fixed): skins thinner than
         // any fitted, each to its FE's end, on finer meshes (R/75 and R/60).
@@ -175,25 +190,25 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.38_t0.12.csv",
             0.38,
             Backing::Core { thickness: 0.12 },
-            0.0066,
+            0.0047,
         ),
         (
             "core/force_nu0.46_t0.1.csv",
             0.46,
             Backing::Core { thickness: 0.1 },
-            0.0157,
+            0.0171,
         ),
         (
             "core/force_nu0.32_t0.14.csv",
             0.32,
             Backing::Core { thickness: 0.14 },
-            0.0105,
+            0.0114,
         ),
         (
             "core/force_nu0.49_t0.12.csv",
             0.49,
             Backing::Core { thickness: 0.12 },
-            0.0104,
+            0.0156,
         ),
         // Session 15: fit data for the next refit between the fitted t/R 0.2 and 0.4 (made
         // after the constants; the refit tried was not adopted, crate README *Thin skins*).
@@ -219,14 +234,14 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.49_t0.25.csv",
             0.49,
             Backing::Core { thickness: 0.25 },
-            0.0180,
+            0.0190,
         ),
         // Session 15, blind (run after every constant tried that session was fixed).
         (
             "core/force_nu0.47_t0.25.csv",
             0.47,
             Backing::Core { thickness: 0.25 },
-            0.0105,
+            0.0102,
         ),
         // Session 20, blind (run after the session's thin-layer variants were fixed), thinner
         // than any run before: (0.4, 0.08) 3.77 % (at its end x = 0.04, delta/t 0.5, -; +3.47 %
@@ -239,13 +254,13 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.4_t0.08.csv",
             0.4,
             Backing::Core { thickness: 0.08 },
-            0.0052,
+            0.0064,
         ),
         (
             "core/force_nu0.3_t0.08.csv",
             0.3,
             Backing::Core { thickness: 0.08 },
-            0.0070,
+            0.0113,
         ),
         // Session 20, second part: fit data for the thin-layer floor (not fitted: the law was
         // not refitted; CORE_FORM.md "Thin skins: session 20, fit data at t/R 0.05-0.1"),
@@ -255,25 +270,25 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.3_t0.05.csv",
             0.3,
             Backing::Core { thickness: 0.05 },
-            0.0129,
+            0.0089,
         ),
         (
             "core/force_nu0.4_t0.05.csv",
             0.4,
             Backing::Core { thickness: 0.05 },
-            0.0221,
+            0.0185,
         ),
         (
             "core/force_nu0.3_t0.1.csv",
             0.3,
             Backing::Core { thickness: 0.1 },
-            0.0072,
+            0.0130,
         ),
         (
             "core/force_nu0.48_t0.1.csv",
             0.48,
             Backing::Core { thickness: 0.1 },
-            0.0087,
+            0.0145,
         ),
         // Session 21, blind (run after the thin-layer floor's constants were fixed; smaller
         // increments, `fe_campaign.py` S21_DT): (0.48, 0.08) on R/80 2.71 % (x = 0.01, too
@@ -287,19 +302,19 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.48_t0.08.csv",
             0.48,
             Backing::Core { thickness: 0.08 },
-            0.0247,
+            0.0279,
         ),
         (
             "core/force_nu0.4_t0.06.csv",
             0.4,
             Backing::Core { thickness: 0.06 },
-            0.0253,
+            0.0235,
         ),
         (
             "core/force_nu0.48_t0.06.csv",
             0.48,
             Backing::Core { thickness: 0.06 },
-            0.0262,
+            0.0242,
         ),
         // ... and (0.45, 0.07) on R/90 3.76 % (x = 0.0175, too stiff, +2.3 to +3.8 % along
         // it; session 20's law 2.94 %: on this blind skin the thin-layer floor is worse;
@@ -308,7 +323,7 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.45_t0.07.csv",
             0.45,
             Backing::Core { thickness: 0.07 },
-            0.0134,
+            0.0122,
         ),
         // Session 21's fifth blind skin, exported in session 22: (0.35, 0.06) on R/100 1.97 %
         // (x = 0.03, its end: too stiff, +0.5 to +2.0 % along it; session 20's law 9.14 %;
@@ -323,7 +338,7 @@ fn backed_calibrated_on_fe_runs_held_out_of_every_fit() {
             "core/force_nu0.4_t0.1.csv",
             0.4,
             Backing::Core { thickness: 0.1 },
-            0.0044,
+            0.0058,
         ),
     ];
     // Every file is printed before any is asserted (one run shows them all).
@@ -358,15 +373,16 @@ fn core_calibrated_error_against_its_fe_is_what_the_readme_states() {
     // tools/calibration/try_thin_skin_s23.py --var K: eight constants; session 21's law in
     // brackets: 1.65, 2.98, 2.20, 2.09; 2.66, 1.41, 0.86, 1.04; 2.17, 1.58, 2.38; 0.87, 1.94,
     // 1.75). Since session 28 t/R 0.2 takes the thin-skin form at weight 0.26 (session 24-27's
-    // law there: 2.52, 1.83, 1.26, 2.16); from t/R 0.3 the law is unchanged. Seen, to x_max
+    // law there: 2.52, 1.83, 1.26, 2.16; session 28's SFB0030 1.56, 1.79, 1.85, 2.29; since
+    // session 29 SFF, with the squeezed film); from t/R 0.3 the law is unchanged. Seen, to x_max
     // = min(flat's, 0.8 t/R) (each FE curve's reach: delta/t 0.45-0.8), the largest
     // |F/F_FE - 1| in %; each tolerance is the seen value plus 0.1 % above, 0.25 % below (a
     // changed constant or term breaks it).
     let seen = [
-        (0.3, 0.2, 1.56),
-        (0.4, 0.2, 1.79),
-        (0.48, 0.2, 1.85),
-        (0.499, 0.2, 2.29),
+        (0.3, 0.2, 1.45),
+        (0.4, 0.2, 1.62),
+        (0.48, 0.2, 1.45),
+        (0.499, 0.2, 1.99),
         (0.3, 0.4, 2.42),
         (0.4, 0.4, 1.85),
         (0.48, 0.4, 1.55),
@@ -556,11 +572,16 @@ fn core_on_the_deep_cax8_skins_at_other_nu_is_what_the_readme_states() {
 /// through the skin (`tests/data/fe/core/cax8/k1e6/`, `tools/fe/fe_thin_rerun.py --deep`; the
 /// runs above, penalty 1e5, are soft by their penalty: 5.2 % at t/R 0.08's x = 0.04, 4.3 % at
 /// t/R 0.1's x = 0.06), which reach further: x = 0.05 (delta/t 0.625) and 0.07 (0.7), inside the
-/// law's range (0.8 t/R). Blind (no constant saw them). Seen: the law too soft at both ends,
-/// by 6.29 % (t/R 0.08, x = 0.05) and 8.19 % (t/R 0.1, x = 0.07): the deep squeeze of a thin,
-/// nearly incompressible skin is stiffer than the law's squeeze term, past the 2 % target
-/// (softgrip-law README, "Session 28: the deep thin skins' references were soft"). Pinned so
-/// that a refit that reaches them shows here. Tolerances: seen + 0.1 % above, 0.25 % below,
+/// law's range (0.8 t/R). Blind (no constant saw them). Session 28's law (SFB0030) was too
+/// soft at both ends, by 6.29 % (t/R 0.08, x = 0.05) and 8.19 % (t/R 0.1, x = 0.07): the deep
+/// squeeze of a thin, nearly incompressible skin is stiffer than its squeeze term. Session 29:
+/// a third, held out (its CAX8R twin is): nu 0.49 t/R 0.12 to x = 0.095 (delta/t 0.79),
+/// where SFB0030 was 5.16 % too soft (at x 0.095). Since session 29 the law is SFF, with the
+/// squeezed film (softgrip-law README, "Session 29"), still blind to all three (fitted on the
+/// fitted set only): too soft at both ends of the nu 0.48 skins, by 3.49 % (t/R 0.08, x =
+/// 0.05) and 4.91 % (t/R 0.1, x = 0.07), past the 2 % target; too stiff on nu 0.49 t/R 0.12 by
+/// 1.86 % at x = 0.0825 (+1.27 % at its end; within 1.86 % along it, where SFB0030 fell from +0.65 % to
+/// -5.16 %). Tolerances: seen + 0.1 % above, 0.25 % below,
 /// the place and the sign.
 #[test]
 fn core_on_the_deep_thin_skins_with_penalty_1e6_is_what_the_readme_states() {
@@ -570,7 +591,7 @@ fn core_on_the_deep_thin_skins_with_penalty_1e6_is_what_the_readme_states() {
             0.48,
             0.08,
             0.05,
-            6.29,
+            3.49,
             0.05,
             true,
         ),
@@ -579,9 +600,18 @@ fn core_on_the_deep_thin_skins_with_penalty_1e6_is_what_the_readme_states() {
             0.48,
             0.1,
             0.07,
-            8.19,
+            4.91,
             0.07,
             true,
+        ),
+        (
+            include_str!("../../../tests/data/fe/core/cax8/k1e6/force_nu0.49_t0.12.csv"),
+            0.49,
+            0.12,
+            0.095,
+            1.86,
+            0.0825,
+            false,
         ),
     ];
     pin_skins(&skins, true);
@@ -602,7 +632,14 @@ fn core_on_the_deep_thin_skins_with_penalty_1e6_is_what_the_readme_states() {
 /// Session 28's law (the thin-skin form SFB0030, faded out by t/R 0.3; blind to all three but
 /// its fade's end, chosen after the deep set was seen): 1.23 % too soft at t/R 0.1's end,
 /// 2.36 % too stiff at t/R 0.08's x = 0.03, 2.13 % too stiff on t/R 0.25 at x = 0.01.
-/// Tolerances: seen + 0.1 % above, 0.25 % below, the place and the sign.
+/// Session 29's law (SFF, the squeezed film; blind to all three): 1.39 % too stiff at t/R
+/// 0.1's end, 3.46 % too stiff at t/R 0.08's end (x = 0.04), 2.10 % too stiff on t/R 0.25 at x
+/// = 0.01. The two thin ones are loosened by the new law's own numbers (re-pinned, sign
+/// flipped at t/R 0.1): these penalty-1e5 runs are soft by their penalty, 5.2 % at t/R 0.08's
+/// x = 0.04 and 4.3 % at t/R 0.1's x = 0.06 against their penalty-1e6 re-runs (the test
+/// below), where SFF is 3.49 / 4.91 % too soft instead of 6.29 / 8.19 %: a law that meets the
+/// deep squeeze is too stiff against these. Tolerances: seen + 0.1 % above, 0.25 % below, the
+/// place and the sign.
 #[test]
 fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
     let skins = [
@@ -611,17 +648,17 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
             0.48,
             0.1,
             0.06,
-            1.23,
+            1.39,
             0.06,
-            true,
+            false,
         ),
         (
             include_str!("../../../tests/data/fe/core/cax8/force_nu0.48_t0.08.csv"),
             0.48,
             0.08,
             0.04,
-            2.36,
-            0.03,
+            3.46,
+            0.04,
             false,
         ),
         (
@@ -629,7 +666,7 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
             0.46,
             0.25,
             0.19,
-            2.13,
+            2.10,
             0.01,
             false,
         ),
@@ -647,198 +684,204 @@ fn core_on_the_thin_cax8_skins_is_what_the_readme_states() {
 /// "Thin skins: session 25"). Seen (`tools/calibration/try_thin_skin_s25.py --new --curves
 /// law`): the law's worst `|F/F_FE - 1|` to x_max, where, and its sign there. Since session 28
 /// (the thin-skin form SFB0030, `tools/calibration/try_shell_table_s28.py --var SFB0030
-/// --curves`, which prints the same numbers) the pinned values are its; each comment gives
-/// session 27's law's in parentheses, and the committed curves' numbers after it are session
-/// 27's law's. Tolerances: seen + 0.1 % above, 0.25 % below, the place and the sign.
+/// --curves`, which prints the same numbers) the pinned values were its; since session 29 they
+/// are SFF's (SFB0030 with the squeezed film, `tools/calibration/try_deep_squeeze_s29.py --var
+/// SFB0030 SFF --curves`): each comment gives SFB0030's and session 27's law's in parentheses,
+/// and the committed curves' numbers after it are session 27's law's. SFF is better than SFB0030
+/// here by max (2.39 % against 2.88 %) and on 12 of the 17 skins; worse by more than 0.1 % on
+/// four, each within 1.83 %: (0.3, 0.08) 0.70 -> 1.19, (0.3, 0.1) 0.86 -> 1.17, (0.4, 0.08)
+/// 0.30 -> 0.56, (0.49, 0.12) 1.17 -> 1.83 (all at x <= 0.015, the small-x nu pattern, not
+/// the squeeze); (0.35, 0.06) 0.56 -> 0.61. Tolerances: seen + 0.1 % above, 0.25 % below, the
+/// place and the sign.
 #[test]
 fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
     // (file, nu, t/R, FE reach, seen %, at x, law too soft there)
     let skins = [
-        // nu 0.35 t/R 0.06 (blind): +0.56 % at x = 0.03 (session 27's law +0.46 % at 0.0275; the committed
+        // nu 0.35 t/R 0.06 (blind): -0.61 % at x = 0.01 (session 28's SFB0030 +0.56 % at 0.03; session 27's law +0.46 % at 0.0275; the committed
         // curve, to x = 0.03: +1.53 % at 0.03)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.35_t0.06.csv"),
             0.35,
             0.06,
             0.035,
-            0.56,
-            0.03,
-            false,
+            0.61,
+            0.01,
+            true,
         ),
-        // nu 0.3 t/R 0.05 (fit data): -1.69 % at x = 0.03 (session 27's law -3.42 % at 0.01; the committed
+        // nu 0.3 t/R 0.05 (fit data): -1.30 % at x = 0.03 (session 28's SFB0030 -1.69 % at 0.03; session 27's law -3.42 % at 0.01; the committed
         // curve, to x = 0.03: -3.32 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.05.csv"),
             0.3,
             0.05,
             0.035,
-            1.69,
+            1.30,
             0.03,
             true,
         ),
-        // nu 0.3 t/R 0.08 (blind): -0.70 % at x = 0.05 (session 27's law -2.35 % at 0.0125; the committed
+        // nu 0.3 t/R 0.08 (blind): -1.19 % at x = 0.0125 (session 28's SFB0030 -0.70 % at 0.05; session 27's law -2.35 % at 0.0125; the committed
         // curve, to x = 0.05: -2.07 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.08.csv"),
             0.3,
             0.08,
             0.055,
-            0.70,
-            0.05,
+            1.19,
+            0.0125,
             true,
         ),
-        // nu 0.3 t/R 0.1 (fit data): +0.86 % at x = 0.075 (session 27's law -3.15 % at 0.075; the committed
+        // nu 0.3 t/R 0.1 (fit data): -1.17 % at x = 0.015 (session 28's SFB0030 +0.86 % at 0.075; session 27's law -3.15 % at 0.075; the committed
         // curve, to x = 0.07: -1.70 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.1.csv"),
             0.3,
             0.1,
             0.075,
-            0.86,
-            0.075,
-            false,
+            1.17,
+            0.015,
+            true,
         ),
-        // nu 0.45 t/R 0.07 (blind): -1.94 % at x = 0.0325 (session 27's law +2.36 % at 0.015; the committed
+        // nu 0.45 t/R 0.07 (blind): -1.70 % at x = 0.0325 (session 28's SFB0030 -1.94 % at 0.0325; session 27's law +2.36 % at 0.015; the committed
         // curve, to x = 0.0275: +3.58 % at 0.0175)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.45_t0.07.csv"),
             0.45,
             0.07,
             0.0325,
-            1.94,
+            1.70,
             0.0325,
             true,
         ),
-        // nu 0.48 t/R 0.06 (blind): -2.16 % at x = 0.025 (session 27's law -5.89 % at 0.025; the committed
+        // nu 0.48 t/R 0.06 (blind): -1.56 % at x = 0.025 (session 28's SFB0030 -2.16 % at 0.025; session 27's law -5.89 % at 0.025; the committed
         // curve, to x = 0.02: -1.18 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.06.csv"),
             0.48,
             0.06,
             0.025,
-            2.16,
+            1.56,
             0.025,
             true,
         ),
-        // nu 0.48 t/R 0.08 (blind): -2.88 % at x = 0.0375 (session 27's law -5.75 % at 0.0375; the committed
+        // nu 0.48 t/R 0.08 (blind): -1.81 % at x = 0.0375 (session 28's SFB0030 -2.88 % at 0.0375; session 27's law -5.75 % at 0.0375; the committed
         // curve, to x = 0.0325: -2.35 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.08.csv"),
             0.48,
             0.08,
             0.0375,
-            2.88,
+            1.81,
             0.0375,
             true,
         ),
-        // nu 0.48 t/R 0.1 (fit data): -2.06 % at x = 0.045 (session 27's law -4.04 % at 0.045; the committed
+        // nu 0.48 t/R 0.1 (fit data): -1.45 % at x = 0.045 (session 28's SFB0030 -2.06 % at 0.045; session 27's law -4.04 % at 0.045; the committed
         // curve, to x = 0.04: -2.84 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.1.csv"),
             0.48,
             0.1,
             0.045,
-            2.06,
+            1.45,
             0.045,
             true,
         ),
-        // nu 0.49 t/R 0.12 (held out): -1.17 % at x = 0.0125 (session 27's law -3.70 % at 0.015; the committed
+        // nu 0.49 t/R 0.12 (held out): -1.83 % at x = 0.0125 (session 28's SFB0030 -1.17 % at 0.0125; session 27's law -3.70 % at 0.015; the committed
         // curve, to x = 0.05: -3.08 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.49_t0.12.csv"),
             0.49,
             0.12,
             0.055,
-            1.17,
+            1.83,
             0.0125,
             true,
         ),
-        // nu 0.4 t/R 0.05 (fit data): +2.03 % at x = 0.03 (session 27's law +3.02 % at 0.01; the committed
+        // nu 0.4 t/R 0.05 (fit data): +1.48 % at x = 0.03 (session 28's SFB0030 +2.03 % at 0.03; session 27's law +3.02 % at 0.01; the committed
         // curve, to x = 0.025: +3.18 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.05.csv"),
             0.4,
             0.05,
             0.03,
-            2.03,
+            1.48,
             0.03,
             false,
         ),
-        // nu 0.4 t/R 0.06 (blind): +1.21 % at x = 0.035 (session 27's law +3.48 % at 0.01; the committed
+        // nu 0.4 t/R 0.06 (blind): +0.98 % at x = 0.0325 (session 28's SFB0030 +1.21 % at 0.035; session 27's law +3.48 % at 0.01; the committed
         // curve, to x = 0.03: +3.80 % at 0.01)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.06.csv"),
             0.4,
             0.06,
             0.035,
-            1.21,
-            0.035,
+            0.98,
+            0.0325,
             false,
         ),
-        // nu 0.4 t/R 0.1 (fit data): -0.51 % at x = 0.065 (session 27's law +2.84 % at 0.025; the committed
+        // nu 0.4 t/R 0.1 (fit data): -0.64 % at x = 0.0125 (session 28's SFB0030 -0.51 % at 0.065; session 27's law +2.84 % at 0.025; the committed
         // curve, to x = 0.06: +2.83 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.1.csv"),
             0.4,
             0.1,
             0.065,
-            0.51,
-            0.065,
+            0.64,
+            0.0125,
             true,
         ),
         // Session 26: the last five re-runs.
-        // nu 0.4 t/R 0.08 (blind): +0.30 % at x = 0.0175 (session 27's law +3.17 % at 0.0175; the committed
+        // nu 0.4 t/R 0.08 (blind): -0.56 % at x = 0.0125 (session 28's SFB0030 +0.30 % at 0.0175; session 27's law +3.17 % at 0.0175; the committed
         // curve, to x = 0.04: +3.10 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.08.csv"),
             0.4,
             0.08,
             0.045,
-            0.30,
-            0.0175,
-            false,
+            0.56,
+            0.0125,
+            true,
         ),
-        // nu 0.46 t/R 0.1 (held out): -2.63 % at x = 0.045 (session 27's law -1.91 % at 0.045; the committed
+        // nu 0.46 t/R 0.1 (held out): -2.39 % at x = 0.045 (session 28's SFB0030 -2.63 % at 0.045; session 27's law -1.91 % at 0.045; the committed
         // curve, to x = 0.04: +1.62 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.46_t0.1.csv"),
             0.46,
             0.1,
             0.045,
-            2.63,
+            2.39,
             0.045,
             true,
         ),
-        // nu 0.38 t/R 0.12 (held out): +0.57 % at x = 0.0275 (session 27's law +2.33 % at 0.0275; the committed
+        // nu 0.38 t/R 0.12 (held out): -0.47 % at x = 0.0175 (session 28's SFB0030 +0.57 % at 0.0275; session 27's law +2.33 % at 0.0275; the committed
         // curve, to x = 0.08: +2.33 % at 0.03)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.38_t0.12.csv"),
             0.38,
             0.12,
             0.085,
-            0.57,
-            0.0275,
-            false,
+            0.47,
+            0.0175,
+            true,
         ),
-        // nu 0.32 t/R 0.14 (held out): +0.83 % at x = 0.105 (session 27's law -2.69 % at 0.105; the committed
+        // nu 0.32 t/R 0.14 (held out): +0.92 % at x = 0.105 (session 28's SFB0030 +0.83 % at 0.105; session 27's law -2.69 % at 0.105; the committed
         // curve, to x = 0.1: -1.53 % at 0.1)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.32_t0.14.csv"),
             0.32,
             0.14,
             0.105,
-            0.83,
+            0.92,
             0.105,
             false,
         ),
         // nu 0.48 t/R 0.05 (fit data; its only earlier run, R/120 with penalty
-        // 1e5, stopped at x = 0.015 and was never committed): -1.98 % at x = 0.02 (session 27's law -6.21 % at 0.02)
+        // 1e5, stopped at x = 0.015 and was never committed): -1.55 % at x = 0.02 (session 28's SFB0030 -1.98 % at 0.02; session 27's law -6.21 % at 0.02)
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.05.csv"),
             0.48,
             0.05,
             0.02,
-            1.98,
+            1.55,
             0.02,
             true,
         ),

@@ -45,12 +45,19 @@ fn core_thickness_1e_22_made_the_force_negative_and_is_refused() {
 /// At the boundary and just above it, over nu in [0.3, 0.5] every 0.005: over the validity
 /// range (2000 points) the force is finite, > 0 and increasing, the stiffness finite and > 0,
 /// the energy increasing, the contact radius finite and > 0; and the force lies between
-/// Hertz's and 120x Hertz's (20x at t/R = 0.05, nu 0.45, x_max) (a thin bonded skin is stiffer than Hertz, never softer).
+/// Hertz's and 170x Hertz's (20x at t/R = 0.05, nu 0.45, x_max) (a thin bonded skin is stiffer than Hertz, never softer).
 /// The largest is at nu 0.5, t/R 0.05, x_max (delta/t 0.8): 106.9x since session 24's
 /// deviatoric stiffening of the squeezed skin (below 100x before; the bound was 100x then),
 /// 112.1x since session 28's thin-skin form (the exact shell on its core; bound unchanged).
 /// Matthewson's incompressible thin layer alone, on the unsqueezed skin, is `(3 pi/8)(a_H/t)^3`
 /// = 75x there, and the squeeze to 0.2 t stiffens it further, so 107-112x is not unphysical.
+/// Session 29's squeezed film (the thin-skin form SFF) takes it to 158.8x (nu 0.49 there: 70.7x
+/// -> 73.7x), so the bound is raised from 120x to 170x, a loosening with this reason: at nu 0.5
+/// the film's flow share is 1, and the incompressible film squeezed to h = 0.2 t between the
+/// plane and the core's sphere is `Phi_c = 3.1` times stiffer than unsqueezed (its `h^-3`
+/// lubrication), i.e. about 230x for Matthewson's 75x; the form takes 0.35 of that excess (its
+/// fitted `cf`). No FE exists at nu 0.5 on a thin skin; the nearest, nu 0.49 t/R 0.12 to delta/t
+/// 0.79 (held out), is met within 1.86 % (`backed` tests).
 #[test]
 fn thinnest_accepted_core_is_finite_positive_and_monotone_over_nu() {
     let mut checked = 0;
@@ -78,7 +85,7 @@ fn thinnest_accepted_core_is_finite_positive_and_monotone_over_nu() {
                 if s.force / hertz > top.0 {
                     top = (s.force / hertz, at.clone());
                 }
-                assert!(s.force >= hertz && s.force <= 120.0 * hertz, "{at}");
+                assert!(s.force >= hertz && s.force <= 170.0 * hertz, "{at}");
                 (f0, e0) = (s.force, s.energy);
                 checked += 1;
             }

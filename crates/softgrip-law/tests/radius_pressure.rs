@@ -463,7 +463,13 @@ macro_rules! profiles {
 /// set to its new seen value rounded up; of three in session 28, the thin-skin form below t/R
 /// 0.3: core nu 0.4 t/R 0.2 x 0.1 peak 1.5 -> 2.0 % (seen -2.00), 0.46/0.25 x 0.1 profile 6.1 ->
 /// 6.2 % (seen 6.15), 0.32/0.14 x 0.1 profile 8.4 -> 9.5 % (seen 9.50; with the FE's force 9.07,
-/// the shape's own miss); the other thin profiles moved within their columns). Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
+/// the shape's own miss); the other thin profiles moved within their columns; in session 29, the
+/// squeezed film in the thin-skin form, every core profile of t/R < 0.3 re-set to its seen
+/// value rounded up: raised, by the new law's force there (the shape is unchanged), 0.4/0.2 x
+/// 0.1 peak 2.0 -> 2.3 % (seen -2.22), 0.46/0.25 x 0.1 peak 5.5 -> 5.7 % and profile 6.2 ->
+/// 6.4 % (seen -5.68, 6.34), 0.32/0.14 x 0.1 profile 9.5 -> 9.6 % (seen 9.58); tightened, 0.4/0.2
+/// profile 3.8 -> 3.0 %, 0.3/0.2 3.4 / 6.0 -> 2.5 / 5.3 %, 0.48/0.2 3.4 / 5.1 -> 1.9 / 3.6 %,
+/// 0.33/0.25 profile 2.9 -> 2.6 %, 0.36/0.2 1.9 / 5.0 -> 0.2 / 3.5 %). Not here: core nu 0.44 t/R 0.8 x 0.3, whose FE profile
 /// integrates to 1.076 F (every other one to 0.93-1.03 F): a contact-edge node entering contact
 /// carries a penalty spike (3.53 MPa at r = 0.661 mm, twice the centre's), which would be taken
 /// as FE's peak (`fit_radius_pressure.py` `usable` leaves it out of the fits for the same reason).
@@ -496,9 +502,9 @@ fn all_profiles() -> Vec<Profile> {
         "flat", 0.45, 0.0, 0.3, true, [0.029, 0.031], [0.032, 0.033];
         "core", 0.35, 0.7, 0.1, true, [0.019, 0.023], [0.019, 0.023];
         "core", 0.35, 0.7, 0.3, true, [0.020, 0.021], [0.017, 0.021];
-        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.020, 0.038];
+        "core", 0.4, 0.2, 0.1, false, [0.024, 0.031], [0.023, 0.030];
         "core", 0.4, 0.4, 0.1, false, [0.030, 0.034], [0.053, 0.056];
-        "core", 0.3, 0.2, 0.1, false, [0.018, 0.048], [0.034, 0.060];
+        "core", 0.3, 0.2, 0.1, false, [0.018, 0.048], [0.025, 0.053];
         "core", 0.3, 0.4, 0.1, false, [0.012, 0.015], [0.030, 0.034];
         "core", 0.3, 0.6, 0.1, false, [0.013, 0.017], [0.025, 0.028];
         "core", 0.3, 0.6, 0.3, false, [0.008, 0.048], [0.011, 0.047];
@@ -506,7 +512,7 @@ fn all_profiles() -> Vec<Profile> {
         "core", 0.3, 0.8, 0.3, false, [0.019, 0.041], [0.026, 0.048];
         "core", 0.45, 0.5, 0.1, true, [0.017, 0.021], [0.035, 0.039];
         "core", 0.45, 0.5, 0.3, true, [0.042, 0.046], [0.059, 0.063];
-        "core", 0.48, 0.2, 0.1, false, [0.029, 0.046], [0.034, 0.051];
+        "core", 0.48, 0.2, 0.1, false, [0.029, 0.046], [0.019, 0.036];
         "core", 0.48, 0.4, 0.1, false, [0.022, 0.026], [0.043, 0.047];
         "core", 0.48, 0.6, 0.1, false, [0.014, 0.018], [0.009, 0.020];
         "core", 0.48, 0.6, 0.3, false, [0.046, 0.048], [0.049, 0.052];
@@ -519,11 +525,11 @@ fn all_profiles() -> Vec<Profile> {
         "core", 0.499, 0.8, 0.3, false, [0.016, 0.039], [0.025, 0.048];
         "core", 0.49, 0.3, 0.1, true, [0.047, 0.053], [0.053, 0.059];
         "core", 0.4, 0.3, 0.1, true, [0.054, 0.058], [0.057, 0.062];
-        "core", 0.46, 0.25, 0.1, true, [0.056, 0.063], [0.055, 0.062];
-        "core", 0.33, 0.25, 0.1, true, [0.028, 0.034], [0.021, 0.029];
+        "core", 0.46, 0.25, 0.1, true, [0.056, 0.063], [0.057, 0.064];
+        "core", 0.33, 0.25, 0.1, true, [0.028, 0.034], [0.021, 0.026];
         "core", 0.42, 0.55, 0.1, true, [0.020, 0.023], [0.034, 0.037];
         "core", 0.42, 0.55, 0.3, true, [0.042, 0.045], [0.056, 0.059];
-        "core", 0.36, 0.2, 0.1, true, [0.010, 0.034], [0.019, 0.050];
+        "core", 0.36, 0.2, 0.1, true, [0.010, 0.034], [0.002, 0.035];
         "core", 0.44, 0.8, 0.1, true, [0.017, 0.021], [0.010, 0.018];
         "core", 0.495, 0.35, 0.1, true, [0.031, 0.036], [0.046, 0.051];
         // Past 0.6 t/R, inside the validity since session 10 (x <= 0.8 t/R), the shape not fitted
@@ -536,7 +542,7 @@ fn all_profiles() -> Vec<Profile> {
         // 0.71, R/60; its profile integrates to 0.993 F). Seen: FE force -2.71 / 9.07 %, law
         // force -6.33 / 6.76 % (the law's force is 3.7 % low there): over the 5 % target, as the
         // three above (CORE_PRESSURE.md, session 13).
-        "core", 0.32, 0.14, 0.1, true, [0.030, 0.094], [0.066, 0.095];
+        "core", 0.32, 0.14, 0.1, true, [0.030, 0.094], [0.066, 0.096];
     )
     .into_iter()
     .collect()

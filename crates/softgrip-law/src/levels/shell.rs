@@ -139,8 +139,9 @@ impl Shell {
     }
 }
 
-/// The reference values: `try_shell_table_s28.py`'s `chi_shell`, the law and the form
-/// SFB0030 (`tools/calibration/gen_shell_table_rs.py` writes them).
+/// The reference values: `try_shell_table_s28.py`'s `chi_shell`, the law and the thin-skin form
+/// (since session 29 SFF, `try_deep_squeeze_s29.py`; `tools/calibration/gen_shell_table_rs.py`
+/// writes them).
 #[cfg(test)]
 pub(crate) fn reference() -> Vec<[f64; 6]> {
     include_str!("../../tests/data/shell_s28_reference.csv")

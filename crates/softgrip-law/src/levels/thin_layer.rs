@@ -58,6 +58,19 @@ fn bessel_ratio(z: f64) -> f64 {
     t
 }
 
+/// Matthewson's flat punch's stiffness over its incompressible limit, `psi(z) = 8 (1 - 2
+/// I1(z)/(z I0(z)))/z^2` (1 at z = 0, `8/z^2` for z >> 1), `z = a/l`: the share of a bonded
+/// thin layer's stiffness that is its flow, the rest its oedometer. Even in z; for `|z| <
+/// 1e-2` its leading terms `1 - z^2/6` (the next, `11 z^4/384`, below 3e-10 there), as
+/// `tools/calibration/try_thin_skin_s25.py`'s `psi` (the squeezed film's weight, session 29).
+pub(crate) fn flow_share(z: f64) -> f64 {
+    let z = z.abs().max(1e-6);
+    if z < 1e-2 {
+        return 1.0 - z * z / 6.0;
+    }
+    8.0 * (1.0 - 2.0 * bessel_ratio(z) / z) / (z * z)
+}
+
 /// `(K(z), G(z), G'(z))`.
 fn kernel(z: f64) -> (f64, f64, f64) {
     if z < SERIES_END {
