@@ -65,11 +65,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         c.coupled_unsettled
     );
     println!(
-        "group solves {}, passes {} ({:.2} per solve), unsettled {}",
+        "group solves {}, passes {} ({:.2} per solve), unsettled {}, answered as sticking {}",
         c.group_solves,
         c.group_passes,
         c.group_passes as f64 / c.group_solves.max(1) as f64,
-        c.group_unsettled
+        c.group_unsettled,
+        c.group_stuck
     );
     println!(
         "substeps {} ({:.2} per step, {} at the cap), largest group {} rows",
