@@ -36,11 +36,17 @@ struct Row {
 /// the multibody's factorised mass (rapier's `inv_augmented_mass`: call after a step or
 /// `Multibody::dof_inverse_inertia`): 1 for no coupled rows (one motor, or motors on dofs that
 /// do not share inertia). `None` if `handle` is not a multibody link, the mass is not
-/// factorised, or the sweeps never converge.
+/// factorised or its factorisation is not positive definite (not a mobility), or the sweeps
+/// never converge.
 pub(crate) fn sweeps_needed(ctx: &LinkCtx<'_>, handle: RigidBodyHandle) -> Option<usize> {
     let id = ctx.multibodies.rigid_body_link(handle)?;
     let mb = ctx.multibodies.get_multibody(id.multibody)?;
     let (free, w_r) = rapier_mobility(mb)?;
+    // rapier's `f32` factorisation of a badly conditioned mass matrix is not a mobility: the
+    // Franka Panda of pybullet_data (light wrist and finger links on a 7-joint arm) read
+    // diagonal entries of -1.6e10 at its start pose (`Multibody::dof_inverse_inertia`, which
+    // leaves out the step's joint damping), and its sweeps a rate of 7.
+    w_r.clone().cholesky()?;
     let pos: HashMap<usize, usize> = free.iter().enumerate().map(|(k, &d)| (d, k)).collect();
     let rows = internal_rows(mb, ctx, &w_r, &pos);
     let sweep_rows: Vec<SweepRow<'_>> = rows

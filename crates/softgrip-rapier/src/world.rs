@@ -72,7 +72,9 @@ impl SoftWorld {
     /// the multibody's mass at its present pose (`Multibody::dof_inverse_inertia`, which
     /// runs its forward kinematics from its joint coordinates and factorises its mass matrix:
     /// call it when setting a scene up, not between rapier's steps). `None` if `body` is not a
-    /// multibody link or the sweeps never converge.
+    /// multibody link, rapier's `f32` factorisation of its mass there is not positive definite
+    /// (the Franka Panda of pybullet_data: diagonal entries of -1.6e10), or the sweeps never
+    /// converge.
     pub fn multibody_sweeps_needed(&mut self, body: RigidBodyHandle, h: f64) -> Option<usize> {
         if !(h > 0.0 && h.is_finite()) {
             return None;
