@@ -69,9 +69,10 @@ impl SoftWorld {
     /// substeps; `tests/jointed_mimic.rs`), 348 for the shipped three-finger hand. Give the
     /// multibody's links `need - num_internal_pgs_iterations` with
     /// `RigidBody::set_additional_pgs_iterations` where it is more than rapier's own. Reads
-    /// the multibody's mass at its present pose (`Multibody::dof_inverse_inertia`, which
-    /// runs its forward kinematics from its joint coordinates and factorises its mass matrix:
-    /// call it when setting a scene up, not between rapier's steps). `None` if `body` is not a
+    /// rapier's factorisation of the multibody's mass from its last step, or before its first
+    /// step makes one at the present pose (`Multibody::dof_inverse_inertia`, which runs its
+    /// forward kinematics from its joint coordinates and leaves out the step's joint damping
+    /// and springs). `None` if `body` is not a
     /// multibody link, rapier's `f32` factorisation of its mass there is not positive definite
     /// (the Franka Panda of pybullet_data: diagonal entries of -1.6e10), or the sweeps never
     /// converge.
@@ -81,9 +82,11 @@ impl SoftWorld {
         }
         let w = &mut self.physics;
         let id = *w.multibody_joints.rigid_body_link(body)?;
-        w.multibody_joints
-            .get_multibody_mut(id.multibody)?
-            .dof_inverse_inertia(&w.bodies);
+        let mb = w.multibody_joints.get_multibody_mut(id.multibody)?;
+        // Before rapier's first step its mass is not factorised: factorise it here.
+        if crate::multibody::rapier_mobility(mb).is_none() {
+            mb.dof_inverse_inertia(&w.bodies);
+        }
         let ctx = crate::multibody::LinkCtx {
             multibodies: &w.multibody_joints,
             impulse_joints: &w.impulse_joints,
