@@ -2,6 +2,7 @@
 // `!(x > 0.0)` is used on purpose: it is true for NaN, which must be rejected too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+mod apply;
 mod bodies;
 mod boundary;
 mod contacts;

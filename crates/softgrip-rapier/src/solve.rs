@@ -34,8 +34,9 @@
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2, Vector3};
 
+use crate::apply::{apply_linear, apply_torque, rel_spin, restore};
 use crate::mobility::{self, BodyState};
-use crate::problem::{RigidRow, Row, body, normal_velocity, pair_mobility, rel_vel, spring};
+use crate::problem::{RigidRow, Row, normal_velocity, pair_mobility, rel_vel, spring};
 use crate::rigid::{self, CoupledScratch};
 use crate::saturation;
 
@@ -57,38 +58,6 @@ const FRICTION_SWEEPS: usize = 4;
 /// three-finger hand's ball, whose passes contract by 0.988 each, stops at its 16th instead of
 /// running out its 256.
 const STICK_AFTER: usize = 16;
-
-pub(crate) fn rel_spin(bodies: &[BodyState], r: &Row) -> f64 {
-    let wa = body(bodies, r.a).map(|b| b.w).unwrap_or_default();
-    let wb = body(bodies, r.b).map(|b| b.w).unwrap_or_default();
-    (wa - wb).dot(&r.n)
-}
-
-pub(crate) fn apply_linear(bodies: &mut [BodyState], r: &Row, imp: &Vector3<f64>) {
-    for (i, imp) in [(r.a, *imp), (r.b, -imp)] {
-        let Some(i) = i else { continue };
-        if bodies[i].link.is_some() {
-            let arm = (r.p - bodies[i].com).cross(&imp);
-            mobility::apply(bodies, i, &imp, &arm);
-        } else {
-            bodies[i].apply(&r.p, &imp);
-        }
-    }
-}
-
-pub(crate) fn apply_torque(bodies: &mut [BodyState], r: &Row, t: f64) {
-    let tv = r.n * t;
-    for (i, sign) in [(r.a, 1.0), (r.b, -1.0)] {
-        let Some(i) = i else { continue };
-        if bodies[i].link.is_some() {
-            mobility::apply(bodies, i, &Vector3::zeros(), &(tv * sign));
-        } else if sign > 0.0 {
-            bodies[i].w += bodies[i].inv_i * tv;
-        } else {
-            bodies[i].w -= bodies[i].inv_i * tv;
-        }
-    }
-}
 
 /// [`solve_normal`]'s system and buffers, kept from pass to pass of a group's solve and from
 /// solve to solve (no allocation but the LU's once warm).
@@ -744,30 +713,6 @@ fn finish_rows(bodies: &[BodyState], rows: &mut [Row], group: &[usize]) {
 /// within the step, `step::onset` linearises the row and the next solve includes it.
 fn carries_impulse(r: &Row, h: f64) -> bool {
     r.force != 0.0 || r.theta * r.stiffness * h + r.damping != 0.0
-}
-
-/// Restores body `i` to `base` (a multibody link: every link of its multibody in the table).
-pub(crate) fn restore_body(bodies: &mut [BodyState], base: &[BodyState], i: usize) {
-    let Some(host) = bodies[i].link.as_deref().map(|l| l.host) else {
-        bodies[i].clone_from(&base[i]);
-        return;
-    };
-    let links = match base[host].link.as_deref().and_then(|l| l.multi.as_ref()) {
-        Some(g) => g.links.clone(),
-        None => vec![i],
-    };
-    for k in links {
-        bodies[k].clone_from(&base[k]);
-    }
-}
-
-/// Restores the bodies of `rows` to `base`.
-pub(crate) fn restore(bodies: &mut [BodyState], base: &[BodyState], rows: &[Row]) {
-    for r in rows {
-        for i in [r.a, r.b].into_iter().flatten() {
-            restore_body(bodies, base, i);
-        }
-    }
 }
 
 /// [`solve_group`] with the joint motors of the rows' multibodies held to their effort

@@ -18,9 +18,9 @@
 
 use nalgebra::{DMatrix, DVector, Vector3};
 
+use crate::apply::{apply_linear, apply_torque, rel_spin, restore};
 use crate::mobility::BodyState;
 use crate::problem::{Row, normal_velocity, rel_vel, spring};
-use crate::solve::{apply_linear, apply_torque, rel_spin, restore};
 
 /// Unknowns per row: the normal impulse, the two tangential ones, the torsional one.
 const PER_ROW: usize = 4;
