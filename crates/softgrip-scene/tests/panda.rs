@@ -280,3 +280,26 @@ fn panda_grasps_lifts_and_holds_the_box_with_soft_pads() {
         "the box rose {rise} m with the 5 cm lift"
     );
 }
+
+/// The multibody sweeps of a third-party arm with a mimic finger (SCENES.md, "Multibody robots
+/// with a mimic joint"): before rapier's first step the Panda's mass factorised at its start
+/// pose without the step's joint damping (`Multibody::dof_inverse_inertia`) is not positive
+/// definite in `f32` (diagonal entries of -1.6e10, a sweep rate of 7), so
+/// `SoftWorld::multibody_sweeps_needed` reads none and the loader gives its links none; after
+/// a step it reads rapier's own factorisation and asks 20 (measured at steps 5 to 125 of the
+/// grasp).
+#[test]
+fn panda_multibody_sweeps_are_read_after_rapiers_first_step() {
+    let scene = scene(true);
+    let mut run = PlainRun::new(&scene);
+    let links = run.handles.robots[0].1.links.clone();
+    let finger = links[links.len() - 2];
+    for &l in &links {
+        assert_eq!(run.world.physics.bodies[l].additional_pgs_iterations(), 0);
+    }
+    assert_eq!(run.world.multibody_sweeps_needed(finger, 1.0 / 60.0), None);
+    for _ in 0..5 {
+        run.step();
+    }
+    assert_eq!(run.world.multibody_sweeps_needed(finger, 1.0 / 60.0), Some(20));
+}
