@@ -301,5 +301,8 @@ fn panda_multibody_sweeps_are_read_after_rapiers_first_step() {
     for _ in 0..5 {
         run.step();
     }
-    assert_eq!(run.world.multibody_sweeps_needed(finger, 1.0 / 60.0), Some(20));
+    assert_eq!(
+        run.world.multibody_sweeps_needed(finger, 1.0 / 60.0),
+        Some(20)
+    );
 }
