@@ -8,7 +8,7 @@ use crate::build::SceneHandles;
 use crate::control::controller::{ControlEvent, Controller};
 use crate::control::external::{JointCommands, SharedInbox};
 use crate::control::io::ControlIo;
-use crate::robot::Robot;
+use crate::robot::{JointModel, Robot};
 
 /// A scene's controllers with what they need to run: the handles and the robots' models.
 #[derive(Debug, Clone)]
@@ -16,6 +16,9 @@ pub struct ControlSet {
     controllers: Vec<Box<dyn Controller>>,
     handles: SceneHandles,
     robots: Vec<Robot>,
+    /// Whether the multibody sweeps have been asked again after rapier's first step
+    /// ([`ControlSet::step`]).
+    sweeps_asked: bool,
 }
 
 impl ControlSet {
@@ -29,6 +32,7 @@ impl ControlSet {
             controllers,
             handles,
             robots,
+            sweeps_asked: false,
         }
     }
 
@@ -73,6 +77,10 @@ impl ControlSet {
         time: f64,
         dt: f64,
     ) -> Vec<(usize, ControlEvent)> {
+        if !self.sweeps_asked && time > 1.5 * dt {
+            self.sweeps_asked = true;
+            self.ask_sweeps_again(world);
+        }
         let mut io = ControlIo::new(world, &self.handles, &self.robots, time, dt);
         let mut events = Vec::new();
         for (i, c) in self.controllers.iter_mut().enumerate() {
@@ -81,5 +89,33 @@ impl ControlSet {
             }
         }
         events
+    }
+
+    /// Before the second step: the multibody robots whose links the loader could give no
+    /// sweeps (`Robot::set_jointed_sweeps` found none to read: rapier's `f32` factorisation
+    /// of the mass at the start pose, without the step's joint damping, was not positive
+    /// definite, as for the Franka Panda of pybullet_data) are asked again, now that rapier's
+    /// first step has factorised it with the damping. Robots that got sweeps keep theirs (the
+    /// figures of the shipped gripper are the loader's).
+    fn ask_sweeps_again(&self, world: &mut SoftWorld) {
+        for (robot, (_, h)) in self.robots.iter().zip(&self.handles.robots) {
+            let given = h.links.iter().any(|&l| {
+                world
+                    .physics
+                    .bodies
+                    .get(l)
+                    .is_some_and(|rb| rb.additional_pgs_iterations() > 0)
+            });
+            let mimic = robot.joints().iter().any(|j| j.mimic.is_some());
+            if given || !mimic || robot.joint_model() != JointModel::Multibody {
+                continue;
+            }
+            let pads: Vec<usize> = (self.handles.fingertips.iter())
+                .filter_map(|(_, tip)| world.physics.colliders.get(*tip)?.parent())
+                .filter_map(|body| h.links.iter().position(|&l| l == body))
+                .collect();
+            // A multibody robot's are never refused (only raised).
+            let _ = robot.set_jointed_sweeps(world, h, &pads);
+        }
     }
 }
