@@ -37,7 +37,7 @@ use std::collections::HashMap;
 use nalgebra::{DMatrix, DVector, Vector3, Vector6};
 use rapier3d::prelude::{
     AngVector, ImpulseJointSet, JointMotor, Multibody, MultibodyIndex, MultibodyJointSet,
-    PhysicsWorld, Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector,
+    MultibodyLink, PhysicsWorld, Pose, RigidBodyHandle, RigidBodySet, RigidBodyType, Vector,
 };
 
 use crate::boundary::{to_f32, to_f64};
@@ -410,23 +410,8 @@ fn motors(
 ) -> Vec<(usize, f64, f64, f64)> {
     let mut out = Vec::new();
     for link in mb.links() {
-        let joint = link.joint();
-        if joint.kinematic {
-            continue;
-        }
-        let data = &joint.data;
-        let (locked, motored) = (data.locked_axes.bits(), data.motor_axes.bits());
-        let coords = joint.coords();
-        let mut dof = link.assembly_id();
-        for (i, motor) in data.motors.iter().enumerate() {
-            if locked & (1 << i) != 0 {
-                continue;
-            }
-            let d = dof;
-            dof += 1;
-            if motored & (1 << i) == 0 {
-                continue;
-            }
+        let (data, coords) = (&link.joint().data, link.joint().coords());
+        for (i, d, motor) in motored_dofs(link) {
             let limits = (data.limit_axes.bits() & (1 << i) != 0)
                 .then(|| [data.limits[i].min as f64, data.limits[i].max as f64]);
             let Some(&k) = pos.get(&d) else { continue };
@@ -436,6 +421,21 @@ fn motors(
         }
     }
     out
+}
+
+/// The motored free dofs of a link's joint (none for a kinematic joint) as `(axis, dof,
+/// motor)`: the joint's axis index, the dof's index in the multibody's coordinates (its free
+/// axes in order from the link's `assembly_id`), and the axis's motor.
+pub(crate) fn motored_dofs(
+    link: &MultibodyLink,
+) -> impl Iterator<Item = (usize, usize, &JointMotor)> + '_ {
+    let joint = link.joint();
+    let data = &joint.data;
+    let (locked, motored) = (data.locked_axes.bits(), data.motor_axes.bits());
+    let free = (0..data.motors.len()).filter(move |i| !joint.kinematic && locked & (1 << i) == 0);
+    free.enumerate()
+        .filter(move |&(_, i)| motored & (1 << i) != 0)
+        .map(move |(n, i)| (i, link.assembly_id() + n, &data.motors[i]))
 }
 
 /// One motor at joint position `q` \[rad or m\] as `(b / a, c / a)` (see the module's docs),

@@ -21,7 +21,7 @@ use nalgebra::DVector;
 use rapier3d::prelude::{Multibody, RigidBodyHandle};
 
 use crate::joint_sweeps::{self, SweepRow};
-use crate::multibody::{LinkCtx, rapier_mobility};
+use crate::multibody::{LinkCtx, motored_dofs, rapier_mobility};
 
 /// One internal row of a multibody: coefficients on its free dofs (rapier's reduced order) and
 /// compliance (0: hard).
@@ -75,31 +75,18 @@ fn internal_rows(
     let dt_s = (ctx.h / ctx.passes.max(1) as f64) as f32;
     let mut rows = Vec::new();
     for link in mb.links() {
-        let joint = link.joint();
-        if !joint.kinematic {
-            let data = &joint.data;
-            let (locked, motored) = (data.locked_axes.bits(), data.motor_axes.bits());
-            let mut dof = link.assembly_id();
-            for (i, motor) in data.motors.iter().enumerate() {
-                if locked & (1 << i) != 0 {
-                    continue;
-                }
-                let d = dof;
-                dof += 1;
-                let Some(&k) = pos.get(&d).filter(|_| motored & (1 << i) != 0) else {
-                    continue;
-                };
-                let (_, cfm_coeff, cfm_gain) =
-                    motor
-                        .model
-                        .combine_coefficients(dt_s, motor.stiffness, motor.damping);
-                let compliance = w_r[(k, k)] * cfm_coeff as f64 + cfm_gain as f64;
-                // A row of infinite compliance (no stiffness, no damping) does nothing.
-                if compliance.is_finite() {
-                    let mut g = DVector::zeros(r);
-                    g[k] = 1.0;
-                    rows.push(Row { g, compliance });
-                }
+        for (_, d, motor) in motored_dofs(link) {
+            let Some(&k) = pos.get(&d) else { continue };
+            let (_, cfm_coeff, cfm_gain) =
+                motor
+                    .model
+                    .combine_coefficients(dt_s, motor.stiffness, motor.damping);
+            let compliance = w_r[(k, k)] * cfm_coeff as f64 + cfm_gain as f64;
+            // A row of infinite compliance (no stiffness, no damping) does nothing.
+            if compliance.is_finite() {
+                let mut g = DVector::zeros(r);
+                g[k] = 1.0;
+                rows.push(Row { g, compliance });
             }
         }
         for c in mb.couplings().iter().filter(|c| c.link1 == link.link_id()) {

@@ -47,15 +47,7 @@ impl SoftWorld {
             return None;
         }
         let w = &self.physics;
-        let ctx = crate::multibody::LinkCtx {
-            multibodies: &w.multibody_joints,
-            impulse_joints: &w.impulse_joints,
-            h,
-            h_drift: h,
-            passes: w.integration_parameters.num_solver_iterations.max(1),
-            sweeps: w.integration_parameters.num_internal_pgs_iterations,
-            gravity: crate::boundary::to_f64(w.gravity),
-        };
+        let ctx = sweeps_ctx(w, h);
         crate::jointed::sweeps_needed(&w.bodies, &ctx, body)
     }
 
@@ -87,15 +79,7 @@ impl SoftWorld {
         if crate::multibody::rapier_mobility(mb).is_none() {
             mb.dof_inverse_inertia(&w.bodies);
         }
-        let ctx = crate::multibody::LinkCtx {
-            multibodies: &w.multibody_joints,
-            impulse_joints: &w.impulse_joints,
-            h,
-            h_drift: h,
-            passes: w.integration_parameters.num_solver_iterations.max(1),
-            sweeps: w.integration_parameters.num_internal_pgs_iterations,
-            gravity: crate::boundary::to_f64(w.gravity),
-        };
+        let ctx = sweeps_ctx(w, h);
         crate::multibody_sweeps::sweeps_needed(&ctx, body)
     }
 
@@ -138,5 +122,19 @@ impl SoftWorld {
     /// [`SoftContacts::step`]).
     pub fn step_with(&mut self, hooks: &dyn PhysicsHooks, events: &dyn EventHandler) {
         self.soft.step(&mut self.physics, hooks, events);
+    }
+}
+
+/// What the sweep counts read of `w` at a (sub)step of `h` \[s\] (`h_drift` is `h`: they read
+/// no drift).
+fn sweeps_ctx(w: &PhysicsWorld, h: f64) -> crate::multibody::LinkCtx<'_> {
+    crate::multibody::LinkCtx {
+        multibodies: &w.multibody_joints,
+        impulse_joints: &w.impulse_joints,
+        h,
+        h_drift: h,
+        passes: w.integration_parameters.num_solver_iterations.max(1),
+        sweeps: w.integration_parameters.num_internal_pgs_iterations,
+        gravity: crate::boundary::to_f64(w.gravity),
     }
 }
