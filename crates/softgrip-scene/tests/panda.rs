@@ -8,6 +8,8 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
+mod common;
+
 use std::path::PathBuf;
 
 use softgrip_scene::control::Phase;
@@ -313,4 +315,41 @@ fn panda_multibody_sweeps_are_given_after_rapiers_first_step() {
         run.world.multibody_sweeps_needed(finger, 1.0 / 60.0),
         Some(20)
     );
+}
+
+/// Issue 25 item 8's "each finger joint's effort equal to J^T F within 1 %" on a third-party
+/// hand: at the end of the Panda's hold (5 N grasp, 5 cm lift) every moving joint's effort
+/// against `J^T F`, written out from the pads' contacts and the links' weights
+/// (`common::jt_f`, independently of `robot::joint_load`). `panda_finger_joint1` is driven by
+/// the grasp; `panda_finger_joint2` is its mimic (no motor): its effort is the load its
+/// coupling carries, which must also be its share of the driven finger's motor. Measured
+/// (session 30, release; the links' sweeps given from the second step): fingers 1.9e-7
+/// (`panda_finger_joint1`, 10.11 N: both pads) and 0 (5.06 N), the share 3.8e-7; the arm's
+/// position motors 2.0e-6 to 1.1e-3 (`panda_joint6`, 1.73 N m) wherever the load is above 0.1 N m (`panda_joint1` and `panda_joint7` carry about 1e-6 N m).
+/// `cargo test -p softgrip-scene --test panda -- efforts --nocapture` prints the table.
+#[test]
+fn panda_joint_efforts_equal_jt_f() {
+    let (loads, shares) = common::hold_efforts(&scene(true));
+    assert_eq!(loads.len(), 9, "seven arm joints and two fingers");
+    for &(ref joint, effort, load, rel) in &loads {
+        println!("`{joint}` effort {effort:.6} vs J^T F {load:.6} ({rel:.2e})");
+        let finger = joint.starts_with("panda_finger");
+        if finger {
+            // finger_joint1 carries both pads (its mimic's load through the coupling)
+            assert!(load.abs() > 4.5, "`{joint}` J^T F {load}");
+            assert!(rel < 1e-5, "`{joint}` effort {effort} vs J^T F {load}");
+        } else if load.abs() > 0.1 {
+            assert!(rel < 5e-3, "`{joint}` effort {effort} vs J^T F {load}");
+        } else {
+            assert!(
+                effort.abs() < 1e-3,
+                "`{joint}` effort {effort} with J^T F {load}"
+            );
+        }
+    }
+    assert_eq!(shares.len(), 1, "one mimic joint");
+    for &(ref joint, effort, share, rel) in &shares {
+        println!("`{joint}` effort {effort:.6} vs its share {share:.6} ({rel:.2e})");
+        assert!(rel < 1e-5, "`{joint}` effort {effort} vs its share {share}");
+    }
 }
