@@ -44,10 +44,14 @@ Modes:
                      worst |a/a* - 1| over 0.1 <= x <= min(0.4, x_max) (a* smoothed + lag)
   --forms F ...      the forms to print (default: law pure F0.3 F0.25 F0.2 BF0.2 CF0.2)
   --thick            the thick t/R 0.14-0.25 campaign skins per x, law / pure [%]
+  --campaign         the same mean on the campaign's thin files (tests/data/fe/core/, t/R < 0.2:
+                     the penalty-1e5 twins of the k1e6 skins, R/40-R/120, and nu 0.47 t/R 0.15,
+                     a skin not re-run)
   --shell            the exact shell on its core (shell_on_core_s27.chi_at, radial reading),
                      its a/a_H against the flat layer's at each thin skin's middle x (slow, ~1 min)
 
-usage: PY tools/calibration/try_thin_skin_radius_s30.py [--forms ...] [--thick] [--shell]
+usage: PY tools/calibration/try_thin_skin_radius_s30.py [--forms ...] [--thick] [--campaign]
+       [--shell]
        (PY: /work/main/target/fe-venv/bin/python)
 """
 import argparse
@@ -171,6 +175,24 @@ def table(forms):
     print("(* held out: not among the force's fitted thin skins; no form has a fitted constant)")
 
 
+def campaign(forms):
+    for path in sorted(glob.glob(os.path.join(f.DATA, "force_nu*_t*.csv"))):
+        nu, t = map(float, re.findall(r"nu([\d.]+)_t([\d.]+)\.csv", path)[0])
+        if t >= 0.2:
+            continue
+        with open(path) as fh:
+            m = re.search(r"R/(\d+)", fh.readline())
+        n = int(m.group(1)) if m else 40
+        d = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+        x, a = d["delta_over_R"], d["contact_radius_mm"] + LAG / n
+        sel = (x >= 0.02 - 1e-9) & (x <= min(f.flat_x_max(nu), f.SQUEEZE * t) + 1e-9)
+        if not sel.any():
+            continue
+        print(f"campaign nu {nu:g} t/R {t:g} (R/{n}, {sel.sum()} points): " + " ".join(
+            f"{mode} {100 * np.mean(radius(x[sel], nu, t, mode) / a[sel] - 1):+.2f}"
+            for mode in forms))
+
+
 def thick_detail():
     for path, nu, t, x, a in thick_skins():
         law = 100 * (radius(x, nu, t, "law") / a - 1)
@@ -198,12 +220,15 @@ def main():
     ap.add_argument("--table", action="store_true")
     ap.add_argument("--thick", action="store_true")
     ap.add_argument("--shell", action="store_true")
+    ap.add_argument("--campaign", action="store_true")
     a = ap.parse_args()
     if a.thick:
         thick_detail()
     if a.shell:
         shell()
-    if a.table or not (a.thick or a.shell):
+    if a.campaign:
+        campaign(a.forms)
+    if a.table or not (a.thick or a.shell or a.campaign):
         table(a.forms)
     return 0
 
