@@ -272,7 +272,7 @@
 //! element) -0.69 .. +2.33 %, was -5.02 .. +3.11 % (`tools/calibration/try_thin_skin_radius_s30.py`,
 //! `cargo test -p softgrip-law --test radius_pressure -- --nocapture thin_skin_radius`). The
 //! curved core's exact shell is 0.3-0.9 % wider than the flat layer there (`--shell`), not taken.
-//! The layer alone at t/R 0.2-0.25, x >= 0.1 is 2.5-6.4 % too wide (the fitted form 1.0-2.2 %);
+//! The layer alone at t/R 0.2-0.25, x >= 0.1 is up to 1.5-6.4 % too wide (the form 0.6-2.2 %);
 //! faded by the force's t/R 0.3 two t/R 0.2 skins leave their pinned radius errors.
 //!
 //! The FE radius the forms are fitted to is not the FE's radius column itself: that column
