@@ -541,8 +541,12 @@ fn all_profiles() -> Vec<Profile> {
         // Session 13, held out: the first thin skin past 0.6 t/R (nu 0.32 t/R 0.14 x 0.1, delta/t
         // 0.71, R/60; its profile integrates to 0.993 F). Seen: FE force -2.71 / 9.07 %, law
         // force -6.33 / 6.76 % (the law's force is 3.7 % low there): over the 5 % target, as the
-        // three above (CORE_PRESSURE.md, session 13).
-        "core", 0.32, 0.14, 0.1, true, [0.030, 0.094], [0.066, 0.096];
+        // three above (CORE_PRESSURE.md, session 13). Session 30's thin-skin radius widens this
+        // patch by 1.0 % (against the FE's radius there, smoothed plus the lag, -2.90 -> -1.89 %:
+        // `try_thin_skin_radius_s30.py`, "thick"): FE force -4.69 / 8.26 %, law force -3.97 / 8.74 %; the FE-force
+        // peak's bound moves from 0.030 to 0.050 (the shape, at its most peaked here, v = 0.975,
+        // had carried the narrow radius; CORE_FORM.md, session 30).
+        "core", 0.32, 0.14, 0.1, true, [0.050, 0.094], [0.066, 0.096];
     )
     .into_iter()
     .collect()
@@ -853,12 +857,15 @@ fn k1e6(csv: &str) -> (Vec<(f64, f64)>, f64) {
 /// 2-8 % of the radius (0.97 R/N a face), too coarse for `Smooth` (x >= 0.05). What is
 /// readable is the mean over the points: the law's `a / (a_lin + 0.485 R/N) - 1` (the lag of
 /// `LAG_TIMES_N`) averaged over 0.02 <= x <= min(reach, x_max), and each point about that mean
-/// within the column's steps. Seen (`tools/calibration/try_thin_skin_s27.py --radius`, the
-/// same numbers): the law too narrow at nu 0.3 t/R 0.05 (-5.02 %: its a/a_H 1.30 where the
-/// FE's is 1.37) and wide by 1.8-3.1 % at nu >= 0.45; every point within its skin's mean
-/// +- 1.22 element faces. The 3 % is met by 15 of 17 (missed: nu 0.3 t/R 0.05, -5.02 %;
-/// nu 0.46 t/R 0.1, +3.11 %). Tolerances: each mean within 0.3 points of what was seen, every
-/// point within 1.3 faces of its mean.
+/// within the column's steps. Since session 30 a thin skin's radius is the exact small-strain
+/// bonded layer's, faded into the radius form by t/R 0.2 (`backed.rs`, Radius; no fitted
+/// constant): every skin within -0.69 .. +2.33 % (the six of the force's fitted set within
+/// 1.87 %, the other eleven within 2.33 %), every point within 1.02 element faces of its mean
+/// (`tools/calibration/try_thin_skin_radius_s30.py`, form F0.2, the same numbers). Before it
+/// (the radius form alone, `try_thin_skin_s27.py --radius`): -5.02 % at nu 0.3 t/R 0.05 (its
+/// a/a_H 1.30 where the FE's is 1.37), +1.8 .. +3.1 % at nu >= 0.45, 15 of 17 within the issue's
+/// 3 %, every point within 1.22 faces. Tolerances: each mean within 0.3 points of what was
+/// seen, every point within 1.3 faces of its mean.
 #[test]
 fn thin_skin_radius_is_what_the_readme_states() {
     // (file, nu, t/R, seen mean [%])
@@ -867,103 +874,103 @@ fn thin_skin_radius_is_what_the_readme_states() {
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.05.csv"),
             0.3,
             0.05,
-            -5.02,
+            -0.69,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.08.csv"),
             0.3,
             0.08,
-            -1.64,
+            0.34,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.3_t0.1.csv"),
             0.3,
             0.1,
-            -0.87,
+            0.44,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.32_t0.14.csv"),
             0.32,
             0.14,
-            1.42,
+            1.75,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.35_t0.06.csv"),
             0.35,
             0.06,
-            -1.72,
+            0.21,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.38_t0.12.csv"),
             0.38,
             0.12,
-            1.94,
+            1.82,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.05.csv"),
             0.4,
             0.05,
-            -0.71,
+            1.07,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.06.csv"),
             0.4,
             0.06,
-            0.04,
+            0.69,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.08.csv"),
             0.4,
             0.08,
-            1.69,
+            1.17,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.4_t0.1.csv"),
             0.4,
             0.1,
-            2.35,
+            1.87,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.45_t0.07.csv"),
             0.45,
             0.07,
-            2.23,
+            0.38,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.46_t0.1.csv"),
             0.46,
             0.1,
-            3.11,
+            1.55,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.05.csv"),
             0.48,
             0.05,
-            2.36,
+            -0.06,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.06.csv"),
             0.48,
             0.06,
-            2.35,
+            -0.17,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.08.csv"),
             0.48,
             0.08,
-            2.32,
+            0.33,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.48_t0.1.csv"),
             0.48,
             0.1,
-            1.79,
+            0.44,
         ),
         (
             include_str!("../../../tests/data/fe/core/k1e6/force_nu0.49_t0.12.csv"),
             0.49,
             0.12,
-            2.84,
+            2.33,
         ),
     ];
     let mut within_3 = 0;
@@ -1004,5 +1011,5 @@ fn thin_skin_radius_is_what_the_readme_states() {
             within_3 += 1;
         }
     }
-    assert_eq!(within_3, 15, "the issue's 3 %: 15 of 17 skins");
+    assert_eq!(within_3, 17, "the issue's 3 %: every skin");
 }

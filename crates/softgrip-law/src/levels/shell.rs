@@ -27,6 +27,10 @@
 #[path = "shell_table.rs"]
 mod table;
 
+#[rustfmt::skip]
+#[path = "layer_radius_table.rs"]
+mod radius_table;
+
 /// The cubic B-spline basis (degree 3) at `x` on the knots `t`, in FITPACK's convention: `x`
 /// clamped to `[t[3], t[n - 4]]`, the interval `l` with `t[l] <= x < t[l + 1]`, `3 <= l <= n - 5`;
 /// returns `l` and the values of the B-splines `l - 3 ..= l` (de Boor-Cox, `fpbspl`).
@@ -139,6 +143,55 @@ impl Shell {
     }
 }
 
+/// The exact small-strain bonded layer's contact radius (session 30): `A_lin(u, nu) = a/a_H` at
+/// `u = a_H/t`, from the same solves as `chi_lin` (`tools/calibration/try_thin_skin_radius_s30.py`,
+/// `a_lin`): Hertz's 1 as `u -> 0` (`A_lin - 1 = (d1/3) u`, Dimitriadis' first order), the
+/// oedometer's `sqrt 2` (compressible) or the incompressible layer's 2 as `u -> inf`, Matthewson's
+/// crossover between. A table as `chi_lin`'s (`ln(A_lin - 1)` on the same grid,
+/// `tools/calibration/gen_layer_radius_rs.py`, within 4.1e-8 of Python's), linear to 0 below
+/// the table and held above it.
+#[derive(Debug, Clone)]
+pub(crate) struct LayerRadius {
+    /// `ln(A_lin - 1)` in `ln u`.
+    curve: Curve,
+}
+
+impl LayerRadius {
+    /// `eps = mu/kappa = 3 (1 - 2 nu)/(2 (1 + nu))`.
+    pub(crate) fn new(eps: f64) -> Self {
+        Self {
+            curve: Curve::at(
+                &radius_table::A_TX,
+                &radius_table::A_TY,
+                &radius_table::A_C,
+                (eps + table::LIN_EPS0).ln(),
+            ),
+        }
+    }
+
+    /// `A_lin(u) = a/a_H`, `u = a_H/t >= 0`.
+    pub(crate) fn ratio(&self, u: f64) -> f64 {
+        let [lo, hi] = table::LIN_U;
+        let ex = self.curve.eval(u.clamp(lo, hi).ln()).exp();
+        1.0 + if u < lo { ex * u / lo } else { ex }
+    }
+}
+
+/// The reference values of the layer's radius: `try_thin_skin_radius_s30.py`'s `a_lin`, the
+/// law's radius and session 30's (`tools/calibration/gen_layer_radius_rs.py` writes them):
+/// `[nu, tau, x, a_lin, radius_law, radius_form]`.
+#[cfg(test)]
+pub(crate) fn radius_reference() -> Vec<[f64; 6]> {
+    include_str!("../../tests/data/layer_radius_s30_reference.csv")
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("nu"))
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|c| c.parse().expect("a number")).collect();
+            [v[0], v[1], v[2], v[3], v[4], v[5]]
+        })
+        .collect()
+}
+
 /// The reference values: `try_shell_table_s28.py`'s `chi_shell`, the law and the thin-skin form
 /// (since session 29 SFF, `try_deep_squeeze_s29.py`; `tools/calibration/gen_shell_table_rs.py`
 /// writes them).
@@ -172,6 +225,21 @@ mod tests {
         eprintln!(
             "chi_shell against Python, largest relative difference (at nu, t/R, x): {worst:?}"
         );
+        assert!(worst.0 < 1e-6, "{worst:?}");
+    }
+
+    #[test]
+    fn layer_radius_follows_python() {
+        let mut worst = (0.0f64, [0.0; 3]);
+        for [nu, tau, x, a_lin, ..] in radius_reference() {
+            let eps = 3.0 * (1.0 - 2.0 * nu) / (2.0 * (1.0 + nu));
+            let a = LayerRadius::new(eps).ratio(x.sqrt() / tau);
+            let r = (a / a_lin - 1.0).abs();
+            if r > worst.0 {
+                worst = (r, [nu, tau, x]);
+            }
+        }
+        eprintln!("A_lin against Python, largest relative difference (at nu, t/R, x): {worst:?}");
         assert!(worst.0 < 1e-6, "{worst:?}");
     }
 }
