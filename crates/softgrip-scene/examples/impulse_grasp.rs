@@ -143,9 +143,18 @@ fn run(scene: &Scene, model: &str, force: f64, trace: bool, pgs: usize) {
                     format!("q{j} {:.6} t {:.6} v {:.4}", s.position, t, s.velocity)
                 })
                 .collect();
-            let ox = obj.map_or(f64::NAN, |o| w.bodies[o].translation().x as f64);
+            let ox = obj.map_or([f64::NAN; 3], |o| {
+                let t = w.bodies[o].translation();
+                [t.x as f64, t.y as f64, t.z as f64]
+            });
+            // The step's largest pad force over its substeps.
+            let step_peak: Vec<f64> = (pads.iter())
+                .map(|&p| {
+                    (run.world.soft.contacts_of(p)).fold(0.0f64, |a, c| a.max(c.peak_normal_force))
+                })
+                .collect();
             println!(
-                "{step:4} {phase:?} pads {f:.3?} {} obj x {ox:.6} substeps {}",
+                "{step:4} {phase:?} pads {f:.3?} peak {step_peak:.3?} {} obj {ox:.6?} substeps {}",
                 js.join(" "),
                 run.world.soft.counters().substeps_last
             );
