@@ -896,6 +896,21 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.02,
             true,
         ),
+        // Session 30: nu 0.47 t/R 0.15 (held out), the law's largest miss among the skins
+        // never re-run (2.27 % at x 0.08 against its committed penalty-1e5 curve, which this
+        // run exceeds by +0.11 to +0.34 %): -3.07 % at x = 0.085 (delta/t 0.57), this run's
+        // end, past the committed curve's. Too soft in the deep squeeze, as the nu 0.48 deep
+        // skins are (tools/calibration/CORE_FORM.md, session 29): the thin-skin form is faded
+        // to 0.42 of its weight at t/R 0.15 and the law there is the thick skins'.
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.47_t0.15.csv"),
+            0.47,
+            0.15,
+            0.085,
+            3.07,
+            0.085,
+            true,
+        ),
     ];
     pin_skins(&skins, false);
 }
