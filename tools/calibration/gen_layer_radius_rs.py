@@ -78,6 +78,9 @@ def main():
     print(f"A_lin table against Python's a_lin at 12 nu x {len(uq)} u in (0, {g.U_HI}]: max rel "
           f"{worst:.2e} ({w4:.2e} to u 4)", flush=True)
     tx, ty = sp.get_knots()
+    # The knots are chi_lin's (the same grid, interpolating, bicubic): the table borrows them.
+    lin_tx, lin_ty = RectBivariateSpline(ls, lnu, np.zeros_like(vals), kx=3, ky=3, s=0).get_knots()
+    assert np.array_equal(tx, lin_tx) and np.array_equal(ty, lin_ty)
     c = sp.get_coeffs()
     cmd = "nice -n 10 /work/main/target/fe-venv/bin/python tools/calibration/gen_layer_radius_rs.py"
     out = [
@@ -99,9 +102,10 @@ def main():
         "    clippy::approx_constant",
         ")]",
         "",
-        g.rs_array("A_TX", tx, f"`ln(A_lin - 1)`: knots in `ln(eps + LIN_EPS0)` ({g.NU_N} samples, "
-                               "nu 0.5 to 0.3)."),
-        g.rs_array("A_TY", ty, f"`ln(A_lin - 1)`: knots in ln u ({g.U_N} samples)."),
+        "/// `ln(A_lin - 1)`'s knots: `chi_lin`'s (`shell_table.rs`), the same (nu, ln u) samples and",
+        "/// spline order (an interpolating spline's knots are its grid's).",
+        "pub(super) use super::table::{LIN_TX as A_TX, LIN_TY as A_TY};",
+        "",
         g.rs_array("A_C", c, "`ln(A_lin - 1)`: B-spline coefficients, row-major in "
                              "(ln(eps + LIN_EPS0), ln u)."),
     ]

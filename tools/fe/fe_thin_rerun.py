@@ -68,6 +68,9 @@ SKINS = [
     # session 30: the held-out skin the law misses most among those never re-run (2.27 %
     # against its penalty-1e5 curve, which reaches x 0.08)
     (0.47, 0.15, "held", 0.08),
+    # and the two held-out skins past 2 % at t/R 0.25-0.3, where the thin-skin form fades out
+    (0.42, 0.25, "held", 0.18),
+    (0.49, 0.3, "held", 0.2),
 ]
 
 

@@ -182,14 +182,9 @@ impl LayerRadius {
 /// `[nu, tau, x, a_lin, radius_law, radius_form]`.
 #[cfg(test)]
 pub(crate) fn radius_reference() -> Vec<[f64; 6]> {
-    include_str!("../../tests/data/layer_radius_s30_reference.csv")
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("nu"))
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|c| c.parse().expect("a number")).collect();
-            [v[0], v[1], v[2], v[3], v[4], v[5]]
-        })
-        .collect()
+    reference_rows(include_str!(
+        "../../tests/data/layer_radius_s30_reference.csv"
+    ))
 }
 
 /// The reference values: `try_shell_table_s28.py`'s `chi_shell`, the law and the thin-skin form
@@ -197,8 +192,13 @@ pub(crate) fn radius_reference() -> Vec<[f64; 6]> {
 /// writes them).
 #[cfg(test)]
 pub(crate) fn reference() -> Vec<[f64; 6]> {
-    include_str!("../../tests/data/shell_s28_reference.csv")
-        .lines()
+    reference_rows(include_str!("../../tests/data/shell_s28_reference.csv"))
+}
+
+/// The rows of six numbers of a reference CSV (comment lines `#`, a header starting `nu`).
+#[cfg(test)]
+fn reference_rows(csv: &str) -> Vec<[f64; 6]> {
+    csv.lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("nu"))
         .map(|l| {
             let v: Vec<f64> = l.split(',').map(|c| c.parse().expect("a number")).collect();
