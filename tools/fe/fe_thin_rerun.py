@@ -71,6 +71,9 @@ SKINS = [
     # and the two held-out skins past 2 % at t/R 0.25-0.3, where the thin-skin form fades out
     (0.42, 0.25, "held", 0.18),
     (0.49, 0.3, "held", 0.2),
+    # and two blind skins at (nu, t/R) no run has had, to the law's x_max (0.8 t/R)
+    (0.34, 0.18, "blind", 0.144),
+    (0.44, 0.09, "blind", 0.072),
 ]
 
 
@@ -84,6 +87,10 @@ def case_name(nu, t):
 
 
 CASES = {case_name(nu, t): (nu, t, role, reach) for nu, t, role, reach in SKINS}
+# The cases added in session 30 (their provenance names that session; the two blind ones have
+# no earlier run at all).
+S30 = {case_name(nu, t) for nu, t in [(0.47, 0.15), (0.42, 0.25), (0.49, 0.3), (0.34, 0.18),
+                                      (0.44, 0.09)]}
 
 # Session 27/28 (issue 24 item 5, `--deep`): the deep CAX8 skins of fe_campaign.S23_DEEP whose
 # reference is soft from the campaign's penalty 1e5 (up to 4.86 % at their deepest), re-run
@@ -154,7 +161,11 @@ def export(names, runs):
             rerun = (f"session 28's deep run on CAX8 to delta/t = 1 of the skin of "
                      f"tests/data/fe/core/k1e6/force_nu{nu:g}_t{t:g}.csv")
         elif os.path.exists(os.path.join(DATA, twin)):
-            rerun = f"session 25's re-run of tests/data/fe/core/{twin}"
+            session = "session 30" if n in S30 else "session 25"
+            rerun = f"{session}'s re-run of tests/data/fe/core/{twin}"
+        elif n in S30:
+            rerun = "session 30's blind skin (no earlier run of this nu and t/R)"
+            what["blind"] = "blind for the core law (no fit may see it)"
         else:  # nu 0.48 t/R 0.05: session 20's R/120 run stopped at x = 0.015 (three rows)
             rerun = (f"session 25's re-run of a skin with no committed curve (session 20's "
                      f"R/120 run, penalty 1e5, stopped at x = {reach:g}: too few rows to export)")
