@@ -189,8 +189,12 @@ pub(crate) fn assembly_states(
     }
     let (mobility, qdot) = constrained(&minv, &rows, &v_star, |_| true)?;
     let (locked_mobility, _) = constrained(&minv, &rows, &v_star, |r| r.locked)?;
+    // The motion without the motors' push: the hard rows alone (locked axes, active limits),
+    // as a multibody's `passive` leaves its motors out (`Generalised::passive`).
+    let (_, passive) = constrained(&minv, &rows, &v_star, |r| r.compliance == 0.0)?;
     let acc = locked_mobility * force;
     let mut g = Generalised::new(mobility, qdot.clone(), acc.clone());
+    g.passive = passive.clone();
     let mut out = Vec::with_capacity(ms.len());
     for (k, m) in ms.iter().enumerate() {
         let index = next + k;
@@ -207,8 +211,7 @@ pub(crate) fn assembly_states(
                 inv_i: Matrix3::zeros(),
                 com: m.com,
                 a_ext: part(&acc, 0),
-                // The motors are not separated from the joints here (`Generalised::passive`).
-                passive: (part(&qdot, 0), part(&qdot, 3)),
+                passive: (part(&passive, 0), part(&passive, 3)),
                 link: Some(Box::new(Link {
                     host: next,
                     slot,

@@ -38,8 +38,9 @@ pub(crate) struct BodyState {
     pub a_ext: Vector3<f64>,
     /// The body's linear and angular velocity over the (sub)step without the push of the
     /// joint motors that hold it \[m/s, rad/s\]: its velocity now plus its external
-    /// accelerations' (what the step's substep count reads, `step::split`). Equal to `(v, w)`
-    /// for a free, fixed or kinematic body.
+    /// accelerations' (what the step's substep count reads, `step::split`), for a member of an
+    /// impulse-jointed assembly with its joints' hard rows (locked axes, active limits:
+    /// `jointed`). Equal to `(v, w)` for a free, fixed or kinematic body.
     pub passive: (Vector3<f64>, Vector3<f64>),
     /// A link of a multibody: its response comes from the multibody (`multibody`; `inv_m`
     /// and `inv_i` are then zero). `None`: a free, fixed or kinematic body.
@@ -117,7 +118,8 @@ pub(crate) struct Generalised {
     /// The generalised acceleration of gravity and the user's forces.
     pub acc: DVector<f64>,
     /// The generalised velocity over the (sub)step without the joint motors' push (the
-    /// velocity now plus `acc` over the step; `qdot` where the motors are not separated).
+    /// velocity now plus `acc` over the step; an impulse-jointed assembly's with its hard
+    /// rows, `jointed`).
     pub passive: DVector<f64>,
     /// Table indices of the multibody's links in the table (the host first).
     pub links: Vec<usize>,

@@ -334,8 +334,9 @@ impl Scene {
     /// Joint `i`'s motor effort [N m or N] (along the joint's positive axis, on the child):
     /// a multibody's from rapier's force-based motor law at the joint's state (rapier 0.36 does
     /// not write a multibody motor's impulse back), an impulse joint's from the impulse rapier
-    /// wrote back: that of its last solver pass, of `dt / num_solver_iterations` (rapier's
-    /// impulse pushes the child against the axis).
+    /// wrote back: that of its last solver pass, of `h / num_solver_iterations` with `h` the
+    /// last pipeline step, `dt` over the plugin's substeps (`SoftCounters::substeps_last`), as
+    /// the scene's `joint_state` reads it (rapier's impulse pushes the child against the axis).
     pub fn motor_effort(&self, i: usize) -> f64 {
         let j = &self.joints[i];
         match self.build {
@@ -352,7 +353,8 @@ impl Scene {
                     .get(j.handle.unwrap())
                     .unwrap();
                 let ip = &self.world.physics.integration_parameters;
-                let pass = ip.dt as f64 / ip.num_solver_iterations.max(1) as f64;
+                let substeps = self.world.soft.counters().substeps_last.max(1) as f64;
+                let pass = ip.dt as f64 / substeps / ip.num_solver_iterations.max(1) as f64;
                 let impulse = joint.data.motors[j.kind.axis() as usize].impulse as f64;
                 -impulse / pass
             }
