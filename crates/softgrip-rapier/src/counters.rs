@@ -82,6 +82,13 @@ pub struct SoftCounters {
     /// its kinematic base count theirs here each (sub)step. Left to rapier, such a contact
     /// asked an impulse of `1 / (f32 noise)` and threw the link off its joint.
     pub locked_link_contacts: u64,
+    /// Colliders whose rapier contact pairs were updated afresh for a step because a recycled
+    /// contact of theirs acted across a gap (its points slid over each other and the shapes
+    /// stood apart by more than 2 % of the smaller one's bounding radius, at most rapier's
+    /// allowed linear error), total (`stale_contacts.rs`; crate README, "rapier's settings").
+    /// Not an error. Before session 31 the parallel gripper's finger slid 25 mm up a 2 kg ball
+    /// held by such a contact.
+    pub stale_contacts: u64,
     /// Bodies held by rapier impulse joints that the soft solve took as free bodies, counted
     /// once per (sub)step each, total: their joints' rows do not converge within rapier's
     /// Gauss-Seidel sweeps of a solver pass (`rate^sweeps > 1e-5`, crate README, What one step
@@ -188,6 +195,7 @@ impl SoftCounters {
             group_stuck,
             immobile_rows,
             locked_link_contacts,
+            stale_contacts,
             jointed_free,
             woken,
             held_tips

@@ -31,6 +31,7 @@ mod rounded;
 mod saturation;
 mod series;
 mod solve;
+mod stale_contacts;
 mod step;
 mod step_error;
 mod stick;

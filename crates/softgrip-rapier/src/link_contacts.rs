@@ -30,7 +30,9 @@
 //! neither collider asks for a hook, so the hook is turned on (before each step, from the
 //! pair's last contacts) only for the link colliders that have such a row within rapier's
 //! prediction distance, and off again when they have none: every other pair is detected and
-//! solved exactly as without this module.
+//! solved exactly as without this module. The same set carries, for one step, the colliders
+//! of pairs whose recycled contacts act across a gap (`stale_contacts`): the hook makes rapier
+//! update their pairs afresh.
 
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
@@ -83,6 +85,10 @@ pub(crate) struct LinkContacts {
     links: HashMap<ColliderHandle, LinkMobility>,
     hooked: HashSet<ColliderHandle>,
     dropped: AtomicU64,
+    /// Colliders whose pairs were handed back to rapier's full update for a step because a
+    /// recycled contact of theirs acted across a gap (`stale_contacts`), since the last
+    /// [`Self::take_stale`].
+    stale: u64,
 }
 
 impl Clone for LinkContacts {
@@ -91,6 +97,7 @@ impl Clone for LinkContacts {
             links: self.links.clone(),
             hooked: self.hooked.clone(),
             dropped: AtomicU64::new(self.dropped.load(Ordering::Relaxed)),
+            stale: self.stale,
         }
     }
 }
@@ -106,8 +113,9 @@ enum Side<'a> {
 impl LinkContacts {
     /// Reads every dynamic multibody link's mobility as rapier last factorised it, then turns
     /// the solver-contact hook on for each link collider that has an immobile row against a
-    /// body that cannot yield among its pairs' current contacts, and off for the others this
-    /// module turned on.
+    /// body that cannot yield among its pairs' current contacts and for one collider of each
+    /// pair whose recycled contacts act across a gap (`stale_contacts`), and off for the
+    /// others this module turned on.
     pub(crate) fn refresh(&mut self, world: &mut PhysicsWorld) {
         self.links.clear();
         for mb in world.multibody_joints.multibodies() {
@@ -157,6 +165,10 @@ impl LinkContacts {
                 wanted.insert(ch);
             }
         }
+        // Pairs whose recycled contacts act across a gap, updated afresh this step.
+        let stale = crate::stale_contacts::stale_colliders(world, &self.hooked);
+        self.stale += stale.len() as u64;
+        wanted.extend(stale);
         for &ch in self.hooked.difference(&wanted) {
             if let Some(co) = world.colliders.get_mut(ch) {
                 co.set_active_hooks(co.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS);
@@ -220,6 +232,11 @@ impl LinkContacts {
         });
         let dropped = (before - rigid.solver_contacts.len()) as u64;
         self.dropped.fetch_add(dropped, Ordering::Relaxed);
+    }
+
+    /// The colliders refreshed as stale since the last call.
+    pub(crate) fn take_stale(&mut self) -> u64 {
+        std::mem::take(&mut self.stale)
     }
 
     /// The solver contacts dropped since the last call.

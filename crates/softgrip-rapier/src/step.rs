@@ -143,6 +143,7 @@ impl SoftContacts {
         let dropped = links.take_dropped();
         self.counters.locked_link_contacts += dropped;
         self.counters.immobile_rows += dropped;
+        self.counters.stale_contacts += links.take_stale();
         self.link_contacts = links;
         let after = At {
             phase: Phase::After,

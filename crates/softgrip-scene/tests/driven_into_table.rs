@@ -619,6 +619,13 @@ fn assert_hold(d: &Down) {
 /// solves, 97 evaluations past a wall, no diverged group; every pad at 0 N at the end of the
 /// hold (the pads off the table: not bounded here). The wedge of step 103 is no longer met on
 /// this trajectory; the guard that answers it is tested on its own.
+///
+/// Session 31: with rapier's recycled contacts that act across a gap handed back to its full
+/// update (`softgrip_rapier`'s `stale_contacts.rs`; the folding fingers' link-on-link pairs),
+/// the trajectory differs and the run takes 8823 substeps (none at the cap; the bound was
+/// 6000), links at most 0.125 m/s, pads at most 79.2 N, 735 N from the table, 1021 degenerate
+/// solves, 481 evaluations past a wall (debug and release alike). As the sessions above show,
+/// this jam's substep count moves by a factor of two with any change of its trajectory.
 #[test]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);
@@ -628,7 +635,7 @@ fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     assert!(d.pad_force < 450.0, "{d:?}: pad force");
     assert!(d.table_force < 750.0, "{d:?}: table force");
     assert_eq!(d.cap_hits, 0, "{d:?}: a step at the substep cap");
-    assert!(d.substeps < 6000, "{d:?}: substeps (4244 measured)");
+    assert!(d.substeps < 12_000, "{d:?}: substeps (8823 measured)");
 }
 
 /// The scene text of [`hand_dragged_into_a_wall`]: the shipped box grasp with its lift turned
@@ -747,8 +754,12 @@ fn dragged_without_pads(wall: bool, impulse: bool) -> Result<f32, (u64, String)>
 /// touching contact short of its wall within a substep (`step/onset.rs`'s `wall_stop`, which
 /// acts in capped substeps only) changes nothing, bit for bit: rapier's pipeline carries the
 /// pads past their walls, not the soft solve. Not fixed: plain rapier diverges here too.
+///
+/// Session 31: with rapier's recycled contacts that act across a gap handed back to its full
+/// update (`softgrip_rapier`'s `stale_contacts.rs`) the run lasts to step 64 (release), then
+/// fails the same way: `f0_pad on hand/f2_proximal` predicting 4.2e17 m/s, links at 26 m/s.
 #[test]
-#[ignore = "fails at step 51 with a typed StepError (session 26: f0_pad on box predicting 3.3e8 m/s; session 25, on 66d394c: f0_pad on hand/f1_proximal predicting 6.3e27 m/s; session 23: f1_pad on hand/palm, a finger already flung at 4.4e4 m/s inside that step); the soft pads, driven past their walls by the wall jam, let fingers 1 and 2 slip off the box into their joint limits where rapier's multibody diverges; plain rapier with rigid pads lasts to step 119 (without pads 113), so softgrip fails earlier; softgrip-rapier README, Limits, Still open (b)"]
+#[ignore = "fails at step 64 with a typed StepError (session 31, with stale recycled contacts refreshed: f0_pad on hand/f2_proximal predicting 4.2e17 m/s, links at 26 m/s; before, at step 51: session 26: f0_pad on box predicting 3.3e8 m/s; session 25, on 66d394c: f0_pad on hand/f1_proximal predicting 6.3e27 m/s; session 23: f1_pad on hand/palm, a finger already flung at 4.4e4 m/s inside that step); the soft pads, driven past their walls by the wall jam, let fingers 1 and 2 slip off the box into their joint limits where rapier's multibody diverges; plain rapier with rigid pads lasts to step 119 (without pads 113), so softgrip fails earlier; softgrip-rapier README, Limits, Still open (b)"]
 fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
     let d = hand_dragged_into_a_wall(0.04);
     assert!(d.held > 30, "{d:?}");
@@ -890,8 +901,15 @@ fn three_finger_hand_with_its_box_dragged_into_a_wall_stays_finite() {
 /// at 21.7 / 18.6 / 4.3 N, 863 contact evaluations past a wall, 2578 degenerate solves. The
 /// base (b711464) failed the hold as well: 43 595 substeps, its thumb at 0.46 N at the end,
 /// the box 0.33 mm lower, 283 N from the table, 7308 degenerate solves.
+///
+/// Session 31: with rapier's recycled contacts that act across a gap handed back to its full
+/// update (`softgrip_rapier`'s `stale_contacts.rs`) the run meets its table bound (342.5 N)
+/// and holds (pads 2.18 / 14.19 / 13.24 N at the end of the hold, the box 0.56 mm below its
+/// start, 1.86 mm moved at most, links at most 0.65 m/s, pads at most 21.6 N, none past a
+/// wall), but takes 24 377 substeps (none at the cap; 4668 degenerate solves): it fails only
+/// its substep bound (release, about 100 s).
 #[test]
-#[ignore = "fails its table and hold bounds (session 30, the motors' push counted as a push for impulse-jointed members: 9736 substeps, 537 N from the table against 500, the box 30.0 mm above its start at the end, pads 21.7 / 18.6 / 4.3 N, 863 evaluations past a wall; 40 s in release); before, its substep bound (sessions 26-29): session 28 (the split step's carry counting the soft rows only) 43 595 substeps against 13 500, 7308 degenerate solves, and its marginal thumb lets go (6.20 / 12.74 / 0.46 N at the end, bound 1 N; the box 0.34 mm lower, 1.36 mm moved, 283 N from the table); sessions 26-27: the grasp held (2.46 / 9.90 / 9.54 N at the end of the hold, the box 0.32 mm from its start, 451 N from the table, pads at most 15.5 N) but 46 594 substeps (119-275 a step in the hold, 280-307 in the release: the impact criterion reading the impulse-jointed members' free velocity with their motors' push in, not their stored velocities), 8244 degenerate solves; about 200 s of CPU in release, too slow for the dev profile; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored impulse_jointed`"]
+#[ignore = "fails its substep bound (session 31, with rapier's recycled contacts that act across a gap refreshed: 24 377 substeps against 13 500, none at the cap; table 342.5 N, pads 21.6 N, the box 0.56 mm below its start and 1.86 mm moved at most, pads 2.18 / 14.19 / 13.24 N at the end of the hold: every other bound met; about 100 s in release); session 30: its table and hold bounds (the motors' push counted as a push for impulse-jointed members: 9736 substeps, 537 N from the table against 500, the box 30.0 mm above its start at the end, pads 21.7 / 18.6 / 4.3 N, 863 evaluations past a wall; 40 s in release); before, its substep bound (sessions 26-29): session 28 (the split step's carry counting the soft rows only) 43 595 substeps against 13 500, 7308 degenerate solves, and its marginal thumb lets go (6.20 / 12.74 / 0.46 N at the end, bound 1 N; the box 0.34 mm lower, 1.36 mm moved, 283 N from the table); sessions 26-27: the grasp held (2.46 / 9.90 / 9.54 N at the end of the hold, the box 0.32 mm from its start, 451 N from the table, pads at most 15.5 N) but 46 594 substeps (119-275 a step in the hold, 280-307 in the release: the impact criterion reading the impulse-jointed members' free velocity with their motors' push in, not their stored velocities), 8244 degenerate solves; about 200 s of CPU in release, too slow for the dev profile; softgrip-rapier README, Limits (a'); `cargo test --release -p softgrip-scene --test driven_into_table -- --ignored impulse_jointed`"]
 fn impulse_jointed_three_finger_hand_with_its_box_driven_into_the_table_stays_finite() {
     let text = descending_text(
         "three_finger_hand_box",
@@ -942,7 +960,9 @@ fn shipped_robot_scenes_have_no_degenerate_solve() {
 /// (0.1 m/s), run at 0.7-4.8 m/s over steps 97-104 and 21 m/s in step 105, and the run
 /// diverges in step 113 (`StepError::Diverged`, `hand/f1_proximal` at 2.7e6 m/s); without the
 /// wall it ends finite (links at most 0.20 m/s), and so does the hand loaded as impulse joints,
-/// wall and all (links at most 2.49 m/s).
+/// wall and all (links at most 2.49 m/s; 3.61 m/s since session 31, when the plugin began
+/// handing rapier's recycled contacts that act across a gap back to its full update,
+/// `softgrip_rapier`'s `stale_contacts.rs`: the jammed links' trajectory differs).
 ///
 /// So the plugin's soft response is not what diverges: rapier's multibody does, once the
 /// kinematic palm presses its links into the wall. This test fails when a rapier upgrade
@@ -964,7 +984,7 @@ fn the_wall_drag_diverges_without_pads_with_the_hand_as_a_multibody() {
     );
     let impulse = dragged_without_pads(true, true);
     assert!(
-        impulse.as_ref().is_ok_and(|v| *v < 3.5),
-        "{impulse:?} (2.49 m/s measured)"
+        impulse.as_ref().is_ok_and(|v| *v < 4.5),
+        "{impulse:?} (3.61 m/s measured)"
     );
 }
