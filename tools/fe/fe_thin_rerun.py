@@ -74,6 +74,9 @@ SKINS = [
     # and two blind skins at (nu, t/R) no run has had, to the law's x_max (0.8 t/R)
     (0.34, 0.18, "blind", 0.144),
     (0.44, 0.09, "blind", 0.072),
+    # session 31: a blind skin inside the deep-squeeze miss (nu 0.44-0.48, t/R 0.08-0.15), run
+    # after the session's forms were judged (none adopted), to the law's x_max (0.8 t/R)
+    (0.455, 0.12, "blind", 0.096),
 ]
 
 
@@ -91,6 +94,7 @@ CASES = {case_name(nu, t): (nu, t, role, reach) for nu, t, role, reach in SKINS}
 # no earlier run at all).
 S30 = {case_name(nu, t) for nu, t in [(0.47, 0.15), (0.42, 0.25), (0.49, 0.3), (0.34, 0.18),
                                       (0.44, 0.09)]}
+S31 = {case_name(0.455, 0.12)}
 
 # Session 27/28 (issue 24 item 5, `--deep`): the deep CAX8 skins of fe_campaign.S23_DEEP whose
 # reference is soft from the campaign's penalty 1e5 (up to 4.86 % at their deepest), re-run
@@ -163,8 +167,9 @@ def export(names, runs):
         elif os.path.exists(os.path.join(DATA, twin)):
             session = "session 30" if n in S30 else "session 25"
             rerun = f"{session}'s re-run of tests/data/fe/core/{twin}"
-        elif n in S30:
-            rerun = "session 30's blind skin (no earlier run of this nu and t/R)"
+        elif n in S30 or n in S31:
+            rerun = (f"session {30 if n in S30 else 31}'s blind skin (no earlier run of this nu "
+                     f"and t/R)")
             what["blind"] = "blind for the core law (no fit may see it)"
         else:  # nu 0.48 t/R 0.05: session 20's R/120 run stopped at x = 0.015 (three rows)
             rerun = (f"session 25's re-run of a skin with no committed curve (session 20's "

@@ -958,6 +958,19 @@ fn core_on_the_penalty_1e6_thin_skins_is_what_the_readme_states() {
             0.0525,
             true,
         ),
+        // Session 31, blind: nu 0.455 t/R 0.12 (no earlier run), inside the deep-squeeze miss,
+        // run after the session's forms were judged (none adopted: tools/calibration/CORE_FORM.md,
+        // session 31), to x 0.0725 (diverged at 0.073, delta/t 0.60): -3.90 % at its end, too
+        // soft (within 2 % to x 0.05, delta/t 0.42: -1.83 %).
+        (
+            include_str!("../../../tests/data/fe/core/k1e6/force_nu0.455_t0.12.csv"),
+            0.455,
+            0.12,
+            0.0725,
+            3.90,
+            0.0725,
+            true,
+        ),
     ];
     pin_skins(&skins, false);
 }
