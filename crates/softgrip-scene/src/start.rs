@@ -155,6 +155,7 @@ fn check_links(
         }
     }
     for (i, ((name, rh), robot)) in h.robots.iter().zip(scene.robots()).enumerate() {
+        check_self_overlap(c, i, robot, rh, world, allowed)?;
         for (l, link_colliders) in rh.colliders.iter().enumerate() {
             for (k, lh) in link_colliders.iter().enumerate() {
                 let lc = &colliders[*lh];
@@ -197,6 +198,78 @@ fn check_links(
                         });
                     }
                 }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A robot whose links collide with each other (`self_contacts = true`): no two of its links
+/// that rapier lets collide (every pair not joined directly by a joint) may start overlapping
+/// deeper than rapier's allowed linear error, or rapier pushes them apart against their joints
+/// in the first step. A closed chain modelled as a tree overlaps that way at every pose: the
+/// xArm gripper of PyPI's pybullet (a four-bar per finger, its inner knuckle and finger sharing
+/// a pin 12 mm deep) with its self-contacts on threw its drive joint 0.73 rad open in the
+/// first step (its motor at its 50 N m limit) and its mimic joints 0.14 rad apart. An error
+/// naming both links, the depth and the remedy (`SceneError::Urdf`, field
+/// `robot[i].self_contacts`).
+fn check_self_overlap(
+    c: &Checker,
+    i: usize,
+    robot: &crate::Robot,
+    rh: &crate::robot::RobotHandles,
+    world: &softgrip_rapier::SoftWorld,
+    allowed: f64,
+) -> Result<(), SceneError> {
+    if !robot.self_contacts() {
+        return Ok(());
+    }
+    let colliders = &world.physics.colliders;
+    let joined = |a: usize, b: usize| {
+        (robot.joints().iter())
+            .any(|j| (j.parent, j.child) == (a, b) || (j.parent, j.child) == (b, a))
+    };
+    let shapes: Vec<(usize, usize, Pose, Aabb)> = (rh.colliders.iter().enumerate())
+        .flat_map(|(l, cs)| cs.iter().enumerate().map(move |(k, ch)| (l, k, *ch)))
+        .map(|(l, k, ch)| {
+            let co = &colliders[ch];
+            let pose = start_pose(world, co);
+            (l, k, pose, co.shape().compute_aabb(&pose))
+        })
+        .collect();
+    for (m, &(la, ka, pa, ba)) in shapes.iter().enumerate() {
+        for &(lb, kb, pb, bb) in &shapes[m + 1..] {
+            if la == lb || joined(la, lb) || !ba.intersects(&bb) {
+                continue;
+            }
+            let (sa, sb) = (
+                colliders[rh.colliders[la][ka]].shape(),
+                colliders[rh.colliders[lb][kb]].shape(),
+            );
+            let Ok(Some(contact)) = query::contact(&pa, sa, &pb, sb, 0.0) else {
+                continue;
+            };
+            let depth = -(contact.dist as f64);
+            if depth > allowed {
+                let link =
+                    |l: usize, k: usize| format!("`{}` collision[{k}]", robot.links()[l].name);
+                return Err(SceneError::Urdf {
+                    origin: c.origin.to_string(),
+                    field: format!("robot[{i}].self_contacts"),
+                    path: robot.urdf_path().to_path_buf(),
+                    message: format!(
+                        "links {} and {} start overlapping by {:.2} mm (more than rapier's \
+                         allowed linear error, {:.2} mm), and with `self_contacts = true` rapier \
+                         pushes them apart against their joints in the first step (a closed \
+                         chain modelled as a tree overlaps so at every pose); set \
+                         `self_contacts = false` (pybullet's and Gazebo's default) or start \
+                         positions where they do not overlap",
+                        link(la, ka),
+                        link(lb, kb),
+                        depth * 1e3,
+                        allowed * 1e3
+                    ),
+                });
             }
         }
     }

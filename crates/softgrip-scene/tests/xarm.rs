@@ -1,0 +1,230 @@
+//! Another third-party hand: the UFactory xArm 6 with its gripper from PyPI's `pybullet`
+//! (`pybullet_data/xarm/xarm6_with_gripper.urdf`, `package://xarm_description` and
+//! `package://xarm_gripper` meshes; fetched by `.ci/pybullet-data.sh` into target/, never
+//! committed; `SOFTGRIP_PYBULLET_DATA` names the folder). Its gripper is a four-bar linkage per
+//! finger written as a tree: one driven joint (`drive_joint`) and five joints that mimic it,
+//! the inner knuckles not attached to the fingers, so each finger and its inner knuckle overlap
+//! at their shared pin at every pose. The arm stands with its flange pointing down
+//! (joint3 = -pi/2, joint5 = pi/2): the gripper's base 0.5299 m up at x = 0.4727 m, each
+//! finger's frame 0.1012 m below it, its inner face at the frame's y = -+26 mm (left_finger.stl
+//! spans y -26 .. 5.9 mm below z = 40 mm), closing along world y. A Dragon Skin 30 pad
+//! (R = 10 mm, `flat`) sits 6 mm inside each inner face at 50 mm along the finger, over a
+//! 40 x 50 x 50 mm, 100 g box on a table.
+
+#![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
+
+mod common;
+
+use std::path::PathBuf;
+
+use softgrip_scene::control::Phase;
+use softgrip_scene::{PlainRun, Scene};
+
+/// The xarm folder of pybullet_data (`SOFTGRIP_PYBULLET_DATA`).
+fn xarm() -> PathBuf {
+    let dir = std::env::var("SOFTGRIP_PYBULLET_DATA").unwrap_or_else(|_| {
+        panic!(
+            "SOFTGRIP_PYBULLET_DATA is not set: it must name pybullet's pybullet_data folder \
+             with xarm/; `bash .ci/pybullet-data.sh` fetches it and prints the path"
+        )
+    });
+    PathBuf::from(dir).join("xarm")
+}
+
+/// The scene: the grasp (5 N a pad, 5 cm lift, 1 s hold) with the robot's self-contacts as
+/// given (`None`: the scene format's default, on).
+fn scene_text(self_contacts: Option<bool>) -> String {
+    let x = xarm();
+    let urdf = x.join("xarm6_with_gripper.urdf").display().to_string();
+    let desc = x.join("xarm_description").display().to_string();
+    let grip = x.join("xarm_gripper").display().to_string();
+    let self_contacts = self_contacts.map_or(String::new(), |v| format!("self_contacts = {v}\n"));
+    format!(
+        r#"duration = 3.0
+dt = 0.016666666666666666
+gravity = [0.0, 0.0, -9.81]
+
+[[body]]
+name = "table"
+kind = "fixed"
+position = [0.4727, 0.0, 0.3037]
+[[body.shape]]
+type = "cuboid"
+half_extents = [0.15, 0.15, 0.05]
+
+[[body]]
+name = "box"
+kind = "dynamic"
+position = [0.4727, 0.0, 0.3790]
+[[body.shape]]
+type = "cuboid"
+half_extents = [0.02, 0.025, 0.025]
+density = 1000.0
+friction = 0.5
+
+[[robot]]
+name = "xarm"
+urdf = {urdf:?}
+package_paths = {{ xarm_description = {desc:?}, xarm_gripper = {grip:?} }}
+initial = {{ joint3 = -1.5707963, joint5 = 1.5707963 }}
+stiffness = 10000.0
+damping = 100.0
+base = "kinematic"
+{self_contacts}
+[[fingertip]]
+name = "left_pad"
+link = "xarm/left_finger"
+offset = [0.0, -0.020, 0.05]
+radius = 0.01
+preset = "dragon-skin-30"
+backing = "flat"
+facing = [0.0, -1.0, 0.0]
+
+[[fingertip]]
+name = "right_pad"
+link = "xarm/right_finger"
+offset = [0.0, 0.020, 0.05]
+radius = 0.01
+preset = "dragon-skin-30"
+backing = "flat"
+facing = [0.0, 1.0, 0.0]
+
+[[controller]]
+type = "grasp"
+name = "grasp"
+robot = "xarm"
+joints = ["drive_joint"]
+closed = [0.85]
+speed = 0.5
+force = 5.0
+lift = {{ distance = 0.05, speed = 0.05, acceleration = 0.5 }}
+hold = 1.0
+"#
+    )
+}
+
+fn parse(text: &str) -> Result<Scene, softgrip_scene::SceneError> {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("xarm.toml");
+    std::fs::write(&path, text).unwrap();
+    Scene::from_file(&path)
+}
+
+/// With its self-contacts on (the scene format's default) the tree-ified four-bar overlaps at
+/// its start: refused at load, naming the finger and its inner knuckle, the depth and the
+/// remedy. Before session 31 it loaded, and rapier threw the drive joint 0.73 rad open in the
+/// first step (its motor at its 50 N m limit) with its mimic joints 0.14 rad apart.
+#[test]
+fn xarm_with_self_contacts_is_refused_naming_the_overlapping_links() {
+    for on in [None, Some(true)] {
+        let e = parse(&scene_text(on)).map(|_| ()).unwrap_err();
+        let msg = e.to_string();
+        assert_eq!(e.field(), Some("robot[0].self_contacts"), "{msg}");
+        assert!(
+            msg.contains("`left_finger` collision[0] and `left_inner_knuckle` collision[0]"),
+            "{msg}"
+        );
+        assert!(msg.contains("self_contacts = false"), "{msg}");
+        let mm: f64 = (msg.split("overlapping by ").nth(1).unwrap())
+            .split(" mm")
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        // 11.98 mm measured: the finger's and the inner knuckle's meshes at their shared pin.
+        assert!((11.0..13.0).contains(&mm), "{msg}");
+    }
+}
+
+/// With `self_contacts = false` the gripper closes on the box at 0.5 rad/s until each pad
+/// presses 5 N, lifts it 5 cm and holds it. Measured (session 31): every mimic joint within
+/// 1.2e-5 rad of `drive_joint` through the hold, both pads at 5.132 N through it, the box
+/// 49.05 mm up at the end (no rigid contact of a link with the box carries load in the hold).
+#[test]
+fn xarm_gripper_grasps_lifts_and_holds_the_box_with_soft_pads() {
+    let scene = parse(&scene_text(Some(false))).unwrap();
+    let robot = &scene.robots()[0];
+    let mut run = PlainRun::new(&scene);
+    let box_h = run.handles.body("box").unwrap();
+    let z0 = run.world.physics.bodies[box_h].translation().z as f64;
+    let h = run.handles.robots[0].1.clone();
+    let drive = robot.joint_index("drive_joint").unwrap();
+    let mimics: Vec<usize> = (0..robot.joints().len())
+        .filter(|&j| robot.joints()[j].mimic.is_some())
+        .collect();
+    assert_eq!(mimics.len(), 5);
+    let dt = scene.file().dt;
+    let (mut reached, mut held, mut spread, mut rise) = (false, 0, 0.0f64, 0.0);
+    let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
+    for _ in 0..scene.steps() {
+        run.step();
+        reached |= !run.events().is_empty();
+        if run.control.controllers()[0].phase() != Some(Phase::Hold) {
+            continue;
+        }
+        held += 1;
+        let w = &run.world.physics;
+        let q = |j| softgrip_scene::robot::joint_state(robot, w, &h, j, dt).position;
+        for &m in &mimics {
+            spread = spread.max((q(m) - q(drive)).abs());
+        }
+        for pad in ["left_pad", "right_pad"] {
+            let f: f64 = (run.world.soft)
+                .contacts_of(run.handles.fingertip(pad).unwrap())
+                .map(|c| c.normal_force)
+                .sum();
+            (lo, hi) = (lo.min(f), hi.max(f));
+        }
+        rise = w.bodies[box_h].translation().z as f64 - z0;
+    }
+    println!(
+        "held {held} steps, mimic spread {spread:.3e} rad, pads {lo:.3}..{hi:.3} N, rise {rise:.5} m"
+    );
+    assert!(reached, "the grasp never reached 5 N");
+    assert!(held > 30, "held {held} steps");
+    assert!(spread < 1e-4, "mimic joints {spread} rad from drive_joint");
+    assert!(lo > 4.9 && hi < 5.4, "pads {lo}..{hi} N");
+    assert!(
+        (rise - 0.05).abs() < 2e-3,
+        "the box rose {rise} m with the 5 cm lift"
+    );
+}
+
+/// Issue 25 item 8's "each joint's effort equal to J^T F" on this hand: at the end of the hold
+/// every moving arm joint's effort against `J^T F` written out from the pads' contacts and the
+/// links' weights (`common::jt_f`). Measured (session 31): joint2 3.2e-6, joint3 7.2e-6, joint4
+/// 5.3e-3 (0.20 N m), joint5 1.3e-4; joint1 and joint6 carry 1.5e-4 / 1.1e-4 N m against
+/// nothing. The gripper's drive joint is the open case below. `--nocapture` prints them.
+#[test]
+fn xarm_arm_joint_efforts_equal_jt_f() {
+    let scene = parse(&scene_text(Some(false))).unwrap();
+    let (loads, _) = common::hold_efforts(&scene);
+    assert_eq!(loads.len(), 12, "six arm joints and six gripper joints");
+    for &(ref joint, effort, load, rel) in &loads {
+        println!("`{joint}` effort {effort:.6} vs J^T F {load:.6} ({rel:.2e})");
+        if !joint.starts_with("joint") {
+            continue;
+        }
+        if load.abs() > 0.1 {
+            assert!(rel < 1e-2, "`{joint}` effort {effort} vs J^T F {load}");
+        } else {
+            assert!(
+                effort.abs() < 1e-3,
+                "`{joint}` effort {effort} with J^T F {load}"
+            );
+        }
+    }
+}
+
+/// The gripper's drive joint, which five joints mimic (the Panda's one mimic is exact to
+/// 1.9e-7): its motor's effort against `J^T F` with its mimics' loads carried through the
+/// couplings. Measured (session 31): 0.4104 N m against 0.4768 N m, 13.9 % off; not found why
+/// (no rigid contact of a link with the box carries load; the mimics within 1.2e-5 rad).
+#[test]
+#[ignore = "open (session 31): the xArm gripper's drive joint, mimicked by five joints, reads 0.4104 N m against J^T F 0.4768 N m (13.9 %); the Panda's single mimic is exact; softgrip-rapier README, Limits"]
+fn xarm_drive_joint_effort_equals_jt_f_with_its_five_mimics() {
+    let scene = parse(&scene_text(Some(false))).unwrap();
+    let (loads, _) = common::hold_efforts(&scene);
+    let &(_, effort, load, rel) = loads.iter().find(|r| r.0 == "drive_joint").unwrap();
+    assert!(rel < 1e-2, "drive_joint effort {effort} vs J^T F {load}");
+}
