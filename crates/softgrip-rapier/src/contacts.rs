@@ -111,6 +111,11 @@ pub(crate) struct Scratch {
     /// The rigid supports' gathering read a pair of rapier's narrow phase this step (such a
     /// step is not replayed: `step::memo`).
     pub rigid_read: bool,
+    /// The speed the joint motors add to each multibody link over the step
+    /// (`multibody::motor_push`), found at the step's first detection, with the largest of
+    /// them (linear, angular) and the step it was found for \[s\] (a substep's detection
+    /// scales it by its share of the step).
+    pub motor_push: (FastMap<RigidBodyHandle, (f32, f32)>, (f32, f32), f64),
 }
 
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.

@@ -85,6 +85,21 @@ pub(crate) struct Scene<'a> {
     /// filters for their joints is not a soft contact either (`joint_filtered`).
     pub impulse_joints: &'a ImpulseJointSet,
     pub multibody_joints: &'a MultibodyJointSet,
+    /// The speed (linear [m/s], angular [rad/s]) the joint motors add to each multibody link
+    /// over the step (`multibody::motor_push`), and the share of it this (sub)step takes: a
+    /// link's stored velocity is its multibody's now, without the push its motors give it
+    /// within rapier's step.
+    pub motor_push: (&'a FastMap<RigidBodyHandle, (f32, f32)>, f32),
+}
+
+impl Scene<'_> {
+    /// The speed [m/s] the joint motors of `body` add over this (sub)step at distance `r`
+    /// \[m\] from its centre of mass (0 for a body that is not a motored link).
+    fn push_of(&self, body: Option<RigidBodyHandle>, r: f32) -> f32 {
+        let (map, scale) = self.motor_push;
+        body.and_then(|b| map.get(&b))
+            .map_or(0.0, |&(v, w)| (v + w * r) * scale)
+    }
 }
 
 /// Whether rapier's narrow phase filters every contact between bodies `a` and `b` for the
@@ -253,6 +268,9 @@ struct Tip<'a> {
     w: Vector,
     /// The speed gravity adds to either side over the step, `|g| dt` [m/s].
     fall: f32,
+    /// The speed its body's joint motors add over the step at its radius [m/s]
+    /// (`Scene::motor_push`).
+    push: f32,
     /// Radius \[m\].
     r: f32,
     /// Its current AABB.
@@ -295,6 +313,7 @@ impl<'a> Tip<'a> {
             v,
             w,
             fall: scene.gravity * dt as f32,
+            push: scene.push_of(body, ball.radius),
             r: ball.radius,
             aabb: collider.compute_aabb(),
             dt: dt as f32,
@@ -317,7 +336,7 @@ impl<'a> Tip<'a> {
     /// at the fingertip's radius: `0.05 R + 1.5 (|v_tip| + |w_tip| R + v_other + 2 |g| dt) dt`.
     fn prediction(&self, v_other: f32) -> f32 {
         0.05 * self.r
-            + (self.v.length() + self.w.length() * self.r + v_other + 2.0 * self.fall)
+            + (self.v.length() + self.w.length() * self.r + self.push + v_other + 2.0 * self.fall)
                 * self.dt
                 * 1.5
     }
@@ -340,7 +359,12 @@ impl<'a> Tip<'a> {
         // Conservative reach: the ball, a margin and the largest prediction distance of its
         // pairs, so that every pair within prediction is a candidate.
         let reach = r * 1.1
-            + (self.v.length() + self.w.length() * r + v_max + w_max * r + 2.0 * self.fall)
+            + (self.v.length()
+                + self.w.length() * r
+                + self.push
+                + v_max
+                + w_max * r
+                + 2.0 * self.fall)
                 * self.dt
                 * 1.5;
         let lo = centre.min(centre + sweep) - Vector::splat(reach);
@@ -348,7 +372,12 @@ impl<'a> Tip<'a> {
         // The largest prediction distance of this fingertip's pairs (`prediction` with the
         // fastest other side), for the prefilter before any per-pair lookup.
         let max_prediction = 0.05 * r
-            + (self.v.length() + self.w.length() * r + v_max + w_max * r + 2.0 * self.fall)
+            + (self.v.length()
+                + self.w.length() * r
+                + self.push
+                + v_max
+                + w_max * r
+                + 2.0 * self.fall)
                 * self.dt
                 * 1.5;
         out.clear();
@@ -402,7 +431,8 @@ impl<'a> Tip<'a> {
         let v_other = other_body
             .and_then(|b| scene.bodies.get(b))
             .map(|rb| rb.linvel().length() + rb.angvel().length() * self.r)
-            .unwrap_or(0.0);
+            .unwrap_or(0.0)
+            + scene.push_of(other_body, self.r);
         let prediction = self.prediction(v_other);
         if gap > prediction + 0.01 * self.r {
             return None;

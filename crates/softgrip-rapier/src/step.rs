@@ -221,6 +221,21 @@ impl Step<'_> {
     /// caller found it at the current state (else found here).
     fn detect(&mut self, dt: f64, fastest: Option<(f32, f32)>, s: &mut Scratch) {
         let t = Instant::now();
+        if fastest.is_some() {
+            self.find_motor_push(dt, s);
+        }
+        // The motors' push over this (sub)step: a substep's share of the step's.
+        let (_, push_max, push_dt) = &s.motor_push;
+        let push_scale = if *push_dt > 0.0 {
+            (dt / push_dt) as f32
+        } else {
+            0.0
+        };
+        let fastest = fastest.unwrap_or_else(|| detect::fastest_motion(&self.physics.bodies));
+        let fastest = (
+            fastest.0 + push_max.0 * push_scale,
+            fastest.1 + push_max.1 * push_scale,
+        );
         let soft = &mut *self.soft;
         let scene = Scene {
             bodies: &self.physics.bodies,
@@ -233,18 +248,46 @@ impl Step<'_> {
             max_radius: soft.max_radius,
             impulse_joints: &self.physics.impulse_joints,
             multibody_joints: &self.physics.multibody_joints,
+            motor_push: (&s.motor_push.0, push_scale),
         };
         detect::detect(
             &scene,
             &soft.tips,
             dt,
-            fastest,
+            Some(fastest),
             &mut soft.geoms,
             &mut s.candidates,
             &mut s.detected,
             &mut soft.counters,
         );
         soft.counters.detect_time += t.elapsed();
+    }
+
+    /// The speed the joint motors add to each multibody link over the step `dt` \[s\]
+    /// (`multibody::motor_push`), for the step's detections (`s.motor_push`).
+    fn find_motor_push(&mut self, dt: f64, s: &mut Scratch) {
+        let (map, max, at) = &mut s.motor_push;
+        map.clear();
+        *max = (0.0, 0.0);
+        *at = dt;
+        if self.physics.multibody_joints.multibodies().next().is_none() {
+            return;
+        }
+        let p = &self.physics.integration_parameters;
+        let passes = p.num_solver_iterations.max(1) as f64;
+        let ctx = LinkCtx {
+            multibodies: &self.physics.multibody_joints,
+            impulse_joints: &self.physics.impulse_joints,
+            h: dt,
+            h_drift: dt * (passes + 1.0) / (2.0 * passes),
+            passes: passes as usize,
+            sweeps: p.num_internal_pgs_iterations,
+            gravity: to_f64(self.physics.gravity),
+        };
+        multibody::motor_push(&self.physics.bodies, &ctx, map);
+        for &(v, w) in map.values() {
+            *max = (max.0.max(v), max.1.max(w));
+        }
     }
 
     /// The step: `physics.integration_parameters.dt`.
