@@ -111,11 +111,21 @@ pub(crate) struct Scratch {
     /// The rigid supports' gathering read a pair of rapier's narrow phase this step (such a
     /// step is not replayed: `step::memo`).
     pub rigid_read: bool,
-    /// The speed the joint motors add to each multibody link over the step
-    /// (`multibody::motor_push`), found at the step's first detection, with the largest of
-    /// them (linear, angular) and the step it was found for \[s\] (a substep's detection
-    /// scales it by its share of the step).
-    pub motor_push: (FastMap<RigidBodyHandle, (f32, f32)>, (f32, f32), f64),
+    /// The speed the joint motors add to each multibody link over the step, found at the
+    /// step's first detection.
+    pub motor_push: MotorPush,
+}
+
+/// The speed the joint motors add to each multibody link over a step
+/// (`multibody::motor_push`), for the step's detections.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct MotorPush {
+    /// (linear [m/s], angular [rad/s]) by the link's rigid body.
+    pub by_link: FastMap<RigidBodyHandle, (f32, f32)>,
+    /// The largest of them (linear, angular).
+    pub max: (f32, f32),
+    /// The step they were found for \[s\] (a substep's detection scales them by its share).
+    pub dt: f64,
 }
 
 /// The plugin's state: which colliders are soft, their contacts' memory and the readout.

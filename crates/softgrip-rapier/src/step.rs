@@ -38,7 +38,7 @@ use softgrip_law::Regime;
 
 use crate::bodies::{self, body_index};
 use crate::boundary::{pose_f64, to_f32, to_f64};
-use crate::contacts::{PairState, Scratch, SoftContacts};
+use crate::contacts::{MotorPush, PairState, Scratch, SoftContacts};
 use crate::counters::Lap;
 use crate::detect::{self, Geom, Scene, compression_from_signed_distance};
 use crate::fast_hash::{FastMap, FastSet};
@@ -225,7 +225,7 @@ impl Step<'_> {
             self.find_motor_push(dt, s);
         }
         // The motors' push over this (sub)step: a substep's share of the step's.
-        let (_, push_max, push_dt) = &s.motor_push;
+        let (push_max, push_dt) = (&s.motor_push.max, &s.motor_push.dt);
         let push_scale = if *push_dt > 0.0 {
             (dt / push_dt) as f32
         } else {
@@ -248,7 +248,7 @@ impl Step<'_> {
             max_radius: soft.max_radius,
             impulse_joints: &self.physics.impulse_joints,
             multibody_joints: &self.physics.multibody_joints,
-            motor_push: (&s.motor_push.0, push_scale),
+            motor_push: (&s.motor_push.by_link, push_scale),
         };
         detect::detect(
             &scene,
@@ -266,7 +266,11 @@ impl Step<'_> {
     /// The speed the joint motors add to each multibody link over the step `dt` \[s\]
     /// (`multibody::motor_push`), for the step's detections (`s.motor_push`).
     fn find_motor_push(&mut self, dt: f64, s: &mut Scratch) {
-        let (map, max, at) = &mut s.motor_push;
+        let MotorPush {
+            by_link: map,
+            max,
+            dt: at,
+        } = &mut s.motor_push;
         map.clear();
         *max = (0.0, 0.0);
         *at = dt;

@@ -626,6 +626,14 @@ fn assert_hold(d: &Down) {
 /// 6000), links at most 0.125 m/s, pads at most 79.2 N, 735 N from the table, 1021 degenerate
 /// solves, 481 evaluations past a wall (debug and release alike). As the sessions above show,
 /// this jam's substep count moves by a factor of two with any change of its trajectory.
+///
+/// Session 31, later (branch `s31-peak`): with the motors' push of the multibody's links in the
+/// detection's prediction distance (`softgrip_rapier`'s `multibody::motor_push`: pairs found
+/// earlier) and a jammed link's open contact split where the push would close its gap within
+/// the step (`step/split.rs`, `gap_drive_substeps`), the run takes 6077 substeps (none at the
+/// cap), links at most 0.394 m/s (the detection's change alone gives the same; the bound is
+/// 0.5), pads at most 79.1 N, 733 N from the table, 1010 degenerate solves, 602 evaluations
+/// past a wall, one diverged group (release).
 #[test]
 fn three_finger_hand_with_pads_pressing_driven_into_the_table_stays_finite() {
     let d = hand_descent(0.04, true);

@@ -12,8 +12,8 @@
 //! was capped at the realised closing of a jammed link, 0.03 m/s), so they met only in the next
 //! step, 8 mm deep, and a pad read 87.9 N. Now the detection adds the motors' push to a link's
 //! speed (`multibody::motor_push`) and a jammed link's open contact whose gap the push closes
-//! within the step splits it (`step/split.rs`, `gap_drive_substeps`): at most 8.35 N in the
-//! step they shut in, 13.85 N over the run (at the lift's start, as before), the joint down to
+//! within the step splits it (`step/split.rs`, `gap_drive_substeps`; 2 substeps in each of the
+//! 3 jammed steps): at most 4.44 N in the step they shut in, 13.85 N over the run (at the lift's start, as before), the joint down to
 //! 1.4 mm (within its limit).
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test

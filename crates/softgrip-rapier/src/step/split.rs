@@ -321,7 +321,7 @@ pub(crate) const GAP_RUN_FRACTION: f64 = 1.0;
 /// 13 mm to -1.2 mm, past its limit): the pads met only in the next step, 8 mm deep, at
 /// 87.9 N where the motor pushes 10 N per pad. Split (2 substeps; the pair now detected,
 /// `multibody::motor_push`), the pads meet within the step they shut in, where the onset
-/// (`step::onset`) takes the contact from where it starts: at most 8.35 N in that step.
+/// (`step::onset`) takes the contact from where it starts: at most 4.44 N in that step.
 fn gap_drive_substeps(drive: f64, gap: f64, radius: f64, dt: f64) -> u32 {
     let run = -drive * dt;
     if !(run > gap) {

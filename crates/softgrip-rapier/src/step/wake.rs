@@ -65,7 +65,7 @@ impl Step<'_> {
             max_radius: soft.max_radius,
             impulse_joints: &self.physics.impulse_joints,
             multibody_joints: &self.physics.multibody_joints,
-            motor_push: (&s.motor_push.0, 1.0),
+            motor_push: (&s.motor_push.by_link, 1.0),
         };
         let mut any = false;
         for &body in woken {
