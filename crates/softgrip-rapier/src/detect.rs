@@ -358,28 +358,20 @@ impl<'a> Tip<'a> {
         let sweep = self.v * self.dt;
         // Conservative reach: the ball, a margin and the largest prediction distance of its
         // pairs, so that every pair within prediction is a candidate.
-        let reach = r * 1.1
-            + (self.v.length()
-                + self.w.length() * r
-                + self.push
-                + v_max
-                + w_max * r
-                + 2.0 * self.fall)
-                * self.dt
-                * 1.5;
+        let motion = (self.v.length()
+            + self.w.length() * r
+            + self.push
+            + v_max
+            + w_max * r
+            + 2.0 * self.fall)
+            * self.dt
+            * 1.5;
+        let reach = r * 1.1 + motion;
         let lo = centre.min(centre + sweep) - Vector::splat(reach);
         let hi = centre.max(centre + sweep) + Vector::splat(reach);
         // The largest prediction distance of this fingertip's pairs (`prediction` with the
         // fastest other side), for the prefilter before any per-pair lookup.
-        let max_prediction = 0.05 * r
-            + (self.v.length()
-                + self.w.length() * r
-                + self.push
-                + v_max
-                + w_max * r
-                + 2.0 * self.fall)
-                * self.dt
-                * 1.5;
+        let max_prediction = 0.05 * r + motion;
         out.clear();
         out.extend(
             qp.intersect_aabb_conservative(Aabb::new(lo, hi))

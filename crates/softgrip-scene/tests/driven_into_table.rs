@@ -13,6 +13,8 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
 use softgrip_scene::control::Phase;
@@ -230,17 +232,6 @@ fn three_finger_hand_driven_into_the_table_folds_without_flying() {
     );
 }
 
-/// The pybullet_data folder (`SOFTGRIP_PYBULLET_DATA`, as `tests/panda.rs`).
-fn pybullet_data() -> PathBuf {
-    let dir = std::env::var("SOFTGRIP_PYBULLET_DATA").unwrap_or_else(|_| {
-        panic!(
-            "SOFTGRIP_PYBULLET_DATA is not set: it must name pybullet's pybullet_data folder \
-             with franka_panda/; `bash .ci/pybullet-data.sh` fetches it and prints the path"
-        )
-    });
-    PathBuf::from(dir)
-}
-
 /// The Franka Panda arm (pybullet's URDF, fixed base, ready pose, position motors of 1e5 N m/rad
 /// capped at the URDF's efforts) with its shoulder (`panda_joint2`) commanded 0.15 rad
 /// forward over 1 s, which would sweep the hand 46 mm down: its fingers meet a fixed block
@@ -252,7 +243,7 @@ fn pybullet_data() -> PathBuf {
 /// 216-266 N on the block). `SOFTGRIP_PYBULLET_DATA` as `tests/panda.rs`.
 #[test]
 fn panda_arm_driven_into_the_table_stalls_at_its_motors_effort() {
-    let panda = pybullet_data().join("franka_panda");
+    let panda = common::pybullet_data().join("franka_panda");
     let text = format!(
         r#"duration = 2.0
 dt = 0.016666666666666666

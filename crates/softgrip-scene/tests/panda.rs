@@ -10,22 +10,9 @@
 
 mod common;
 
-use std::path::PathBuf;
-
 use softgrip_scene::control::Phase;
 use softgrip_scene::robot::JointKind;
 use softgrip_scene::{PlainRun, Scene};
-
-/// The pybullet_data folder (`SOFTGRIP_PYBULLET_DATA`).
-fn data() -> PathBuf {
-    let dir = std::env::var("SOFTGRIP_PYBULLET_DATA").unwrap_or_else(|_| {
-        panic!(
-            "SOFTGRIP_PYBULLET_DATA is not set: it must name pybullet's pybullet_data folder \
-             with franka_panda/; `bash .ci/pybullet-data.sh` fetches it and prints the path"
-        )
-    });
-    PathBuf::from(dir)
-}
 
 /// Ready pose: the flange 0.5903 m up at x = 0.3069 m, pointing down; the hand turned so
 /// the fingers close along world y. Each finger's frame is at the hand + 0.0584 m (down), its
@@ -45,7 +32,7 @@ fn scene_text(grasp: bool) -> String {
 
 /// The scene, its robot's links colliding with each other if `self_contacts`.
 fn scene_text_with(grasp: bool, self_contacts: bool) -> String {
-    let panda = data().join("franka_panda");
+    let panda = common::pybullet_data().join("franka_panda");
     let pedestal = (PAD[2] - 0.02) / 2.0;
     let mut s = format!(
         r#"duration = 2.5

@@ -22,13 +22,7 @@ use softgrip_scene::{PlainRun, Scene};
 
 /// The xarm folder of pybullet_data (`SOFTGRIP_PYBULLET_DATA`).
 fn xarm() -> PathBuf {
-    let dir = std::env::var("SOFTGRIP_PYBULLET_DATA").unwrap_or_else(|_| {
-        panic!(
-            "SOFTGRIP_PYBULLET_DATA is not set: it must name pybullet's pybullet_data folder \
-             with xarm/; `bash .ci/pybullet-data.sh` fetches it and prints the path"
-        )
-    });
-    PathBuf::from(dir).join("xarm")
+    common::pybullet_data().join("xarm")
 }
 
 /// The scene: the grasp (5 N a pad, 5 cm lift, 1 s hold) with the robot's self-contacts as

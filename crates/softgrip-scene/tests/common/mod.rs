@@ -214,3 +214,17 @@ pub fn hold_efforts(
         .collect();
     (loads, shares)
 }
+
+/// The pybullet_data folder of PyPI's `pybullet` (`SOFTGRIP_PYBULLET_DATA`, with
+/// `franka_panda/` and `xarm/`; `bash .ci/pybullet-data.sh` fetches them and prints the path).
+#[allow(dead_code)] // each test binary uses its own part of this module
+pub fn pybullet_data() -> std::path::PathBuf {
+    let dir = std::env::var("SOFTGRIP_PYBULLET_DATA").unwrap_or_else(|_| {
+        panic!(
+            "SOFTGRIP_PYBULLET_DATA is not set: it must name pybullet's pybullet_data folder \
+             with franka_panda/ and xarm/; `bash .ci/pybullet-data.sh` fetches it and prints \
+             the path"
+        )
+    });
+    std::path::PathBuf::from(dir)
+}
