@@ -253,6 +253,15 @@ fn check_self_overlap(
             if depth > allowed {
                 let link =
                     |l: usize, k: usize| format!("`{}` collision[{k}]", robot.links()[l].name);
+                // Impulse joints need the self-contacts (SCENES.md, `self_contacts`).
+                let remedy = match robot.joint_model() {
+                    crate::robot::JointModel::Multibody => {
+                        "set `self_contacts = false` (pybullet's and Gazebo's default)"
+                    }
+                    crate::robot::JointModel::Impulse => {
+                        "use joints = \"multibody\" with `self_contacts = false`"
+                    }
+                };
                 return Err(SceneError::Urdf {
                     origin: c.origin.to_string(),
                     field: format!("robot[{i}].self_contacts"),
@@ -261,9 +270,8 @@ fn check_self_overlap(
                         "links {} and {} start overlapping by {:.2} mm (more than rapier's \
                          allowed linear error, {:.2} mm), and with `self_contacts = true` rapier \
                          pushes them apart against their joints in the first step (a closed \
-                         chain modelled as a tree overlaps so at every pose); set \
-                         `self_contacts = false` (pybullet's and Gazebo's default) or start \
-                         positions where they do not overlap",
+                         chain modelled as a tree overlaps so at every pose); {remedy}, or \
+                         start positions where they do not overlap",
                         link(la, ka),
                         link(lb, kb),
                         depth * 1e3,
