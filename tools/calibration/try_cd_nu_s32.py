@@ -48,15 +48,18 @@ A MODE ending in `n` is that form with the law's and SFF's constants, not refitt
 SFF exactly). `--var MODE ...` prints max |F/F_FE - 1| per set as session 31's table plus
 every committed core FE file of t/R >= 0.3 ("thick"); `--curves` prints every curve and,
 against SFF (the law on main, not refitted), how many curves got better / worse by more than
-0.1 % (thick ones listed); `--check-form MODE` runs fit_core.check on that fit (chi >= 1, F increasing, core ->
-flat, no rise with t/R).
+0.1 % (thick ones listed); `--check-form MODE` runs fit_core.check on that fit (chi >= 1, F
+increasing, core -> flat, no rise with t/R). `--need` prints, per curve with a point at
+delta/t >= 0.45, the change of the law's deviatoric weight (`lc mu/M + cd`, 0.027-0.034 today)
+that would meet the FE there if the law's share of the fade alone took it (SFF as on main):
+the nu-shape a cd(nu) would need.
 
 Session 32 (CORE_FORM.md "Thin skins: cd with nu, session 32"): `--var SFF K C C0 Cc S CX CcX
 B Kf Cf Ccf Bf Cfs Ccfs Bfs --curves --check-form B` (~2 min) prints its tables; none of the
 forms is better than SFF on every set and every refit moves some t/R >= 0.3 file past its
 pinned tolerance: none adopted, the law unchanged.
 
-usage: PY tools/calibration/try_cd_nu_s32.py --var SFF K C C0 Cc S CX ... [--curves]
+usage: PY tools/calibration/try_cd_nu_s32.py [--need] [--var SFF K C C0 Cc S CX ...] [--curves]
            [--check-form MODE]     (PY: /work/main/target/fe-venv/bin/python, under nice -n 10)
 """
 import argparse
@@ -296,13 +299,55 @@ def per_curve(modes, fits):
         print(line)
 
 
+def need():
+    """Per curve with points at delta/t >= 0.45: dW = (chi_FE - chi_SFF) / ((1 - w) (chi_law -
+    flat) D(s) / T), the change of the law's weight lc mu/M + cd (d chi_law / d cd = (chi_law -
+    flat) D / T) that meets the FE at that point with SFF's thin-skin share unchanged; printed
+    at delta/t ~0.5, ~0.6 and the deepest point within x_max, beside the weight itself."""
+    sff = s29.form("SFF")
+    e0, l0, l1, k0, k1, m, lc, cd = LAW
+    seen = set()
+    rows = []
+    for tag, c in tagged_curves():
+        nu, tau, x = c["nu"], c["tau"], c["x"]
+        key = (c["name"], nu, tau)
+        if key in seen:
+            continue
+        seen.add(key)
+        s = x / tau
+        deep = s >= 0.45
+        w = float(s28.weight(tau, "SFB0030"))
+        if not deep.any() or w >= 1:
+            continue
+        cl = _LAW_K(LAW, x, nu, tau)
+        ct = sff(SFF, x, nu, tau)
+        fl = f.chi_flat(x, nu)
+        eps = f.eps_of(nu)
+        weight = lc * eps / (1 + 4 * eps / 3) + cd
+        t = 1 + (l0 + l1 * eps) * s + weight * f.confined(s)
+        dw = (c["chi"] - ct) / ((1 - w) * (cl - fl) * f.confined(s) / t)
+        picks = []
+        for target in (0.5, 0.6):
+            i = int(np.argmin(np.abs(s - target) + 10 * (~deep)))
+            picks.append(f"s {s[i]:.2f} {dw[i]:+.4f} ({100 * (ct[i] / c['chi'][i] - 1):+.2f} %)")
+        i = len(x) - 1
+        picks.append(f"end s {s[i]:.2f} {dw[i]:+.4f} ({100 * (ct[i] / c['chi'][i] - 1):+.2f} %)")
+        rows.append((nu, tau, f"{tag.split()[0]} ({nu:g}, {tau:g}) {c['name']} w {w:.2f} "
+                     f"weight {weight:.4f}: " + "; ".join(picks)))
+    for _, _, line in sorted(rows):
+        print(line)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--var", nargs="*")
     ap.add_argument("--curves", action="store_true")
     ap.add_argument("--check-form")
+    ap.add_argument("--need", action="store_true")
     a = ap.parse_args()
+    if a.need:
+        need()
     if a.var:
         fits = fit_table(a.var, a.curves)
         if a.check_form:
