@@ -148,6 +148,8 @@ pub struct SoftContacts {
     /// The multibody links' jacobians, for dropping rapier's contacts along directions they
     /// cannot move (`link_contacts`; refreshed each step).
     pub(crate) link_contacts: crate::link_contacts::LinkContacts,
+    /// Pairs of bodies that never touch (`exclude_pair`).
+    pub(crate) excluded: crate::excluded::ExcludedPairs,
     /// The first step has primed rapier's broad and narrow phases (`step`).
     pub(crate) started: bool,
     /// The step's parts are timed (`SoftCounters::step_time` ..; `set_profiling`).
@@ -199,6 +201,7 @@ impl Default for SoftContacts {
             tip_order: Default::default(),
             hook_view: Default::default(),
             link_contacts: Default::default(),
+            excluded: Default::default(),
             started: false,
             profiling: false,
             friction_spring: true,
@@ -225,6 +228,41 @@ impl SoftContacts {
     /// An empty plugin state with the default accuracy.
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// Keeps bodies `a` and `b` of `world` from touching each other: rapier computes no
+    /// contact between their colliders (the plugin's hooks filter the pair) and the plugin no
+    /// soft contact between a fingertip on one and the other. As MoveIt's allowed collision
+    /// matrix does for a robot's links in collision at its default pose: a closed chain
+    /// modelled as a tree, or links welded through a chain of fixed joints, whose shapes
+    /// overlap at every pose and which rapier would push apart against their own joints.
+    /// Turns rapier's `FILTER_CONTACT_PAIRS` hook on for the colliders attached to `a` and `b`
+    /// now (attach their colliders first); the user's own `filter_contact_pair` is still asked
+    /// about every other pair of a collider the user turned that hook on for, and about no
+    /// pair of the others (rapier's default answer). Contacts the two bodies already have are
+    /// cleared at the next step.
+    ///
+    /// # Errors
+    /// [`Error::UnknownBody`] if `a` or `b` is not in `world`, [`Error::SamePair`] if they are
+    /// the same body.
+    pub fn exclude_pair(
+        &mut self,
+        world: &mut PhysicsWorld,
+        a: RigidBodyHandle,
+        b: RigidBodyHandle,
+    ) -> Result<()> {
+        self.excluded.insert(world, a, b)
+    }
+
+    /// Whether bodies `a` and `b` are kept from touching ([`exclude_pair`](Self::exclude_pair)).
+    pub fn is_excluded(&self, a: RigidBodyHandle, b: RigidBodyHandle) -> bool {
+        self.excluded.contains(a, b)
+    }
+
+    /// The pairs of bodies kept from touching ([`exclude_pair`](Self::exclude_pair)), each
+    /// once, in no particular order.
+    pub fn excluded_pairs(&self) -> Vec<(RigidBodyHandle, RigidBodyHandle)> {
+        self.excluded.pairs().collect()
     }
 
     /// Marks `collider` of `world` as the soft fingertip `fingertip`.

@@ -90,6 +90,8 @@ pub(crate) struct Scene<'a> {
     /// link's stored velocity is its multibody's now, without the push its motors give it
     /// within rapier's step.
     pub motor_push: (&'a FastMap<RigidBodyHandle, (f32, f32)>, f32),
+    /// Pairs of bodies that never touch (`SoftContacts::exclude_pair`).
+    pub excluded: &'a crate::excluded::ExcludedPairs,
 }
 
 impl Scene<'_> {
@@ -109,8 +111,12 @@ impl Scene<'_> {
 /// `self_contacts = false`), or two links joined by a multibody joint with its contacts
 /// disabled (a URDF joint's two links, `rapier3d-urdf`'s default). A fingertip's pairs never
 /// reach that filter (its collision groups are `none()`), so the plugin applies it: a pad on a
-/// finger's link does not press the links its robot keeps from colliding with that link.
+/// finger's link does not press the links its robot keeps from colliding with that link. A
+/// pair kept apart by `SoftContacts::exclude_pair` is filtered too.
 pub(crate) fn joint_filtered(scene: &Scene<'_>, a: RigidBodyHandle, b: RigidBodyHandle) -> bool {
+    if scene.excluded.contains(a, b) {
+        return true;
+    }
     if (scene.impulse_joints.joints_between(a, b)).any(|(_, j)| !j.data.contacts_enabled) {
         return true;
     }

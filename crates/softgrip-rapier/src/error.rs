@@ -1,7 +1,7 @@
 //! The one error type of `softgrip-rapier`: raised at construction and registration, never in
 //! the step.
 
-use rapier3d::prelude::ColliderHandle;
+use rapier3d::prelude::{ColliderHandle, RigidBodyHandle};
 use softgrip_law::Shortest;
 
 /// Everything that can go wrong when building a fingertip or registering it with rapier.
@@ -50,6 +50,12 @@ pub enum Error {
     /// The collider handle is not in the collider set.
     #[error("collider {0:?} is not in the collider set")]
     UnknownCollider(ColliderHandle),
+    /// The rigid-body handle is not in the body set.
+    #[error("rigid body {0:?} is not in the body set")]
+    UnknownBody(RigidBodyHandle),
+    /// A pair of bodies to keep apart names one body twice.
+    #[error("rigid body {0:?} was named twice: an excluded pair needs two bodies")]
+    SamePair(RigidBodyHandle),
     /// Only ball colliders can be soft fingertips.
     #[error("collider {handle:?} has shape {shape}: a soft fingertip must be a ball collider")]
     NotABall {

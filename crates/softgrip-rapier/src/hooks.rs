@@ -22,6 +22,7 @@ use rapier3d::prelude::{
 use crate::boundary::to_f64;
 use crate::contacts::HookView;
 use crate::detect::behind_face;
+use crate::excluded::ExcludedPairs;
 use crate::link_contacts::LinkContacts;
 
 /// The user's [`PhysicsHooks`], with the pairs of a fingertip answered by the plugin.
@@ -30,6 +31,8 @@ pub(crate) struct SoftHooks<'a> {
     soft: &'a HookView,
     /// rapier's contacts of multibody links along directions they cannot move (dropped).
     links: &'a LinkContacts,
+    /// Pairs of bodies that never touch (`SoftContacts::exclude_pair`).
+    excluded: &'a ExcludedPairs,
     user: &'a dyn PhysicsHooks,
 }
 
@@ -39,9 +42,15 @@ impl<'a> SoftHooks<'a> {
     pub(crate) fn new(
         soft: &'a HookView,
         links: &'a LinkContacts,
+        excluded: &'a ExcludedPairs,
         user: &'a dyn PhysicsHooks,
     ) -> Self {
-        Self { soft, links, user }
+        Self {
+            soft,
+            links,
+            excluded,
+            user,
+        }
     }
 
     /// What each collider of a pair is to the plugin: `None` not a fingertip, `Some(None)` a
@@ -78,9 +87,16 @@ fn facing(colliders: &ColliderSet, h: ColliderHandle, kind: Tip<'_>) -> Option<V
 }
 
 impl PhysicsHooks for SoftHooks<'_> {
-    /// A pair with a fingertip: rapier's solver ignores it (the plugin applies the law's
-    /// impulses itself). Any other pair: the user's answer.
+    /// A pair of bodies kept apart (`SoftContacts::exclude_pair`): no contact. A pair with a
+    /// fingertip: rapier's solver ignores it (the plugin applies the law's impulses itself).
+    /// Any other pair: the user's answer, if the user turned the hook on for one of its
+    /// colliders, else rapier's default.
     fn filter_contact_pair(&self, ctx: &PairFilterContext) -> Option<SolverFlags> {
+        if let (Some(a), Some(b)) = (ctx.rigid_body1, ctx.rigid_body2)
+            && self.excluded.contains(a, b)
+        {
+            return None;
+        }
         let kinds = self.kinds(ctx.collider1, ctx.collider2);
         if is_rigid_capable(kinds) {
             // Behind a backed fingertip's face: rapier's rigid contact (the solver contacts on
@@ -88,8 +104,13 @@ impl PhysicsHooks for SoftHooks<'_> {
             Some(SolverFlags::COMPUTE_RIGID_IMPULSES)
         } else if is_soft_pair(kinds) {
             Some(SolverFlags::empty())
-        } else {
+        } else if self
+            .excluded
+            .user_asked(ctx.colliders, ctx.collider1, ctx.collider2)
+        {
             self.user.filter_contact_pair(ctx)
+        } else {
+            Some(SolverFlags::default())
         }
     }
 

@@ -11,6 +11,7 @@ mod curvature;
 mod curved_models;
 mod detect;
 mod error;
+mod excluded;
 mod fast_hash;
 mod fingertip;
 mod guard;

@@ -119,10 +119,11 @@ impl SoftContacts {
         // The set is read by the adapters while the rest of `self` is written.
         let soft = std::mem::take(&mut self.hook_view);
         let mut links = std::mem::take(&mut self.link_contacts);
+        let excluded = std::mem::take(&mut self.excluded);
         let r = guard::catch(at.step, at.time, || {
             links.refresh(world);
             let (hooks, events) = (
-                SoftHooks::new(&soft, &links, hooks),
+                SoftHooks::new(&soft, &links, &excluded, hooks),
                 SoftEvents::new(&soft, events),
             );
             Step {
@@ -130,6 +131,7 @@ impl SoftContacts {
                 soft: self,
                 hooks: &hooks,
                 events: &events,
+                excluded: &excluded,
                 at,
             }
             .run()
@@ -145,6 +147,7 @@ impl SoftContacts {
         self.counters.immobile_rows += dropped;
         self.counters.stale_contacts += links.take_stale();
         self.link_contacts = links;
+        self.excluded = excluded;
         let after = At {
             phase: Phase::After,
             ..at
@@ -185,6 +188,8 @@ struct Step<'a> {
     soft: &'a mut SoftContacts,
     hooks: &'a SoftHooks<'a>,
     events: &'a SoftEvents<'a>,
+    /// Pairs of bodies that never touch (the detection skips them).
+    excluded: &'a crate::excluded::ExcludedPairs,
     /// The step's number and start time, for a [`StepError`].
     at: At,
 }
@@ -249,6 +254,7 @@ impl Step<'_> {
             impulse_joints: &self.physics.impulse_joints,
             multibody_joints: &self.physics.multibody_joints,
             motor_push: (&s.motor_push.by_link, push_scale),
+            excluded: self.excluded,
         };
         detect::detect(
             &scene,

@@ -87,6 +87,11 @@ impl SoftWorld {
         crate::multibody_sweeps::sweeps_needed(&ctx, body)
     }
 
+    /// Keeps bodies `a` and `b` from touching each other (see [`SoftContacts::exclude_pair`]).
+    pub fn exclude_pair(&mut self, a: RigidBodyHandle, b: RigidBodyHandle) -> Result<()> {
+        self.soft.exclude_pair(&mut self.physics, a, b)
+    }
+
     /// Registers `collider` as the soft fingertip `fingertip` (see [`SoftContacts::register`]).
     pub fn register(&mut self, collider: ColliderHandle, fingertip: SoftFingertip) -> Result<()> {
         self.soft.register(&mut self.physics, collider, fingertip)

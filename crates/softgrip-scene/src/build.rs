@@ -200,6 +200,8 @@ impl Scene {
                 .collect();
             // Scene::parse refused a scene where this fails (start.rs, check_jointed_sweeps).
             let _ = r.set_jointed_sweeps(world, h, &pads);
+            // Links that start overlapping never touch (robot/overlap.rs).
+            crate::robot::keep_apart(r, h, world);
         }
         out
     }

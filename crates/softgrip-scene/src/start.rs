@@ -88,7 +88,7 @@ pub(crate) fn check_start(c: &Checker, scene: &Scene) -> Result<(), SceneError> 
 /// step syncs them, and a robot's links were moved to their start joint positions after that
 /// (forward kinematics of the bodies only): read from the collider, a pad on a finger was
 /// checked where the finger is at joint position 0.
-fn start_pose(world: &softgrip_rapier::SoftWorld, co: &Collider) -> Pose {
+pub(crate) fn start_pose(world: &softgrip_rapier::SoftWorld, co: &Collider) -> Pose {
     match (co.parent(), co.position_wrt_parent()) {
         (Some(b), Some(rel)) => match world.physics.bodies.get(b) {
             Some(body) => *body.position() * *rel,
@@ -205,14 +205,14 @@ fn check_links(
 }
 
 /// A robot whose links collide with each other (`self_contacts = true`): no two of its links
-/// that rapier lets collide (every pair not joined directly by a joint) may start overlapping
-/// deeper than rapier's allowed linear error, or rapier pushes them apart against their joints
-/// in the first step. A closed chain modelled as a tree overlaps that way at every pose: the
-/// xArm gripper of PyPI's pybullet (a four-bar per finger, its inner knuckle and finger sharing
-/// a pin 12 mm deep) with its self-contacts on threw its drive joint 0.73 rad open in the
-/// first step (its motor at its 50 N m limit) and its mimic joints 0.14 rad apart. An error
-/// naming both links, the depth and the remedy (`SceneError::Urdf`, field
-/// `robot[i].self_contacts`).
+/// that rapier lets collide and that move against each other (not joined directly, not welded
+/// through fixed joints: those are kept apart, `robot::welded`) may start overlapping deeper
+/// than rapier's allowed linear error, or rapier pushes them apart against their joints in the
+/// first step. A closed chain modelled as a tree overlaps that way at every pose: the xArm
+/// gripper of PyPI's pybullet (a four-bar per finger, its inner knuckle and finger sharing a pin
+/// 12 mm deep) with its self-contacts on threw its drive joint 0.73 rad open in the first step
+/// (its motor at its 50 N m limit) and its mimic joints 0.14 rad apart. An error naming both
+/// links, the depth and the remedy (`SceneError::Urdf`, field `robot[i].self_contacts`).
 fn check_self_overlap(
     c: &Checker,
     i: usize,
@@ -221,67 +221,29 @@ fn check_self_overlap(
     world: &softgrip_rapier::SoftWorld,
     allowed: f64,
 ) -> Result<(), SceneError> {
-    if !robot.self_contacts() {
+    let moving = crate::robot::start_overlaps(robot, rh, world)
+        .into_iter()
+        .find(|p| !crate::robot::welded(robot, p.link_a, p.link_b));
+    let Some(p) = moving else {
         return Ok(());
-    }
-    let colliders = &world.physics.colliders;
-    let joined = |a: usize, b: usize| {
-        (robot.joints().iter())
-            .any(|j| (j.parent, j.child) == (a, b) || (j.parent, j.child) == (b, a))
     };
-    let shapes: Vec<(usize, usize, Pose, Aabb)> = (rh.colliders.iter().enumerate())
-        .flat_map(|(l, cs)| cs.iter().enumerate().map(move |(k, ch)| (l, k, *ch)))
-        .map(|(l, k, ch)| {
-            let co = &colliders[ch];
-            let pose = start_pose(world, co);
-            (l, k, pose, co.shape().compute_aabb(&pose))
-        })
-        .collect();
-    for (m, &(la, ka, pa, ba)) in shapes.iter().enumerate() {
-        for &(lb, kb, pb, bb) in &shapes[m + 1..] {
-            if la == lb || joined(la, lb) || !ba.intersects(&bb) {
-                continue;
-            }
-            let (sa, sb) = (
-                colliders[rh.colliders[la][ka]].shape(),
-                colliders[rh.colliders[lb][kb]].shape(),
-            );
-            let Ok(Some(contact)) = query::contact(&pa, sa, &pb, sb, 0.0) else {
-                continue;
-            };
-            let depth = -(contact.dist as f64);
-            if depth > allowed {
-                let link =
-                    |l: usize, k: usize| format!("`{}` collision[{k}]", robot.links()[l].name);
-                // Impulse joints need the self-contacts (SCENES.md, `self_contacts`).
-                let remedy = match robot.joint_model() {
-                    crate::robot::JointModel::Multibody => {
-                        "set `self_contacts = false` (pybullet's and Gazebo's default)"
-                    }
-                    crate::robot::JointModel::Impulse => {
-                        "use joints = \"multibody\" with `self_contacts = false`"
-                    }
-                };
-                return Err(SceneError::Urdf {
-                    origin: c.origin.to_string(),
-                    field: format!("robot[{i}].self_contacts"),
-                    path: robot.urdf_path().to_path_buf(),
-                    message: format!(
-                        "links {} and {} start overlapping by {:.2} mm (more than rapier's \
-                         allowed linear error, {:.2} mm), and with `self_contacts = true` rapier \
-                         pushes them apart against their joints in the first step (a closed \
-                         chain modelled as a tree overlaps so at every pose); {remedy}, or \
-                         start positions where they do not overlap",
-                        link(la, ka),
-                        link(lb, kb),
-                        depth * 1e3,
-                        allowed * 1e3
-                    ),
-                });
-            }
-        }
-    }
-    Ok(())
+    let remedy = "set `self_contacts = false` (pybullet's and Gazebo's default)";
+    let name = |l: usize| &robot.links()[l].name;
+    Err(SceneError::Urdf {
+        origin: c.origin.to_string(),
+        field: format!("robot[{i}].self_contacts"),
+        path: robot.urdf_path().to_path_buf(),
+        message: format!(
+            "links `{}` and `{}` start overlapping by {:.2} mm (more than rapier's allowed \
+             linear error, {:.2} mm), and with `self_contacts = true` rapier pushes them apart \
+             against their joints in the first step (a closed chain modelled as a tree overlaps \
+             so at every pose); {remedy}, or start positions where they do not overlap",
+            name(p.link_a),
+            name(p.link_b),
+            p.depth * 1e3,
+            allowed * 1e3
+        ),
+    })
 }
 
 /// The contact at the start poses of a robot link's collider (`link`: the collider, its start

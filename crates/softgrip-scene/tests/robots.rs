@@ -391,11 +391,6 @@ fn bad_joints_and_keys_are_errors_naming_the_joint_and_value() {
         ),
         (
             TWO_LINKS.to_string(),
-            "joints = \"impulse\"\nself_contacts = false",
-            "robot[0].self_contacts",
-        ),
-        (
-            TWO_LINKS.to_string(),
             "self_contacts = 0",
             "scene.toml:5:17: invalid type: integer `0`, expected a boolean",
         ),

@@ -66,6 +66,7 @@ impl Step<'_> {
             impulse_joints: &self.physics.impulse_joints,
             multibody_joints: &self.physics.multibody_joints,
             motor_push: (&s.motor_push.by_link, 1.0),
+            excluded: self.excluded,
         };
         let mut any = false;
         for &body in woken {

@@ -115,13 +115,6 @@ impl Robot {
         if angle > crate::limits::MAX_ROTATION_ANGLE {
             return Err(c.invalid(f("rotation"), spec.rotation, "an angle <= 100 rad"));
         }
-        if !spec.self_contacts && spec.joints != JointModel::Multibody {
-            return Err(c.invalid(
-                f("self_contacts"),
-                spec.self_contacts,
-                "true with joints = \"impulse\" (false needs joints = \"multibody\")",
-            ));
-        }
         for (name, v) in [("stiffness", spec.stiffness), ("damping", spec.damping)] {
             c.range(f(name), v, (0.0, 1e12), "")?;
         }
@@ -173,28 +166,6 @@ impl Robot {
                      <inertial> with a mass > 0 kg or a <collision>, or use base = \"kinematic\" \
                      or \"fixed\"",
                     links[root].name
-                ),
-            });
-        }
-        if spec.self_contacts
-            && let Some((a, b, depth)) =
-                crate::robot::overlap::fixed_overlap(&rapier, &links, &joints)
-        {
-            let remedy = match spec.joints {
-                JointModel::Multibody => {
-                    "set `self_contacts = false` (pybullet's and Gazebo's default)"
-                }
-                JointModel::Impulse => "use joints = \"multibody\" with `self_contacts = false`",
-            };
-            return Err(SceneError::Urdf {
-                origin: c.origin.to_string(),
-                field: f("self_contacts"),
-                path: urdf.path.clone(),
-                message: format!(
-                    "links `{a}` and `{b}` are held together by fixed joints but their collision \
-                     shapes overlap by {:.2} mm: they would be in contact at every pose (the solver \
-                     pushes them apart against the joints); {remedy}, or remove the overlap",
-                    depth * 1e3
                 ),
             });
         }

@@ -57,9 +57,10 @@ pub struct RobotSpec {
     /// only the pairs joined directly by a joint, so links welded through a chain of fixed
     /// joints (the Panda's link7 - link8 - hand) still collide where their collision shapes
     /// overlap, and the multibody solve then fights its own fixed joints (the Panda blows up to
-    /// NaN). `false` turns every contact between the robot's links off
-    /// (`Multibody::set_self_contacts_enabled`; pybullet's and Gazebo's default); only with
-    /// `joints = "multibody"`.
+    /// NaN): such welded pairs that overlap are kept from touching. `false` turns every contact
+    /// between the robot's links off (pybullet's and Gazebo's default;
+    /// `Multibody::set_self_contacts_enabled`, or, with `joints = "impulse"`, every pair of its
+    /// links kept apart by `SoftWorld::exclude_pair`).
     #[serde(default = "default_self_contacts")]
     pub self_contacts: bool,
 }
