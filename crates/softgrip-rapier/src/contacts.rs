@@ -240,7 +240,9 @@ impl SoftContacts {
     /// now (attach their colliders first); the user's own `filter_contact_pair` is still asked
     /// about every other pair of a collider the user turned that hook on for, and about no
     /// pair of the others (rapier's default answer). Contacts the two bodies already have are
-    /// cleared at the next step.
+    /// cleared at the next step. rapier never recycles the contacts of a pair with an active
+    /// hook, so every other pair of those colliders gets rapier's full contact update each step
+    /// (crate README, Limits: on a gripper's finger that moved its grasp's hold force).
     ///
     /// # Errors
     /// [`Error::UnknownBody`] if `a` or `b` is not in `world`, [`Error::SamePair`] if they are
