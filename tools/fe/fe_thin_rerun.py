@@ -77,6 +77,17 @@ SKINS = [
     # session 31: a blind skin inside the deep-squeeze miss (nu 0.44-0.48, t/R 0.08-0.15), run
     # after the session's forms were judged (none adopted), to the law's x_max (0.8 t/R)
     (0.455, 0.12, "blind", 0.096),
+    # session 32: deep fit runs in the deep-squeeze region (nu 0.45-0.48, t/R 0.15-0.25), with no
+    # earlier run of their nu and t/R, declared fit data of the core law's thin-skin form BEFORE
+    # any form was chosen (the fitted set had no deep squeeze at nu 0.44-0.48 on t/R < 0.3), to
+    # the law's x_max (0.8 t/R); and a deep nu 0.495 t/R 0.12 held out (is nu 0.49 t/R 0.12's
+    # "less deep stiffening" the nu 0.49-0.5 trend or that one curve?)
+    (0.46, 0.15, "fit", 0.12),
+    (0.48, 0.15, "fit", 0.12),
+    (0.47, 0.2, "fit", 0.16),
+    (0.45, 0.2, "fit", 0.16),
+    (0.48, 0.25, "fit", 0.2),
+    (0.495, 0.12, "held", 0.096),
 ]
 
 
@@ -95,6 +106,8 @@ CASES = {case_name(nu, t): (nu, t, role, reach) for nu, t, role, reach in SKINS}
 S30 = {case_name(nu, t) for nu, t in [(0.47, 0.15), (0.42, 0.25), (0.49, 0.3), (0.34, 0.18),
                                       (0.44, 0.09)]}
 S31 = {case_name(0.455, 0.12)}
+S32 = {case_name(nu, t) for nu, t in [(0.46, 0.15), (0.48, 0.15), (0.47, 0.2), (0.45, 0.2),
+                                      (0.48, 0.25), (0.495, 0.12)]}
 
 # Session 27/28 (issue 24 item 5, `--deep`): the deep CAX8 skins of fe_campaign.S23_DEEP whose
 # reference is soft from the campaign's penalty 1e5 (up to 4.86 % at their deepest), re-run
@@ -171,6 +184,12 @@ def export(names, runs):
             rerun = (f"session {30 if n in S30 else 31}'s blind skin (no earlier run of this nu "
                      f"and t/R)")
             what["blind"] = "blind for the core law (no fit may see it)"
+        elif n in S32:
+            rerun = "session 32's deep run (no earlier run of this nu and t/R)"
+            what["fit"] = ("fit data of the core law's thin-skin form, declared so before any "
+                           "form was chosen")
+            what["held"] = ("held out of the core law's fit (the nu 0.49-0.5 trend of the deep "
+                            "squeeze)")
         else:  # nu 0.48 t/R 0.05: session 20's R/120 run stopped at x = 0.015 (three rows)
             rerun = (f"session 25's re-run of a skin with no committed curve (session 20's "
                      f"R/120 run, penalty 1e5, stopped at x = {reach:g}: too few rows to export)")
