@@ -117,7 +117,9 @@ S32 = {case_name(nu, t) for nu, t in [(0.46, 0.15), (0.48, 0.15), (0.47, 0.2), (
 DEEP = [(0.48, 0.08, "blind", 0.04), (0.48, 0.1, "blind", 0.06),
         # then two nearly incompressible thin skins with no CAX8 run (their CAX8R twins stop
         # at delta/t 0.4-0.5): the deep squeeze past delta/t 0.5 at other t/R and nu
-        (0.49, 0.12, "held", 0.05), (0.45, 0.07, "blind", 0.0275)]
+        (0.49, 0.12, "held", 0.05), (0.45, 0.07, "blind", 0.0275),
+        # session 32: the held-out nu 0.495 t/R 0.12, whose CAX8R run stops at delta/t 0.48
+        (0.495, 0.12, "held", 0.0575)]
 DEEP_CASES = {case_name(nu, t) + "_cax8": (nu, t, role, reach) for nu, t, role, reach in DEEP}
 OUT_DEEP = os.path.join(DATA, "cax8", "k1e6")
 CASES.update(DEEP_CASES)
@@ -175,7 +177,8 @@ def export(names, runs):
                                  "its CAX8R run is").replace("its committed twin is",
                                                              "its CAX8R run is")
                     for k, v in what.items()}
-            rerun = (f"session 28's deep run on CAX8 to delta/t = 1 of the skin of "
+            rerun = (f"session {32 if nu == 0.495 else 28}'s deep run on CAX8 to delta/t = 1 of "
+                     f"the skin of "
                      f"tests/data/fe/core/k1e6/force_nu{nu:g}_t{t:g}.csv")
         elif os.path.exists(os.path.join(DATA, twin)):
             session = "session 30" if n in S30 else "session 25"
