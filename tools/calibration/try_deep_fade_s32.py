@@ -46,8 +46,8 @@ squeeze, try_deep_squeeze_s31.law_with_film: a faded term in the law, 0 from t/R
 six constants kept, only c fitted; `k` the film's cf kept at SFF's (the rest refitted); `n` SFF's
 six and c = 1 (not fitted); several term letters add up (one amplitude each). Every variant is
 fitted on the FITTED set of try_thin_skin_s26.sets() plus the five session-32 fit runs
-("fitted+"); held-out, blind, deep and the s30/s31 blind skins and the nu 0.495 t/R 0.12 run are
-in no fit.
+("fitted+"); held-out, blind, deep and the s30/s31 blind skins and the nu 0.495 t/R 0.12 runs
+(CAX8R, and CAX8 in tests/data/fe/core/cax8/k1e6/) are in no fit.
 
 `--need` prints, per curve of t/R < 0.3, SFF's and the law's miss and what the thin-skin form
 lacks, `dsq = (target - shell) / (excess coupling)` (target `(chi_FE - (1 - w) chi_law)/w`), at
@@ -59,11 +59,12 @@ per set, `--curves` per curve and the count better / worse by > 0.1 % than SFF (
 0.3 file that moved at all), `--check-form MODE` runs fit_core.check.
 
 Session 32 (CORE_FORM.md "Thin skins: deep fit runs and a faded deep term, session 32"):
-`--var SFF R O X Y G F M OM YF GF YG OG Ok H --curves` (~75 s) and `--need`, `--lin "" O Y YG YF
+`--var SFF R O X Y G F M OM YF GF YG OG Ok H --curves` (~80 s) and `--need`, `--lin "" O Y YG YF
 OM H` print its tables. With the fit runs every refit meets the nu 0.44-0.48 deep skins, and every
-one loses the held-out deep nu 0.49 t/R 0.12 (1.86 -> 4.15-15.35 %) and makes 18-23 thin curves
-worse by > 0.1 %; the held-out nu 0.495 t/R 0.12 is +3.08 % with SFF (the nu 0.49-0.5 excess is
-the trend): none adopted, the law unchanged.
+one loses the held-out deep nu 0.49 t/R 0.12 (1.86 -> 4.15-15.35 %) and makes 19-24 thin curves
+worse by > 0.1 %; the held-out nu 0.495 t/R 0.12 is +3.08 % with SFF on CAX8R (delta/t 0.48) and
++9.90 % on CAX8 (delta/t 0.79): the nu 0.49-0.5 excess is the trend, and a miss of SFF itself.
+None adopted, the law unchanged.
 
 usage: PY tools/calibration/try_deep_fade_s32.py [--need] [--lin MODE ...] [--var SFF R M X ...]
            [--curves] [--check-form MODE]
