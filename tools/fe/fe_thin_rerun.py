@@ -24,7 +24,7 @@ provenance; a subfolder, out of every glob of core/*.csv, so the law's tests kee
 until a refit adopts these); `--compare` prints each against the committed curve.
 
 usage: PY tools/fe/fe_thin_rerun.py [--runs DIR] [--deep] [--only NAME ...] [--list] [--export]
-       [--compare] [-j 1|2]
+       [--compare] [-j 1|2] [--h N [--mesh-compare]]
        (PY: target/fe-venv/bin/python; ccx under `nice`; DIR default /work/fe-scratch/s25-skin).
        A run directory that holds meta.json is not run again; a case is claimed by creating
        its directory, so two processes may share the queue.
@@ -137,6 +137,32 @@ def case_of(name):
     return case
 
 
+def remeshed(name, h):
+    """The run directory's name of case `name` on the mesh R/h (session 32's mesh check)."""
+    return name.replace(f"_h{mesh_n(CASES[name][1])}_", f"_h{h}_")
+
+
+def mesh_compare(names, runs, h):
+    """Each exported file against its run on the mesh R/h (`--h h`): (F_file / F_h - 1) [%]."""
+    for n in names:
+        d = os.path.join(runs, remeshed(n, h))
+        if not os.path.exists(os.path.join(d, "meta.json")):
+            continue
+        res = fe_run.analyse(d)
+        nu, t, role, reach = CASES[n]
+        path = os.path.join(OUT_DEEP if n in DEEP_CASES else OUT, f"force_nu{nu:g}_t{t:g}.csv")
+        a = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+        ref = dict(zip(np.round(a["delta_over_R"], 6), a["force_N"]))
+        rows = [(r["x"], 100 * (ref[round(r["x"], 6)] / r["F"] - 1)) for r in res["rows"]
+                if round(r["x"], 6) in ref and r["x"] >= 0.01 - 1e-9]
+        print(f"== {os.path.relpath(path)} (R/{mesh_n(t)}) against R/{h} "
+              f"({res['meta']['mesh']['elements']} elements, wall {res['meta']['wall_s']} s, "
+              f"reached x = {res['reached']:g}: {res['why']}): largest "
+              f"{max(abs(v) for _, v in rows):.3f} %, at the file's end x = {rows[-1][0]:g} "
+              f"{rows[-1][1]:+.3f} %")
+        print("   " + " ".join(f"{x:g}:{v:+.3f}" for x, v in rows))
+
+
 def committed(nu, t, deep=False):
     p = os.path.join(DATA, "cax8" if deep else "", f"force_nu{nu:g}_t{t:g}.csv")
     if not os.path.exists(p):
@@ -246,6 +272,10 @@ def main():
     ap.add_argument("--export", action="store_true")
     ap.add_argument("--compare", action="store_true")
     ap.add_argument("-j", type=int, default=1, choices=[1, 2])
+    ap.add_argument("--h", type=int, help="run on the mesh R/h instead (a mesh check; run "
+                    "directory named with _h{h}_)")
+    ap.add_argument("--mesh-compare", action="store_true",
+                    help="with --h: each exported file against its R/h run")
     a = ap.parse_args()
     names = a.only or [n for n in CASES if (n in DEEP_CASES) == a.deep]
     if a.list:
@@ -259,19 +289,28 @@ def main():
     if a.compare:
         compare(names, a.runs)
         return
+    if a.mesh_compare:
+        mesh_compare(names, a.runs, a.h)
+        return
     os.makedirs(a.runs, exist_ok=True)
     lock = threading.Lock()
 
     def worker():
         while True:
             with lock:
-                todo = [n for n in names if not os.path.exists(os.path.join(a.runs, n))]
+                todo = [n for n in names
+                        if not os.path.exists(os.path.join(a.runs, remeshed(n, a.h) if a.h else n))]
                 if not todo:
                     return
                 n = todo[0]
-                os.makedirs(os.path.join(a.runs, n))  # claim it
-            print(f"start {n}", flush=True)
-            meta = fe_run.run_case(case_of(n), os.path.join(a.runs, n), timeout=10800 if n in DEEP_CASES else 5400)
+                dn = remeshed(n, a.h) if a.h else n
+                os.makedirs(os.path.join(a.runs, dn))  # claim it
+            print(f"start {dn}", flush=True)
+            case = case_of(n)
+            if a.h:
+                case.h = 1.0 / a.h
+            meta = fe_run.run_case(case, os.path.join(a.runs, dn),
+                                   timeout=10800 if n in DEEP_CASES else 5400)
             print(f"done {n}: rc {meta['rc']}, {meta['wall_s']} s", flush=True)
 
     ts = [threading.Thread(target=worker) for _ in range(a.j)]
