@@ -24,7 +24,7 @@ provenance; a subfolder, out of every glob of core/*.csv, so the law's tests kee
 until a refit adopts these); `--compare` prints each against the committed curve.
 
 usage: PY tools/fe/fe_thin_rerun.py [--runs DIR] [--deep] [--only NAME ...] [--list] [--export]
-       [--compare] [-j 1|2]
+       [--compare] [-j 1|2] [--h N [--mesh-compare]]
        (PY: target/fe-venv/bin/python; ccx under `nice`; DIR default /work/fe-scratch/s25-skin).
        A run directory that holds meta.json is not run again; a case is claimed by creating
        its directory, so two processes may share the queue.
@@ -77,6 +77,17 @@ SKINS = [
     # session 31: a blind skin inside the deep-squeeze miss (nu 0.44-0.48, t/R 0.08-0.15), run
     # after the session's forms were judged (none adopted), to the law's x_max (0.8 t/R)
     (0.455, 0.12, "blind", 0.096),
+    # session 32: deep fit runs in the deep-squeeze region (nu 0.45-0.48, t/R 0.15-0.25), with no
+    # earlier run of their nu and t/R, declared fit data of the core law's thin-skin form BEFORE
+    # any form was chosen (the fitted set had no deep squeeze at nu 0.44-0.48 on t/R < 0.3), to
+    # the law's x_max (0.8 t/R); and a deep nu 0.495 t/R 0.12 held out (is nu 0.49 t/R 0.12's
+    # "less deep stiffening" the nu 0.49-0.5 trend or that one curve?)
+    (0.46, 0.15, "fit", 0.12),
+    (0.48, 0.15, "fit", 0.12),
+    (0.47, 0.2, "fit", 0.16),
+    (0.45, 0.2, "fit", 0.16),
+    (0.48, 0.25, "fit", 0.2),
+    (0.495, 0.12, "held", 0.096),
 ]
 
 
@@ -95,6 +106,8 @@ CASES = {case_name(nu, t): (nu, t, role, reach) for nu, t, role, reach in SKINS}
 S30 = {case_name(nu, t) for nu, t in [(0.47, 0.15), (0.42, 0.25), (0.49, 0.3), (0.34, 0.18),
                                       (0.44, 0.09)]}
 S31 = {case_name(0.455, 0.12)}
+S32 = {case_name(nu, t) for nu, t in [(0.46, 0.15), (0.48, 0.15), (0.47, 0.2), (0.45, 0.2),
+                                      (0.48, 0.25), (0.495, 0.12)]}
 
 # Session 27/28 (issue 24 item 5, `--deep`): the deep CAX8 skins of fe_campaign.S23_DEEP whose
 # reference is soft from the campaign's penalty 1e5 (up to 4.86 % at their deepest), re-run
@@ -104,7 +117,9 @@ S31 = {case_name(0.455, 0.12)}
 DEEP = [(0.48, 0.08, "blind", 0.04), (0.48, 0.1, "blind", 0.06),
         # then two nearly incompressible thin skins with no CAX8 run (their CAX8R twins stop
         # at delta/t 0.4-0.5): the deep squeeze past delta/t 0.5 at other t/R and nu
-        (0.49, 0.12, "held", 0.05), (0.45, 0.07, "blind", 0.0275)]
+        (0.49, 0.12, "held", 0.05), (0.45, 0.07, "blind", 0.0275),
+        # session 32: the held-out nu 0.495 t/R 0.12, whose CAX8R run stops at delta/t 0.48
+        (0.495, 0.12, "held", 0.0575)]
 DEEP_CASES = {case_name(nu, t) + "_cax8": (nu, t, role, reach) for nu, t, role, reach in DEEP}
 OUT_DEEP = os.path.join(DATA, "cax8", "k1e6")
 CASES.update(DEEP_CASES)
@@ -120,6 +135,32 @@ def case_of(name):
     case.tp = 0.0025
     case.kpen = KPEN
     return case
+
+
+def remeshed(name, h):
+    """The run directory's name of case `name` on the mesh R/h (session 32's mesh check)."""
+    return name.replace(f"_h{mesh_n(CASES[name][1])}_", f"_h{h}_")
+
+
+def mesh_compare(names, runs, h):
+    """Each exported file against its run on the mesh R/h (`--h h`): (F_file / F_h - 1) [%]."""
+    for n in names:
+        d = os.path.join(runs, remeshed(n, h))
+        if not os.path.exists(os.path.join(d, "meta.json")):
+            continue
+        res = fe_run.analyse(d)
+        nu, t, role, reach = CASES[n]
+        path = os.path.join(OUT_DEEP if n in DEEP_CASES else OUT, f"force_nu{nu:g}_t{t:g}.csv")
+        a = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+        ref = dict(zip(np.round(a["delta_over_R"], 6), a["force_N"]))
+        rows = [(r["x"], 100 * (ref[round(r["x"], 6)] / r["F"] - 1)) for r in res["rows"]
+                if round(r["x"], 6) in ref and r["x"] >= 0.01 - 1e-9]
+        print(f"== {os.path.relpath(path)} (R/{mesh_n(t)}) against R/{h} "
+              f"({res['meta']['mesh']['elements']} elements, wall {res['meta']['wall_s']} s, "
+              f"reached x = {res['reached']:g}: {res['why']}): largest "
+              f"{max(abs(v) for _, v in rows):.3f} %, at the file's end x = {rows[-1][0]:g} "
+              f"{rows[-1][1]:+.3f} %")
+        print("   " + " ".join(f"{x:g}:{v:+.3f}" for x, v in rows))
 
 
 def committed(nu, t, deep=False):
@@ -162,7 +203,8 @@ def export(names, runs):
                                  "its CAX8R run is").replace("its committed twin is",
                                                              "its CAX8R run is")
                     for k, v in what.items()}
-            rerun = (f"session 28's deep run on CAX8 to delta/t = 1 of the skin of "
+            rerun = (f"session {32 if nu == 0.495 else 28}'s deep run on CAX8 to delta/t = 1 of "
+                     f"the skin of "
                      f"tests/data/fe/core/k1e6/force_nu{nu:g}_t{t:g}.csv")
         elif os.path.exists(os.path.join(DATA, twin)):
             session = "session 30" if n in S30 else "session 25"
@@ -171,6 +213,12 @@ def export(names, runs):
             rerun = (f"session {30 if n in S30 else 31}'s blind skin (no earlier run of this nu "
                      f"and t/R)")
             what["blind"] = "blind for the core law (no fit may see it)"
+        elif n in S32:
+            rerun = "session 32's deep run (no earlier run of this nu and t/R)"
+            what["fit"] = ("fit data of the core law's thin-skin form, declared so before any "
+                           "form was chosen")
+            what["held"] = ("held out of the core law's fit (the nu 0.49-0.5 trend of the deep "
+                            "squeeze)")
         else:  # nu 0.48 t/R 0.05: session 20's R/120 run stopped at x = 0.015 (three rows)
             rerun = (f"session 25's re-run of a skin with no committed curve (session 20's "
                      f"R/120 run, penalty 1e5, stopped at x = {reach:g}: too few rows to export)")
@@ -224,6 +272,10 @@ def main():
     ap.add_argument("--export", action="store_true")
     ap.add_argument("--compare", action="store_true")
     ap.add_argument("-j", type=int, default=1, choices=[1, 2])
+    ap.add_argument("--h", type=int, help="run on the mesh R/h instead (a mesh check; run "
+                    "directory named with _h{h}_)")
+    ap.add_argument("--mesh-compare", action="store_true",
+                    help="with --h: each exported file against its R/h run")
     a = ap.parse_args()
     names = a.only or [n for n in CASES if (n in DEEP_CASES) == a.deep]
     if a.list:
@@ -237,19 +289,28 @@ def main():
     if a.compare:
         compare(names, a.runs)
         return
+    if a.mesh_compare:
+        mesh_compare(names, a.runs, a.h)
+        return
     os.makedirs(a.runs, exist_ok=True)
     lock = threading.Lock()
 
     def worker():
         while True:
             with lock:
-                todo = [n for n in names if not os.path.exists(os.path.join(a.runs, n))]
+                todo = [n for n in names
+                        if not os.path.exists(os.path.join(a.runs, remeshed(n, a.h) if a.h else n))]
                 if not todo:
                     return
                 n = todo[0]
-                os.makedirs(os.path.join(a.runs, n))  # claim it
-            print(f"start {n}", flush=True)
-            meta = fe_run.run_case(case_of(n), os.path.join(a.runs, n), timeout=10800 if n in DEEP_CASES else 5400)
+                dn = remeshed(n, a.h) if a.h else n
+                os.makedirs(os.path.join(a.runs, dn))  # claim it
+            print(f"start {dn}", flush=True)
+            case = case_of(n)
+            if a.h:
+                case.h = 1.0 / a.h
+            meta = fe_run.run_case(case, os.path.join(a.runs, dn),
+                                   timeout=10800 if n in DEEP_CASES else 5400)
             print(f"done {n}: rc {meta['rc']}, {meta['wall_s']} s", flush=True)
 
     ts = [threading.Thread(target=worker) for _ in range(a.j)]
