@@ -95,6 +95,8 @@ _LAW_K = s25.form("K")
 # session 32's deep penalty-1e6 runs (tests/data/fe/core/k1e6/), roles declared before any form
 S32_FIT = ((0.46, 0.15), (0.48, 0.15), (0.47, 0.2), (0.45, 0.2), (0.48, 0.25))
 S32_HELD = ((0.495, 0.12),)
+# Run after this script's forms were judged (none adopted): nu 0.499 t/R 0.12 on CAX8, held out.
+S32_HELD_499 = ((0.499, 0.12),)
 TERMS = "MXYFOGH"
 
 
@@ -190,6 +192,7 @@ def groups():
             ("s31 blind (0.455, 0.12)", s31.s30_blind(s31.S31_BLIND)),
             ("s32 held (0.495, 0.12)", k1e6(S32_HELD)),
             ("s32 held CAX8 (0.495, 0.12)", k1e6(S32_HELD, s29.DEEP_K1E6)),
+            ("s32 held CAX8 (0.499, 0.12)", k1e6(S32_HELD_499, s29.DEEP_K1E6)),
             ("thick t/R >= 0.3 (committed)", s32.thick_committed()))
 
 
