@@ -214,8 +214,10 @@ def export(names, runs):
                 rerun = (f"session {32 if nu >= 0.495 else 28}'s deep run on CAX8 to delta/t = 1 "
                          f"of the skin of {k1e6}")
             else:
-                # nu 0.499 (session 32): no CAX8R run of this skin at all.
-                rerun = "session 32's deep run on CAX8 to delta/t = 1 (no CAX8R run of this skin)"
+                # nu 0.499 (session 32) and nu 0.497 t/R 0.15 (session 33): no CAX8R run of
+                # this skin at all.
+                rerun = (f"session {33 if (nu, t) == (0.497, 0.15) else 32}'s deep run on CAX8 "
+                         f"to delta/t = 1 (no CAX8R run of this skin)")
                 what = {k: v.replace(" (its CAX8R run is)", "") for k, v in what.items()}
         elif os.path.exists(os.path.join(DATA, twin)):
             session = "session 30" if n in S30 else "session 25"
