@@ -21,6 +21,7 @@ try_deep_fade_s32's need), the film weight that is (in place of SFF's psi(z'), a
 the skeleton's mean contact pressure over the bulk modulus q = p/K beside the FE's own largest
 volumetric strain 1 - J (its `min_element_J` column), and the pressure-stiffened shear factor
 G = (1 - q)^(-5/3) - 1 (alone and on the flow share psi(z')).
+`--ratio` prints the nu 0.499 over the nu 0.49 t/R 0.12 deep skin: the FE's, SFF's, the skeleton's.
 `--nhfilm` prints the exact finite-strain incompressible neo-Hookean squeezed film of a flat
 bonded disc (lubrication limit) against the h^-3 forms.
 `--var MODE ...` refits and prints max |F/F_FE - 1| per set, `--curves` per curve; modes:
@@ -45,7 +46,7 @@ bonded disc (lubrication limit) against the h^-3 forms.
   N    cj (mu/M) (Phi_c - 1), cf = 0: the film weighted by the compressibility, no flow share
   H    SFF's film weighted by the skin's compressibility: cj (mu/M) psi(z') (Phi_c - 1), cf = 0
 
-usage: PY tools/calibration/try_film_nu_s33.py [--need] [--nhfilm] [--var MODE ...] [--curves]
+usage: PY tools/calibration/try_film_nu_s33.py [--need] [--nhfilm] [--ratio] [--var MODE ...] [--curves]
            [--check-form MODE]
        (PY: /work/main/target/fe-venv/bin/python, under nice -n 10)
 """
@@ -212,6 +213,29 @@ def need():
                   f"{float(stiffened(q[i])):.3f}, psi(z') G {r['p1'][i] * float(stiffened(q[i])):.3f}")
 
 
+def ratio():
+    """The nu 0.499 over the nu 0.49 skin at t/R 0.12 (both CAX8, penalty 1e6): the FE's chi ratio
+    against SFF's and the skeleton's (the small-strain shell's excess, chi_shell - chi_hemi), and
+    SFF's film cf psi(z') (Phi_c - 1) on each."""
+    cs = {c["nu"]: c for c in s32.k1e6(((0.49, 0.12), (0.499, 0.12)), s29.DEEP_K1E6)}
+    sff = form("SFF")
+    print("| x (delta/t) | FE chi 0.499 / 0.49 | SFF's | skeleton excess' | SFF's film 0.49 / 0.499 |")
+    print("|---|---|---|---|---|")
+    for x in (0.02, 0.04, 0.06, 0.08, 0.095):
+        row = []
+        for nu in (0.49, 0.499):
+            c = cs[nu]
+            fe = float(np.interp(x, c["x"], c["chi"]))
+            xx = np.array([x])
+            ex = float(np.squeeze(s28.chi_shell(xx, nu, 0.12) - s28.chi_hemi(xx, nu, "F")))
+            film = SFF[5] * float(np.squeeze(s25.psi(s32.z_of(xx, nu, 0.12) / (1 - x / 0.12))
+                                              * (s29.phi_c(x / 0.12, 0.12) - 1)))
+            row.append((fe, float(np.squeeze(sff(SFF, xx, nu, 0.12))), ex, film))
+        (a, b) = row
+        print(f"| {x:g} ({x / 0.12:.2f}) | {b[0] / a[0]:.3f} | {b[1] / a[1]:.3f} | "
+              f"{b[2] / a[2]:.3f} | {a[3]:.3f} / {b[3]:.3f} |")
+
+
 def nhfilm():
     """The flat bonded incompressible neo-Hookean disc in the lubrication limit (radius a >> t):
     x_r = R g(Z), x_z = w(Z), det F = g^2 w' = 1; the shear energy (mu/2) R^2 g'^2 dominates, and
@@ -263,9 +287,12 @@ def main():
     ap.add_argument("--check-form")
     ap.add_argument("--need", action="store_true")
     ap.add_argument("--nhfilm", action="store_true")
+    ap.add_argument("--ratio", action="store_true")
     a = ap.parse_args()
     if a.nhfilm:
         nhfilm()
+    if a.ratio:
+        ratio()
     if a.need:
         need()
     if a.var:
