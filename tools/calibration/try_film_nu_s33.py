@@ -22,6 +22,7 @@ the skeleton's mean contact pressure over the bulk modulus q = p/K beside the FE
 volumetric strain 1 - J (its `min_element_J` column), and the pressure-stiffened shear factor
 G = (1 - q)^(-5/3) - 1 (alone and on the flow share psi(z')).
 `--ratio` prints the nu 0.499 over the nu 0.49 t/R 0.12 deep skin: the FE's, SFF's, the skeleton's.
+`--peak` prints the FE's peak (K (1 - min J)) over mean contact pressure against the h^-3 film's.
 `--nhfilm` prints the exact finite-strain incompressible neo-Hookean squeezed film of a flat
 bonded disc (lubrication limit) against the h^-3 forms.
 `--var MODE ...` refits and prints max |F/F_FE - 1| per set, `--curves` per curve; modes:
@@ -46,7 +47,7 @@ bonded disc (lubrication limit) against the h^-3 forms.
   N    cj (mu/M) (Phi_c - 1), cf = 0: the film weighted by the compressibility, no flow share
   H    SFF's film weighted by the skin's compressibility: cj (mu/M) psi(z') (Phi_c - 1), cf = 0
 
-usage: PY tools/calibration/try_film_nu_s33.py [--need] [--nhfilm] [--ratio] [--var MODE ...] [--curves]
+usage: PY tools/calibration/try_film_nu_s33.py [--need] [--nhfilm] [--ratio] [--peak] [--var MODE ...] [--curves]
            [--check-form MODE]
        (PY: /work/main/target/fe-venv/bin/python, under nice -n 10)
 """
@@ -236,6 +237,32 @@ def ratio():
               f"{b[2] / a[2]:.3f} | {a[3]:.3f} / {b[3]:.3f} |")
 
 
+def peak():
+    """The FE's peak pressure over its mean contact pressure in the squeeze, against the squeezed
+    film's. FE: peak = K (1 - min J) (CalculiX's volumetric law p = (2/D1)(1 - J) = K (1 - J):
+    the largest hydrostatic pressure, wherever its element is), mean = F / (pi a^2) with the
+    FE's contact radius. Film: lubrication in the gap h(v) = t (1 - s + 2 s v/(1 - tau)) between
+    the plane and the core's sphere, patch fixed, p(a) = 0: p(v) ~ int_v^1 dv'/h^3, so peak/mean
+    = int_0^1 h^-3 dv / int_0^1 v h^-3 dv (2 for a uniform gap; Matthewson's p = p' = 0 rim gives
+    3 at small strain)."""
+    print("| skin | delta/t | FE peak [mu] | FE mean [mu] | FE peak/mean | film peak/mean |")
+    print("|---|---|---|---|---|---|")
+    for nu, t in ((0.49, 0.12), (0.495, 0.12), (0.497, 0.15), (0.499, 0.12)):
+        c = s32.k1e6(((nu, t),), s29.DEEP_K1E6)[0]
+        d = np.genfromtxt(os.path.join(f.DATA, c["name"]), delimiter=",", names=True,
+                          skip_header=1)
+        k = 2 * (1 + nu) / (3 * (1 - 2 * nu))  # K / mu
+        for sq in (0.1, 0.4, 0.6, 0.79):
+            i = int(np.argmin(np.abs(d["delta_over_R"] - sq * t)))
+            x = d["delta_over_R"][i]
+            s = x / t
+            h = lambda v: 1 - s + 2 * s * v / (1 - t)  # noqa: E731
+            film = quad(lambda v: h(v) ** -3, 0, 1)[0] / quad(lambda v: v * h(v) ** -3, 0, 1)[0]
+            pk = k * (1 - d["min_element_J"][i])
+            pm = d["force_N"][i] / (np.pi * d["contact_radius_mm"][i] ** 2)
+            print(f"| {nu:g}/{t:g} | {s:.2f} | {pk:.2f} | {pm:.2f} | {pk / pm:.2f} | {film:.2f} |")
+
+
 def nhfilm():
     """The flat bonded incompressible neo-Hookean disc in the lubrication limit (radius a >> t):
     x_r = R g(Z), x_z = w(Z), det F = g^2 w' = 1; the shear energy (mu/2) R^2 g'^2 dominates, and
@@ -288,11 +315,14 @@ def main():
     ap.add_argument("--need", action="store_true")
     ap.add_argument("--nhfilm", action="store_true")
     ap.add_argument("--ratio", action="store_true")
+    ap.add_argument("--peak", action="store_true")
     a = ap.parse_args()
     if a.nhfilm:
         nhfilm()
     if a.ratio:
         ratio()
+    if a.peak:
+        peak()
     if a.need:
         need()
     if a.var:
