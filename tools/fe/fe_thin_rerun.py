@@ -122,7 +122,10 @@ DEEP = [(0.48, 0.08, "blind", 0.04), (0.48, 0.1, "blind", 0.06),
         (0.495, 0.12, "held", 0.0575),
         # session 32, after the law was judged on nu 0.495 (+9.90 % at delta/t 0.79): does the
         # excess keep growing towards nu 0.5? nu 0.499 t/R 0.12 on CAX8, held out, no CAX8R twin
-        (0.499, 0.12, "held", 0.0)]
+        (0.499, 0.12, "held", 0.0),
+        # session 33, declared before any form was tried on it: held out, a second nearly
+        # incompressible deep skin at another t/R (is the nu -> 0.5 excess t/R 0.12's alone?)
+        (0.497, 0.15, "held", 0.0)]
 DEEP_CASES = {case_name(nu, t) + "_cax8": (nu, t, role, reach) for nu, t, role, reach in DEEP}
 OUT_DEEP = os.path.join(DATA, "cax8", "k1e6")
 CASES.update(DEEP_CASES)
@@ -211,8 +214,10 @@ def export(names, runs):
                 rerun = (f"session {32 if nu >= 0.495 else 28}'s deep run on CAX8 to delta/t = 1 "
                          f"of the skin of {k1e6}")
             else:
-                # nu 0.499 (session 32): no CAX8R run of this skin at all.
-                rerun = "session 32's deep run on CAX8 to delta/t = 1 (no CAX8R run of this skin)"
+                # nu 0.499 (session 32) and nu 0.497 t/R 0.15 (session 33): no CAX8R run of
+                # this skin at all.
+                rerun = (f"session {33 if (nu, t) == (0.497, 0.15) else 32}'s deep run on CAX8 "
+                         f"to delta/t = 1 (no CAX8R run of this skin)")
                 what = {k: v.replace(" (its CAX8R run is)", "") for k, v in what.items()}
         elif os.path.exists(os.path.join(DATA, twin)):
             session = "session 30" if n in S30 else "session 25"

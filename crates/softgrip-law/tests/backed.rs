@@ -1051,7 +1051,10 @@ fn core_on_session_32s_deep_skins_is_what_the_readme_states() {
     pin_skins(&skins, true);
     // The CAX8 twin of nu 0.495 t/R 0.12 reaches x = 0.1075, past x_max (0.096): pinned to x_max;
     // nu 0.499 t/R 0.12 on CAX8 (no CAX8R run; held out, run after the session's forms were
-    // judged) reaches x = 0.0975: +22.32 % at x = 0.095 (delta/t 0.79).
+    // judged) reaches x = 0.0975: +22.32 % at x = 0.095 (delta/t 0.79). Session 33's nu 0.497
+    // t/R 0.15 on CAX8 (no CAX8R run; declared held out before any form was tried on it) reaches
+    // x = 0.1375, past x_max (0.12): +12.99 % at x_max (delta/t 0.8; CORE_FORM.md "Thin skins:
+    // the film towards nu 0.5, session 33").
     pin_skins(
         &[
             (
@@ -1070,6 +1073,15 @@ fn core_on_session_32s_deep_skins_is_what_the_readme_states() {
                 0.0975,
                 22.32,
                 0.095,
+                false,
+            ),
+            (
+                include_str!("../../../tests/data/fe/core/cax8/k1e6/force_nu0.497_t0.15.csv"),
+                0.497,
+                0.15,
+                0.1375,
+                12.99,
+                0.12,
                 false,
             ),
         ],
