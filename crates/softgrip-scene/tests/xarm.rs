@@ -241,10 +241,7 @@ fn xarm_gripper_grasps_lifts_and_holds_the_box_with_soft_pads() {
             spread = spread.max((q(m) - q(drive)).abs());
         }
         for pad in ["left_pad", "right_pad"] {
-            let f: f64 = (run.world.soft)
-                .contacts_of(run.handles.fingertip(pad).unwrap())
-                .map(|c| c.normal_force)
-                .sum();
+            let f = pad_force(&run, pad);
             (lo, hi) = (lo.min(f), hi.max(f));
         }
         rise = w.bodies[box_h].translation().z as f64 - z0;
@@ -303,6 +300,14 @@ fn xarm_drive_joint_effort_equals_jt_f_with_its_five_mimics() {
     assert!(rel < 1e-2, "drive_joint effort {effort} vs J^T F {load}");
 }
 
+/// The normal force fingertip `pad` presses with \[N\] (summed over its contacts).
+fn pad_force(run: &PlainRun, pad: &str) -> f64 {
+    (run.world.soft)
+        .contacts_of(run.handles.fingertip(pad).unwrap())
+        .map(|c| c.normal_force)
+        .sum()
+}
+
 /// The pads' force through the hold (least, largest) and the box's rise at its end, with the
 /// robot's self-contacts and rapier's contact recycling as given.
 fn hold(self_contacts: Option<bool>, recycling: bool) -> (f64, f64, f64) {
@@ -318,10 +323,7 @@ fn hold(self_contacts: Option<bool>, recycling: bool) -> (f64, f64, f64) {
             continue;
         }
         for pad in ["left_pad", "right_pad"] {
-            let f: f64 = (run.world.soft)
-                .contacts_of(run.handles.fingertip(pad).unwrap())
-                .map(|c| c.normal_force)
-                .sum();
+            let f = pad_force(&run, pad);
             (lo, hi) = (lo.min(f), hi.max(f));
         }
         rise = run.world.physics.bodies[box_h].translation().z as f64 - z0;
