@@ -275,24 +275,7 @@ pub(crate) struct RigidRow {
     /// rigidly, or a point whose bodies the soft contacts do not unload: `Step::
     /// prepare_rigid`).
     pub softness: Option<ContactSoftness>,
-    /// How fast a hard row's point may still approach over the coming (sub)step \[m/s\]:
-    /// its gap past [`TOUCH_FRACTION`] of rapier's allowed linear error, over the (sub)step
-    /// (0 for a point that touches; the row's target is `v(end) >= -approach`).
-    pub approach: f64,
 }
-
-/// The share of rapier's allowed linear error (`IntegrationParameters::allowed_linear_error`,
-/// 5 mm at rapier 0.36's defaults) within which a rigid contact point touches: its hard row
-/// asks `v(end) >= 0`. A point further apart may still approach by the rest of its gap within
-/// the (sub)step (`RigidRow::approach`), as rapier's own speculative contacts do. The deadzone
-/// keeps the redundant rows of a resting box (four corners on a table, their gaps f32 noise
-/// apart) asking for one rigid motion; the gap past it is geometry, which a rigid motion
-/// closes consistently. Before (session 33), every point within the whole allowed error
-/// asked `v(end) >= 0`: the xArm's finger links, 4 mm from the box they closed on, were held
-/// there as if touching, every coupled solve of the closing was degenerate and the box, let
-/// go to rapier, was kicked 1.2 mm up and turned 0.15 rad in one step (with rapier's contact
-/// recycling off; on, a stale manifold hid the links' points).
-pub(crate) const TOUCH_FRACTION: f64 = 0.1;
 
 /// What rapier 0.36's contact constraint does with a penetrating point over a pipeline step of
 /// `h` seconds, as one row of the coupled solve (`rigid`). rapier runs `N`
@@ -376,7 +359,6 @@ impl RigidRow {
             warm: None,
             solved: None,
             softness: None,
-            approach: 0.0,
         }
     }
 }

@@ -19,13 +19,9 @@
 //!   relative spin), in the disk `mu j_n` and the torsion limit;
 //! - a rigid contact's normal, `v(end) >= 0`, and its two tangential impulses, `v_t(end) = 0`,
 //!   hard ([`RIGID_COMPLIANCE`]: the four corners of a box on a table are twelve rows for six
-//!   degrees of freedom; it picks the least-impulse distribution). A point that touches (its
-//!   gap within a tenth of rapier's allowed linear error, `problem::TOUCH_FRACTION`) targets
-//!   `v(end) = 0`, not its sub-tolerance gap: redundant rows are consistent only if they ask
-//!   for one rigid motion. A point further apart may close the rest of its gap within the
-//!   (sub)step, `v(end) >= -approach` (`RigidRow::approach`), as rapier's speculative
-//!   contacts do: held at `v(end) >= 0`, a finger link 4 mm from the box it closed on stopped
-//!   there as if touching (session 33).
+//!   degrees of freedom; it picks the least-impulse distribution). They all target `v(end) =
+//!   0`, not the point's sub-tolerance gap: redundant rows are consistent only if they ask for
+//!   one rigid motion.
 //!
 //! **The solve** (`solve_scalars`), started where the fingertips' friction is a spring and no
 //! body is a link from the previous (sub)step's answer (each row at its contact's impulse
@@ -596,9 +592,6 @@ fn push_rigid(bodies: &[BodyState], r: &RigidRow, rest: f64, out: &mut Vec<Scala
         normal.target = s.target;
         normal.compliance = s.compliance;
         normal.prox = 0.0;
-    } else {
-        // A point apart may still close its gap within the (sub)step (`RigidRow::approach`).
-        normal.target = -r.approach;
     }
     out.push(normal);
     if r.mu > 0.0 {

@@ -47,7 +47,7 @@ use crate::hooks::{SoftEvents, SoftHooks};
 use crate::kinematic::{self, KinematicPath, KinematicVelocity, interpolate};
 use crate::model::Model;
 use crate::multibody::{self, LinkCtx};
-use crate::problem::{self, ContactSoftness, RigidKey, RigidRow, Row, TOUCH_FRACTION, Warm};
+use crate::problem::{self, ContactSoftness, RigidKey, RigidRow, Row, Warm};
 use crate::readout;
 use crate::step_error::{Phase, StepError, Subject};
 use crate::substep;
@@ -1057,8 +1057,6 @@ fn push_pair_points(
                 // rapier's softness of the point; kept only where the soft contacts took the
                 // rigid load off its bodies (`Step::prepare_rigid`, after the gathering).
                 row.softness = ContactSoftness::of(params, h, gap, fixed_other);
-                // A point apart may close the rest of its gap within the (sub)step.
-                row.approach = (gap - TOUCH_FRACTION * slop).max(0.0) / h;
                 rigid.push(row);
             }
         }
