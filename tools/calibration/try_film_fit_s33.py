@@ -25,6 +25,11 @@ Forms (try_film_nu_s33.form / fit_mode, refitted on fitted++): SFF (the law, not
 six refitted: the control), Jq, Jqt, JqFW. Judged as before: max |F/F_FE - 1| per set, curves
 better / worse by > 0.1 % than SFF (`--curves`), the held-out nu 0.49 and nu 0.499 deep skins.
 
+Run order (honest record): the roles above were committed (10c9105) before any fit; the first run
+was `--var SFF R Jq Jqt JqFW --curves`; after its results were seen, session 33's other existing
+modes were run on the same roles (`--var SFF Z JqF FW A H --curves`, then `--var SFF As --curves`):
+no new form, no role changed.
+
 usage: nice -n 10 PY tools/calibration/try_film_fit_s33.py --var SFF R Jq Jqt JqFW [--curves]
        (PY: /work/main/target/fe-venv/bin/python)
 """
