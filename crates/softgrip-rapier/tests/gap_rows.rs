@@ -142,10 +142,10 @@ fn a_pushed_box_slides_across_its_gap_to_the_wall_and_rests_there() {
 
 /// A longer push: the box slides 5.5-30 mm before it meets the wall. While it slides at the
 /// fingertip's 10 mm/s the pad reads about 0.01-0.03 N (the box's friction on the table, right
-/// as an impulse) but the fingertip's ball overlaps the box by 0.3-1 mm, where the law gives
+/// as an impulse) but the fingertip's ball overlaps the box by 0.3-1.1 mm, where the law gives
 /// 4-20 N, and at the wall the overlap is not taken up as force: measured (session 34), from
-/// 5.5 / 6 / 8 / 12 / 30 mm with rapier's contact recycling on, the box at rest 0.50-0.62 mm
-/// from the wall but still moving at 1.4-1.7 cm/s, the pad at 0.019-0.030 N about 2 mm deep;
+/// 5.5 / 6 / 8 / 12 / 30 mm with rapier's contact recycling on, the box 0.50-0.62 mm from
+/// the wall but still moving at 1.3-1.7 cm/s, the pad at 0.019-0.030 N about 2 mm deep;
 /// with recycling off, from 30 mm the box is thrown 0.2 m (the rule before session 34: held
 /// 4.9 mm from the wall, the pad crushed to 950 N). Found while writing the test above; not
 /// understood yet (softgrip-rapier README, Limits).
