@@ -277,6 +277,25 @@ pub(crate) struct RigidRow {
     pub softness: Option<ContactSoftness>,
 }
 
+/// The share of rapier's allowed linear error (`IntegrationParameters::allowed_linear_error`,
+/// 5 mm at rapier 0.36's defaults) within which a rigid contact point touches and joins the
+/// coupled solve as a hard row asking `v(end) >= 0`. A point further apart is left to rapier's
+/// own solver, whose speculative contact lets it close its gap and stops it there. The deadzone
+/// keeps the redundant rows of a resting box (four corners on a table, their gaps f32 noise
+/// apart) asking for one rigid motion.
+///
+/// Why (session 34): before, every point within the whole allowed error asked `v(end) >= 0`,
+/// so a body 0.5-5 mm short of another was held there as if touching. The xArm's finger links,
+/// 4 mm from the box they closed on, stopped there: every coupled solve of the closing was
+/// degenerate and the box, let go to rapier, was kicked 1.2 mm up and turned 0.15 rad in one
+/// step (with rapier's contact recycling off; on, a stale manifold hid the links' points). A
+/// box pushed towards a wall from 1-4.5 mm was held at its start gap while the pad pushing it
+/// was crushed (89-745 N; `tests/gap_rows.rs`). Session 33 tried keeping such points in the
+/// solve with the target `v(end) >= -(gap - TOUCH_FRACTION slop) / h` (rapier's speculative
+/// rule): the xArm held, but the pushed box was thrown at 2.2-82 m/s from start gaps of
+/// 2.5-4.5 mm, so that rule was reverted.
+pub(crate) const TOUCH_FRACTION: f64 = 0.1;
+
 /// What rapier 0.36's contact constraint does with a penetrating point over a pipeline step of
 /// `h` seconds, as one row of the coupled solve (`rigid`). rapier runs `N`
 /// (`num_solver_iterations`) substeps of `dt = h / N`; in each, its biased pass solves the

@@ -19,9 +19,11 @@
 //!   relative spin), in the disk `mu j_n` and the torsion limit;
 //! - a rigid contact's normal, `v(end) >= 0`, and its two tangential impulses, `v_t(end) = 0`,
 //!   hard ([`RIGID_COMPLIANCE`]: the four corners of a box on a table are twelve rows for six
-//!   degrees of freedom; it picks the least-impulse distribution). They all target `v(end) =
-//!   0`, not the point's sub-tolerance gap: redundant rows are consistent only if they ask for
-//!   one rigid motion.
+//!   degrees of freedom; it picks the least-impulse distribution). Only points that touch
+//!   are rows (their gap within a tenth of rapier's allowed linear error,
+//!   `problem::TOUCH_FRACTION`; one further apart is rapier's own speculative contact), and
+//!   they target `v(end) = 0`, not the point's sub-tolerance gap: redundant rows are
+//!   consistent only if they ask for one rigid motion.
 //!
 //! **The solve** (`solve_scalars`), started where the fingertips' friction is a spring and no
 //! body is a link from the previous (sub)step's answer (each row at its contact's impulse

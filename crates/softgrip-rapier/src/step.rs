@@ -47,7 +47,7 @@ use crate::hooks::{SoftEvents, SoftHooks};
 use crate::kinematic::{self, KinematicPath, KinematicVelocity, interpolate};
 use crate::model::Model;
 use crate::multibody::{self, LinkCtx};
-use crate::problem::{self, ContactSoftness, RigidKey, RigidRow, Row, Warm};
+use crate::problem::{self, ContactSoftness, RigidKey, RigidRow, Row, TOUCH_FRACTION, Warm};
 use crate::readout;
 use crate::step_error::{Phase, StepError, Subject};
 use crate::substep;
@@ -1045,7 +1045,9 @@ fn push_pair_points(
             // lifted 5 cm kept its ground pair's four points, `dist` 0, for the whole lift, and
             // the coupled solve held it on that table).
             let gap = (p2 - p1).dot(&to_f64(m.data.normal));
-            if gap > slop {
+            // A point further apart than the touch tolerance is rapier's own speculative
+            // contact (`problem::TOUCH_FRACTION`): it does not hold the coupled solve.
+            if gap > TOUCH_FRACTION * slop {
                 continue;
             }
             let p = 0.5 * (p1 + p2);

@@ -21,6 +21,6 @@ pub use load::{joint_load, joint_state_loaded};
 pub(crate) use model::moving_names;
 pub use model::{JointKind, MAX_MULTIBODY_JOINTS, Mimic, Robot, RobotJoint, RobotLink};
 pub(crate) use overlap::keep_apart;
-pub use overlap::{StartOverlap, start_overlaps, welded};
+pub use overlap::{ALWAYS_SHARE, SAMPLES, StartOverlap, always_in_contact, start_overlaps};
 pub use spec::{BaseKind, JointModel, MeshShape, RobotSpec};
 pub use state::{JointState, joint_state, joint_target, set_joint_target};
