@@ -43,6 +43,10 @@ shell form's weight is 0, cannot move). m = mu/M = eps/(1 + 4 eps/3) = (1 - 2 nu
   HmJd HmJ with Jq's term gated to the deep squeeze, cj s^2 psi(z') G(q): the small-x thin skins at
        nu 0.3-0.48 (where Jq's refit lost 24 curves) barely see it.
 
+  Hm<n> (added after the first run, `--var SFF Hm Dq Dg HmJ HmJd --curves`, was seen: its Hm
+       fitted n = 27, a step in nu) Hm with the exponent fixed at the integer n (Hm1 = As), m0
+       alone fitted: how steep the threshold must be; same roles.
+
 ROLES (declared here and committed before any fit of these forms was run): exactly those of
 try_film_fit_s33.py, imported from it, unchanged:
   FIT "fitted++" = fitted+ (try_deep_fade_s32: the s26 FITTED set + session 32's five deep fit
@@ -58,6 +62,7 @@ the count of curves better / worse than SFF by > 0.1 % (of 97; the 50 t/R >= 0.3
 checked to move not at all).
 
 usage: nice -n 19 PY tools/calibration/try_film_att_s34.py --var SFF Hm Dq Dg HmJ HmJd [--curves]
+           [--check-form MODE]
        (PY: /work/main/target/fe-venv/bin/python)
 """
 import argparse
@@ -87,6 +92,8 @@ _JQ = s33.form("Jq")  # the same plus cj psi(z') G(q)
 def att(mode, k, x, nu, tau):
     m = (1 - 2 * nu) / (2 * (1 - nu))
     s = x / tau
+    if mode[2:].isdigit():  # Hm<n>: the exponent fixed
+        return 1 / (1 + (abs(k[0]) / m) ** int(mode[2:]))
     if mode.startswith("Hm"):
         m0, n = abs(k[0]), abs(k[1])
         return 1 / (1 + (m0 / m) ** n)
@@ -120,12 +127,16 @@ def form(mode):
     return chi
 
 
+def known(mode):
+    return mode in NEW or (mode.startswith("Hm") and mode[2:].isdigit())
+
+
 def fit_mode(mode, train):
-    if mode not in NEW:
+    if not known(mode):
         return _ORIG_FIT_MODE(mode, train)
     chi = form(mode)
     f.chi_core = chi
-    k = f.fit(train, list(NEW[mode]))
+    k = f.fit(train, list(NEW.get(mode, [0.013])))
     return chi, np.array(list(SFF) + list(k))
 
 
@@ -136,7 +147,7 @@ def wrap(mode):
 
 
 def fit_mode_full(mode, train):
-    if mode not in NEW:
+    if not known(mode):
         return _ORIG_FIT_MODE(mode, train)
     _, p = fit_mode(mode, train)
     return wrap(mode), p
@@ -158,6 +169,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--var", nargs="+", required=True)
     ap.add_argument("--curves", action="store_true")
+    ap.add_argument("--check-form", help="fit_core.check on this mode's fitted form")
     a = ap.parse_args()
     s33.groups = s33b.groups  # session 33's second-pass roles, unchanged
     s33.tagged_curves = s33b.tagged_curves
@@ -165,7 +177,11 @@ def main():
     check_identity()
     fit = [(c["nu"], c["tau"], c["name"]) for c in s33b.fit_curves()]
     print(f"fitted++ = fitted+ ({len(s33b._S33_GROUPS()[0][1])} curves) + {fit}")
-    s33.fit_table(a.var, a.curves)
+    fits = s33.fit_table(a.var, a.curves)
+    if a.check_form:
+        chi, p = fits[a.check_form]
+        f.chi_core = chi
+        print(a.check_form, f.check(p))
     return 0
 
 
