@@ -75,7 +75,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "fe"))
 import fit_core as f  # noqa: E402
-import try_deep_fade_s32 as s32  # noqa: E402
+import try_deep_fade_s32 as s32  # noqa: E402,F401
+import try_deep_squeeze_s29 as s29  # noqa: E402
 import try_film_fit_s33 as s33b  # noqa: E402
 import try_film_nu_s33 as s33  # noqa: E402
 
@@ -165,11 +166,34 @@ def check_identity():
     assert worst < 1e-12
 
 
+def delta(fits):
+    """Per set, max |F/F_FE - 1| of each form minus SFF's [%-points, 4 decimals], and the largest
+    per-curve increase over SFF's worst (any curve, any set)."""
+    sff, psff = fits["SFF"]
+    gs = s33.groups()
+    for mode, (chi, p) in fits.items():
+        if mode == "SFF":
+            continue
+        cells, worst = [], (-np.inf, "")
+        for name, cs in gs:
+            a = max(abs(s29.signed(psff, c, sff)[0]) for c in cs)
+            b = max(abs(s29.signed(p, c, chi)[0]) for c in cs)
+            cells.append(f"{name} {b - a:+.4f}")
+            for c in cs:
+                d = abs(s29.signed(p, c, chi)[0]) - abs(s29.signed(psff, c, sff)[0])
+                if d > worst[0]:
+                    worst = (d, f"({c['nu']:g}, {c['tau']:g}) in {name}")
+        print(f"{mode} minus SFF: " + "; ".join(cells))
+        print(f"    largest per-curve increase: {worst[0]:+.4f} %-points, {worst[1]}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--var", nargs="+", required=True)
     ap.add_argument("--curves", action="store_true")
     ap.add_argument("--check-form", help="fit_core.check on this mode's fitted form")
+    ap.add_argument("--delta", action="store_true",
+                    help="per set: each form's max error minus SFF's, to 1e-4 %%-points")
     a = ap.parse_args()
     s33.groups = s33b.groups  # session 33's second-pass roles, unchanged
     s33.tagged_curves = s33b.tagged_curves
@@ -178,6 +202,8 @@ def main():
     fit = [(c["nu"], c["tau"], c["name"]) for c in s33b.fit_curves()]
     print(f"fitted++ = fitted+ ({len(s33b._S33_GROUPS()[0][1])} curves) + {fit}")
     fits = s33.fit_table(a.var, a.curves)
+    if a.delta:
+        delta(fits)
     if a.check_form:
         chi, p = fits[a.check_form]
         f.chi_core = chi
