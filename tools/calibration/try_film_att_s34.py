@@ -61,7 +61,8 @@ Judged as session 33: max |F/F_FE - 1| [%] per set; with `--curves` every thin c
 the count of curves better / worse than SFF by > 0.1 % (of 97; the 50 t/R >= 0.3 curves are
 checked to move not at all).
 
-usage: nice -n 19 PY tools/calibration/try_film_att_s34.py --var SFF Hm Dq Dg HmJ HmJd [--curves]
+usage: nice -n 19 PY tools/calibration/try_film_att_s34.py --var SFF Hm Dq Dg HmJ HmJd [--curves] [--delta]
+           [--deep MODE]
            [--check-form MODE]
        (PY: /work/main/target/fe-venv/bin/python)
 """
@@ -187,11 +188,52 @@ def delta(fits):
         print(f"    largest per-curve increase: {worst[0]:+.4f} %-points, {worst[1]}")
 
 
+def deep(fits, mode):
+    """The deep CAX8 penalty-1e6 skins of nu >= 0.49 (cax8/k1e6/) at delta/t ~0.2, 0.4, 0.6 and
+    their ends: SFF's and the mode's signed error, the mode's attenuation and the one the FE wants
+    (session 32/33's need: the film weight that closes the FE's miss over SFF's psi(z')); then
+    the two-point Hill through the FE's wanted attenuation at the ends of nu 0.49 and 0.495 (t/R
+    0.12), and the mode's attenuation against nu."""
+    sff, psff = fits["SFF"]
+    chi, p = fits[mode]
+    k = np.asarray(p)[6:]
+    s32.tagged_curves = s33b.tagged_curves
+    cf = SFF[5]
+    ends = {}
+    print(f"| skin (role) | delta/t | SFF [%] | {mode} [%] | {mode}'s att | FE-wanted att |")
+    print("|---|---|---|---|---|---|")
+    for r in s32.need_rows():
+        c = r["c"]
+        if "cax8/k1e6/" not in c["name"] or c["nu"] < 0.49:
+            continue
+        s = r["s"]
+        e0 = 100 * (sff(psff, c["x"], c["nu"], c["tau"]) / c["chi"] - 1)
+        e1 = 100 * (chi(p, c["x"], c["nu"], c["tau"]) / c["chi"] - 1)
+        at = np.broadcast_to(att(mode, k, c["x"], c["nu"], c["tau"]), c["x"].shape)
+        for i in sorted({int(np.argmin(np.abs(s - v))) for v in (0.2, 0.4, 0.6)} | {len(s) - 1}):
+            film = cf * r["p1"][i] * r["phi"][i]
+            want = (film + r["dsq"][i]) / film if film > 1e-3 else np.nan
+            print(f"| {c['nu']:g}/{c['tau']:g} ({r['tag']}) | {s[i]:.2f} | {e0[i]:+.2f} | "
+                  f"{e1[i]:+.2f} | {at[i]:.3f} | {want:+.3f} |")
+            if i == len(s) - 1:
+                ends[(c["nu"], c["tau"])] = want
+    a49, a495 = ends[(0.49, 0.12)], ends[(0.495, 0.12)]
+    m = lambda nu: (1 - 2 * nu) / (2 * (1 - nu))  # noqa: E731
+    n = np.log((1 / a495 - 1) / (1 / a49 - 1)) / np.log(m(0.49) / m(0.495))
+    m0 = m(0.495) * (1 / a495 - 1) ** (1 / n)
+    print(f"two-point Hill through the FE's wanted att at the ends of nu 0.49 / 0.495 (t/R 0.12): "
+          f"{a49:.3f} / {a495:.3f} -> n {n:.2f}, m0 {m0:.5f}")
+    nus = (0.44, 0.46, 0.48, 0.485, 0.49, 0.4925, 0.495, 0.497, 0.499)
+    print(f"{mode}'s att at delta/t 0.79 (t/R 0.12) against nu: " + ", ".join(
+        f"{nu:g} {float(np.squeeze(att(mode, k, np.array([0.095]), nu, 0.12))):.3f}" for nu in nus))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--var", nargs="+", required=True)
     ap.add_argument("--curves", action="store_true")
     ap.add_argument("--check-form", help="fit_core.check on this mode's fitted form")
+    ap.add_argument("--deep", help="the four deep CAX8 skins point by point for this mode")
     ap.add_argument("--delta", action="store_true",
                     help="per set: each form's max error minus SFF's, to 1e-4 %%-points")
     a = ap.parse_args()
@@ -204,6 +246,8 @@ def main():
     fits = s33.fit_table(a.var, a.curves)
     if a.delta:
         delta(fits)
+    if a.deep:
+        deep(fits, a.deep)
     if a.check_form:
         chi, p = fits[a.check_form]
         f.chi_core = chi
