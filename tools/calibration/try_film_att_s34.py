@@ -95,10 +95,11 @@ def att(mode, k, x, nu, tau):
     m = (1 - 2 * nu) / (2 * (1 - nu))
     s = x / tau
     if mode[2:].isdigit():  # Hm<n>: the exponent fixed
-        return 1 / (1 + (abs(k[0]) / m) ** int(mode[2:]))
+        n = int(mode[2:])
+        return m ** n / (m ** n + abs(k[0]) ** n)  # = 0 at nu 0.5, no division by m
     if mode.startswith("Hm"):
         m0, n = abs(k[0]), abs(k[1])
-        return 1 / (1 + (m0 / m) ** n)
+        return m ** n / (m ** n + m0 ** n)
     if mode == "Dq":
         r0, n = abs(k[0]), abs(k[1])
         r = s33.pressure_q(x, nu, tau) / np.maximum(s, 1e-9)
