@@ -224,6 +224,11 @@ def deep(fits, mode):
     m0 = m(0.495) * (1 / a495 - 1) ** (1 / n)
     print(f"two-point Hill through the FE's wanted att at the ends of nu 0.49 / 0.495 (t/R 0.12): "
           f"{a49:.3f} / {a495:.3f} -> n {n:.2f}, m0 {m0:.5f}")
+    xs = np.array([0.005, 0.01, 0.03, 0.05, 0.09])
+    for nu in (0.3, 0.4, 0.48, 0.499):
+        r = s33.pressure_q(xs, nu, 0.12) / (xs / 0.12)
+        print(f"Dq's r = q/s at t/R 0.12, nu {nu:g}, x {' '.join(f'{v:g}' for v in xs)}: "
+              + " ".join(f"{v:.4f}" for v in r))
     nus = (0.44, 0.46, 0.48, 0.485, 0.49, 0.4925, 0.495, 0.497, 0.499)
     print(f"{mode}'s att at delta/t 0.79 (t/R 0.12) against nu: " + ", ".join(
         f"{nu:g} {float(np.squeeze(att(mode, k, np.array([0.095]), nu, 0.12))):.3f}" for nu in nus))
