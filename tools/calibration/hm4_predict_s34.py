@@ -28,7 +28,7 @@ t/R, the calibration's as_curve window),
 Hm6 is printed and judged by the same rule, as the alternative; it is not the one to be ported
 unless Hm4 fails and Hm6 passes (then nothing is ported this session; the lead decides).
 
-usage: nice -n 19 PY tools/calibration/hm4_predict_s34.py [--compare] [--spread]
+usage: nice -n 19 PY tools/calibration/hm4_predict_s34.py [--compare] [--spread] [--parts]
        (PY: /work/main/target/fe-venv/bin/python). Without flags: the prediction table. With
        --compare: each FE file of the two skins that exists, row by row, and the rule.
 """
@@ -122,16 +122,61 @@ def compare():
               f"({len(v)} of 2 skins there, passing {sum(v)})")
 
 
+def parts():
+    """Added after skin (b) was compared (a diagnostic, no role changed): where the deep excess
+    near nu 0.5 sits. chi = w chi_S + (1 - w) chi_law (the thin-skin form faded by t/R 0.3); per
+    skin at delta/t ~0.4, 0.6, 0.7, 0.8: the error with the film removed entirely (att = 0, the
+    most any film attenuation can do), the law's share alone against the FE (chi_law/chi_FE - 1,
+    the thin-skin form's weight w), and the thin-skin part the FE wants, (chi_FE - (1 - w)
+    chi_law)/w, against SFF's, Hm4's and no film's chi_S."""
+    import try_deep_squeeze_s29 as s29
+    import try_shell_table_s28 as s28
+    import try_thin_skin_s25 as s25
+    law = s25.form("K")
+    for nu, tau in [(0.49, 0.12), (0.4925, 0.12), (0.495, 0.12), (0.499, 0.12), (0.497, 0.15),
+                    (0.497, 0.2)]:
+        path = os.path.join(FE, f"force_nu{nu:g}_t{tau:g}.csv")
+        if not os.path.exists(path):
+            continue
+        d = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+        x, F = np.atleast_1d(d["delta_over_R"]), np.atleast_1d(d["force_N"])
+        w = s28.weight(tau, "SFB0030")
+        print(f"== nu {nu:g} t/R {tau:g}: thin-skin weight w {w:.3f}")
+        print("| delta/t | SFF [%] | Hm4 [%] | no film [%] | law share alone [%] | chi_S wanted "
+              "| chi_S SFF | chi_S Hm4 | chi_S no film |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        for v in (0.4, 0.6, 0.7, 0.8):
+            i = int(np.argmin(np.abs(x - v * tau)))
+            if abs(x[i] / tau - v) > 0.02 or x[i] > 0.8 * tau + 1e-9:
+                continue
+            xi = x[i:i + 1]
+            fe = F[i] / (e_star(nu) * 4 / 3 * xi[0] ** 1.5)
+            c_sff = float(a._R(a.SFF, xi, nu, tau)[0])
+            c_h4 = float(a.form("Hm4")([M0["Hm4"]], xi, nu, tau)[0])
+            c_nf = float(a.form("Hm4")([1e6], xi, nu, tau)[0])
+            c_law = float(np.squeeze(law(s25.LAW, xi, nu, tau)))
+
+            def part(c):
+                return (c - (1 - w) * c_law) / w
+            print(f"| {xi[0] / tau:.3f} | {100 * (c_sff / fe - 1):+.2f} | {100 * (c_h4 / fe - 1):+.2f} | "
+                  f"{100 * (c_nf / fe - 1):+.2f} | {100 * (c_law / fe - 1):+.2f} | {part(fe):.4f} | "
+                  f"{part(c_sff):.4f} | {part(c_h4):.4f} | {part(c_nf):.4f} |")
+    assert s29 is not None
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--compare", action="store_true")
     ap.add_argument("--spread", action="store_true")
+    ap.add_argument("--parts", action="store_true", help="where the deep excess sits (diagnostic)")
     o = ap.parse_args()
+    if o.parts:
+        parts()
     if o.spread:
         spread()
     if o.compare:
         compare()
-    if not (o.compare or o.spread):
+    if not (o.compare or o.spread or o.parts):
         predict()
     return 0
 
