@@ -128,7 +128,8 @@ def parts():
     skin at delta/t ~0.4, 0.6, 0.7, 0.8: the error with the film removed entirely (att = 0, the
     most any film attenuation can do), the law's share alone against the FE (chi_law/chi_FE - 1,
     the thin-skin form's weight w), and the thin-skin part the FE wants, (chi_FE - (1 - w)
-    chi_law)/w, against SFF's, Hm4's and no film's chi_S."""
+    chi_law)/w, against SFF's, Hm4's and no film's chi_S; and the film attenuation the FE wants,
+    (chi_FE - chi(att = 0))/(chi_SFF - chi(att = 0)) (chi is linear in att), against Hm4's."""
     import try_deep_squeeze_s29 as s29
     import try_shell_table_s28 as s28
     import try_thin_skin_s25 as s25
@@ -143,8 +144,8 @@ def parts():
         w = s28.weight(tau, "SFB0030")
         print(f"== nu {nu:g} t/R {tau:g}: thin-skin weight w {w:.3f}")
         print("| delta/t | SFF [%] | Hm4 [%] | no film [%] | law share alone [%] | chi_S wanted "
-              "| chi_S SFF | chi_S Hm4 | chi_S no film |")
-        print("|---|---|---|---|---|---|---|---|---|")
+              "| chi_S SFF | chi_S Hm4 | chi_S no film | att wanted | Hm4's att |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|")
         for v in (0.4, 0.6, 0.7, 0.8):
             i = int(np.argmin(np.abs(x - v * tau)))
             if abs(x[i] / tau - v) > 0.02 or x[i] > 0.8 * tau + 1e-9:
@@ -160,7 +161,8 @@ def parts():
                 return (c - (1 - w) * c_law) / w
             print(f"| {xi[0] / tau:.3f} | {100 * (c_sff / fe - 1):+.2f} | {100 * (c_h4 / fe - 1):+.2f} | "
                   f"{100 * (c_nf / fe - 1):+.2f} | {100 * (c_law / fe - 1):+.2f} | {part(fe):.4f} | "
-                  f"{part(c_sff):.4f} | {part(c_h4):.4f} | {part(c_nf):.4f} |")
+                  f"{part(c_sff):.4f} | {part(c_h4):.4f} | {part(c_nf):.4f} | "
+                  f"{(fe - c_nf) / (c_sff - c_nf):+.3f} | {att('Hm4', nu):.3f} |")
     assert s29 is not None
 
 
