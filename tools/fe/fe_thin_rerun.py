@@ -125,7 +125,12 @@ DEEP = [(0.48, 0.08, "blind", 0.04), (0.48, 0.1, "blind", 0.06),
         (0.499, 0.12, "held", 0.0),
         # session 33, declared before any form was tried on it: held out, a second nearly
         # incompressible deep skin at another t/R (is the nu -> 0.5 excess t/R 0.12's alone?)
-        (0.497, 0.15, "held", 0.0)]
+        (0.497, 0.15, "held", 0.0),
+        # session 34, declared with the predictions of SFF and the film attenuation Hm4 / Hm6
+        # (tools/calibration/hm4_predictions_s34.md) before either was run: held out, inside
+        # the fitted threshold (nu 0.4925, between the deep nu 0.49 and 0.495 skins, t/R 0.12),
+        # and nu 0.497 at another t/R (0.2: thicker than 0.15, where the thin-skin form fades)
+        (0.4925, 0.12, "held", 0.0), (0.497, 0.2, "held", 0.0)]
 DEEP_CASES = {case_name(nu, t) + "_cax8": (nu, t, role, reach) for nu, t, role, reach in DEEP}
 OUT_DEEP = os.path.join(DATA, "cax8", "k1e6")
 CASES.update(DEEP_CASES)
@@ -214,9 +219,11 @@ def export(names, runs):
                 rerun = (f"session {32 if nu >= 0.495 else 28}'s deep run on CAX8 to delta/t = 1 "
                          f"of the skin of {k1e6}")
             else:
-                # nu 0.499 (session 32) and nu 0.497 t/R 0.15 (session 33): no CAX8R run of
-                # this skin at all.
-                rerun = (f"session {33 if (nu, t) == (0.497, 0.15) else 32}'s deep run on CAX8 "
+                # nu 0.499 (session 32), nu 0.497 t/R 0.15 (session 33), nu 0.4925 t/R 0.12
+                # and nu 0.497 t/R 0.2 (session 34): no CAX8R run of this skin at all.
+                session = {(0.497, 0.15): 33, (0.4925, 0.12): 34,
+                           (0.497, 0.2): 34}.get((nu, t), 32)
+                rerun = (f"session {session}'s deep run on CAX8 "
                          f"to delta/t = 1 (no CAX8R run of this skin)")
                 what = {k: v.replace(" (its CAX8R run is)", "") for k, v in what.items()}
         elif os.path.exists(os.path.join(DATA, twin)):
