@@ -16,7 +16,7 @@ mod common;
 use softgrip_scene::{ContactDigest, PlainRun, Scene};
 
 /// `softgrip run --digest` of the embedded default scene (`scenes/default.toml`).
-const GOLDEN: &str = "digest 828fc6c543f31643 steps 300 contacts 447";
+const GOLDEN: &str = "digest 49d2f07bd2bedf33 steps 300 contacts 447";
 
 #[test]
 fn default_scene_digest_is_golden_in_a_second_process() {
