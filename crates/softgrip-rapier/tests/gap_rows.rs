@@ -15,6 +15,8 @@
 
 #![allow(clippy::unwrap_used)] // tests: a failed unwrap is a failed test
 
+mod common;
+
 use rapier3d::prelude::*;
 use softgrip_law::Level;
 use softgrip_rapier::SoftWorld;
@@ -60,18 +62,11 @@ fn push(gap: f32, press: f64, recycling: bool) -> Pushed {
         &mut world.physics.bodies,
     );
     let start = Vector::new(HALF + R as f32 + 0.001, HALF, 0.0);
-    let tip_body = world
-        .physics
-        .bodies
-        .insert(RigidBodyBuilder::kinematic_position_based().translation(start));
-    let tip = world.physics.colliders.insert_with_parent(
-        ColliderBuilder::ball(R as f32),
-        tip_body,
-        &mut world.physics.bodies,
+    let (tip_body, _) = common::kinematic_tip(
+        &mut world,
+        start,
+        fingertip(Level::Calibrated, 0.5).build().unwrap(),
     );
-    world
-        .register(tip, fingertip(Level::Calibrated, 0.5).build().unwrap())
-        .unwrap();
     for _ in 0..30 {
         world.step();
     }
