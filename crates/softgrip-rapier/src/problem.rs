@@ -275,6 +275,10 @@ pub(crate) struct RigidRow {
     /// rigidly, or a point whose bodies the soft contacts do not unload: `Step::
     /// prepare_rigid`).
     pub softness: Option<ContactSoftness>,
+    /// How far the point's bodies may close its gap within the (sub)step without an impulse
+    /// from rapier \[m\]: its gap at the start poses past half the touch tolerance
+    /// ([`TOUCH_FRACTION`]), else 0. Read only by `rigid`'s solve of rapier's own part.
+    pub closable: f64,
 }
 
 /// The share of rapier's allowed linear error (`IntegrationParameters::allowed_linear_error`,
@@ -378,6 +382,7 @@ impl RigidRow {
             warm: None,
             solved: None,
             softness: None,
+            closable: 0.0,
         }
     }
 }

@@ -500,13 +500,16 @@ pub(crate) struct CoupledScratch {
 }
 
 /// The scalar rows of soft rows `soft` and rigid rows `rigid` (`rigid` only: `soft` empty),
-/// with their index of the first scalar of each soft row.
+/// with their index of the first scalar of each soft row, for stage `which` of
+/// [`solve_coupled`] (0: rapier's part, the rigid rows alone; 1: everything).
+#[allow(clippy::too_many_arguments)]
 fn build(
     bodies: &[BodyState],
     soft: &[Row],
     rigid: &[RigidRow],
     rest_n: &[f64],
     h: f64,
+    which: usize,
     out: &mut Vec<Scalar>,
     first: &mut Vec<usize>,
 ) {
@@ -517,7 +520,14 @@ fn build(
         push_soft(bodies, r, h, out);
     }
     for (ri, r) in rigid.iter().enumerate() {
-        push_rigid(bodies, r, rest_n.get(ri).copied().unwrap_or(0.0), out);
+        let closing = if which == 0 { r.closable / h } else { 0.0 };
+        push_rigid(
+            bodies,
+            r,
+            rest_n.get(ri).copied().unwrap_or(0.0),
+            closing,
+            out,
+        );
     }
     for s in out.iter_mut() {
         s.set_response(bodies);
@@ -584,10 +594,26 @@ fn push_soft(bodies: &[BodyState], r: &Row, h: f64, out: &mut Vec<Scalar>) {
 
 /// The scalar rows of rapier's contact `r`: its hard normal and its friction pair, whose
 /// normal impulse without the soft contacts is `rest` \[N s\] (0 while that is computed).
-fn push_rigid(bodies: &[BodyState], r: &RigidRow, rest: f64, out: &mut Vec<Scalar>) {
+/// The normal asks `v(end) >= -closing` [m/s]: in the solve of rapier's own part, a point
+/// apart by more than half the touch tolerance may close the rest of its gap within the
+/// (sub)step, as rapier's speculative contact lets it, without an impulse
+/// ([`RigidRow::closable`](crate::problem::RigidRow::closable) over `h`); 0 in the solve with
+/// the soft contacts, where a point within the touch tolerance is held as touching.
+///
+/// Why (session 35): held at `v(end) >= 0` in both solves, a box 0.3-0.5 mm short of a wall
+/// that it was moving towards got a wall impulse in rapier's part, which the plugin left to
+/// rapier, which makes none across a gap: the box was kicked towards the wall, stopped there
+/// by rapier with a rebound, dropped out of the touch tolerance, and a pad pushing it read 58 N
+/// and 0.02 N on alternate steps (`tests/gap_rows.rs`, from 30 mm). The deadzone of half the
+/// tolerance keeps a resting box's redundant points (their gaps some 1e-5 m apart) and a box
+/// held against a wall by a rigid stick (0.16-0.26 mm) as one rigid motion: with no deadzone
+/// that box rattled at 1.1 cm/s (`press_on_table::rigid_stick_presses_a_box_against_a_wall`,
+/// bound 1 um/s; it holds from a deadzone of 0.2 mm).
+fn push_rigid(bodies: &[BodyState], r: &RigidRow, rest: f64, closing: f64, out: &mut Vec<Scalar>) {
     let nrm = out.len();
     let mut normal = Scalar::point(bodies, Some(r.a), r.b, &r.p, &r.n, Kind::HardNormal);
     normal.prox = rest;
+    normal.target = -closing;
     if let Some(s) = r.softness {
         // rapier's own soft contact (`problem::ContactSoftness`): `v(end) + c w j = target`,
         // its compliance pulling towards 0 as rapier's does.
@@ -1700,7 +1726,9 @@ impl Stage<'_> {
             buffers,
             ..
         } = scratch;
-        build(bodies, soft, rigid, rest_n, self.h, scalars, self.first);
+        build(
+            bodies, soft, rigid, rest_n, self.h, which, scalars, self.first,
+        );
         // Not built at all when unused (a row past the buffer's end starts cold: `start_rows`).
         self.warm.clear();
         if self.warmed {

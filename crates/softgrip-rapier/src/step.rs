@@ -1036,7 +1036,13 @@ fn push_pair_points(
         let n = to_f64(m.data.normal) * sign;
         let mu = m.data.friction as f64;
         for pt in &m.points {
-            if !(pt.dist as f64 <= slop) || rigid.len() >= MAX_RIGID_ROWS {
+            // Not rapier's `pt.dist`: with its contact recycling (on by default) a manifold's
+            // points and `dist` are those of the pair's last full narrow-phase update, kept
+            // while the pair's relative pose drifts less than ten allowed linear errors (5 cm);
+            // rapier's solver re-derives the separation from the points' body-local anchors
+            // and the current poses, as `gap` below does. Read from `dist`, a box pushed 8 mm
+            // to a wall kept the wall's points 8 mm apart and the wall never held it here.
+            if rigid.len() >= MAX_RIGID_ROWS {
                 continue;
             }
             let p1 = to_f64(co1.position().transform_point(pt.local_p1));
@@ -1047,7 +1053,7 @@ fn push_pair_points(
             let gap = (p2 - p1).dot(&to_f64(m.data.normal));
             // A point further apart than the touch tolerance is rapier's own speculative
             // contact (`problem::TOUCH_FRACTION`): it does not hold the coupled solve.
-            if gap > TOUCH_FRACTION * slop {
+            if !(gap <= TOUCH_FRACTION * slop) {
                 continue;
             }
             let p = 0.5 * (p1 + p2);
@@ -1055,6 +1061,7 @@ fn push_pair_points(
                 let mut row = RigidRow::new(a, b, p, n, mu);
                 let key = (c1, c2, pt.fid1.0, pt.fid2.0);
                 row.key = Some(key);
+                row.closable = (gap - 0.5 * TOUCH_FRACTION * slop).max(0.0);
                 row.warm = warm.get(&key).copied();
                 // rapier's softness of the point; kept only where the soft contacts took the
                 // rigid load off its bodies (`Step::prepare_rigid`, after the gathering).

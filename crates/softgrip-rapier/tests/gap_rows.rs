@@ -8,8 +8,13 @@
 //! close its gap within the substep) threw the box at 2.2-82 m/s from 2.5-4.5 mm. Now a point
 //! further apart than a tenth of that error is rapier's own (`problem::TOUCH_FRACTION`).
 //!
-//! Start gaps past 5 mm are the long push below (ignored): the pad's force is lost while the
-//! box slides along the table, whatever the rule for the wall's points.
+//! Session 35: from start gaps past 5 mm the wall never held the box (the pad at 0.02 N, 2 mm
+//! into the box at the wall): rapier's contact recycling keeps a manifold's points and their
+//! `dist` from the pair's last full update while the pair moves less than 5 cm, and the points
+//! were read by that stale `dist` (8 mm from an 8 mm start) instead of the gap at the current
+//! poses. Fixed (`step.rs`, `push_pair_points`); from 5.5-12 mm the box now rests at the wall
+//! like the shorter pushes. Still open: while the box slides, the fingertip's ball overlaps it
+//! by about 1 mm at the table friction's force (the ignored test below).
 //!
 //! `cargo test -p softgrip-rapier --test gap_rows -- --nocapture` prints the numbers.
 
@@ -25,15 +30,17 @@ use softgrip_testkit::scenes::{RADIUS as R, fingertip};
 /// Half extent of the box \[m\] (a 2 cm box of 4 g).
 const HALF: f32 = 0.01;
 
-/// One push: the box's gap to the wall \[m\] and its speed \[m/s\] at the end of the hold, and
-/// the soft contact's force then \[N\]; `gap` is its start gap \[m\], `press` how far the
-/// fingertip goes past the box's start contact and the gap \[m\], `recycling` rapier's
-/// contact recycling.
+/// One push: the box's gap to the wall \[m\] and its speed \[m/s\] at the end of the hold, the
+/// soft contact's force then \[N\], and the largest overlap of the fingertip's ball with the box
+/// while the box slid more than 1 mm from the wall \[m\]; `gap` is its start gap \[m\], `press`
+/// how far the fingertip goes past the box's start contact and the gap \[m\], `recycling`
+/// rapier's contact recycling.
 #[derive(Debug, Clone, Copy)]
 struct Pushed {
     gap: f64,
     speed: f64,
     force: f64,
+    slide_overlap: f64,
 }
 
 fn push(gap: f32, press: f64, recycling: bool) -> Pushed {
@@ -74,16 +81,23 @@ fn push(gap: f32, press: f64, recycling: bool) -> Pushed {
     let dt = world.physics.integration_parameters.dt as f64;
     let travel = 0.001 + gap as f64 + press;
     let steps = (travel / (0.01 * dt)).ceil() as usize;
+    let mut slide_overlap = 0.0f64;
     for k in 1..=steps + 30 {
         let s = (k.min(steps) as f64 * 0.01 * dt).min(travel) as f32;
         world.physics.bodies[tip_body].set_next_kinematic_translation(start - Vector::X * s);
         world.step();
+        let x = world.physics.bodies[b].translation().x;
+        if x + gap > 1e-3 {
+            let tip = world.physics.bodies[tip_body].translation().x;
+            slide_overlap = slide_overlap.max(R - (tip - x - HALF) as f64);
+        }
     }
     let body = &world.physics.bodies[b];
     Pushed {
         gap: (body.translation().x + gap) as f64,
         speed: body.linvel().length() as f64,
         force: world.soft.contacts().iter().map(|c| c.normal_force).sum(),
+        slide_overlap,
     }
 }
 
@@ -107,7 +121,7 @@ fn a_pushed_box_slides_across_its_gap_to_the_wall_and_rests_there() {
         TOUCHING * 1e3
     );
     for recycling in [true, false] {
-        for gap_mm in [0.4f32, 1.0, 2.5, 3.5, 4.5] {
+        for gap_mm in [0.4f32, 1.0, 2.5, 3.5, 4.5, 5.5, 8.0, 12.0] {
             let p = push(gap_mm * 1e-3, PRESS, recycling);
             println!("start gap {gap_mm} mm, recycling {recycling}: {p:?}");
             // At rest within rapier's resting tolerance of the wall, not held short of it.
@@ -135,24 +149,30 @@ fn a_pushed_box_slides_across_its_gap_to_the_wall_and_rests_there() {
     }
 }
 
-/// A longer push: the box slides 5.5-30 mm before it meets the wall. While it slides at the
-/// fingertip's 10 mm/s the pad reads about 0.01-0.03 N (the box's friction on the table, right
-/// as an impulse) but the fingertip's ball overlaps the box by 0.3-1.1 mm, where the law gives
-/// 4-20 N, and at the wall the overlap is not taken up as force: measured (session 34), from
-/// 5.5 / 6 / 8 / 12 / 30 mm with rapier's contact recycling on, the box 0.50-0.62 mm from
-/// the wall but still moving at 1.3-1.7 cm/s, the pad at 0.019-0.030 N about 2 mm deep;
-/// with recycling off, from 30 mm the box is thrown 0.2 m (the rule before session 34: held
-/// 4.9 mm from the wall, the pad crushed to 950 N). Found while writing the test above; not
-/// understood yet (softgrip-rapier README, Limits).
+/// The push while the box slides: at the fingertip's 10 mm/s the pad must carry only the
+/// box's friction on the table (mu m g = 0.020 N for the 4 g box at mu 0.5), which the law
+/// gives at a few micrometres of compression. Measured (session 35, `-- --include-ignored
+/// --nocapture`): the pad reads 0.01-0.03 N, right as a force, but the ball overlaps the box
+/// by 0.8-1.4 mm while it slides (the law gives 10-40 N there), and from 30 mm the box ends
+/// 0.3 mm from the wall still moving at 1.3 mm/s (rapier's contact recycling on) or is thrown
+/// through the fingertip and 0.2 m away when the box meets the wall (recycling off). What
+/// the probes showed: each step the coupled solve, which leaves the box's friction under its
+/// weight to rapier, lets the pad's overlap go by sending the box away at 4-6 cm/s; rapier's
+/// own step then stops it and leaves it moving at +1.2 cm/s towards the fingertip, so the
+/// overlap is never taken up. Handing that friction to the solve (its disk `mu j_n` whole,
+/// rapier's expected share taken off what the plugin applies) and solving rapier's part from
+/// gravity alone each left the overlap as it was. Open (softgrip-rapier README, Limits).
 #[test]
-#[ignore = "the pad's force is lost while a pushed box slides (session 34): from 8 mm the pad reads 0.021 N about 2 mm into the box at the wall; softgrip-rapier README, Limits"]
-fn a_box_pushed_further_along_the_table_loads_the_pad_at_the_wall() {
+#[ignore = "the fingertip overlaps a box it pushes along the table by about 1 mm at friction force (session 35); softgrip-rapier README, Limits"]
+fn a_box_pushed_along_the_table_compresses_the_pad_only_as_its_friction_asks() {
     let touching = push(0.0, PRESS, true);
     let deepest = push(0.0, PRESS + TOUCHING, true);
     for recycling in [true, false] {
-        for gap_mm in [5.5f32, 8.0, 30.0] {
+        for gap_mm in [8.0f32, 30.0] {
             let p = push(gap_mm * 1e-3, PRESS, recycling);
             println!("start gap {gap_mm} mm, recycling {recycling}: {p:?}");
+            // 0.1 mm of the ball's overlap is about 0.6 N on this pad, 30 times the friction.
+            assert!(p.slide_overlap < 0.1e-3, "{gap_mm} mm: {p:?}");
             assert!(p.gap > -0.1e-3 && p.gap < TOUCHING, "{gap_mm} mm: {p:?}");
             assert!(p.speed < 1e-3, "{gap_mm} mm: {p:?}");
             assert!(
