@@ -500,8 +500,8 @@ pub(crate) struct CoupledScratch {
 }
 
 /// The scalar rows of soft rows `soft` and rigid rows `rigid` (`rigid` only: `soft` empty),
-/// with their index of the first scalar of each soft row, for stage `which` of
-/// [`solve_coupled`] (0: rapier's part, the rigid rows alone; 1: everything).
+/// with their index of the first scalar of each soft row; `closable`: the rigid rows' points
+/// apart may close their gap (rapier's part, [`push_rigid`]).
 #[allow(clippy::too_many_arguments)]
 fn build(
     bodies: &[BodyState],
@@ -509,7 +509,7 @@ fn build(
     rigid: &[RigidRow],
     rest_n: &[f64],
     h: f64,
-    which: usize,
+    closable: bool,
     out: &mut Vec<Scalar>,
     first: &mut Vec<usize>,
 ) {
@@ -520,7 +520,7 @@ fn build(
         push_soft(bodies, r, h, out);
     }
     for (ri, r) in rigid.iter().enumerate() {
-        let closing = if which == 0 { r.closable / h } else { 0.0 };
+        let closing = if closable { r.closable / h } else { 0.0 };
         push_rigid(
             bodies,
             r,
@@ -608,7 +608,10 @@ fn push_soft(bodies: &[BodyState], r: &Row, h: f64, out: &mut Vec<Scalar>) {
 /// tolerance keeps a resting box's redundant points (their gaps some 1e-5 m apart) and a box
 /// held against a wall by a rigid stick (0.16-0.26 mm) as one rigid motion: with no deadzone
 /// that box rattled at 1.1 cm/s (`press_on_table::rigid_stick_presses_a_box_against_a_wall`,
-/// bound 1 um/s; it holds from a deadzone of 0.2 mm).
+/// bound 1 um/s; it holds from a deadzone of 0.2 mm). Only where no row of the group moves a
+/// multibody or jointed link (`Stage::fast`): with links, the three-finger hand driven into
+/// the table with its pads pressing flung a link at 8.3 m/s (softgrip-scene's
+/// `driven_into_table`, bound 0.5 m/s).
 fn push_rigid(bodies: &[BodyState], r: &RigidRow, rest: f64, closing: f64, out: &mut Vec<Scalar>) {
     let nrm = out.len();
     let mut normal = Scalar::point(bodies, Some(r.a), r.b, &r.p, &r.n, Kind::HardNormal);
@@ -1726,8 +1729,10 @@ impl Stage<'_> {
             buffers,
             ..
         } = scratch;
+        // rapier's part lets points apart close where no row moves a link (`push_rigid`).
+        let closable = which == 0 && self.fast;
         build(
-            bodies, soft, rigid, rest_n, self.h, which, scalars, self.first,
+            bodies, soft, rigid, rest_n, self.h, closable, scalars, self.first,
         );
         // Not built at all when unused (a row past the buffer's end starts cold: `start_rows`).
         self.warm.clear();
