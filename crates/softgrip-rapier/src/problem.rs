@@ -292,7 +292,9 @@ pub(crate) struct RigidRow {
 /// so a body 0.5-5 mm short of another was held there as if touching. The xArm's finger links,
 /// 4 mm from the box they closed on, stopped there: every coupled solve of the closing was
 /// degenerate and the box, let go to rapier, was kicked 1.2 mm up and turned 0.15 rad in one
-/// step (with rapier's contact recycling off; on, a stale manifold hid the links' points). A
+/// step (with rapier's contact recycling off; on, a stale manifold hid the links' points: the
+/// points were read by their recycled `dist`, not their gap at the current poses, until
+/// session 35, `step::push_pair_points`). A
 /// box pushed towards a wall from 1-4.5 mm was held at its start gap while the pad pushing it
 /// was crushed (89-745 N; `tests/gap_rows.rs`). Session 33 tried keeping such points in the
 /// solve with the target `v(end) >= -(gap - TOUCH_FRACTION slop) / h` (rapier's speculative
