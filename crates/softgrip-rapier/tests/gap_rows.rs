@@ -133,14 +133,38 @@ const PRESS: f64 = 1.5e-3;
 /// allowed linear error (`problem::TOUCH_FRACTION`), and 0.1 mm over it.
 const TOUCHING: f64 = 0.6e-3;
 
+/// The pad's force bracket for a box pressed against what it closes on: the box touching the
+/// wall from the start (the pad pressed the whole [`PRESS`]), and the same pressed further by
+/// the most a touching rest gap ([`TOUCHING`]) leaves.
+fn bracket() -> (Pushed, Pushed) {
+    (push(0.0, PRESS, true), push(0.0, PRESS + TOUCHING, true))
+}
+
+/// Asserts that push `p` (`what` names it) ended at rest within the touch tolerance of what
+/// it closes on (not held short of it), slower than `speed` \[m/s\], its pad between the
+/// bracket's forces (within 1 %): not crushed, not let go.
+fn assert_rests(p: &Pushed, (touching, deepest): &(Pushed, Pushed), speed: f64, what: &str) {
+    assert!(
+        p.gap > -0.1e-3 && p.gap < TOUCHING,
+        "{what}: the box rests {} mm from what it closes on ({p:?})",
+        p.gap * 1e3
+    );
+    assert!(p.speed < speed, "{what}: the box moves at {} m/s", p.speed);
+    assert!(
+        p.force > 0.99 * touching.force && p.force < 1.01 * deepest.force,
+        "{what}: the pad reads {} N, not in {} - {} N",
+        p.force,
+        touching.force,
+        deepest.force
+    );
+}
+
 #[test]
 fn a_pushed_box_slides_across_its_gap_to_the_wall_and_rests_there() {
-    // The box touching the wall from the start: the pad pressed the whole 1.5 mm.
-    let touching = push(0.0, PRESS, true);
+    let bracket = bracket();
+    let (touching, deepest) = &bracket;
     println!("start gap 0: {touching:?}");
     assert!(touching.gap.abs() < 0.1e-3, "{touching:?}");
-    // The same, pressed further by the most a touching rest gap leaves.
-    let deepest = push(0.0, PRESS + TOUCHING, true);
     println!(
         "start gap 0, pressed {} mm more: {deepest:?}",
         TOUCHING * 1e3
@@ -149,27 +173,8 @@ fn a_pushed_box_slides_across_its_gap_to_the_wall_and_rests_there() {
         for gap_mm in [0.4f32, 1.0, 2.5, 3.5, 4.5, 5.5, 8.0, 12.0] {
             let p = push(gap_mm * 1e-3, PRESS, recycling);
             println!("start gap {gap_mm} mm, recycling {recycling}: {p:?}");
-            // At rest within rapier's resting tolerance of the wall, not held short of it.
-            assert!(
-                p.gap > -0.1e-3 && p.gap < TOUCHING,
-                "start gap {gap_mm} mm, recycling {recycling}: the box rests {} mm from the wall",
-                p.gap * 1e3
-            );
-            assert!(
-                p.speed < 1e-3,
-                "start gap {gap_mm} mm: the box moves at {} m/s",
-                p.speed
-            );
-            // The pad pressed 1.5 mm and the box's rest gap: between its force with the box
-            // touching from the start and that pressed by the most a rest gap may leave; not
-            // crushed, not let go.
-            assert!(
-                p.force > 0.99 * touching.force && p.force < 1.01 * deepest.force,
-                "start gap {gap_mm} mm, recycling {recycling}: the pad reads {} N, not in {} - {} N",
-                p.force,
-                touching.force,
-                deepest.force
-            );
+            let what = format!("start gap {gap_mm} mm, recycling {recycling}");
+            assert_rests(&p, &bracket, 1e-3, &what);
         }
     }
 }
@@ -185,8 +190,7 @@ fn a_pushed_box_slides_across_its_gap_to_the_wall_and_rests_there() {
 /// pushes ended with the pad at 0.013 / 0.015 N and the boxes at 2.8 / 7.9 mm/s.
 #[test]
 fn a_pushed_box_closes_on_a_second_box_at_the_wall() {
-    let touching = push(0.0, PRESS, true);
-    let deepest = push(0.0, PRESS + TOUCHING, true);
+    let bracket = bracket();
     for recycling in [true, false] {
         for gap_mm in [2.5f32, 8.0, 12.0] {
             let (p, second_gap) = push_with(gap_mm * 1e-3, PRESS, recycling, true);
@@ -194,15 +198,11 @@ fn a_pushed_box_closes_on_a_second_box_at_the_wall() {
                 "start gap {gap_mm} mm to the second box, recycling {recycling}: {p:?}, the second box {:.3e} m from the wall",
                 second_gap
             );
-            assert!(p.gap > -0.1e-3 && p.gap < TOUCHING, "{gap_mm} mm: {p:?}");
+            let what = format!("{gap_mm} mm to the second box, recycling {recycling}");
+            assert_rests(&p, &bracket, 2e-3, &what);
             assert!(
                 second_gap > -0.1e-3 && second_gap < TOUCHING,
-                "{gap_mm} mm: the second box {second_gap} m from the wall"
-            );
-            assert!(p.speed < 2e-3, "{gap_mm} mm: {p:?}");
-            assert!(
-                p.force > 0.99 * touching.force && p.force < 1.01 * deepest.force,
-                "{gap_mm} mm, recycling {recycling}: {p:?}"
+                "{what}: the second box {second_gap} m from the wall"
             );
         }
     }
@@ -224,19 +224,18 @@ fn a_pushed_box_closes_on_a_second_box_at_the_wall() {
 #[test]
 #[ignore = "the fingertip overlaps a box it pushes along the table by about 1 mm at friction force (session 35); softgrip-rapier README, Limits"]
 fn a_box_pushed_along_the_table_compresses_the_pad_only_as_its_friction_asks() {
-    let touching = push(0.0, PRESS, true);
-    let deepest = push(0.0, PRESS + TOUCHING, true);
+    let bracket = bracket();
     for recycling in [true, false] {
         for gap_mm in [8.0f32, 30.0] {
             let p = push(gap_mm * 1e-3, PRESS, recycling);
             println!("start gap {gap_mm} mm, recycling {recycling}: {p:?}");
             // 0.1 mm of the ball's overlap is about 0.6 N on this pad, 30 times the friction.
             assert!(p.slide_overlap < 0.1e-3, "{gap_mm} mm: {p:?}");
-            assert!(p.gap > -0.1e-3 && p.gap < TOUCHING, "{gap_mm} mm: {p:?}");
-            assert!(p.speed < 1e-3, "{gap_mm} mm: {p:?}");
-            assert!(
-                p.force > 0.99 * touching.force && p.force < 1.01 * deepest.force,
-                "{gap_mm} mm, recycling {recycling}: {p:?}"
+            assert_rests(
+                &p,
+                &bracket,
+                1e-3,
+                &format!("{gap_mm} mm, recycling {recycling}"),
             );
         }
     }
